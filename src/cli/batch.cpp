@@ -1,0 +1,11 @@
+#include "cli/cli.h"
+
+namespace rollcheck::cli
+{
+void add_batch_command(CLI::App& app)
+{
+  CLI::App* sub = app.add_subcommand("batch", "Not built yet (issue 6)");
+  sub->allow_extras();
+  on_run(sub, [] { return not_built("batch", "issue 6"); });
+}
+} // namespace rollcheck::cli

@@ -1,0 +1,11 @@
+#pragma once
+#include "geometry/surface_mesh.h"
+#include "io/parameters.h"
+#include <string>
+
+namespace rollcheck::cli
+{
+/// The body of body_parameters(): read from mesh_file if given, else built.
+/// Either way checked closed, outward and convex. `label` names it.
+geometry::SurfaceMesh body_from_parameters(const io::Parameters& params, std::string* label = nullptr);
+} // namespace rollcheck::cli

@@ -1,0 +1,32 @@
+#include "cli/cli.h"
+#include "geometry/atomic_file.h"
+#include "geometry/error.h"
+#include <fstream>
+#include <iostream>
+
+namespace rollcheck::cli
+{
+CLI::Option* add_json_option(CLI::App* sub, std::string& path)
+{
+  return sub->add_option("--json", path, "Write a machine-readable summary to PATH ('-' for stdout); keys are snake_case with units");
+}
+
+void emit_json(const std::string& path, const nlohmann::json& summary)
+{
+  if (path.empty())
+    return;
+  // NaN has no JSON form; nlohmann writes it as null, which would hide a bug.
+  const std::string text = summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+  if (path == "-")
+  {
+    std::cout << text << "\n";
+    return;
+  }
+  write_atomically(path, [&](const std::filesystem::path& tmp) {
+    std::ofstream out(tmp);
+    out << text << "\n";
+    if (!out)
+      throw InputError("cannot write JSON to '" + path + "'");
+  });
+}
+} // namespace rollcheck::cli

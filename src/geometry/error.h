@@ -1,0 +1,20 @@
+#pragma once
+// The two failure kinds every layer raises; the CLI maps them to exit codes
+// (InputError -> 2, ComputationError -> 1).
+#include <stdexcept>
+#include <string>
+
+namespace rollcheck
+{
+/// Bad input: a file, option or body that cannot be used. The message names it.
+struct InputError : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+/// A computation that failed: a diverged solve, an unresolved contact.
+struct ComputationError : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+} // namespace rollcheck

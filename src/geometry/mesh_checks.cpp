@@ -1,0 +1,109 @@
+#include "geometry/mesh_checks.h"
+#include "geometry/error.h"
+#include "geometry/mass_properties.h"
+#include <Eigen/Geometry>
+#include <fmt/format.h>
+#include <unordered_map>
+
+namespace rollcheck::geometry
+{
+namespace
+{
+std::uint64_t edge_key(int from, int to)
+{
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(from)) << 32) | static_cast<std::uint32_t>(to);
+}
+} // namespace
+
+MeshChecks check_mesh(const SurfaceMesh& mesh)
+{
+  MeshChecks checks;
+  const auto nv = mesh.vertices.rows();
+  const auto nf = mesh.faces.rows();
+  checks.finite = mesh.vertices.allFinite();
+  if (!checks.finite)
+  {
+    checks.problem = "vertices contain NaN or infinity";
+    return checks;
+  }
+  if (nf < 4 || (mesh.faces.array() < 0).any() || (mesh.faces.array() >= nv).any())
+  {
+    checks.problem = nf < 4 ? "fewer than 4 faces" : "a face refers to a vertex that does not exist";
+    return checks;
+  }
+
+  // Each directed edge must occur once, and its reverse once: then every edge
+  // has exactly two faces and they agree on orientation.
+  std::unordered_map<std::uint64_t, int> face_of_edge;
+  face_of_edge.reserve(static_cast<std::size_t>(3 * nf));
+  bool duplicate_directed = false;
+  for (Eigen::Index f = 0; f < nf; ++f)
+    for (int j = 0; j < 3; ++j)
+    {
+      const int a = mesh.faces(f, j), b = mesh.faces(f, (j + 1) % 3);
+      if (!face_of_edge.emplace(edge_key(a, b), static_cast<int>(f)).second)
+        duplicate_directed = true;
+    }
+  bool every_edge_paired = true;
+  for (const auto& [key, f] : face_of_edge)
+    if (!face_of_edge.count(edge_key(static_cast<int>(key & 0xffffffffu), static_cast<int>(key >> 32))))
+      every_edge_paired = false;
+  checks.watertight = every_edge_paired;
+  checks.consistently_oriented = every_edge_paired && !duplicate_directed;
+  if (!checks.watertight)
+  {
+    checks.problem = "not watertight: some edge does not have exactly two faces";
+    return checks;
+  }
+  if (!checks.consistently_oriented)
+  {
+    checks.problem = "faces are not consistently oriented";
+    return checks;
+  }
+  checks.outward = mass_properties(mesh).volume_m3 > 0;
+  if (!checks.outward)
+    checks.problem = "faces point inward (negative enclosed volume)";
+
+  // Convexity: a closed, consistently oriented surface is convex when every
+  // edge is convex, i.e. the far vertex of each neighbour lies on or below
+  // the face's plane.
+  const double size = (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
+  const double tolerance = 1e-9 * size;
+  checks.convex = checks.outward;
+  for (Eigen::Index f = 0; f < nf && checks.convex; ++f)
+  {
+    const Eigen::Vector3d v0 = mesh.vertices.row(mesh.faces(f, 0));
+    const Eigen::Vector3d v1 = mesh.vertices.row(mesh.faces(f, 1));
+    const Eigen::Vector3d v2 = mesh.vertices.row(mesh.faces(f, 2));
+    const Eigen::Vector3d n = (v1 - v0).cross(v2 - v0);
+    if (n.norm() <= 1e-14 * size * size)
+    {
+      ++checks.degenerate_faces;
+      continue;
+    }
+    const Eigen::Vector3d unit = n.normalized();
+    for (int j = 0; j < 3; ++j)
+    {
+      const int a = mesh.faces(f, j), b = mesh.faces(f, (j + 1) % 3);
+      const int g = face_of_edge.at(edge_key(b, a));
+      for (int k = 0; k < 3; ++k)
+      {
+        const Eigen::Vector3d p = mesh.vertices.row(mesh.faces(g, k));
+        if (unit.dot(p - v0) > tolerance)
+        {
+          checks.convex = false;
+          checks.problem = fmt::format("not convex: the surface folds inward at the edge ({}, {})", a, b);
+        }
+      }
+    }
+  }
+  return checks;
+}
+
+void require_closed_convex(const SurfaceMesh& mesh, std::string_view what)
+{
+  const MeshChecks checks = check_mesh(mesh);
+  if (!checks.problem.empty())
+    throw InputError(fmt::format("{}: {}", what, checks.problem));
+}
+} // namespace rollcheck::geometry

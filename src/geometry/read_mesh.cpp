@@ -1,0 +1,357 @@
+#include "geometry/read_mesh.h"
+#include "geometry/error.h"
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <fmt/format.h>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+namespace rollcheck::geometry
+{
+namespace
+{
+struct Builder
+{
+  std::vector<std::array<double, 3>> vertices;
+  std::vector<std::array<int, 3>> faces;
+
+  /// Fans a polygon (0-based indices) into triangles.
+  void add_polygon(const std::vector<int>& poly, const std::string& where)
+  {
+    if (poly.size() < 3)
+      throw InputError(fmt::format("{}: a face has fewer than 3 vertices", where));
+    for (std::size_t k = 1; k + 1 < poly.size(); ++k)
+      faces.push_back({poly[0], poly[k], poly[k + 1]});
+  }
+
+  SurfaceMesh finish(const std::string& name) const
+  {
+    if (vertices.empty() || faces.empty())
+      throw InputError(fmt::format("mesh file '{}': no vertices or no faces", name));
+    SurfaceMesh mesh;
+    mesh.vertices.resize(static_cast<Eigen::Index>(vertices.size()), 3);
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+      for (int j = 0; j < 3; ++j)
+        mesh.vertices(static_cast<Eigen::Index>(i), j) = vertices[i][j];
+    mesh.faces.resize(static_cast<Eigen::Index>(faces.size()), 3);
+    for (std::size_t i = 0; i < faces.size(); ++i)
+      for (int j = 0; j < 3; ++j)
+      {
+        const int v = faces[i][j];
+        if (v < 0 || v >= static_cast<int>(vertices.size()))
+          throw InputError(fmt::format("mesh file '{}': face {} refers to vertex {} of {}", name, i + 1, v + 1,
+                                       vertices.size()));
+        mesh.faces(static_cast<Eigen::Index>(i), j) = v;
+      }
+    if (!mesh.vertices.allFinite())
+      throw InputError(fmt::format("mesh file '{}': a vertex coordinate is NaN or infinite", name));
+    return mesh;
+  }
+};
+
+double parse_double(const std::string& token, const std::string& where)
+{
+  try
+  {
+    std::size_t used = 0;
+    const double value = std::stod(token, &used);
+    if (used != token.size())
+      throw std::invalid_argument(token);
+    return value;
+  }
+  catch (const std::exception&)
+  {
+    throw InputError(fmt::format("{}: '{}' is not a number", where, token));
+  }
+}
+
+int parse_int(const std::string& token, const std::string& where)
+{
+  const double value = parse_double(token, where);
+  if (value != static_cast<int>(value))
+    throw InputError(fmt::format("{}: '{}' is not an integer", where, token));
+  return static_cast<int>(value);
+}
+
+SurfaceMesh read_obj(std::istream& in, const std::string& name)
+{
+  Builder b;
+  std::string line;
+  for (int lineno = 1; std::getline(in, line); ++lineno)
+  {
+    std::istringstream words(line);
+    std::string kind;
+    words >> kind;
+    const std::string where = fmt::format("{}:{}", name, lineno);
+    if (kind == "v")
+    {
+      std::array<double, 3> p{};
+      for (double& x : p)
+      {
+        std::string token;
+        if (!(words >> token))
+          throw InputError(fmt::format("{}: a vertex needs 3 coordinates", where));
+        x = parse_double(token, where);
+      }
+      b.vertices.push_back(p);
+    }
+    else if (kind == "f")
+    {
+      std::vector<int> poly;
+      for (std::string token; words >> token;)
+      {
+        // "v", "v/vt", "v//vn", "v/vt/vn"; negative indices count from the end.
+        const int v = parse_int(token.substr(0, token.find('/')), where);
+        poly.push_back(v > 0 ? v - 1 : static_cast<int>(b.vertices.size()) + v);
+      }
+      b.add_polygon(poly, where);
+    }
+  }
+  return b.finish(name);
+}
+
+SurfaceMesh read_off(std::istream& in, const std::string& name)
+{
+  // Tokens with comments removed; the header may be "OFF" alone or "OFF nv nf ne".
+  std::vector<std::string> tokens;
+  for (std::string line; std::getline(in, line);)
+  {
+    std::istringstream words(line.substr(0, line.find('#')));
+    for (std::string t; words >> t;)
+      tokens.push_back(t);
+  }
+  std::size_t at = 0;
+  auto next = [&]() -> const std::string& {
+    if (at >= tokens.size())
+      throw InputError(fmt::format("mesh file '{}': OFF data ends early", name));
+    return tokens[at++];
+  };
+  if (next() != "OFF")
+    throw InputError(fmt::format("mesh file '{}': does not start with OFF", name));
+  const int nv = parse_int(next(), name), nf = parse_int(next(), name);
+  next();
+  if (nv < 0 || nf < 0)
+    throw InputError(fmt::format("mesh file '{}': negative vertex or face count", name));
+  Builder b;
+  for (int i = 0; i < nv; ++i)
+    b.vertices.push_back({parse_double(next(), name), parse_double(next(), name), parse_double(next(), name)});
+  for (int i = 0; i < nf; ++i)
+  {
+    const int n = parse_int(next(), name);
+    std::vector<int> poly(static_cast<std::size_t>(std::max(n, 0)));
+    for (int& v : poly)
+      v = parse_int(next(), name);
+    b.add_polygon(poly, fmt::format("{}: face {}", name, i + 1));
+  }
+  return b.finish(name);
+}
+
+/// STL stores triangles with repeated corners; corners with identical
+/// coordinates become one vertex, numbered in order of first appearance.
+struct VertexWelder
+{
+  Builder& b;
+  std::map<std::array<double, 3>, int> index;
+  int operator()(const std::array<double, 3>& p)
+  {
+    auto [it, inserted] = index.emplace(p, static_cast<int>(b.vertices.size()));
+    if (inserted)
+      b.vertices.push_back(p);
+    return it->second;
+  }
+};
+
+SurfaceMesh read_stl(const std::string& bytes, const std::string& name)
+{
+  Builder b;
+  VertexWelder weld{b, {}};
+  const bool sized_binary = bytes.size() >= 84 && [&] {
+    std::uint32_t n = 0;
+    std::memcpy(&n, bytes.data() + 80, 4);
+    return bytes.size() == 84 + 50 * static_cast<std::size_t>(n);
+  }();
+  if (sized_binary)
+  {
+    std::uint32_t n = 0;
+    std::memcpy(&n, bytes.data() + 80, 4);
+    for (std::uint32_t t = 0; t < n; ++t)
+    {
+      const char* rec = bytes.data() + 84 + 50 * static_cast<std::size_t>(t) + 12;
+      std::vector<int> tri;
+      for (int k = 0; k < 3; ++k)
+      {
+        float xyz[3];
+        std::memcpy(xyz, rec + 12 * k, 12);
+        tri.push_back(weld({xyz[0], xyz[1], xyz[2]}));
+      }
+      b.add_polygon(tri, name);
+    }
+    return b.finish(name);
+  }
+  if (bytes.rfind("solid", 0) != 0)
+    throw InputError(fmt::format("mesh file '{}': neither ASCII STL nor a binary STL of consistent size", name));
+  std::istringstream in(bytes);
+  std::vector<int> tri;
+  for (std::string word; in >> word;)
+  {
+    if (word == "vertex")
+    {
+      std::array<double, 3> p{};
+      for (double& x : p)
+      {
+        std::string token;
+        in >> token;
+        x = parse_double(token, name);
+      }
+      tri.push_back(weld(p));
+    }
+    else if (word == "endloop")
+    {
+      b.add_polygon(tri, name);
+      tri.clear();
+    }
+  }
+  return b.finish(name);
+}
+
+SurfaceMesh read_ply(const std::string& bytes, const std::string& name)
+{
+  const auto header_end = bytes.find("end_header");
+  if (bytes.rfind("ply", 0) != 0 || header_end == std::string::npos)
+    throw InputError(fmt::format("mesh file '{}': not a PLY file", name));
+  std::istringstream header(bytes.substr(0, header_end));
+  std::string format;
+  struct Property
+  {
+    std::string type, count_type;
+  };
+  struct Element
+  {
+    std::string name;
+    long count = 0;
+    std::vector<std::pair<std::string, Property>> properties;
+  };
+  std::vector<Element> elements;
+  for (std::string line; std::getline(header, line);)
+  {
+    std::istringstream words(line);
+    std::string kind;
+    words >> kind;
+    if (kind == "format")
+      words >> format;
+    else if (kind == "element")
+    {
+      Element e;
+      words >> e.name >> e.count;
+      elements.push_back(e);
+    }
+    else if (kind == "property" && !elements.empty())
+    {
+      std::string type, pname;
+      words >> type;
+      Property p;
+      if (type == "list")
+      {
+        words >> p.count_type >> p.type >> pname;
+        p.type = "list:" + p.type;
+      }
+      else
+      {
+        p.type = type;
+        words >> pname;
+      }
+      elements.back().properties.emplace_back(pname, p);
+    }
+  }
+  if (format != "ascii" && format != "binary_little_endian")
+    throw InputError(fmt::format("mesh file '{}': PLY format '{}' is not supported", name, format));
+  std::size_t pos = bytes.find('\n', header_end) + 1;
+  std::istringstream text(format == "ascii" ? bytes.substr(pos) : std::string());
+  auto size_of = [&](const std::string& t) -> std::size_t {
+    if (t == "char" || t == "uchar" || t == "int8" || t == "uint8")
+      return 1;
+    if (t == "short" || t == "ushort" || t == "int16" || t == "uint16")
+      return 2;
+    if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32")
+      return 4;
+    if (t == "double" || t == "float64")
+      return 8;
+    throw InputError(fmt::format("mesh file '{}': unknown PLY type '{}'", name, t));
+  };
+  auto read_value = [&](const std::string& t) -> double {
+    if (format == "ascii")
+    {
+      std::string token;
+      if (!(text >> token))
+        throw InputError(fmt::format("mesh file '{}': PLY data ends early", name));
+      return parse_double(token, name);
+    }
+    const std::size_t n = size_of(t);
+    if (pos + n > bytes.size())
+      throw InputError(fmt::format("mesh file '{}': PLY data ends early", name));
+    const char* p = bytes.data() + pos;
+    pos += n;
+    auto get = [p](auto value) {
+      std::memcpy(&value, p, sizeof value);
+      return static_cast<double>(value);
+    };
+    if (t == "char" || t == "int8") return get(std::int8_t{});
+    if (t == "uchar" || t == "uint8") return get(std::uint8_t{});
+    if (t == "short" || t == "int16") return get(std::int16_t{});
+    if (t == "ushort" || t == "uint16") return get(std::uint16_t{});
+    if (t == "int" || t == "int32") return get(std::int32_t{});
+    if (t == "uint" || t == "uint32") return get(std::uint32_t{});
+    if (t == "float" || t == "float32") return get(float{});
+    return get(double{});
+  };
+  Builder b;
+  for (const Element& e : elements)
+    for (long i = 0; i < e.count; ++i)
+    {
+      std::array<double, 3> p{};
+      for (const auto& [pname, prop] : e.properties)
+      {
+        if (prop.type.rfind("list:", 0) == 0)
+        {
+          const int n = static_cast<int>(read_value(prop.count_type));
+          std::vector<int> poly(static_cast<std::size_t>(std::max(n, 0)));
+          for (int& v : poly)
+            v = static_cast<int>(read_value(prop.type.substr(5)));
+          if (e.name == "face" && (pname == "vertex_indices" || pname == "vertex_index"))
+            b.add_polygon(poly, fmt::format("{}: face {}", name, i + 1));
+          continue;
+        }
+        const double value = read_value(prop.type);
+        if (e.name == "vertex" && pname.size() == 1 && pname[0] >= 'x' && pname[0] <= 'z')
+          p[pname[0] - 'x'] = value;
+      }
+      if (e.name == "vertex")
+        b.vertices.push_back(p);
+    }
+  return b.finish(name);
+}
+} // namespace
+
+SurfaceMesh read_mesh(const std::filesystem::path& path)
+{
+  const std::string name = path.string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw InputError(fmt::format("mesh file '{}': cannot be opened (missing or unreadable)", name));
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  if (ext == ".obj")
+    return read_obj(in, name);
+  if (ext == ".off")
+    return read_off(in, name);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (ext == ".stl")
+    return read_stl(bytes, name);
+  if (ext == ".ply")
+    return read_ply(bytes, name);
+  throw InputError(fmt::format("mesh file '{}': unknown extension '{}' (use .obj, .stl, .ply or .off)", name, ext));
+}
+} // namespace rollcheck::geometry

@@ -1,0 +1,64 @@
+#include "geometry/tetrahedralize.h"
+#include "geometry/atomic_file.h"
+#include "geometry/error.h"
+#include <cmath>
+#include <fmt/format.h>
+#include <gmsh.h>
+#include <numeric>
+
+namespace rollcheck::geometry
+{
+VolumeMeshInfo write_tetrahedral_mesh(const SurfaceMesh& surface, double mesh_size_m,
+                                      const std::filesystem::path& path)
+{
+  if (!std::isfinite(mesh_size_m) || mesh_size_m <= 0)
+    throw InputError(fmt::format("volume mesh: element size must be positive and finite, got {} m", mesh_size_m));
+  // gmsh 4.8 cannot tell whether it is initialised; this function owns one
+  // gmsh session from start to end.
+  gmsh::initialize();
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::model::add("body");
+  VolumeMeshInfo info{};
+  try
+  {
+    const int s = gmsh::model::addDiscreteEntity(2);
+    std::vector<std::size_t> node_tags(static_cast<std::size_t>(surface.vertices.rows()));
+    std::iota(node_tags.begin(), node_tags.end(), 1);
+    std::vector<double> coords(surface.vertices.data(), surface.vertices.data() + surface.vertices.size());
+    gmsh::model::mesh::addNodes(2, s, node_tags, coords);
+    std::vector<std::size_t> tri_nodes;
+    for (Eigen::Index f = 0; f < surface.faces.rows(); ++f)
+      for (int j = 0; j < 3; ++j)
+        tri_nodes.push_back(static_cast<std::size_t>(surface.faces(f, j)) + 1);
+    gmsh::model::mesh::addElementsByType(s, 2, {}, tri_nodes);
+    const int loop = gmsh::model::geo::addSurfaceLoop({s});
+    gmsh::model::geo::addVolume({loop});
+    gmsh::model::geo::synchronize();
+    gmsh::option::setNumber("Mesh.MeshSizeMax", mesh_size_m);
+    gmsh::model::mesh::generate(3);
+    std::vector<std::size_t> tags;
+    std::vector<double> xyz, param;
+    gmsh::model::mesh::getNodes(tags, xyz, param);
+    info.nodes = tags.size();
+    std::vector<std::size_t> tets, tet_nodes;
+    gmsh::model::mesh::getElementsByType(4, tets, tet_nodes);
+    info.tetrahedra = tets.size();
+    if (info.tetrahedra == 0)
+      throw ComputationError("gmsh produced no tetrahedra");
+    write_atomically(path, [&](const std::filesystem::path& tmp) { gmsh::write(tmp.string()); });
+  }
+  catch (const std::exception&)
+  {
+    gmsh::finalize();
+    throw;
+  }
+  catch (...)
+  {
+    // gmsh's API throws plain values on failure.
+    gmsh::finalize();
+    throw ComputationError("gmsh failed to mesh the volume of the body");
+  }
+  gmsh::finalize();
+  return info;
+}
+} // namespace rollcheck::geometry

@@ -1,0 +1,224 @@
+#include "io/parameters.h"
+#include "geometry/error.h"
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+namespace rollcheck::io
+{
+namespace
+{
+std::string type_name(const Value& v)
+{
+  return std::visit(
+      [](const auto& x) -> std::string {
+        using T = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<T, bool>) return "true/false";
+        else if constexpr (std::is_same_v<T, std::int64_t>) return "integer";
+        else if constexpr (std::is_same_v<T, double>) return "number";
+        else return "string";
+      },
+      v);
+}
+
+std::string to_text(const Value& v)
+{
+  return std::visit(
+      [](const auto& x) -> std::string {
+        using T = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<T, bool>) return x ? "true" : "false";
+        else if constexpr (std::is_same_v<T, std::string>) return x;
+        else return fmt::format("{}", x);
+      },
+      v);
+}
+} // namespace
+
+const Parameter& Schema::find(const std::string& key, const std::string& origin) const
+{
+  for (const Parameter& p : parameters)
+    if (p.key == key)
+      return p;
+  std::string known;
+  for (const Parameter& p : parameters)
+    known += (known.empty() ? "" : ", ") + p.key;
+  throw InputError(fmt::format("{}: unknown key '{}' for a '{}' scene (known: {})", origin, key, kind, known));
+}
+
+Parameters::Parameters(const Schema& schema) : schema_(&schema)
+{
+  for (const Parameter& p : schema.parameters)
+    values_[p.key] = p.default_value;
+}
+
+void Parameters::set(const std::string& key, const Value& given, const std::string& origin)
+{
+  const Parameter& p = schema_->find(key, origin);
+  Value value = given;
+  // Integers are accepted where a number is expected.
+  if (std::holds_alternative<double>(p.default_value) && std::holds_alternative<std::int64_t>(given))
+    value = static_cast<double>(std::get<std::int64_t>(given));
+  if (value.index() != p.default_value.index())
+    throw InputError(fmt::format("{}: '{}' must be a {}, got '{}'", origin, key, type_name(p.default_value),
+                                 to_text(given)));
+  if (const double* x = std::get_if<double>(&value); x && !std::isfinite(*x))
+    throw InputError(fmt::format("{}: '{}' must be finite, got {}", origin, key, *x));
+  if (const std::string* s = std::get_if<std::string>(&value); s && !p.choices.empty()
+      && std::find(p.choices.begin(), p.choices.end(), *s) == p.choices.end())
+    throw InputError(fmt::format("{}: '{}' must be one of {}, got '{}'", origin, key, fmt::join(p.choices, "|"), *s));
+  values_[key] = value;
+}
+
+void Parameters::set_text(const std::string& key, const std::string& text, const std::string& origin)
+{
+  const Parameter& p = schema_->find(key, origin);
+  Value value;
+  try
+  {
+    std::size_t used = 0;
+    if (std::holds_alternative<bool>(p.default_value))
+    {
+      if (text != "true" && text != "false")
+        throw std::invalid_argument(text);
+      value = text == "true";
+      used = text.size();
+    }
+    else if (std::holds_alternative<std::int64_t>(p.default_value))
+      value = static_cast<std::int64_t>(std::stoll(text, &used));
+    else if (std::holds_alternative<double>(p.default_value))
+      value = std::stod(text, &used);
+    else
+    {
+      value = text;
+      used = text.size();
+    }
+    if (used != text.size())
+      throw std::invalid_argument(text);
+  }
+  catch (const std::logic_error&)
+  {
+    throw InputError(fmt::format("{}: '{}' must be a {}, got '{}'", origin, key, type_name(p.default_value), text));
+  }
+  set(key, value, origin);
+}
+
+double Parameters::real(const std::string& key) const { return std::get<double>(values_.at(key)); }
+std::int64_t Parameters::integer(const std::string& key) const { return std::get<std::int64_t>(values_.at(key)); }
+bool Parameters::flag(const std::string& key) const { return std::get<bool>(values_.at(key)); }
+const std::string& Parameters::text(const std::string& key) const { return std::get<std::string>(values_.at(key)); }
+
+nlohmann::json Parameters::to_json() const
+{
+  nlohmann::json j = nlohmann::json::object();
+  j["kind"] = schema_->kind;
+  for (const auto& [key, value] : values_)
+    std::visit([&](const auto& x) { j[key] = x; }, value);
+  return j;
+}
+
+SchemaOptions::SchemaOptions(CLI::App* sub, const Schema& schema) : schema_(&schema)
+{
+  for (const Parameter& p : schema.parameters)
+  {
+    const std::string unit = p.unit.empty() ? "" : fmt::format(" [{}]", p.unit);
+    const std::string help = fmt::format("{}{} (default: {})", p.help, unit, to_text(p.default_value));
+    if (std::holds_alternative<bool>(p.default_value))
+    {
+      switches_[p.key] = false;
+      sub->add_flag(p.flag, switches_.at(p.key), help);
+      continue;
+    }
+    CLI::Option* opt = sub->add_option(p.flag, given_[p.key], help);
+    if (!p.choices.empty())
+      opt->check(CLI::IsMember(p.choices));
+  }
+  // add_option stored references into given_; no entry may be added later.
+}
+
+Parameters SchemaOptions::apply() const
+{
+  Parameters params(*schema_);
+  for (const Parameter& p : schema_->parameters)
+  {
+    if (auto it = switches_.find(p.key); it != switches_.end())
+    {
+      if (it->second)
+        params.set(p.key, true, "option " + p.flag);
+    }
+    else if (const std::string& text = given_.at(p.key); !text.empty())
+      params.set_text(p.key, text, "option " + p.flag);
+  }
+  return params;
+}
+
+CaseFile read_case_file(const std::filesystem::path& path)
+{
+  const std::string name = path.string();
+  if (!std::filesystem::is_regular_file(path))
+    throw InputError(fmt::format("case file '{}': does not exist", name));
+  toml::table table;
+  try
+  {
+    table = toml::parse_file(name);
+  }
+  catch (const toml::parse_error& e)
+  {
+    throw InputError(fmt::format("case file '{}': malformed TOML at line {}: {}", name,
+                                 e.source().begin.line, e.description()));
+  }
+  for (const auto& [key, node] : table)
+    if (key.str() != "scene")
+      throw InputError(fmt::format("case file '{}': unknown top-level key '{}' (everything goes under [scene])",
+                                   name, key.str()));
+  const toml::table* scene = table["scene"].as_table();
+  if (!scene)
+    throw InputError(fmt::format("case file '{}': no [scene] table", name));
+  CaseFile file;
+  for (const auto& [key, node] : *scene)
+  {
+    const std::string k(key.str());
+    Value value;
+    if (auto b = node.value<bool>(); node.is_boolean())
+      value = *b;
+    else if (node.is_integer())
+      value = *node.value<std::int64_t>();
+    else if (node.is_floating_point())
+      value = *node.value<double>();
+    else if (node.is_string())
+      value = *node.value<std::string>();
+    else
+      throw InputError(fmt::format("case file '{}': key '{}' must be a boolean, number or string", name, k));
+    if (k == "kind")
+    {
+      if (!std::holds_alternative<std::string>(value))
+        throw InputError(fmt::format("case file '{}': 'kind' must be a string", name));
+      file.kind = std::get<std::string>(value);
+    }
+    else
+      file.values[k] = value;
+  }
+  if (file.kind.empty())
+    throw InputError(fmt::format("case file '{}': [scene] has no 'kind'", name));
+  return file;
+}
+
+Parameters resolve_case(const CaseFile& file, const Schema& schema, const std::vector<std::string>& overrides,
+                        const std::string& origin)
+{
+  Parameters params(schema);
+  for (const auto& [key, value] : file.values)
+    params.set(key, value, origin);
+  for (const std::string& assignment : overrides)
+  {
+    const auto eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw InputError(fmt::format("--set '{}': expected key=value", assignment));
+    std::string key = assignment.substr(0, eq);
+    if (key.rfind("scene.", 0) == 0)
+      key = key.substr(6);
+    params.set_text(key, assignment.substr(eq + 1), fmt::format("--set {}", assignment));
+  }
+  return params;
+}
+} // namespace rollcheck::io
