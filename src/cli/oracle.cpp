@@ -1,0 +1,11 @@
+#include "cli/cli.h"
+
+namespace rollcheck::cli
+{
+void add_oracle_command(CLI::App& app)
+{
+  CLI::App* sub = app.add_subcommand("oracle", "Not built yet (issue 3)");
+  sub->allow_extras();
+  on_run(sub, [] { return not_built("oracle", "issue 3"); });
+}
+} // namespace rollcheck::cli
