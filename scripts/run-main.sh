@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Quick start 1: install what is missing, build, run the main job
+# (`rollcheck validate` on the embedded default cases, cases/default/).
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+bash "$here/scripts/setup.sh"
+export OPENBLAS_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+mkdir -p "$here/results"
+"$here/build/src/cli/rollcheck" validate --json "$here/results/validate.json" "$@"
+echo "summary: $here/results/validate.json"

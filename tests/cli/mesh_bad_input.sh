@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Bad input to `rollcheck mesh` and `rollcheck run`: exit 2, a message naming
+# the input, and nothing written.
+set -u
+bin=$1; tmp=$3
+rm -rf "$tmp"; mkdir -p "$tmp/in"; in=$tmp/in
+fail=0
+expect() { # expect CODE PATTERN -- command...
+  local code=$1 pattern=$2; shift 3
+  local err; err=$("$@" 2>&1 >/dev/null); local rc=$?
+  if [[ $rc -ne $code ]]; then echo "FAIL ($rc != $code): $*"; echo "$err"; fail=1; return; fi
+  if ! grep -qiE "$pattern" <<<"$err"; then echo "FAIL (message lacks '$pattern'): $*"; echo "$err"; fail=1; fi
+}
+expect 2 "radius.*nan" -- "$bin" mesh --body oloid --radius nan --out "$tmp/a.obj"
+expect 2 "radius.*-1" -- "$bin" mesh --body oloid --radius -1 --out "$tmp/b.obj"
+expect 2 "ratio.*rho" -- "$bin" mesh --body roller --ratio 0 --out "$tmp/c.obj"
+expect 2 "flat or degenerate" -- "$bin" mesh --body roller --family centre-line --theta 0 --offset 0 --out "$tmp/d.obj"
+expect 2 "cannot be opened" -- "$bin" mesh --mesh "$in/missing.obj" --out "$tmp/e.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' > "$in/open.obj"
+expect 2 "open.obj.*(watertight|fewer than 4)" -- "$bin" mesh --mesh "$in/open.obj" --out "$tmp/f.obj"
+printf 'v 0 0 x\n' > "$in/malformed.obj"
+expect 2 "malformed.obj.*not a number" -- "$bin" mesh --mesh "$in/malformed.obj" --out "$tmp/g.obj"
+printf '[scene]\nkind = "mesh"\nbody = "oloid"\nwibble = 3\n' > "$in/unknown_key.toml"
+expect 2 "unknown_key.toml.*unknown key 'wibble'" -- "$bin" run "$in/unknown_key.toml"
+printf '[scene\nkind = "mesh"\n' > "$in/malformed.toml"
+expect 2 "malformed.toml.*malformed TOML" -- "$bin" run "$in/malformed.toml"
+expect 2 "does not exist" -- "$bin" run "$in/none.toml"
+printf '[scene]\nkind = "mesh"\n' > "$in/good.toml"
+expect 2 "points.*integer" -- "$bin" run "$in/good.toml" --set points=many
+expect 2 "unknown key .nope." -- "$bin" run "$in/good.toml" --set nope=1
+expect 2 "not built yet" -- "$bin" report
+# Nothing was written for any failing call.
+if ls -A "$tmp" | grep -v '^in$' | grep -q .; then echo "FAIL: output written on error:"; ls -A "$tmp"; fail=1; fi
+if false | grep -qE '\.(obj|stl|ply|off|msh)$|\.tmp'; then echo "FAIL: output written on error:"; ls "$tmp"; fail=1; fi
+# And the good path works through a case file with an override.
+out=$("$bin" -q run "$(dirname "$0")/../../cases/mesh_oloid.toml" --set points=200 --set out="$tmp/ok.off" --json -) || { echo "FAIL: good case"; fail=1; }
+grep -q '"convex": true' <<<"$out" || { echo "FAIL: good case not convex"; fail=1; }
+[[ -s "$tmp/ok.off" ]] || { echo "FAIL: good case wrote nothing"; fail=1; }
+exit $fail
