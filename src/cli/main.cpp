@@ -4,6 +4,8 @@
 #include "geometry/error.h"
 #include "rollcheck_version.h"
 #include <map>
+#include <mpi.h>
+#include <petscsys.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
@@ -27,9 +29,32 @@ int not_built(const std::string& name, const std::string& issue)
 }
 } // namespace rollcheck::cli
 
+namespace
+{
+/// MPI lives for the whole run (batch spreads cases over ranks, FEM solves
+/// use PETSc); PETSc is started by whoever needs it and ended here.
+struct MpiSession
+{
+  MpiSession(int& argc, char**& argv)
+  {
+    int provided;
+    MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  }
+  ~MpiSession()
+  {
+    PetscBool petsc_running = PETSC_FALSE;
+    PetscInitialized(&petsc_running);
+    if (petsc_running)
+      PetscFinalize();
+    MPI_Finalize();
+  }
+};
+} // namespace
+
 int main(int argc, char** argv)
 {
   using namespace rollcheck;
+  MpiSession mpi(argc, argv);
   spdlog::set_default_logger(spdlog::stderr_color_mt("rollcheck"));
   spdlog::set_pattern("[%^%l%$] %v");
 

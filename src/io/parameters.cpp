@@ -130,6 +130,9 @@ SchemaOptions::SchemaOptions(CLI::App* sub, const Schema& schema) : schema_(&sch
       continue;
     }
     CLI::Option* opt = sub->add_option(p.flag, given_[p.key], help);
+    opt->type_name(std::holds_alternative<std::int64_t>(p.default_value) ? "INT"
+                   : std::holds_alternative<double>(p.default_value) ? "NUMBER"
+                                                                    : "TEXT");
     if (!p.choices.empty())
       opt->check(CLI::IsMember(p.choices));
   }
