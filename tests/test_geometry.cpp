@@ -7,7 +7,10 @@
 #include "geometry/primitives.h"
 #include "geometry/read_mesh.h"
 #include "geometry/two_circle_roller.h"
+#include "geometry/tetrahedralize.h"
 #include "geometry/write_mesh.h"
+#include <Eigen/Geometry>
+#include <gmsh.h>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -219,4 +222,34 @@ TEST(BadInput, RaisesInputErrorWithAMessage)
   SurfaceMesh inward = icosphere(1, 1);
   inward.faces.col(1).swap(inward.faces.col(2));
   EXPECT_FALSE(check_mesh(inward).outward);
+}
+
+TEST(VolumeMesh, TetrahedraFillTheBody)
+{
+  // The tetrahedra of the .msh must fill exactly the solid the surface bounds.
+  const SurfaceMesh body = make_body({.body = "oloid", .points = 80});
+  const std::filesystem::path dir = std::filesystem::path(ROLLCHECK_TEST_TMP) / "volume_mesh";
+  std::filesystem::create_directories(dir);
+  const auto info = write_tetrahedral_mesh(body, 0.2, dir / "oloid.msh");
+  EXPECT_GT(info.tetrahedra, 100u);
+  gmsh::initialize();
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::open((dir / "oloid.msh").string());
+  std::vector<std::size_t> tags, nodes;
+  gmsh::model::mesh::getElementsByType(4, tags, nodes);
+  double volume = 0;
+  for (std::size_t t = 0; t < tags.size(); ++t)
+  {
+    Eigen::Vector3d p[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      std::vector<double> coord, param;
+      gmsh::model::mesh::getNode(nodes[4 * t + k], coord, param);
+      p[k] = Eigen::Vector3d(coord[0], coord[1], coord[2]);
+    }
+    volume += std::abs((p[1] - p[0]).cross(p[2] - p[0]).dot(p[3] - p[0])) / 6;
+  }
+  gmsh::finalize();
+  EXPECT_EQ(tags.size(), info.tetrahedra);
+  EXPECT_LT(relative(volume, mass_properties(body).volume_m3), 1e-10);
 }
