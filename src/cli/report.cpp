@@ -1,11 +1,29 @@
+// `rollcheck report --from STORE`: the Markdown and HTML report of a results
+// store, with the plots of postprocess/ (README "Report").
 #include "cli/cli.h"
+#include "io/batch_report.h"
+#include <fmt/format.h>
 
 namespace rollcheck::cli
 {
 void add_report_command(CLI::App& app)
 {
-  CLI::App* sub = app.add_subcommand("report", "Not built yet (issue 6)");
-  sub->allow_extras();
-  on_run(sub, [] { return not_built("report", "issue 6"); });
+  CLI::App* sub = app.add_subcommand("report", "Write the Markdown + HTML report (plots, tables) of a results store");
+  static std::string store, folder, json_path;
+  static std::string scripts = io::default_scripts_folder().string();
+  static std::string python = "/usr/bin/python3";
+  sub->add_option("--from", store, "Results store written by `rollcheck batch` (DIR/results.h5)")->required();
+  sub->add_option("--out", folder, "Report folder, replaced whole (default: 'report' beside the store)");
+  sub->add_option("--scripts", scripts, "Folder of the plotting scripts (default: the source tree's postprocess/)");
+  sub->add_option("--python", python, "Python with matplotlib and h5py (default: Debian's /usr/bin/python3)");
+  add_json_option(sub, json_path);
+  on_run(sub, [] {
+    const std::filesystem::path target =
+        folder.empty() ? std::filesystem::absolute(store).parent_path() / "report" : std::filesystem::path(folder);
+    const io::ReportFiles report = io::write_report(store, target, scripts, python);
+    fmt::print("report: {}\nmarkdown: {}\n", report.html.string(), report.markdown.string());
+    emit_json(json_path, {{"html", report.html.string()}, {"markdown", report.markdown.string()}});
+    return 0;
+  });
 }
 } // namespace rollcheck::cli

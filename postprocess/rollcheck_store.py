@@ -1,0 +1,118 @@
+"""Reading a rollcheck results store (HDF5, layout "rollcheck-results-1").
+
+The layout is documented in src/io/results_store.h and in the README
+("Results store"): /cases/<name>/ per case, with the record's fields as
+attributes, the resolved parameters as attributes of ./parameters, the
+scene's JSON summary mapped to groups and datasets under ./summary, and the
+case's output files in ./files.
+
+Run with Debian's interpreter, /usr/bin/python3 (matplotlib, h5py).
+"""
+from dataclasses import dataclass, field
+
+import h5py
+import numpy as np
+
+
+@dataclass
+class Case:
+    name: str
+    attrs: dict                                   # status, kind, wall_s, hash, message, ...
+    parameters: dict                              # resolved parameters of the case file
+    summary: dict = field(default_factory=dict)   # the scene's JSON summary, as numpy values
+    files: list = field(default_factory=list)     # paths relative to the store's folder
+
+    @property
+    def kind(self):
+        return self.attrs.get("kind", "")
+
+    @property
+    def ok(self):
+        return self.attrs.get("status") == "ok"
+
+
+def _value(x):
+    """An HDF5 value as plain Python/numpy: str for strings, None for an empty dataspace."""
+    if isinstance(x, h5py.Empty):
+        return None
+    if isinstance(x, bytes):
+        return x.decode("utf-8")
+    if isinstance(x, np.ndarray) and x.dtype.kind == "O":
+        return [v.decode("utf-8") if isinstance(v, bytes) else v for v in x.tolist()]
+    if isinstance(x, np.generic):
+        return x.item()
+    return x
+
+
+def _attrs(obj):
+    return {k: _value(v) for k, v in obj.attrs.items()}
+
+
+def _tree(group):
+    """A summary group as the JSON it came from: dicts, lists (json_array groups), numpy arrays, scalars."""
+    out = {}
+    for key, item in group.items():
+        if isinstance(item, h5py.Group):
+            out[key] = _tree(item)
+        else:
+            out[key] = _value(item[()])
+    if group.attrs.get("json_array", 0) == 1:
+        return [out[k] for k in sorted(out, key=int)]
+    return out
+
+
+def load_cases(path):
+    """Every case of the store, in the batch's order, and the store's root attributes."""
+    with h5py.File(path, "r") as f:
+        root = _attrs(f)
+        cases = []
+        # /cases tracks creation order, so h5py lists the cases in the batch's order.
+        for name, g in f["cases"].items():
+            cases.append(Case(
+                name=name,
+                attrs=_attrs(g),
+                parameters=_attrs(g["parameters"]) if "parameters" in g else {},
+                summary=_tree(g["summary"]) if "summary" in g else {},
+                files=_value(g["files"][()]) if "files" in g else [],
+            ))
+    return root, cases
+
+
+def walk(tree, prefix=""):
+    """(path, value) for every leaf of a summary tree; list elements get their index."""
+    items = tree.items() if isinstance(tree, dict) else enumerate(tree)
+    for key, value in items:
+        path = f"{prefix}/{key}" if prefix else str(key)
+        if isinstance(value, (dict, list)) and not _is_numeric_list(value):
+            yield from walk(value, path)
+        else:
+            yield path, value
+
+
+def _is_numeric_list(value):
+    return isinstance(value, list) and all(isinstance(v, (int, float)) for v in value)
+
+
+def scalars(tree):
+    """The top-level numbers, booleans and strings of a summary, by key."""
+    return {k: v for k, v in tree.items()
+            if v is None or isinstance(v, (bool, int, float, str))}
+
+
+def arrays(tree, ndim=None):
+    """(path, array) of every numeric array in a summary tree, optionally of one dimension."""
+    for path, value in walk(tree):
+        if isinstance(value, np.ndarray) and value.dtype.kind in "biuf" and value.ndim > 0:
+            if ndim is None or value.ndim == ndim:
+                yield path, value
+
+
+def label(case, keys=("body", "model", "degree", "oracle")):
+    """A short label: the case name and its distinguishing parameters."""
+    parts = [f"{k}={case.parameters[k]}" for k in keys
+             if k in case.parameters and case.parameters[k] not in ("", None)]
+    return case.name + (f" ({', '.join(parts)})" if parts else "")
+
+
+class Skip(Exception):
+    """A plot that the store holds no data for; the message says which data it needs."""

@@ -1,0 +1,17 @@
+#pragma once
+// Layer: contact. Owns the physics evaluated on a rolling trajectory: Hertz
+// point-contact pressure per face from discrete curvatures (SDS and the peak
+// pressure statistics), fatigue damage by Basquin's law with Miner's rule and an
+// endurance limit (FDS), frictional heat mu p v_slide (TDS), Archard wear
+// volume and depth (WDS_vol, WDS_depth), each a distribution score on the
+// oracle layer's template; and the analytic Hertz formulas (hertz.h). Every
+// material and load parameter is a named option whose default is the
+// preprint's value. Knows nothing of how the trajectory was produced.
+#include "contact/contact_parameters.h"
+#include "contact/face_curvature.h"
+#include "contact/face_pressure.h"
+#include "contact/fatigue.h"
+#include "contact/hertz.h"
+#include "contact/sliding_speed.h"
+#include "contact/trajectory_scores.h"
+#include "contact/wear.h"

@@ -1,0 +1,12 @@
+#pragma once
+// Layer: fem. Owns the elastic contact of a body against a rigid plane, solved
+// by the finite element method on DOLFINx 0.5.2 with a penalty: the UFL forms
+// (forms/hertz.py), the gmsh scene meshes graded towards the contact (quarter
+// disc for the axisymmetric and plane-strain models, quarter hemisphere in
+// 3D), the load-controlled Newton/Krylov solves with checked convergence, and
+// the post-processing that sets every result next to Hertz theory
+// (contact/hertz.h). Knows nothing of files beyond its own XDMF field output,
+// nor of the command line.
+#include "fem/hertz_setup.h"
+#include "fem/hertz_solve.h"
+#include "fem/petsc_session.h"

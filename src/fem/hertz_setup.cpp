@@ -1,0 +1,119 @@
+#include "fem/hertz_setup.h"
+#include "contact/hertz.h"
+#include "geometry/error.h"
+#include <cmath>
+#include <fmt/format.h>
+
+namespace rollcheck::fem
+{
+std::string model_name(Model model)
+{
+  switch (model)
+  {
+  case Model::axisymmetric: return "axi";
+  case Model::plane_strain: return "plane-strain";
+  case Model::solid: return "3d";
+  }
+  return "?";
+}
+
+Model parse_model(const std::string& name, const std::string& origin)
+{
+  for (Model m : {Model::axisymmetric, Model::plane_strain, Model::solid})
+    if (name == model_name(m))
+      return m;
+  throw InputError(fmt::format("{}: model must be axi, plane-strain or 3d, got '{}'", origin, name));
+}
+
+int default_refine(Model model, int degree)
+{
+  // Elements across the contact radius: 10 * 2^(refine / 2); see the
+  // convergence table in the README for the errors these levels give.
+  switch (model)
+  {
+  case Model::axisymmetric: return degree == 1 ? 4 : 2;
+  case Model::plane_strain: return degree == 1 ? 4 : 2;
+  case Model::solid: return degree == 1 ? 2 : 0;
+  }
+  return 0;
+}
+
+void validate(const HertzSetup& s)
+{
+  auto positive = [](double value, const char* what) {
+    if (!std::isfinite(value) || value <= 0)
+      throw InputError(fmt::format("hertz: {} must be positive and finite, got {}", what, value));
+  };
+  positive(s.radius_m, "radius_m (--radius)");
+  positive(s.youngs_modulus_pa, "youngs_modulus_pa (--E)");
+  positive(s.force_n, "force_n (--load)");
+  positive(s.length_m, "length_m (--length)");
+  positive(s.penalty_c, "penalty_c (--penalty-c)");
+  positive(s.force_rtol, "force_rtol (--force-rtol)");
+  if (!std::isfinite(s.poisson_ratio) || s.poisson_ratio <= -1.0 || s.poisson_ratio >= 0.5)
+    throw InputError(fmt::format("hertz: poisson_ratio (--nu) must lie in (-1, 0.5), got {}", s.poisson_ratio));
+  if (s.degree != 1 && s.degree != 2)
+    throw InputError(fmt::format("hertz: degree (--degree) must be 1 or 2, got {}", s.degree));
+  if (s.refine > 12)
+    throw InputError(fmt::format("hertz: refine (--refine) must be at most 12, got {}", s.refine));
+  if (!std::isfinite(s.contact_element_size_m) || s.contact_element_size_m < 0)
+    throw InputError(fmt::format("hertz: contact_element_size_m (--contact-element-size) must be >= 0, got {}",
+                                 s.contact_element_size_m));
+  if (s.contact_element_size_m >= s.radius_m / 4)
+    throw InputError(fmt::format("hertz: contact_element_size_m {} m is not small against the radius {} m",
+                                 s.contact_element_size_m, s.radius_m));
+  if (s.force_rtol >= 0.01)
+    throw InputError(fmt::format("hertz: force_rtol must be below 0.01, got {}", s.force_rtol));
+}
+
+HertzReference hertz_reference(const HertzSetup& s)
+{
+  const double E = s.youngs_modulus_pa, nu = s.poisson_ratio;
+  HertzReference r{};
+  r.effective_modulus_pa = s.elastic_plane ? contact::effective_modulus_identical_bodies(E, nu)
+                                           : contact::effective_modulus_rigid_plane(E, nu);
+  // Against a rigid plane the body alone supplies E*: E_body / (1 - nu^2) = E*.
+  r.body_modulus_pa = r.effective_modulus_pa * (1 - nu * nu);
+  if (s.model == Model::plane_strain)
+  {
+    r.load = s.force_n / s.length_m;
+    const contact::LineHertz h = contact::line_contact(r.load, s.radius_m, r.effective_modulus_pa, nu);
+    r.contact_size_m = h.half_width_m;
+    r.peak_pressure_pa = h.peak_pressure_pa;
+    r.max_shear_pa = h.max_shear_pa;
+    r.max_shear_depth_m = h.max_shear_depth_m;
+    r.max_von_mises_pa = h.max_von_mises_pa;
+    r.max_von_mises_depth_m = h.max_von_mises_depth_m;
+  }
+  else
+  {
+    r.load = s.force_n;
+    const contact::PointHertz h = contact::point_contact(r.load, s.radius_m, r.effective_modulus_pa, nu);
+    r.contact_size_m = h.contact_radius_m;
+    r.peak_pressure_pa = h.peak_pressure_pa;
+    r.approach_m = h.approach_m;
+    r.max_shear_pa = h.max_shear_pa;
+    r.max_shear_depth_m = h.max_shear_depth_m;
+    r.max_von_mises_pa = h.max_von_mises_pa;
+    r.max_von_mises_depth_m = h.max_von_mises_depth_m;
+  }
+  return r;
+}
+
+MeshGrading mesh_grading(const HertzSetup& s, const HertzReference& ref)
+{
+  const int refine = s.refine >= 0 ? s.refine : default_refine(s.model, s.degree);
+  MeshGrading g{};
+  g.contact_size_m = s.contact_element_size_m > 0 ? s.contact_element_size_m
+                                                  : ref.contact_size_m / (10.0 * std::pow(2.0, refine / 2.0));
+  // The fine ball covers the contact (radius c_H) with a margin for the
+  // penalty's smearing of the edge, and the depth of the subsurface maxima
+  // (0.48 a, 0.79 b).
+  g.fine_radius_m = std::max(1.25 * ref.contact_size_m, 2 * g.contact_size_m);
+  // Sizes grow by 25 % of the distance: about 1 / 0.25 * ln(h_far / h_c)
+  // element layers from the contact zone to the far field.
+  g.growth = 0.25;
+  g.far_size_m = s.radius_m / 5;
+  return g;
+}
+} // namespace rollcheck::fem

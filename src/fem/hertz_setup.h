@@ -1,0 +1,95 @@
+#pragma once
+// What a Hertz verification run is given: the model, the body, the load and
+// the numerical choices, with the defaults that the penalty and convergence
+// studies justify (README, "Hertz FEM"). Also the analytic reference the run
+// is compared with, and the mesh sizes derived from it.
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace rollcheck::fem
+{
+/// axisymmetric: sphere on plane in (r, z); plane_strain: cylinder on plane
+/// in (x, z), per unit length; solid: 3D hemisphere (a quarter by symmetry).
+enum class Model
+{
+  axisymmetric,
+  plane_strain,
+  solid
+};
+
+/// "axi", "plane-strain", "3d" (the --model spellings).
+std::string model_name(Model model);
+/// Inverse of model_name; InputError naming `origin` for anything else.
+Model parse_model(const std::string& name, const std::string& origin);
+
+struct HertzSetup
+{
+  Model model = Model::axisymmetric;
+  double radius_m = 0.01;             ///< sphere or cylinder radius R
+  double youngs_modulus_pa = 200e9;   ///< steel
+  double poisson_ratio = 0.3;         ///< steel
+  double force_n = 100.0;             ///< total force on the body
+  /// Plane strain: axial length of the cylinder that carries force_n; the
+  /// model sees force_n / length_m per unit length. Default 2R: a roller as
+  /// long as it is wide.
+  double length_m = 0.02;
+  int degree = 1;                     ///< Lagrange degree of the displacement, 1 or 2
+  /// Contact-zone element size h_c = c_H / (10 * 2^(refine / 2)), c_H the
+  /// Hertz radius or half-width: refine 0 puts 10 elements across it, each
+  /// step adds a factor sqrt(2). Negative: the model's default (default_refine).
+  int refine = -1;
+  /// kappa = penalty_c * E / h_c. The penalty study shows the error falls as
+  /// 1 / c until the discretisation error takes over; see default in .cpp.
+  double penalty_c = default_penalty_c;
+  /// Compare with the two-identical-bodies E* = E / (2 (1 - nu^2)) (the
+  /// preprint's choice): the FEM body then gets the modulus E / 2 against the
+  /// rigid plane, which is Hertz-equivalent for identical materials.
+  bool elastic_plane = false;
+  /// Contact-zone element size in m; overrides refine when > 0 (used by the
+  /// hard cases: a fixed mesh under a varying load).
+  double contact_element_size_m = 0.0;
+  double force_rtol = 1e-6;           ///< load control: |F_h - F| / F at the end
+  /// Extra PETSc options, e.g. "-hertz_ksp_type gmres"; the solver's prefix is "hertz_".
+  std::string petsc_options;
+  /// If set, the fields are written there (XDMF + HDF5).
+  std::filesystem::path xdmf_path;
+
+  static constexpr double default_penalty_c = 100.0;
+};
+
+/// The model's default refine level for a degree: the coarsest level at which
+/// the model meets its tolerances (README, convergence table).
+int default_refine(Model model, int degree);
+
+/// InputError naming the bad field; called by solve_hertz.
+void validate(const HertzSetup& setup);
+
+/// Hertz theory for the setup, in the model's terms.
+struct HertzReference
+{
+  double effective_modulus_pa;   ///< E* that Hertz uses
+  double body_modulus_pa;        ///< the modulus the FEM body gets
+  double contact_size_m;         ///< a (point) or b (line)
+  double peak_pressure_pa;
+  double load;                   ///< F (N) or F / L (N/m)
+  std::optional<double> approach_m; ///< point contact only: a^2 / R
+  double max_shear_pa;
+  double max_shear_depth_m;
+  double max_von_mises_pa;
+  double max_von_mises_depth_m;
+};
+HertzReference hertz_reference(const HertzSetup& setup);
+
+/// Element sizes of the scene mesh: h_c in the contact zone (a ball of radius
+/// fine_radius_m about the first point of contact), growing linearly with
+/// the distance beyond it at `growth` m/m up to far_size_m.
+struct MeshGrading
+{
+  double contact_size_m;
+  double fine_radius_m;
+  double growth;
+  double far_size_m;
+};
+MeshGrading mesh_grading(const HertzSetup& setup, const HertzReference& reference);
+} // namespace rollcheck::fem

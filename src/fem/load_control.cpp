@@ -1,0 +1,45 @@
+#include "fem/load_control.h"
+#include "geometry/error.h"
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+namespace rollcheck::fem
+{
+LoadControlReport reach_force(PenaltyContact& problem, double target, double first_approach_m,
+                              double first_shift_m, double exponent, double rtol)
+{
+  constexpr int max_steps = 20;
+  LoadControlReport report;
+  problem.start_translated(first_shift_m, first_approach_m);
+  double previous_approach = 0, previous_force = 0;
+  for (int step = 1; step <= max_steps; ++step)
+  {
+    const NewtonReport newton = problem.solve();
+    report.newton.newton_iterations += newton.newton_iterations;
+    report.newton.krylov_iterations += newton.krylov_iterations;
+    report.newton.line_search_halvings += newton.line_search_halvings;
+    report.newton.final_relative_increment = newton.final_relative_increment;
+    report.newton.assembly_s += newton.assembly_s;
+    report.newton.solve_s += newton.solve_s;
+    report.load_steps = step;
+    report.approach_m = problem.approach_m();
+    report.force = problem.reaction_force_n();
+    spdlog::debug("load step {}: approach {:.9e} m, force {:.9e}, {} Newton its", step, report.approach_m,
+                  report.force, newton.newton_iterations);
+    if (!(report.force > 0))
+      throw ComputationError(fmt::format("load control: no contact force at approach {:.6e} m", report.approach_m));
+    if (std::abs(report.force - target) <= rtol * target)
+      return report;
+    if (step > 1 && report.approach_m != previous_approach && report.force != previous_force)
+      exponent = std::clamp(std::log(report.force / previous_force) / std::log(report.approach_m / previous_approach),
+                            0.5, 3.0);
+    previous_approach = report.approach_m;
+    previous_force = report.force;
+    problem.rescale_approach(report.approach_m * std::pow(target / report.force, 1.0 / exponent));
+  }
+  throw ComputationError(fmt::format("load control did not reach {:.6g} to {:.1e} in {} solves (last {:.9g})", target,
+                                     rtol, max_steps, report.force));
+}
+} // namespace rollcheck::fem

@@ -1,0 +1,26 @@
+#pragma once
+// Force control by displacement control: the top face's approach delta is
+// adjusted until the computed force F_h(delta) meets the target F to a
+// relative tolerance. The force grows like a power of the approach (Hertz:
+// F ~ delta^(3/2) for a point, close to delta^1 for a line), so the update is
+// a secant on log F against log delta:
+//   delta_{k+1} = delta_k (F / F_k)^(1 / n_k),
+// n_0 the Hertz exponent, then n_k = ln(F_k / F_{k-1}) / ln(delta_k / delta_{k-1}).
+// Each solve starts from the previous field scaled to the new approach.
+#include "fem/penalty_contact.h"
+
+namespace rollcheck::fem
+{
+struct LoadControlReport
+{
+  double approach_m = 0;
+  double force = 0;         ///< computed, N or N/m (reaction at the top face)
+  int load_steps = 0;       ///< Newton solves
+  NewtonReport newton;      ///< summed over the solves
+};
+
+/// `first_approach_m` and `first_shift_m` start the first solve (see
+/// PenaltyContact::start_translated); `exponent` is n_0.
+LoadControlReport reach_force(PenaltyContact& problem, double target_force, double first_approach_m,
+                              double first_shift_m, double exponent, double rtol);
+} // namespace rollcheck::fem

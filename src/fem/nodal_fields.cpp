@@ -1,0 +1,91 @@
+#include "fem/nodal_fields.h"
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <dolfinx/fem/assembler.h>
+#include <dolfinx/fem/utils.h>
+#include <stdexcept>
+
+namespace rollcheck::fem
+{
+namespace
+{
+using T = double;
+namespace dfem = dolfinx::fem;
+
+/// Assembled and ghost-accumulated load vector of a linear form.
+dolfinx::la::Vector<T> assemble_load(const dfem::Form<T>& form)
+{
+  const auto& V = *form.function_spaces()[0];
+  dolfinx::la::Vector<T> b(V.dofmap()->index_map, V.dofmap()->index_map_bs());
+  dfem::assemble_vector<T>(b.mutable_array(), form);
+  b.scatter_rev(std::plus<T>());
+  return b;
+}
+
+void require_same_layout(const dfem::FunctionSpace& a, const dfem::FunctionSpace& b)
+{
+  const auto& la = a.dofmap()->list().array();
+  const auto& lb = b.dofmap()->list().array();
+  if (!std::equal(la.begin(), la.end(), lb.begin(), lb.end()))
+    throw std::logic_error("nodal recovery: P1 spaces with different node numbering");
+}
+} // namespace
+
+NodalFields recover_nodal_fields(const PenaltyContact& problem)
+{
+  const ContactForms& forms = problem.forms();
+  auto mesh = std::const_pointer_cast<dolfinx::mesh::Mesh>(problem.mesh());
+  auto Q = std::make_shared<dfem::FunctionSpace>(dfem::create_functionspace(forms.scalar_p1_space, "v_0", mesh));
+  auto S = std::make_shared<dfem::FunctionSpace>(dfem::create_functionspace(forms.tensor_p1_space, "v_0", mesh));
+  auto V1 = std::make_shared<dfem::FunctionSpace>(dfem::create_functionspace(forms.vector_p1_space, "v_0", mesh));
+  require_same_layout(*Q, *S);
+  require_same_layout(*Q, *V1);
+
+  const std::map<std::string, std::shared_ptr<const dfem::Function<T>>> coefficients
+      = {{"u_" + forms.suffix, problem.displacement()}};
+  auto load = [&](ufcx_form* form, std::shared_ptr<const dfem::FunctionSpace> space) {
+    return assemble_load(
+        dfem::create_form<T>(*form, {space}, coefficients, problem.constants(), problem.subdomains(), mesh));
+  };
+  const auto volume_mass = load(forms.volume_mass, Q);
+  const auto contact_mass = load(forms.contact_mass, Q);
+  const auto pressure_load = load(forms.pressure_load, Q);
+  const auto stress_load = load(forms.stress_load, S);
+
+  NodalFields f;
+  f.displacement = std::make_shared<dfem::Function<T>>(V1);
+  f.displacement->name = "displacement";
+  f.displacement->interpolate(*problem.displacement());
+  f.stress = std::make_shared<dfem::Function<T>>(S);
+  f.stress->name = "stress";
+  f.von_mises = std::make_shared<dfem::Function<T>>(Q);
+  f.von_mises->name = "von_mises";
+  f.max_shear = std::make_shared<dfem::Function<T>>(Q);
+  f.max_shear->name = "max_shear";
+  f.pressure = std::make_shared<dfem::Function<T>>(Q);
+  f.pressure->name = "contact_pressure";
+
+  const std::int32_t n = Q->dofmap()->index_map->size_local();
+  std::span<T> p = f.pressure->x()->mutable_array();
+  std::span<T> sigma = f.stress->x()->mutable_array();
+  std::span<T> vm = f.von_mises->x()->mutable_array();
+  std::span<T> tau = f.max_shear->x()->mutable_array();
+  f.contact_weight.assign(contact_mass.array().begin(), contact_mass.array().begin() + n);
+  for (std::int32_t i = 0; i < n; ++i)
+  {
+    const double w = f.contact_weight[i];
+    p[i] = w > 0 ? pressure_load.array()[i] / w : 0.0;
+    Eigen::Matrix3d s;
+    for (int j = 0; j < 9; ++j)
+      s(j / 3, j % 3) = sigma[9 * i + j] = stress_load.array()[9 * i + j] / volume_mass.array()[i];
+    const Eigen::Matrix3d dev = s - s.trace() / 3 * Eigen::Matrix3d::Identity();
+    vm[i] = std::sqrt(1.5 * dev.cwiseProduct(dev).sum());
+    const Eigen::Vector3d principal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(s, Eigen::EigenvaluesOnly).eigenvalues();
+    tau[i] = (principal.maxCoeff() - principal.minCoeff()) / 2;
+  }
+  for (const auto& field : {f.pressure, f.stress, f.von_mises, f.max_shear})
+    field->x()->scatter_fwd();
+  return f;
+}
+} // namespace rollcheck::fem

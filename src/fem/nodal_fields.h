@@ -1,0 +1,27 @@
+#pragma once
+// Post-processing fields on the P1 nodes of the scene mesh, recovered by
+// lumped L2 projection (nodal averages weighted by the P1 basis functions):
+//   contact pressure  p_i = int p phi_i dS / int phi_i dS   (contact surface)
+//   stress            sigma_i = int sigma phi_i dV / int phi_i dV
+// with the axisymmetric weight 2 pi r in both integrals. The pressure is thus
+// the nodal contact force over the node's tributary area, which smooths the
+// penalty's quadrature-point pressure and conserves the total force.
+// von Mises and the maximum shear (Tresca, (sigma_1 - sigma_3) / 2) are
+// evaluated from the recovered nodal stress.
+#include "fem/penalty_contact.h"
+
+namespace rollcheck::fem
+{
+struct NodalFields
+{
+  std::shared_ptr<dolfinx::fem::Function<double>> displacement; ///< P1 "displacement" (interpolated from P2)
+  std::shared_ptr<dolfinx::fem::Function<double>> stress;       ///< P1 3x3 "stress", (x|r, y|theta, z)
+  std::shared_ptr<dolfinx::fem::Function<double>> von_mises;    ///< P1 "von_mises"
+  std::shared_ptr<dolfinx::fem::Function<double>> max_shear;    ///< P1 "max_shear"
+  std::shared_ptr<dolfinx::fem::Function<double>> pressure;     ///< P1 "contact_pressure", 0 off the surface
+  /// Per owned P1 node: lumped contact-surface weight (0 off the contact surface).
+  std::vector<double> contact_weight;
+};
+
+NodalFields recover_nodal_fields(const PenaltyContact& problem);
+} // namespace rollcheck::fem

@@ -1,0 +1,101 @@
+#pragma once
+// The discrete penalty-contact problem of one scene: displacement field,
+// Dirichlet conditions (symmetry planes, prescribed approach of the top face),
+// and a semismooth Newton solver with an energy line search.
+//
+// Newton: the penalty term <-g>_+ is piecewise linear, so within one set of
+// penetrating quadrature points the problem is linear and Newton ends one
+// step after that set stops changing. The total energy is convex, and a step
+// that raises it is halved (Armijo backtracking on the energy), which makes
+// the iteration globally convergent. Every linear solve's KSPConvergedReason
+// is checked: a diverged solve raises ComputationError, never a result.
+//
+// Linear solver: KSP with options prefix "hertz_". Defaults (overridable by
+// PETSC_OPTIONS or HertzSetup::petsc_options): 2D MUMPS LU; 3D conjugate
+// GMRES with GAMG on an aij matrix with the rigid-body near-nullspace.
+#include "fem/contact_forms.h"
+#include "fem/scene_mesh.h"
+#include <dolfinx/fem/Constant.h>
+#include <dolfinx/fem/DirichletBC.h>
+#include <dolfinx/fem/Form.h>
+#include <dolfinx/fem/Function.h>
+#include <dolfinx/fem/FunctionSpace.h>
+#include <dolfinx/la/Vector.h>
+#include <petscksp.h>
+
+namespace rollcheck::fem
+{
+struct NewtonReport
+{
+  int newton_iterations = 0;
+  int krylov_iterations = 0;
+  int line_search_halvings = 0;
+  double final_relative_increment = 0;
+  double assembly_s = 0;
+  double solve_s = 0;
+};
+
+class PenaltyContact
+{
+public:
+  using T = double;
+  PenaltyContact(const SceneMesh& scene, Model model, int degree, double body_modulus_pa, double poisson_ratio,
+                 double penalty_stiffness_pa_per_m, const std::string& petsc_options);
+  ~PenaltyContact();
+  PenaltyContact(const PenaltyContact&) = delete;
+  PenaltyContact& operator=(const PenaltyContact&) = delete;
+
+  /// Start state for a first solve: the body translated down by `shift_m`,
+  /// its top face at -approach_m.
+  void start_translated(double shift_m, double approach_m);
+  /// Sets the top face's prescribed displacement to -approach_m, scaling the
+  /// current field by the ratio of approaches (a predictor for the next solve).
+  void rescale_approach(double approach_m);
+  double approach_m() const { return -_top_value->value.back(); }
+
+  /// Newton to convergence at the current approach; throws ComputationError
+  /// on a diverged linear solve or when Newton does not converge.
+  NewtonReport solve();
+
+  /// Total force on the whole body (symmetry multiplicity applied), from the
+  /// integrated contact pressure and from the reaction at the top face.
+  double contact_force_n() const;
+  double reaction_force_n() const;
+
+  const ContactForms& forms() const { return _forms; }
+  std::shared_ptr<const dolfinx::fem::Function<T>> displacement() const { return _u; }
+  std::shared_ptr<const dolfinx::mesh::Mesh> mesh() const { return _scene.mesh; }
+  const SceneMesh& scene() const { return _scene; }
+  std::int64_t num_dofs() const;
+  /// Constants shared by all forms of this model/degree, by their UFL names.
+  const std::map<std::string, std::shared_ptr<const dolfinx::fem::Constant<T>>>& constants() const
+  {
+    return _constants;
+  }
+  const std::map<dolfinx::fem::IntegralType, const dolfinx::mesh::MeshTags<int>*>& subdomains() const
+  {
+    return _subdomains;
+  }
+
+private:
+  void assemble_residual(dolfinx::la::Vector<T>& b) const;
+  void assemble_jacobian();
+  double energy() const;
+
+  SceneMesh _scene;
+  ContactForms _forms;
+  std::shared_ptr<dolfinx::fem::FunctionSpace> _V;
+  std::shared_ptr<dolfinx::fem::Function<T>> _u;
+  std::shared_ptr<dolfinx::fem::Constant<T>> _top_value;
+  std::map<std::string, std::shared_ptr<const dolfinx::fem::Constant<T>>> _constants;
+  std::shared_ptr<dolfinx::mesh::MeshTags<int>> _contact_tags;
+  std::map<dolfinx::fem::IntegralType, const dolfinx::mesh::MeshTags<int>*> _subdomains;
+  std::shared_ptr<dolfinx::fem::Form<T>> _residual, _jacobian, _energy, _contact_force;
+  std::vector<std::shared_ptr<const dolfinx::fem::DirichletBC<T>>> _bcs;
+  std::vector<std::int32_t> _top_z_dofs; ///< owned, unrolled
+  int _z_component;
+  Mat _A = nullptr;
+  KSP _ksp = nullptr;
+  MatNullSpace _near_nullspace = nullptr;
+};
+} // namespace rollcheck::fem

@@ -1,0 +1,131 @@
+#include "io/batch_record.h"
+#include "geometry/atomic_file.h"
+#include "geometry/error.h"
+#include <chrono>
+#include <cstring>
+#include <fcntl.h>
+#include <fmt/chrono.h>
+#include <fmt/format.h>
+#include <fstream>
+#include <sys/file.h>
+#include <unistd.h>
+
+namespace rollcheck::io
+{
+namespace fs = std::filesystem;
+
+namespace
+{
+constexpr const char* record_file = "result.json";
+constexpr const char* log_file = "log.txt";
+
+fs::path replaced_folder(const fs::path& out, const std::string& hash) { return out / "cases" / (hash + ".old"); }
+} // namespace
+
+fs::path case_folder(const fs::path& out, const std::string& hash) { return out / "cases" / hash; }
+fs::path case_work_folder(const fs::path& out, const std::string& hash) { return out / "cases" / (hash + ".part"); }
+
+std::optional<nlohmann::json> read_case_record(const fs::path& out, const std::string& hash)
+{
+  std::ifstream in(case_folder(out, hash) / record_file);
+  if (!in)
+    return std::nullopt;
+  nlohmann::json record = nlohmann::json::parse(in, nullptr, false);
+  if (record.is_discarded() || !record.is_object() || record.value("hash", "") != hash)
+    return std::nullopt;
+  return record;
+}
+
+fs::path start_case_work(const fs::path& out, const std::string& hash)
+{
+  const fs::path work = case_work_folder(out, hash);
+  fs::remove_all(work);
+  fs::create_directories(work);
+  return work;
+}
+
+nlohmann::json commit_case_work(const fs::path& out, const std::string& hash, nlohmann::json record)
+{
+  const fs::path work = case_work_folder(out, hash);
+  const bool ok = record.value("status", "") == "ok";
+  nlohmann::json files = nlohmann::json::array();
+  std::vector<fs::path> entries;
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(work))
+    if (entry.is_regular_file())
+      entries.push_back(entry.path());
+  std::sort(entries.begin(), entries.end());
+  for (const fs::path& path : entries)
+  {
+    const fs::path inside = path.lexically_relative(work);
+    if (inside == record_file || inside == log_file)
+      continue;
+    if (ok)
+      files.push_back((fs::path("cases") / hash / inside).string());
+    else
+      fs::remove(path);
+  }
+  record["files"] = files;
+  write_atomically(work / record_file, [&](const fs::path& tmp) {
+    std::ofstream file(tmp);
+    file << record.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+    if (!file)
+      throw ComputationError(fmt::format("batch: cannot write '{}'", (work / record_file).string()));
+  });
+  // A rename cannot replace a non-empty folder: the old result steps aside
+  // first. Killed in between, the next batch finds no result and recomputes.
+  const fs::path target = case_folder(out, hash), old = replaced_folder(out, hash);
+  fs::remove_all(old);
+  if (fs::exists(target))
+    fs::rename(target, old);
+  fs::rename(work, target);
+  fs::remove_all(old);
+  return record;
+}
+
+void discard_case_work(const fs::path& out, const std::string& hash)
+{
+  std::error_code ignored;
+  fs::remove_all(case_work_folder(out, hash), ignored);
+}
+
+void remove_stale_work(const fs::path& out)
+{
+  const fs::path cases = out / "cases";
+  std::vector<fs::path> stale;
+  if (fs::is_directory(cases))
+    for (const fs::directory_entry& entry : fs::directory_iterator(cases))
+    {
+      const std::string ext = entry.path().extension().string();
+      if (ext == ".part" || ext == ".old" || entry.path().filename().string().starts_with("."))
+        stale.push_back(entry.path());
+    }
+  // Temporary files of write_atomically start with a dot and hold ".tmp".
+  for (const fs::directory_entry& entry : fs::directory_iterator(out))
+    if (const std::string name = entry.path().filename().string(); name.starts_with(".") && name.find(".tmp") != std::string::npos)
+      stale.push_back(entry.path());
+  for (const fs::path& path : stale)
+    fs::remove_all(path);
+}
+
+OutputLock::OutputLock(const fs::path& out)
+{
+  const fs::path path = out / ".lock";
+  fd_ = open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd_ < 0)
+    throw InputError(fmt::format("batch --out '{}': cannot create '{}': {}", out.string(), path.string(),
+                                 strerror(errno)));
+  if (flock(fd_, LOCK_EX | LOCK_NB) != 0)
+  {
+    close(fd_);
+    throw InputError(fmt::format("batch --out '{}': another batch is writing there (lock '{}')", out.string(),
+                                 path.string()));
+  }
+}
+
+OutputLock::~OutputLock() { close(fd_); }
+
+std::string utc_now()
+{
+  return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", fmt::gmtime(std::chrono::system_clock::to_time_t(std::chrono::system_clock::now())));
+}
+} // namespace rollcheck::io

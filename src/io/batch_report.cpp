@@ -1,0 +1,54 @@
+#include "io/batch_report.h"
+#include "geometry/error.h"
+#include "io/batch_process.h"
+#include "rollcheck_version.h"
+#include <fmt/format.h>
+#include <fstream>
+#include <unistd.h>
+
+namespace rollcheck::io
+{
+namespace fs = std::filesystem;
+
+fs::path default_scripts_folder() { return fs::path(ROLLCHECK_SOURCE_DIR) / "postprocess"; }
+
+ReportFiles write_report(const fs::path& store, const fs::path& folder, const fs::path& scripts,
+                         const fs::path& python)
+{
+  const fs::path script = scripts / "make_report.py";
+  if (!fs::is_regular_file(store))
+    throw InputError(fmt::format("report --from '{}': no such results store", store.string()));
+  if (!fs::is_regular_file(script))
+    throw InputError(fmt::format("report --scripts '{}': has no make_report.py", scripts.string()));
+  if (access(python.c_str(), X_OK) != 0)
+    throw InputError(fmt::format("report --python '{}': not an executable (Debian's python3 with matplotlib and "
+                                 "h5py is needed: apt-get install python3-matplotlib python3-h5py)",
+                                 python.string()));
+  const fs::path target = fs::absolute(folder).lexically_normal();
+  const fs::path parent = target.parent_path();
+  fs::create_directories(parent);
+  const std::string stem = target.filename().string();
+  const fs::path drawing = parent / fmt::format(".{}.tmp{}", stem, getpid());
+  const fs::path replaced = parent / fmt::format(".{}.old{}", stem, getpid());
+  fs::remove_all(drawing);
+  fs::create_directories(drawing);
+  ChildProcess process({python.string(), script.string(), "--store", fs::absolute(store).string(), "--out",
+                        drawing.string()},
+                       drawing, drawing / "report.log");
+  const ExitStatus status = process.wait();
+  if (!status.success())
+  {
+    std::ifstream log(drawing / "report.log");
+    std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+    fs::remove_all(drawing);
+    if (text.size() > 2000)
+      text = "..." + text.substr(text.size() - 2000);
+    throw ComputationError(fmt::format("report: {} failed ({}):\n{}", script.string(), status.describe(), text));
+  }
+  if (fs::exists(target))
+    fs::rename(target, replaced);
+  fs::rename(drawing, target);
+  fs::remove_all(replaced);
+  return {target / "report.md", target / "report.html"};
+}
+} // namespace rollcheck::io

@@ -1,0 +1,48 @@
+#pragma once
+// The results store of a batch: one HDF5 file holding every case's record,
+// written whole or not at all (a temporary file renamed over the target).
+// The scene summaries are stored generically, so a new scene needs no change
+// here. Layout (README "Results store"):
+//
+//   /                      attrs: layout = "rollcheck-results-1", rollcheck_version,
+//                                 and the batch attributes given (n_cases, ...)
+//   /cases/<name>/         one group per case, <name> the case file's stem;
+//                          attrs: the record's scalar fields (status, message,
+//                                 case_file, hash, kind, wall_s, ...)
+//   /cases/<name>/parameters   attrs: the resolved parameters, one per key, typed
+//   /cases/<name>/summary/     the scene's JSON summary, mapped by
+//   /cases/<name>/files        the output files of the case (paths relative to
+//                              the store's folder), a string dataset
+//
+// JSON -> HDF5 mapping of a summary (write_json_tree):
+//   object                     -> group
+//   number                     -> scalar dataset, int64 or float64
+//   true/false                 -> scalar dataset of the enum {FALSE, TRUE} (numpy bool)
+//   string                     -> scalar dataset, variable-length UTF-8
+//   null                       -> dataset with an empty (H5S_NULL) dataspace
+//   rectangular numeric array  -> n-d dataset (int64 if every entry is an
+//                                 integer or a boolean, else float64;
+//                                 booleans alone give the enum)
+//   array of strings           -> 1-d variable-length string dataset
+//   any other array            -> group with attribute json_array = 1 and
+//                                 members "0", "1", ... mapped the same way
+// A '/' in a key (illegal in HDF5 names) becomes '_'.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace rollcheck::io
+{
+struct StoreEntry
+{
+  std::string name;     ///< group name under /cases
+  nlohmann::json record; ///< object: scalar fields, "parameters", "summary", "files"
+};
+
+/// Writes `entries` to `path` atomically; `attributes` (an object of
+/// scalars) go on the root group. InputError if the folder does not exist,
+/// ComputationError if HDF5 fails.
+void write_results_store(const std::filesystem::path& path, const std::vector<StoreEntry>& entries,
+                         const nlohmann::json& attributes);
+} // namespace rollcheck::io

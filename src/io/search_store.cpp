@@ -1,0 +1,248 @@
+#include "io/search_store.h"
+#include "geometry/atomic_file.h"
+#include "geometry/error.h"
+#include <cmath>
+#include <fmt/format.h>
+#include <hdf5.h>
+#include <limits>
+
+namespace rollcheck::io
+{
+nlohmann::json json_number(double value)
+{
+  if (std::isnan(value))
+    throw ComputationError("a score came out NaN; refusing to write it");
+  if (std::isinf(value))
+    return value > 0 ? "inf" : "-inf";
+  return value;
+}
+
+namespace
+{
+nlohmann::json genome_json(const oracle::GenomeResult& r)
+{
+  nlohmann::json j = {{"theta_deg", r.genome.theta_deg}, {"offset", r.genome.offset},
+                      {"ratio", r.genome.ratio},         {"n_circles", r.genome.n_circles},
+                      {"valid", r.valid},                {"is_anchor_genome", r.is_anchor_genome}};
+  if (!r.valid)
+  {
+    j["error"] = r.error;
+    return j;
+  }
+  j["n_faces"] = r.n_faces;
+  j["area_m2"] = r.area_m2;
+  j["approximate"] = {{"cds", json_number(r.approximate_cds)},
+                      {"contact_cv", json_number(r.approximate_contact_cv)},
+                      {"max_contact_ratio", json_number(r.approximate_max_contact_ratio)},
+                      {"rank", r.approximate_rank}};
+  j["validated"] = r.validated;
+  if (r.validated)
+  {
+    nlohmann::json rigid = {{"cds", json_number(r.rigid_cds)},
+                            {"contact_cv", json_number(r.rigid_contact_cv)},
+                            {"max_contact_ratio", json_number(r.rigid_max_contact_ratio)}};
+    if (r.rigid_rank > 0)
+      rigid["rank"] = r.rigid_rank;
+    for (const auto& [name, value] : r.metrics)
+      rigid[name] = json_number(value);
+    j["rigid"] = rigid;
+  }
+  return j;
+}
+} // namespace
+
+nlohmann::json search_summary(const oracle::SearchResult& result)
+{
+  const oracle::SearchOptions& o = result.options;
+  nlohmann::json genomes = nlohmann::json::array();
+  long valid = 0, validated = 0;
+  for (const oracle::GenomeResult& r : result.genomes)
+  {
+    genomes.push_back(genome_json(r));
+    valid += r.valid;
+    validated += r.validated;
+  }
+  return {{"grid", std::string(oracle::name_of(o.grid))},
+          {"approximate_steps", o.approximate_steps},
+          {"validate_top", o.validate_top},
+          {"validate_all", o.validate_all},
+          {"matched_resolution", o.matched_resolution},
+          {"points", o.points},
+          {"anchor_points", result.anchor_points},
+          {"radius_m", o.radius_m},
+          {"compat", oracle::describe(o.compat)},
+          {"threads", result.threads},
+          {"n_genomes", result.genomes.size()},
+          {"n_valid", valid},
+          {"n_validated", validated},
+          {"approximate_wall_s", result.approximate_wall_s},
+          {"rigid_wall_s", result.rigid_wall_s},
+          {"wall_s", result.wall_s},
+          {"anchor", genome_json(result.anchor)},
+          {"genomes", genomes}};
+}
+
+namespace
+{
+/// An HDF5 identifier closed with its H5?close on scope exit.
+class Handle
+{
+public:
+  Handle(hid_t id, herr_t (*close)(hid_t), const std::string& what) : id_(id), close_(close)
+  {
+    if (id_ < 0)
+      throw ComputationError("HDF5: cannot " + what);
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  ~Handle() { close_(id_); }
+  operator hid_t() const { return id_; }
+
+private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+void check(herr_t status, const std::string& what)
+{
+  if (status < 0)
+    throw ComputationError("HDF5: cannot " + what);
+}
+
+void write_doubles(hid_t parent, const std::string& name, const std::vector<double>& values)
+{
+  const hsize_t n = values.size();
+  Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose, "create a dataspace for " + name);
+  Handle set(H5Dcreate2(parent, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+             H5Dclose, "create dataset " + name);
+  check(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write " + name);
+}
+
+void write_integers(hid_t parent, const std::string& name, const std::vector<long long>& values)
+{
+  const hsize_t n = values.size();
+  Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose, "create a dataspace for " + name);
+  Handle set(H5Dcreate2(parent, name.c_str(), H5T_STD_I64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+             H5Dclose, "create dataset " + name);
+  check(H5Dwrite(set, H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write " + name);
+}
+
+void write_strings(hid_t parent, const std::string& name, const std::vector<std::string>& values)
+{
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose, "copy the string type");
+  check(H5Tset_size(type, H5T_VARIABLE), "make a variable-length string type");
+  check(H5Tset_cset(type, H5T_CSET_UTF8), "set UTF-8");
+  const hsize_t n = values.size();
+  std::vector<const char*> pointers;
+  for (const std::string& s : values)
+    pointers.push_back(s.c_str());
+  Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose, "create a dataspace for " + name);
+  Handle set(H5Dcreate2(parent, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
+             "create dataset " + name);
+  check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()), "write " + name);
+}
+
+void attribute(hid_t object, const std::string& name, const std::string& value)
+{
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose, "copy the string type");
+  check(H5Tset_size(type, value.size() + 1), "size a string type");
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create a scalar dataspace");
+  Handle a(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose, "create attribute " + name);
+  check(H5Awrite(a, type, value.c_str()), "write attribute " + name);
+}
+
+void attribute(hid_t object, const std::string& name, double value)
+{
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create a scalar dataspace");
+  Handle a(H5Acreate2(object, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+           "create attribute " + name);
+  check(H5Awrite(a, H5T_NATIVE_DOUBLE, &value), "write attribute " + name);
+}
+
+void attribute(hid_t object, const std::string& name, long long value)
+{
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create a scalar dataspace");
+  Handle a(H5Acreate2(object, name.c_str(), H5T_STD_I64LE, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+           "create attribute " + name);
+  check(H5Awrite(a, H5T_NATIVE_LLONG, &value), "write attribute " + name);
+}
+
+/// The columns of /genomes (or, one row, /anchor).
+void write_columns(hid_t group, const std::vector<const oracle::GenomeResult*>& rows,
+                   const std::vector<std::string>& metric_names)
+{
+  constexpr double missing = std::numeric_limits<double>::quiet_NaN();
+  auto column = [&](auto value) {
+    std::vector<decltype(value(*rows.front()))> out;
+    for (const oracle::GenomeResult* r : rows)
+      out.push_back(value(*r));
+    return out;
+  };
+  auto scored = [&](bool present, double v) { return present ? v : missing; };
+  write_doubles(group, "theta_deg", column([](const auto& r) { return r.genome.theta_deg; }));
+  write_doubles(group, "offset", column([](const auto& r) { return r.genome.offset; }));
+  write_doubles(group, "ratio", column([](const auto& r) { return r.genome.ratio; }));
+  write_integers(group, "n_circles", column([](const auto& r) { return static_cast<long long>(r.genome.n_circles); }));
+  write_integers(group, "valid", column([](const auto& r) { return static_cast<long long>(r.valid); }));
+  write_integers(group, "n_faces", column([](const auto& r) { return static_cast<long long>(r.n_faces); }));
+  write_doubles(group, "area_m2", column([&](const auto& r) { return scored(r.valid, r.area_m2); }));
+  write_doubles(group, "approximate_cds", column([&](const auto& r) { return scored(r.valid, r.approximate_cds); }));
+  write_doubles(group, "approximate_contact_cv",
+                column([&](const auto& r) { return scored(r.valid, r.approximate_contact_cv); }));
+  write_doubles(group, "approximate_max_contact_ratio",
+                column([&](const auto& r) { return scored(r.valid, r.approximate_max_contact_ratio); }));
+  write_integers(group, "approximate_rank", column([](const auto& r) { return static_cast<long long>(r.approximate_rank); }));
+  write_integers(group, "validated", column([](const auto& r) { return static_cast<long long>(r.validated); }));
+  write_doubles(group, "rigid_cds", column([&](const auto& r) { return scored(r.validated, r.rigid_cds); }));
+  write_doubles(group, "rigid_contact_cv", column([&](const auto& r) { return scored(r.validated, r.rigid_contact_cv); }));
+  write_doubles(group, "rigid_max_contact_ratio",
+                column([&](const auto& r) { return scored(r.validated, r.rigid_max_contact_ratio); }));
+  write_integers(group, "rigid_rank", column([](const auto& r) { return static_cast<long long>(r.rigid_rank); }));
+  for (const std::string& name : metric_names)
+    write_doubles(group, name, column([&](const auto& r) {
+                    for (const auto& [key, value] : r.metrics)
+                      if (key == name)
+                        return value;
+                    return missing;
+                  }));
+  write_strings(group, "error", column([](const auto& r) { return r.error; }));
+}
+} // namespace
+
+void write_search_hdf5(const oracle::SearchResult& result, const std::filesystem::path& path)
+{
+  std::vector<std::string> metric_names;
+  for (const auto& [name, value] : result.anchor.metrics)
+    metric_names.push_back(name);
+  std::vector<const oracle::GenomeResult*> rows;
+  for (const oracle::GenomeResult& r : result.genomes)
+    rows.push_back(&r);
+  const oracle::SearchOptions& o = result.options;
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  write_atomically(path, [&](const std::filesystem::path& tmp) {
+    Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
+                fmt::format("create '{}'", path.string()));
+    attribute(file, "layout", std::string("rollcheck-search-1"));
+    attribute(file, "grid", std::string(oracle::name_of(o.grid)));
+    attribute(file, "approximate_steps", static_cast<long long>(o.approximate_steps));
+    attribute(file, "points", static_cast<long long>(o.points));
+    attribute(file, "anchor_points", static_cast<long long>(result.anchor_points));
+    attribute(file, "matched_resolution", static_cast<long long>(o.matched_resolution));
+    attribute(file, "validate_top", static_cast<long long>(o.validate_top));
+    attribute(file, "validate_all", static_cast<long long>(o.validate_all));
+    attribute(file, "compat", oracle::describe(o.compat));
+    attribute(file, "threads", static_cast<long long>(result.threads));
+    attribute(file, "approximate_wall_s", result.approximate_wall_s);
+    attribute(file, "rigid_wall_s", result.rigid_wall_s);
+    attribute(file, "wall_s", result.wall_s);
+    {
+      Handle genomes(H5Gcreate2(file, "genomes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "create /genomes");
+      if (!rows.empty())
+        write_columns(genomes, rows, metric_names);
+    }
+    Handle anchor(H5Gcreate2(file, "anchor", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "create /anchor");
+    write_columns(anchor, {&result.anchor}, metric_names);
+    check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush " + path.string());
+  });
+}
+} // namespace rollcheck::io

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Bad input to `rollcheck oracle` and `rollcheck search`: exit 2 with a message
+# naming the input, nothing written; a body that never touches gives the
+# documented "inf" scores, never NaN.
+set -u
+bin=$1; shared=$2; tmp=$3
+rm -rf "$tmp"; mkdir -p "$tmp"
+fail=0
+oloid=$shared/reference/meshes/oloid_reference.obj
+expect() { # expect CODE PATTERN -- command...
+  local code=$1 pattern=$2; shift 3
+  local err; err=$("$@" 2>&1 >/dev/null); local rc=$?
+  if [[ $rc -ne $code ]]; then echo "FAIL ($rc != $code): $*"; echo "$err"; fail=1; return; fi
+  if ! grep -qiE "$pattern" <<<"$err"; then echo "FAIL (message lacks '$pattern'): $*"; echo "$err"; fail=1; fi
+}
+expect 2 "steps must be at least 1" -- "$bin" oracle --mesh "$oloid" --oracle approx --steps 0 --json "$tmp/a.json"
+expect 2 "steps must be at least 1" -- "$bin" oracle --mesh "$oloid" --oracle rigid --steps 0 --json "$tmp/a.json"
+expect 2 "no step" -- "$bin" oracle --mesh "$oloid" --duration 0.001 --json "$tmp/b.json"
+expect 2 "threshold.*-0.1" -- "$bin" oracle --mesh "$oloid" --threshold -0.1 --json "$tmp/c.json"
+expect 2 "unknown metric 'xds'" -- "$bin" oracle --mesh "$oloid" --metrics cds,xds --json "$tmp/d.json"
+expect 2 "need angular velocities" -- "$bin" oracle --mesh "$oloid" --oracle approx --metrics tds --json "$tmp/e.json"
+expect 2 "unknown quirk 'nope'" -- "$bin" oracle --mesh "$oloid" --quirks nope=paper --json "$tmp/f.json"
+expect 2 "paper' or 'corrected" -- "$bin" oracle --mesh "$oloid" --quirks doubled_mean_curvature=maybe --json "$tmp/f.json"
+expect 2 "runs.*1 to 5" -- "$bin" oracle --mesh "$oloid" --runs 9 --json "$tmp/g.json"
+expect 2 "Poisson" -- "$bin" oracle --mesh "$oloid" --poisson 0.7 --json "$tmp/h.json"
+expect 2 "cannot be opened" -- "$bin" oracle --mesh "$tmp/missing.obj" --json "$tmp/i.json"
+expect 2 "oracle" -- "$bin" oracle --mesh "$oloid" --oracle magic --json "$tmp/j.json"
+expect 2 "grid" -- "$bin" search --grid huge --json "$tmp/k.json"
+expect 2 "validate-top.*-1" -- "$bin" search --validate-top -1 --json "$tmp/l.json"
+expect 2 "points per circle" -- "$bin" search --points 2 --json "$tmp/m.json"
+if ls -A "$tmp" | grep -q .; then echo "FAIL: output written on error:"; ls -A "$tmp"; fail=1; fi
+
+# A body that never touches (threshold 0: no centroid is below the ground):
+# every score is the documented "inf", exit 0, and no NaN anywhere.
+"$bin" -q oracle --mesh "$oloid" --paper-compat --threshold 0 --json "$tmp/never.json" || { echo "FAIL: threshold 0"; fail=1; }
+for key in cds sds tds wds_vol wds_depth fds; do
+  [[ $(jq -r ".$key" "$tmp/never.json") == inf ]] || { echo "FAIL: $key not inf when nothing touches"; fail=1; }
+done
+[[ $(jq -r '.contact.faces_with_contact' "$tmp/never.json") == 0 ]] || { echo "FAIL: faces with contact"; fail=1; }
+if grep -qi nan "$tmp/never.json"; then echo "FAIL: NaN in JSON"; fail=1; fi
+exit $fail

@@ -1,0 +1,72 @@
+// The search's JSON summary and HDF5 file: read back with the HDF5 C API.
+#include "io/search_store.h"
+#include "geometry/error.h"
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+namespace
+{
+using namespace rollcheck;
+
+std::vector<double> read_doubles(hid_t file, const char* name)
+{
+  const hid_t set = H5Dopen2(file, name, H5P_DEFAULT);
+  EXPECT_GE(set, 0) << name;
+  const hid_t space = H5Dget_space(set);
+  std::vector<double> values(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+  H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+  H5Sclose(space);
+  H5Dclose(set);
+  return values;
+}
+
+TEST(SearchStore, HdfFileAndJsonCarryTheSameNumbers)
+{
+  oracle::SearchOptions o;
+  o.validate_top = 2;
+  o.revalidation_metrics = [](const auto&, const auto&, const oracle::Trajectory& t) {
+    return oracle::NamedScores{{"samples", static_cast<double>(t.size())}};
+  };
+  const oracle::SearchResult result = oracle::parametric_search(o);
+  const std::filesystem::path dir = ROLLCHECK_TEST_TMP;
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path path = dir / "search_store.h5";
+  io::write_search_hdf5(result, path);
+  const nlohmann::json summary = io::search_summary(result);
+
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const auto theta = read_doubles(file, "/genomes/theta_deg");
+  const auto cds = read_doubles(file, "/genomes/approximate_cds");
+  const auto rigid = read_doubles(file, "/genomes/rigid_cds");
+  const auto samples = read_doubles(file, "/genomes/samples");
+  ASSERT_EQ(theta.size(), 45u);
+  ASSERT_EQ(summary["genomes"].size(), 45u);
+  long validated = 0;
+  for (std::size_t i = 0; i < theta.size(); ++i)
+  {
+    const nlohmann::json& g = summary["genomes"][i];
+    EXPECT_EQ(theta[i], g["theta_deg"].get<double>());
+    EXPECT_EQ(cds[i], g["approximate"]["cds"].get<double>());
+    if (g["validated"].get<bool>())
+    {
+      ++validated;
+      EXPECT_EQ(rigid[i], g["rigid"]["cds"].get<double>());
+      EXPECT_EQ(samples[i], 600.0);
+    }
+    else
+      EXPECT_TRUE(std::isnan(rigid[i]) && std::isnan(samples[i])); // not revalidated
+  }
+  EXPECT_EQ(validated, 2);
+  EXPECT_EQ(read_doubles(file, "/anchor/rigid_cds").at(0), summary["anchor"]["rigid"]["cds"].get<double>());
+  H5Fclose(file);
+}
+
+TEST(SearchStore, JsonNumbersAreFiniteOrTheStringInf)
+{
+  EXPECT_EQ(io::json_number(1.5), nlohmann::json(1.5));
+  EXPECT_EQ(io::json_number(std::numeric_limits<double>::infinity()), nlohmann::json("inf"));
+  EXPECT_THROW(io::json_number(std::nan("")), ComputationError);
+}
+} // namespace
