@@ -116,3 +116,34 @@ def label(case, keys=("body", "model", "degree", "oracle")):
 
 class Skip(Exception):
     """A plot that the store holds no data for; the message says which data it needs."""
+
+
+def subtrees(tree, word, prefix=""):
+    """(path, dict) of every object in a summary tree whose key contains `word`."""
+    if not isinstance(tree, dict):
+        return
+    for key, value in tree.items():
+        path = f"{prefix}/{key}" if prefix else key
+        if isinstance(value, dict):
+            if word in key.lower():
+                yield path, value
+            yield from subtrees(value, word, path)
+
+
+def is_number(x):
+    return isinstance(x, (int, float)) and not isinstance(x, bool)
+
+
+def run_standalone(draw):
+    """`script.py STORE OUT_DIR`: draws one plot module's figures into OUT_DIR."""
+    import os
+    import sys
+    if len(sys.argv) != 3:
+        sys.exit(f"usage: {sys.argv[0]} STORE OUT_DIR")
+    _, cases = load_cases(sys.argv[1])
+    os.makedirs(sys.argv[2], exist_ok=True)
+    try:
+        for png, caption in draw(cases, sys.argv[2]):
+            print(f"{os.path.join(sys.argv[2], png)}: {caption}")
+    except Skip as note:
+        print(f"skipped: {note}")

@@ -362,7 +362,13 @@ nlohmann::json quirk_table(const geometry::SurfaceMesh& mesh, const Setup& paper
   };
   for (const QuirkRow& row : rows)
   {
-    std::string line = fmt::format("| {} | {} | {} | {} |", row.name, row.layer, row.reference_does, row.physically_right);
+    auto cell = [](std::string text) { // a '|' would end the Markdown cell
+      for (std::size_t at = text.find('|'); at != std::string::npos; at = text.find('|', at + 2))
+        text.replace(at, 1, "\\|");
+      return text;
+    };
+    std::string line = fmt::format("| {} | {} | {} | {} |", row.name, row.layer, cell(row.reference_does),
+                                   cell(row.physically_right));
     for (const auto& [name, member] : scores)
       line += fmt::format(" {} |", percent_change(row.scores.*member, reference.*member));
     line += fmt::format(" {} |",

@@ -8,9 +8,15 @@
 // relative to the support point, the velocity relative to the ground of a body
 // rolling without slip there.
 #include <Eigen/Core>
+#include <cmath>
 
 namespace rollcheck::contact
 {
 /// Horizontal speed of omega x r (m/s), with numpy's cross-product rounding.
-double horizontal_speed(const Eigen::Vector3d& omega, const Eigen::Vector3d& r);
+inline double horizontal_speed(const Eigen::Vector3d& w, const Eigen::Vector3d& r)
+{
+  const double vx = w[1] * r[2] - w[2] * r[1];
+  const double vy = w[2] * r[0] - w[0] * r[2];
+  return std::sqrt(vx * vx + vy * vy);
+}
 } // namespace rollcheck::contact

@@ -78,8 +78,17 @@ ScoreVector score_trajectory(const ScoreInputs& in, const oracle::Trajectory& tr
 
   Eigen::VectorXd counts = Eigen::VectorXd::Zero(n_faces), stress = counts, damage = counts, heat = counts,
                   wear_volume = counts, wear_depth = counts;
+  // The fatigue amplitude and damage of a contact depend on the face only:
+  // formed once per face (Basquin's power law is the costly part).
+  Eigen::VectorXd amplitude(n_faces), damage_per_cycle(n_faces);
+  for (Eigen::Index f = 0; f < n_faces; ++f)
+  {
+    amplitude[f] = p[f] * load_scale * amplitude_factor;
+    damage_per_cycle[f] = miner_damage_per_cycle(amplitude[f], parameters.fatigue);
+  }
   std::vector<double> peaks, fatigue_peaks, slides;
   long events = 0, above_endurance = 0;
+  const oracle::ScoreTemplate score(areas);
   ScoreVector out;
   out.n_samples = static_cast<long>(trajectory.size());
   out.effective_modulus_pa = in.pressure.effective_modulus_pa;
@@ -100,11 +109,10 @@ ScoreVector score_trajectory(const ScoreInputs& in, const oracle::Trajectory& tr
       peak = std::max(peak, p[f]);
       if (metrics.fds)
       {
-        const double amplitude = p[f] * load_scale * amplitude_factor;
-        damage[f] += miner_damage_per_cycle(amplitude, parameters.fatigue);
-        fatigue_peak = std::max(fatigue_peak, amplitude);
+        damage[f] += damage_per_cycle[f];
+        fatigue_peak = std::max(fatigue_peak, amplitude[f]);
         ++events;
-        if (amplitude > parameters.fatigue.endurance_limit_pa)
+        if (amplitude[f] > parameters.fatigue.endurance_limit_pa)
           ++above_endurance;
       }
       if (metrics.needs_sliding())
@@ -139,7 +147,7 @@ ScoreVector score_trajectory(const ScoreInputs& in, const oracle::Trajectory& tr
     if (convergence_every > 0 && done % convergence_every == 0)
     {
       auto snapshot = [&](const char* key, const Eigen::VectorXd& acc) {
-        out.convergence[key].emplace_back(done, oracle::distribution_score(acc, areas));
+        out.convergence[key].emplace_back(done, score(acc));
       };
       if (metrics.cds) snapshot("cds", counts);
       if (metrics.sds) snapshot("sds", stress);
@@ -157,13 +165,13 @@ ScoreVector score_trajectory(const ScoreInputs& in, const oracle::Trajectory& tr
   }
   if (metrics.sds)
   {
-    out.sds = oracle::distribution_score(stress, areas);
+    out.sds = score(stress);
     out.peak_pressure_pa = oracle::value_statistics(peaks);
     out.per_face["stress_pa"] = stress;
   }
   if (metrics.fds)
   {
-    out.fds = oracle::distribution_score(damage, areas);
+    out.fds = score(damage);
     out.damage_ratio = positive_ratio(damage);
     const double worst = damage.size() ? damage.maxCoeff() : 0.0;
     // In the reference's order: damage per cycle of the worst face, inverted.
@@ -175,7 +183,7 @@ ScoreVector score_trajectory(const ScoreInputs& in, const oracle::Trajectory& tr
   }
   if (metrics.tds)
   {
-    out.tds = oracle::distribution_score(heat, areas);
+    out.tds = score(heat);
     out.heat_ratio = positive_ratio(heat);
     out.per_face["heat"] = heat;
   }
@@ -187,8 +195,8 @@ ScoreVector score_trajectory(const ScoreInputs& in, const oracle::Trajectory& tr
   }
   if (metrics.wds)
   {
-    out.wds_vol = oracle::distribution_score(wear_volume, areas);
-    out.wds_depth = oracle::distribution_score(wear_depth, areas);
+    out.wds_vol = score(wear_volume);
+    out.wds_depth = score(wear_depth);
     out.wear_depth_ratio = positive_ratio(wear_depth);
     out.per_face["wear_volume"] = wear_volume;
     out.per_face["wear_depth"] = wear_depth;

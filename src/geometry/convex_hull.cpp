@@ -29,7 +29,10 @@ SurfaceMesh convex_hull(const Vertices& points, std::string_view what)
   qh_zero(qh, nullptr);
   // Qhull reports errors on this stream; keep its messages out of our output.
   FILE* errors = std::tmpfile();
-  char options[] = "qhull Qt";
+  // The options trimesh passes (scale to the unit box, no precision warnings,
+  // triangulated output). Coplanar facets, like a roller's flat disc, are still
+  // fanned from another apex than trimesh's, so face sets can differ there.
+  char options[] = "qhull QbB Pp Qt";
   const int status = qh_new_qhull(qh, 3, static_cast<int>(points.rows()), coords.data(), False, options,
                                   nullptr, errors);
   std::string qhull_message;

@@ -39,19 +39,31 @@ double sum(const Eigen::VectorXd& v) { return pairwise_sum(v.data(), static_cast
 constexpr double infinity = std::numeric_limits<double>::infinity();
 } // namespace
 
-double distribution_score(const Eigen::VectorXd& accumulator, const Eigen::VectorXd& face_areas)
+ScoreTemplate::ScoreTemplate(const Eigen::VectorXd& face_areas)
+    : areas_(face_areas), fractions_(face_areas.size()), total_area_(sum(face_areas))
+{
+  for (Eigen::Index i = 0; i < areas_.size(); ++i)
+    fractions_[i] = areas_[i] / total_area_;
+}
+
+double ScoreTemplate::operator()(const Eigen::VectorXd& accumulator) const
 {
   const double total = sum(accumulator);
   if (total == 0)
     return infinity;
-  const double area = sum(face_areas);
-  Eigen::VectorXd weighted(accumulator.size());
+  thread_local std::vector<double> weighted;
+  weighted.resize(static_cast<std::size_t>(accumulator.size()));
   for (Eigen::Index i = 0; i < accumulator.size(); ++i)
   {
-    const double deviation = accumulator[i] / total - face_areas[i] / area;
-    weighted[i] = face_areas[i] * (deviation * deviation);
+    const double deviation = accumulator[i] / total - fractions_[i];
+    weighted[static_cast<std::size_t>(i)] = areas_[i] * (deviation * deviation);
   }
-  return sum(weighted) / area;
+  return pairwise_sum(weighted.data(), weighted.size()) / total_area_;
+}
+
+double distribution_score(const Eigen::VectorXd& accumulator, const Eigen::VectorXd& face_areas)
+{
+  return ScoreTemplate(face_areas)(accumulator);
 }
 
 DistributionSummary summarize_distribution(const Eigen::VectorXd& accumulator, const Eigen::VectorXd& face_areas)

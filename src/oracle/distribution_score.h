@@ -14,6 +14,19 @@ namespace rollcheck::oracle
 /// Sum with numpy's pairwise summation (blocks of 8 below 128 terms).
 double pairwise_sum(const double* x, std::size_t n);
 
+/// The template for one body, with its area fractions a_i / A formed once
+/// (for repeated scoring, as in convergence snapshots).
+class ScoreTemplate
+{
+public:
+  explicit ScoreTemplate(const Eigen::VectorXd& face_areas);
+  double operator()(const Eigen::VectorXd& accumulator) const;
+
+private:
+  Eigen::VectorXd areas_, fractions_;
+  double total_area_;
+};
+
 double distribution_score(const Eigen::VectorXd& accumulator, const Eigen::VectorXd& face_areas);
 
 struct DistributionSummary

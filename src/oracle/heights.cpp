@@ -104,6 +104,11 @@ double height(const Eigen::Vector3d& row, const PointSet& points, std::size_t i)
                         : height_portable(row.data(), points.x[i], points.y[i], points.z[i]);
 }
 
+void heights_of(const Eigen::Vector3d& row, const PointSet& points, const int* index, std::size_t n, double* out)
+{
+  (has_avx2_fma() ? heights_fma : heights_portable)(row.data(), points, index, n, out);
+}
+
 Eigen::Vector3d rotate(const Eigen::Matrix3d& rotation, const PointSet& points, std::size_t i)
 {
   const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> rows = rotation;
@@ -117,15 +122,21 @@ double ground_contacts(const RollingBody& body, const Eigen::Vector3d& row, int 
 {
   const auto s = static_cast<std::size_t>(support_vertex);
   const int first = body.face_offsets[s], last = body.face_offsets[s + 1];
-  // Upper bound of the ground: the lowest centroid around the support vertex,
-  // or the support vertex itself.
+  // Upper bound of the ground: the lowest of the centroids around the support
+  // vertex and the previous lowest face, or the support vertex itself.
   double ground_bound = std::numeric_limits<double>::infinity();
   if (ground_at_lowest_centroid)
   {
     if (lowest_face >= 0)
       ground_bound = height(row, body.centroids, static_cast<std::size_t>(lowest_face));
-    for (int k = first; k < last; ++k)
-      ground_bound = std::min(ground_bound, height(row, body.centroids, static_cast<std::size_t>(body.faces_around[k])));
+    double around[64];
+    for (int k = first; k < last; k += 64)
+    {
+      const auto n = static_cast<std::size_t>(std::min(last - k, 64));
+      heights_of(row, body.centroids, body.faces_around.data() + k, n, around);
+      for (std::size_t j = 0; j < n; ++j)
+        ground_bound = std::min(ground_bound, around[j]);
+    }
   }
   else
     ground_bound = height(row, body.vertices, s);
@@ -150,8 +161,7 @@ double ground_contacts(const RollingBody& body, const Eigen::Vector3d& row, int 
 
   thread_local std::vector<double> heights;
   heights.resize(n_candidates);
-  (has_avx2_fma() ? heights_fma : heights_portable)(row.data(), body.centroids, candidates.data(), n_candidates,
-                                                    heights.data());
+  heights_of(row, body.centroids, candidates.data(), n_candidates, heights.data());
   double lowest = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < n_candidates; ++k)
   {

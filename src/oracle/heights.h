@@ -24,6 +24,9 @@ namespace rollcheck::oracle
 /// r . p_i with the rounding described above.
 double height(const Eigen::Vector3d& row, const PointSet& points, std::size_t i);
 
+/// Heights of the points listed in `index` into `out`.
+void heights_of(const Eigen::Vector3d& row, const PointSet& points, const int* index, std::size_t n, double* out);
+
 /// R p_i, each row with the rounding described above.
 Eigen::Vector3d rotate(const Eigen::Matrix3d& rotation, const PointSet& points, std::size_t i);
 

@@ -1,15 +1,12 @@
 #include "oracle/rolling_dynamics.h"
-#include "geometry/convex_hull.h"
 #include "geometry/error.h"
 #include "geometry/mass_properties.h"
 #include <Eigen/Geometry>
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
-#include <array>
 #include <cmath>
 #include <fmt/format.h>
 #include <functional>
-#include <limits>
 #include <numbers>
 
 namespace rollcheck::oracle
@@ -18,15 +15,6 @@ namespace
 {
 constexpr double pi = std::numbers::pi;
 const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
-
-/// Two unit vectors spanning the plane normal to `normal`.
-std::pair<Eigen::Vector3d, Eigen::Vector3d> plane_basis(const Eigen::Vector3d& normal)
-{
-  const Eigen::Vector3d helper =
-      std::abs(normal.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
-  const Eigen::Vector3d e1 = normal.cross(helper).normalized();
-  return {e1, normal.cross(e1)};
-}
 
 void require_positive(double value, const char* what)
 {
@@ -296,10 +284,10 @@ LineTerms line_terms(const TwoCircleBody& body, const MassModel& mass, double gr
   t.axis_rate = (span_rate - r.axis * r.axis.dot(span_rate)) / r.length_m;
   const Eigen::Vector3d arm = r.start_m - mass.centre_of_mass_m;
   const Eigen::Vector3d arm_x_axis = arm.cross(r.axis);
-  t.inertia = r.axis.dot(mass.inertia_kg_m2 * r.axis) + mass.mass_kg * arm_x_axis.squaredNorm();
+  t.inertia = ruling_inertia(r, mass);
   t.inertia_rate = 2 * t.axis_rate.dot(mass.inertia_kg_m2 * r.axis) +
                    2 * mass.mass_kg * arm_x_axis.dot(r.start_rate_m.cross(r.axis) + arm.cross(t.axis_rate));
-  t.potential = mass.mass_kg * gravity * arm.dot(u);
+  t.potential = mass.mass_kg * gravity * centre_of_mass_height(r, mass);
   t.potential_rate = mass.mass_kg * gravity * arm.dot(r.tangent);
   return t;
 }
@@ -384,22 +372,15 @@ TwoCircleBody two_circle_body(std::span<const Circle> circles)
   return {circles[0], circles[1]};
 }
 
-MassModel mass_model_of_two_circle_body(const TwoCircleBody& body, double mass_kg, int points)
+double ruling_inertia(const Ruling& ruling, const MassModel& mass)
 {
-  if (points < 16)
-    throw InputError(fmt::format("rolling: at least 16 points per circle for mass properties, got {}", points));
-  geometry::Vertices samples(2 * points, 3);
-  int row = 0;
-  for (const Circle* c : {&body.first, &body.second})
-  {
-    const auto [e1, e2] = plane_basis(c->normal);
-    for (int k = 0; k < points; ++k)
-    {
-      const double t = 2 * pi * k / points;
-      samples.row(row++) = (c->centre_m + c->radius_m * (std::cos(t) * e1 + std::sin(t) * e2)).transpose();
-    }
-  }
-  return mass_model_of_mesh(geometry::convex_hull(samples, "two-circle body"), mass_kg);
+  const Eigen::Vector3d arm = ruling.start_m - mass.centre_of_mass_m;
+  return ruling.axis.dot(mass.inertia_kg_m2 * ruling.axis) + mass.mass_kg * arm.cross(ruling.axis).squaredNorm();
+}
+
+double centre_of_mass_height(const Ruling& ruling, const MassModel& mass)
+{
+  return (ruling.start_m - mass.centre_of_mass_m).dot(ruling.direction);
 }
 
 Ruling ruling_at(const TwoCircleBody& body, const Eigen::Vector3d& direction)
@@ -470,9 +451,7 @@ ContactLoop trace_contact_loop(const TwoCircleBody& body, const Eigen::Vector3d&
 Eigen::Vector3d resting_direction(const TwoCircleBody& body, const MassModel& mass, const Eigen::Vector3d& start)
 {
   const ContactLoop loop = trace_contact_loop(body, start, 720);
-  auto height = [&](const Eigen::Vector3d& u) {
-    return (circle_support_point(body.first, u) - mass.centre_of_mass_m).dot(u);
-  };
+  auto height = [&](const Eigen::Vector3d& u) { return centre_of_mass_height(raw_ruling(body, u), mass); };
   std::size_t lowest = 0;
   for (std::size_t k = 1; k < loop.directions.size(); ++k)
     if (height(loop.directions[k]) < height(loop.directions[lowest]))
@@ -633,6 +612,8 @@ RollingTrajectory roll_on_point(const Ellipsoid& body, const MassModel& mass, co
     s.angular_velocity_rad_s = omega;
     s.centre_of_mass_m = Eigen::Vector3d(state[7], state[8], -t.arm.z());
     s.contact_start_m = s.contact_end_m = t.contact;
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> radii(t.curvature_radii_world);
+    s.start_radius_m = s.end_radius_m = std::sqrt(radii.eigenvalues()[1] * radii.eigenvalues()[2]);
     s.rolling_rate_rad_s = omega.norm();
     s.kinetic_energy_j = 0.5 * omega.dot(t.inertia_contact * omega);
     s.potential_energy_j = m * g * (-t.arm.z());

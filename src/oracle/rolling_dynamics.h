@@ -87,9 +87,6 @@ struct TwoCircleBody
   Circle second;
 };
 TwoCircleBody two_circle_body(std::span<const Circle> circles);
-/// Uniform solid hull of the two circles, each sampled at `points` points
-/// (mass-property error ~ points^-2; 2048 gives ~1e-6 relative).
-MassModel mass_model_of_two_circle_body(const TwoCircleBody& body, double mass_kg, int points = 2048);
 
 struct RollingParameters
 {
@@ -119,6 +116,7 @@ struct RollingSample
   Eigen::Vector3d contact_end_m = Eigen::Vector3d::Zero();
   /// Line contact: radius of normal curvature across the ruling at its two ends
   /// (m); it varies linearly in between (exact for a developable surface).
+  /// Point contact: both are sqrt(R_1 R_2), the principal radii's geometric mean.
   double start_radius_m = 0;
   double end_radius_m = 0;
   double turning_angle_rad = 0; ///< sigma travelled (line contact); 0 for point contact
@@ -165,6 +163,11 @@ struct Ruling
 /// sphere). ComputationError if u is too far from the curve or a circle lies
 /// flat (the contact is then a disc, not a ruling).
 Ruling ruling_at(const TwoCircleBody& body, const Eigen::Vector3d& direction);
+
+/// J = b.I b + m |(s_1 - c) x b|^2, the moment of inertia about the ruling (kg m^2).
+double ruling_inertia(const Ruling& ruling, const MassModel& mass);
+/// (s_1 - c).u, the height of the centre of mass above the plane (m).
+double centre_of_mass_height(const Ruling& ruling, const MassModel& mass);
 
 /// A point of the contact curve near `hint` (any direction): bisection along
 /// the great circle from `hint` to the nearest direction of opposite sign of

@@ -1,5 +1,7 @@
 #include "oracle/support_search.h"
 #include "oracle/heights.h"
+#include <iterator>
+#include <limits>
 
 namespace rollcheck::oracle
 {
@@ -12,32 +14,40 @@ int SupportSearch::lowest(const Eigen::Vector3d& row)
   {
     int at = current_;
     double h = height(row, v, static_cast<std::size_t>(at));
+    double neighbour_h[64];
     for (;;)
     {
+      const int first = body_->neighbour_offsets[at];
+      const auto degree = static_cast<std::size_t>(body_->neighbour_offsets[at + 1] - first);
+      if (degree > std::size(neighbour_h))
+        break; // an unusual vertex: scan everything below
+      heights_of(row, v, body_->neighbours.data() + first, degree, neighbour_h);
       int next = at;
-      double lowest_h = h;
-      for (int k = body_->neighbour_offsets[at]; k < body_->neighbour_offsets[at + 1]; ++k)
+      double lowest_h = h, second_h = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k < degree; ++k)
       {
-        const int n = body_->neighbours[k];
-        const double hn = height(row, v, static_cast<std::size_t>(n));
-        if (hn < lowest_h)
+        if (neighbour_h[k] < lowest_h)
         {
-          next = n;
-          lowest_h = hn;
+          second_h = lowest_h;
+          next = body_->neighbours[first + static_cast<int>(k)];
+          lowest_h = neighbour_h[k];
         }
+        else
+          second_h = std::min(second_h, neighbour_h[k]);
       }
       if (next == at)
+      {
+        // A local minimum: the answer unless a neighbour is within the tie
+        // tolerance of it.
+        if (second_h - h > tie_tolerance_)
+        {
+          current_ = at;
+          return at;
+        }
         break;
+      }
       at = next;
       h = lowest_h;
-    }
-    bool clear = true;
-    for (int k = body_->neighbour_offsets[at]; k < body_->neighbour_offsets[at + 1] && clear; ++k)
-      clear = height(row, v, static_cast<std::size_t>(body_->neighbours[k])) - h > tie_tolerance_;
-    if (clear)
-    {
-      current_ = at;
-      return at;
     }
   }
   ++scans_;
