@@ -29,10 +29,10 @@ SurfaceMesh convex_hull(const Vertices& points, std::string_view what)
   qh_zero(qh, nullptr);
   // Qhull reports errors on this stream; keep its messages out of our output.
   FILE* errors = std::tmpfile();
-  // The options trimesh passes (scale to the unit box, no precision warnings,
-  // triangulated output). Coplanar facets, like a roller's flat disc, are still
-  // fanned from another apex than trimesh's, so face sets can differ there.
-  char options[] = "qhull QbB Pp Qt";
+  // Triangulated output. Coplanar facets (a roller's flat disc) are fanned
+  // from another apex than trimesh picks, so face sets can differ there from
+  // the reference's meshes (README, "known differences").
+  char options[] = "qhull Qt";
   const int status = qh_new_qhull(qh, 3, static_cast<int>(points.rows()), coords.data(), False, options,
                                   nullptr, errors);
   std::string qhull_message;
