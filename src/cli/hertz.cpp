@@ -6,8 +6,13 @@
 #include "cli/scenes.h"
 #include "contact/hertz.h"
 #include "fem/fem.h"
+#include "geometry/atomic_file.h"
 #include "geometry/error.h"
+#include <cstdlib>
+#include <fmt/format.h>
+#include <fstream>
 #include <spdlog/spdlog.h>
+#include <sstream>
 
 namespace rollcheck::cli
 {
@@ -174,19 +179,110 @@ nlohmann::json run_hertz(const io::Parameters& params)
                  result.newton_iterations, result.wall_s);
   return summary(result);
 }
+/// Runs a study's setups one after the other; a failed run (e.g. a diverged
+/// solve at an extreme penalty) becomes a row with its message.
+nlohmann::json run_study(const std::string& name, const std::vector<fem::HertzSetup>& setups,
+                         const std::filesystem::path& out_dir)
+{
+  const bool root = fem::world_rank() == 0;
+  std::ostringstream csv;
+  csv << "model,degree,refine,penalty_c,elements_across_contact,dofs,cells,ranks,newton_its,krylov_its,"
+         "wall_s,solve_s,size_error,p0_error,p_max_nodal_error,max_shear_error,max_shear_depth_error,"
+         "max_von_mises_error,max_von_mises_depth_error,force_error,profile_rms_error,penalty_error_estimate,"
+         "discretisation_error_estimate,flags,status\n";
+  nlohmann::json rows = nlohmann::json::array();
+  for (std::size_t i = 0; i < setups.size(); ++i)
+  {
+    const fem::HertzSetup& s = setups[i];
+    const int refine = s.refine >= 0 ? s.refine : fem::default_refine(s.model, s.degree);
+    if (root)
+      spdlog::info("study {} [{}/{}]: {} P{} refine {} c {}", name, i + 1, setups.size(), fem::model_name(s.model),
+                   s.degree, refine, s.penalty_c);
+    csv << fmt::format("{},{},{},{},", fem::model_name(s.model), s.degree, refine, s.penalty_c);
+    try
+    {
+      const fem::HertzResult r = fem::solve_hertz(MPI_COMM_WORLD, s);
+      const nlohmann::json j = summary(r);
+      const std::string c = s.model == fem::Model::plane_strain ? "b" : "a";
+      csv << fmt::format("{:.6g},{},{},{},{},{},{:.6g},{:.6g},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},"
+                         "{:.6e},{:.6e},{:.6e},{},ok\n",
+                         r.elements_across_contact, r.dofs, r.cells, r.ranks, r.newton_iterations, r.krylov_iterations,
+                         r.wall_s, r.solve_s, j[c + "_error"].get<double>(), j["p0_error"].get<double>(),
+                         j["p_max_nodal_error"].get<double>(), j["max_shear_error"].get<double>(),
+                         j["max_shear_depth_error"].get<double>(), j["max_von_mises_error"].get<double>(),
+                         j["max_von_mises_depth_error"].get<double>(), j["force_error"].get<double>(), r.profile_rms_error, r.penalty_error_estimate,
+                         r.discretisation_error_estimate, fmt::join(r.flags, " "));
+      rows.push_back(j);
+    }
+    catch (const ComputationError& e)
+    {
+      std::string message = e.what();
+      std::replace(message.begin(), message.end(), ',', ';');
+      csv << std::string(20, ',') << "failed: " << message << "\n";
+      rows.push_back({{"model", fem::model_name(s.model)}, {"degree", s.degree}, {"refine", refine},
+                      {"penalty_c", s.penalty_c}, {"failed", e.what()}});
+    }
+  }
+  const std::filesystem::path csv_path = out_dir / ("hertz_" + name + ".csv");
+  const std::filesystem::path png_path = out_dir / ("hertz_" + name + ".png");
+  if (root)
+  {
+    std::filesystem::create_directories(out_dir);
+    write_atomically(csv_path, [&](const std::filesystem::path& tmp) {
+      std::ofstream file(tmp);
+      file << csv.str();
+      if (!file)
+        throw InputError(fmt::format("cannot write '{}'", csv_path.string()));
+    });
+    const std::string command = fmt::format("/usr/bin/python3 '{}/hertz_study_plot.py' '{}' '{}'",
+                                            ROLLCHECK_POSTPROCESS_DIR, csv_path.string(), png_path.string());
+    if (std::system(command.c_str()) != 0)
+      throw ComputationError(fmt::format("the plot script failed: {}", command));
+    spdlog::info("study {}: {} and {}", name, csv_path.string(), png_path.string());
+  }
+  return {{"study", name}, {"csv", csv_path.string()}, {"png", png_path.string()}, {"runs", rows}};
+}
+
+std::vector<fem::Model> parse_models(const std::vector<std::string>& names)
+{
+  std::vector<fem::Model> models;
+  for (const std::string& name : names)
+    models.push_back(fem::parse_model(name, "option --study-models"));
+  return models;
+}
 } // namespace
 
 void add_hertz_command(CLI::App& app)
 {
   CLI::App* sub = app.add_subcommand(
       "hertz", "Penalty-contact FEM of a sphere or cylinder on a rigid plane, verified against Hertz theory");
-  static std::string json_path;
+  static std::string json_path, study, out_dir = "results/hertz";
+  static std::vector<std::string> study_models = {"axi", "plane-strain", "3d"};
   add_json_option(sub, json_path);
   static io::SchemaOptions* options = new io::SchemaOptions(sub, hertz_schema());
+  sub->add_option("--study", study,
+                  "Run a study instead of one case: convergence (refine levels of every model and degree) or "
+                  "penalty (penalty_c from 0.1 to 1000); writes a CSV and a PNG to --out")
+      ->check(CLI::IsMember({"convergence", "penalty"}));
+  sub->add_option("--out", out_dir, "Folder for the study's CSV and PNG (default: results/hertz)");
+  sub->add_option("--study-models", study_models, "Models the study covers (default: axi plane-strain 3d)")
+      ->check(CLI::IsMember({"axi", "plane-strain", "3d"}));
   register_scene({&hertz_schema(), run_hertz});
   on_run(sub, [] {
     fem::ensure_petsc();
-    const nlohmann::json result = run_hertz(options->apply());
+    const io::Parameters params = options->apply();
+    nlohmann::json result;
+    if (study.empty())
+      result = run_hertz(params);
+    else
+    {
+      const fem::HertzSetup base = setup_from(params);
+      const std::vector<fem::Model> models = parse_models(study_models);
+      result = run_study(study,
+                         study == "convergence" ? fem::convergence_study(base, models)
+                                                : fem::penalty_study(base, models),
+                         out_dir);
+    }
     if (fem::world_rank() == 0)
       emit_json(json_path, result);
     return 0;

@@ -9,4 +9,5 @@
 // nor of the command line.
 #include "fem/hertz_setup.h"
 #include "fem/hertz_solve.h"
+#include "fem/hertz_studies.h"
 #include "fem/petsc_session.h"

@@ -27,8 +27,8 @@ Model parse_model(const std::string& name, const std::string& origin)
 
 int default_refine(Model model, int degree)
 {
-  // Elements across the contact radius: 10 * 2^(refine / 2); see the
-  // convergence table in the README for the errors these levels give.
+  // Elements across the contact radius: 10 * 2^(refine / 2); see
+  // hertz_setup.h and the convergence table in the README.
   switch (model)
   {
   case Model::axisymmetric: return degree == 1 ? 4 : 2;

@@ -39,8 +39,8 @@ struct HertzSetup
   /// Hertz radius or half-width: refine 0 puts 10 elements across it, each
   /// step adds a factor sqrt(2). Negative: the model's default (default_refine).
   int refine = -1;
-  /// kappa = penalty_c * E / h_c. The penalty study shows the error falls as
-  /// 1 / c until the discretisation error takes over; see default in .cpp.
+  /// kappa = penalty_c * E / h_c. The penalty's own error falls as 1 / c;
+  /// the penalty study (README) puts it at a fifth of the mesh's at c = 100.
   double penalty_c = default_penalty_c;
   /// Compare with the two-identical-bodies E* = E / (2 (1 - nu^2)) (the
   /// preprint's choice): the FEM body then gets the modulus E / 2 against the
@@ -58,8 +58,9 @@ struct HertzSetup
   static constexpr double default_penalty_c = 100.0;
 };
 
-/// The model's default refine level for a degree: the coarsest level at which
-/// the model meets its tolerances (README, convergence table).
+/// The model's default refine level for a degree: the coarsest level that
+/// meets the model's tolerances with a 2x margin (README, convergence table);
+/// plane strain, within them from level 0, takes the axisymmetric level.
 int default_refine(Model model, int degree);
 
 /// InputError naming the bad field; called by solve_hertz.

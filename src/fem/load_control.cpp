@@ -37,7 +37,7 @@ LoadControlReport reach_force(PenaltyContact& problem, double target, double fir
                             0.5, 3.0);
     previous_approach = report.approach_m;
     previous_force = report.force;
-    problem.rescale_approach(report.approach_m * std::pow(target / report.force, 1.0 / exponent));
+    problem.set_approach(report.approach_m * std::pow(target / report.force, 1.0 / exponent));
   }
   throw ComputationError(fmt::format("load control did not reach {:.6g} to {:.1e} in {} solves (last {:.9g})", target,
                                      rtol, max_steps, report.force));

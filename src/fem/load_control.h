@@ -6,7 +6,8 @@
 // a secant on log F against log delta:
 //   delta_{k+1} = delta_k (F / F_k)^(1 / n_k),
 // n_0 the Hertz exponent, then n_k = ln(F_k / F_{k-1}) / ln(delta_k / delta_{k-1}).
-// Each solve starts from the previous field scaled to the new approach.
+// Each solve starts from the previous solution with the new approach
+// prescribed on the top face (see PenaltyContact::set_approach).
 #include "fem/penalty_contact.h"
 
 namespace rollcheck::fem

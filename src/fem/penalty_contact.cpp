@@ -9,6 +9,7 @@
 #include <dolfinx/mesh/MeshTags.h>
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
+#include <sstream>
 
 namespace rollcheck::fem
 {
@@ -16,7 +17,7 @@ namespace
 {
 using T = PenaltyContact::T;
 using Clock = std::chrono::steady_clock;
-constexpr const char* prefix = "hertz_";
+constexpr const char* prefix = "hertz_"; ///< of every solver option
 constexpr int max_newton_iterations = 40;
 constexpr double newton_rtol = 1e-10;  ///< on ||du|| / ||u||
 constexpr int max_line_search_halvings = 12;
@@ -26,34 +27,38 @@ double seconds_since(Clock::time_point start)
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-/// Sets `-hertz_<name> value` unless the user already did.
-void default_option(const std::string& name, const std::string& value)
+/// Default solvers, set on the KSP before KSPSetFromOptions so that any
+/// -hertz_* option overrides them.
+void set_default_solver(KSP ksp, Model model)
 {
-  const std::string option = std::string("-") + prefix + name;
-  PetscBool set = PETSC_FALSE;
-  PetscOptionsHasName(nullptr, nullptr, option.c_str(), &set);
-  if (!set)
-    PetscOptionsSetValue(nullptr, option.c_str(), value.empty() ? nullptr : value.c_str());
-}
-
-void set_default_solver_options(Model model)
-{
+  PC pc;
+  KSPGetPC(ksp, &pc);
   if (model == Model::solid)
   {
     // GMRES rather than CG: the Jacobian is symmetric positive definite, but
     // GAMG's Chebyshev smoothers under-estimate the largest eigenvalue of the
     // penalty rows and CG then stops with DIVERGED_INDEFINITE_PC (c >= 300).
-    default_option("ksp_type", "gmres");
-    default_option("ksp_rtol", "1e-10");
-    default_option("ksp_max_it", "1000");
-    default_option("pc_type", "gamg");
+    KSPSetType(ksp, KSPGMRES);
+    KSPSetTolerances(ksp, 1e-10, PETSC_DEFAULT, PETSC_DEFAULT, 1000);
+    PCSetType(pc, PCGAMG);
   }
   else
   {
-    default_option("ksp_type", "preonly");
-    default_option("pc_type", "lu");
-    default_option("pc_factor_mat_solver_type", "mumps");
+    KSPSetType(ksp, KSPPREONLY);
+    PCSetType(pc, PCLU);
+    PCFactorSetMatSolverType(pc, MATSOLVERMUMPS);
   }
+}
+
+/// Option names ("-hertz_ksp_type") in a PETSc options string.
+std::vector<std::string> option_names(const std::string& options)
+{
+  std::vector<std::string> names;
+  std::istringstream tokens(options);
+  for (std::string token; tokens >> token;)
+    if (token.size() > 1 && token[0] == '-' && std::isalpha(static_cast<unsigned char>(token[1])))
+      names.push_back(token);
+  return names;
 }
 
 /// Rigid-body modes of the displacement space: translations and, where the
@@ -153,7 +158,7 @@ PenaltyContact::PenaltyContact(const SceneMesh& scene, Model model, int degree, 
   _A = dfem::petsc::create_matrix(*_jacobian, "aij");
   if (!petsc_options.empty() && PetscOptionsInsertString(nullptr, petsc_options.c_str()) != 0)
     throw InputError(fmt::format("hertz: cannot parse PETSc options '{}'", petsc_options));
-  set_default_solver_options(model);
+  _inserted_options = option_names(petsc_options);
   std::vector<dolfinx::la::Vector<T>> modes = rigid_body_modes(*_V, model);
   std::vector<Vec> mode_vecs;
   for (const auto& m : modes)
@@ -171,11 +176,15 @@ PenaltyContact::PenaltyContact(const SceneMesh& scene, Model model, int degree, 
   MatSetNearNullSpace(_A, _near_nullspace);
   KSPCreate(mesh->comm(), &_ksp);
   KSPSetOptionsPrefix(_ksp, prefix);
+  set_default_solver(_ksp, model);
   KSPSetFromOptions(_ksp);
 }
 
 PenaltyContact::~PenaltyContact()
 {
+  // The setup's options were for this problem only (a study runs many).
+  for (const std::string& name : _inserted_options)
+    PetscOptionsClearValue(nullptr, name.c_str());
   KSPDestroy(&_ksp);
   MatNullSpaceDestroy(&_near_nullspace);
   MatDestroy(&_A);
@@ -198,12 +207,9 @@ void PenaltyContact::start_translated(double shift_m, double approach_m)
   _u->x()->scatter_fwd();
 }
 
-void PenaltyContact::rescale_approach(double approach_m)
+void PenaltyContact::set_approach(double approach_m)
 {
-  const double ratio = approach_m / this->approach_m();
   std::span<T> u = _u->x()->mutable_array();
-  for (T& value : u)
-    value *= ratio;
   _top_value->value.back() = -approach_m;
   dolfinx::fem::set_bc(u, _bcs, 1.0);
   _u->x()->scatter_fwd();

@@ -10,9 +10,9 @@
 // the iteration globally convergent. Every linear solve's KSPConvergedReason
 // is checked: a diverged solve raises ComputationError, never a result.
 //
-// Linear solver: KSP with options prefix "hertz_". Defaults (overridable by
-// PETSC_OPTIONS or HertzSetup::petsc_options): 2D MUMPS LU; 3D conjugate
-// GMRES with GAMG on an aij matrix with the rigid-body near-nullspace.
+// Linear solver: KSP with options prefix "hertz_". Defaults, overridable by
+// PETSC_OPTIONS or HertzSetup::petsc_options: 2D MUMPS LU; 3D GMRES (rtol
+// 1e-10) with GAMG on an aij matrix with the rigid-body near-nullspace.
 #include "fem/contact_forms.h"
 #include "fem/scene_mesh.h"
 #include <dolfinx/fem/Constant.h>
@@ -48,9 +48,10 @@ public:
   /// Start state for a first solve: the body translated down by `shift_m`,
   /// its top face at -approach_m.
   void start_translated(double shift_m, double approach_m);
-  /// Sets the top face's prescribed displacement to -approach_m, scaling the
-  /// current field by the ratio of approaches (a predictor for the next solve).
-  void rescale_approach(double approach_m);
+  /// Sets the top face's prescribed displacement to -approach_m and nothing
+  /// else: the first Newton step then is the tangent (Euler) predictor, the
+  /// linear response of the current state to the change of approach.
+  void set_approach(double approach_m);
   double approach_m() const { return -_top_value->value.back(); }
 
   /// Newton to convergence at the current approach; throws ComputationError
@@ -97,5 +98,6 @@ private:
   Mat _A = nullptr;
   KSP _ksp = nullptr;
   MatNullSpace _near_nullspace = nullptr;
+  std::vector<std::string> _inserted_options; ///< from petsc_options, cleared at destruction
 };
 } // namespace rollcheck::fem

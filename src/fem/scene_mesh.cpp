@@ -205,7 +205,7 @@ SceneMesh build_scene_mesh(MPI_Comm comm, Model model, double R, const MeshGradi
   const double tol = 1e-9 * R;
   // The vertical coordinate is x[1] in 2D, x[2] in 3D (DOLFINx pads to 3).
   const int zi = gdim - 1;
-  auto z_of = [zi](double x, double y, double z) { return zi == 1 ? y : z; };
+  auto z_of = [zi](double, double y, double z) { return zi == 1 ? y : z; };
   auto on_sphere = [&](double x, double y, double z) {
     const double h = z_of(x, y, z) - R;
     const double r2 = solid ? x * x + y * y : x * x;

@@ -1,0 +1,75 @@
+#pragma once
+// The claim table of `rollcheck audit`: each quantitative claim of the
+// preprint, its paper value, its recomputations (one per mode: paper-compatible,
+// matched mesh resolution, true oloid, corrected physics, ...) with the exact
+// commands that print the numbers used, and a verdict. Rendered as Markdown
+// (for the README) and as JSON (for tests and scripts).
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace rollcheck::io
+{
+/// One `rollcheck ...` command line and the values read from its JSON output,
+/// keyed by JSON pointer (e.g. "/cds", "/convergence/cds/0/1").
+struct AuditCommand
+{
+  std::string id;      ///< "c1", "c2", ... as cited in the table
+  std::string command; ///< the full command line, ending in `--json -`
+  std::map<std::string, double> reads;
+};
+
+enum class Verdict
+{
+  holds,
+  holds_only_paper_compatible,
+  does_not_hold,
+  not_built
+};
+std::string verdict_text(Verdict v);
+
+/// One recomputation of a claim in one mode. `applicable` false: the mode does
+/// not apply to this claim ("n/a"); `built` false: the code is not built yet.
+struct AuditCell
+{
+  bool applicable = false;
+  bool built = true;
+  std::string value;                 ///< the recomputed value, as printed
+  std::vector<std::string> commands; ///< ids of the commands it comes from
+  bool holds = false;                ///< the verdict rule applied to this cell
+};
+
+struct AuditClaim
+{
+  std::string claim;
+  std::string paper_value;
+  std::string rule; ///< the verdict rule applied to each cell
+  std::map<std::string, AuditCell> cells; ///< by mode name
+  Verdict verdict = Verdict::not_built;
+  std::string note;
+};
+
+struct AuditTable
+{
+  std::vector<std::pair<std::string, std::string>> modes; ///< name, what it means
+  std::vector<std::string> verdict_rules;
+  std::vector<AuditClaim> claims;
+  std::vector<AuditCommand> commands;
+  double wall_s = 0;
+  bool quick = false;
+};
+
+/// The mode whose cell decides whether a claim holds at all.
+inline const std::string paper_compatible_mode = "paper-compatible";
+
+/// holds if the paper-compatible cell holds and every other applicable, built
+/// cell does; holds only in paper-compatible mode if the paper-compatible cell
+/// holds and another does not; does not hold if the paper-compatible cell
+/// does not. A claim with no built paper-compatible cell takes the verdict of
+/// its other cells (e.g. the FEM item, which has no paper-compatible code).
+Verdict judge(const AuditClaim& claim);
+
+std::string audit_markdown(const AuditTable& table);
+nlohmann::json audit_json(const AuditTable& table);
+} // namespace rollcheck::io

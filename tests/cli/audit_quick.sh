@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# `rollcheck audit --quick`: the claim table's structure (every claim, mode
+# cells, verdicts from the stated set, commands cited), the Markdown table, and
+# that numbers the audit read equal what three of its listed commands print
+# when run on their own (an oracle run, a mesh run and a FEM run). Bad input
+# (a folder without the reference meshes) exits 2 and writes nothing.
+set -u
+bin=$1; shared=$2; tmp=$3
+rm -rf "$tmp"; mkdir -p "$tmp"
+fail=0
+check() { # check DESCRIPTION JQ-EXPRESSION FILE: the expression must print true
+  [[ $(jq -r "$2" "$3") == true ]] || { echo "FAIL: $1 ($2)"; fail=1; }
+}
+meshes=$shared/reference/meshes
+"$bin" -q audit --quick --reference-meshes "$meshes" --json "$tmp/audit.json" --markdown "$tmp/audit.md" \
+  > "$tmp/stdout.md" || { echo "FAIL: audit run"; exit 1; }
+j=$tmp/audit.json
+check "eleven claims" '.claims | length == 11' "$j"
+check "five modes, paper-compatible first" '(.modes | length) == 5 and .modes[0].mode == "paper-compatible"' "$j"
+check "verdicts from the stated set" \
+  '[.claims[].verdict] | all(. == "holds" or . == "holds only in paper-compatible mode" or . == "does not hold" or . == "not built yet")' "$j"
+check "verdict rules stated" '(.verdict_rules | length) >= 4 and ([.claims[].rule] | all(length > 0))' "$j"
+check "every built cell cites known commands" \
+  '([.commands[].id]) as $ids | [.claims[].recomputations[] | select(.applicable and .built) | (.commands | length > 0) and all(.commands[]; . as $c | $ids | index($c) != null)] | all' "$j"
+check "every command is a rollcheck command printing JSON" \
+  '[.commands[].command] | all(startswith("rollcheck ") and endswith(" --json -"))' "$j"
+check "quick mode recorded" '.quick == true' "$j"
+cmp -s "$tmp/audit.md" "$tmp/stdout.md" || { echo "FAIL: --markdown file differs from stdout"; fail=1; }
+grep -q '^| claim | paper | paper-compatible | matched resolution | true oloid | corrected physics | real rolling | verdict |$' \
+  "$tmp/audit.md" || { echo "FAIL: Markdown header"; fail=1; }
+rows=$(grep -c '^| .* | \*\*\(holds\|holds only in paper-compatible mode\|does not hold\|not built yet\)\*\* |$' "$tmp/audit.md")
+[[ $rows == 11 ]] || { echo "FAIL: Markdown has $rows claim rows, want 11"; fail=1; }
+grep -q '^Verdict rules:' "$tmp/audit.md" || { echo "FAIL: no verdict rules in the Markdown"; fail=1; }
+
+# Rerun three listed commands: the first oracle command, the first mesh command,
+# the first hertz command; every value the audit read must be what they print.
+for kind in oracle mesh hertz; do
+  id=$(jq -r "[.commands[] | select(.command | startswith(\"rollcheck $kind \"))][0].id" "$j")
+  line=$(jq -r ".commands[] | select(.id == \"$id\") | .command" "$j")
+  read -r -a argv <<< "${line#rollcheck }"
+  "$bin" -q "${argv[@]}" > "$tmp/$id.json" 2> "$tmp/$id.err" || { echo "FAIL: $line"; fail=1; continue; }
+  jq --slurpfile a "$j" --arg id "$id" -r '
+    . as $out | ($a[0].commands[] | select(.id == $id) | .reads | to_entries) as $reads
+    | ($reads | length > 0) and ($reads | all(.key as $p | .value as $v
+        | ($p | ltrimstr("/") | split("/") | map(if test("^[0-9]+$") then tonumber else . end)) as $path
+        | ($out | getpath($path)) as $printed | $printed == $v))' "$tmp/$id.json" > "$tmp/$id.cmp"
+  [[ $(cat "$tmp/$id.cmp") == true ]] || { echo "FAIL: $id \`$line\` prints other numbers than the audit read"; fail=1; }
+done
+
+# Bad input: no reference meshes in the folder.
+mkdir -p "$tmp/empty"
+"$bin" -q audit --quick --reference-meshes "$tmp/empty" --json "$tmp/bad.json" --markdown "$tmp/bad.md" 2> "$tmp/bad.err"
+[[ $? == 2 ]] || { echo "FAIL: missing meshes should exit 2"; fail=1; }
+grep -q -- '--reference-meshes' "$tmp/bad.err" || { echo "FAIL: message should name --reference-meshes"; fail=1; }
+[[ ! -e $tmp/bad.json && ! -e $tmp/bad.md ]] || { echo "FAIL: bad input wrote output"; fail=1; }
+exit $fail

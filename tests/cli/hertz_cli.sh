@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# `rollcheck hertz`: bad input exits 2 naming the input and writes nothing; a
+# good run writes the issue's JSON keys; the case files run through
+# `rollcheck run` with overrides.
+set -u
+bin=$1; tmp=$3
+here=$(cd "$(dirname "$0")/../.." && pwd)
+rm -rf "$tmp"; mkdir -p "$tmp"
+fail=0
+expect() { # expect CODE PATTERN -- command...
+  local code=$1 pattern=$2; shift 3
+  local err; err=$("$@" 2>&1 >/dev/null); local rc=$?
+  if [[ $rc -ne $code ]]; then echo "FAIL ($rc != $code): $*"; echo "$err"; fail=1; return; fi
+  if ! grep -qiE "$pattern" <<<"$err"; then echo "FAIL (message lacks '$pattern'): $*"; echo "$err"; fail=1; fi
+}
+expect 2 "radius.*-0.01" -- "$bin" hertz --radius -0.01 --json "$tmp/bad1.json"
+expect 2 "poisson.*0.5" -- "$bin" hertz --nu 0.5 --json "$tmp/bad2.json"
+expect 2 "degree.*3" -- "$bin" hertz --degree 3 --json "$tmp/bad3.json"
+expect 2 "model" -- "$bin" hertz --model 4d --json "$tmp/bad4.json"
+expect 2 "load.*nan|force_n.*nan|finite" -- "$bin" hertz --load nan --json "$tmp/bad5.json"
+expect 2 "xdmf" -- "$bin" hertz --xdmf "$tmp/fields.vtk" --json "$tmp/bad6.json"
+expect 2 "unknown key 'wibble'" -- "$bin" run "$here/cases/hertz_cylinder.toml" --set wibble=1
+if ls -A "$tmp" | grep -q .; then echo "FAIL: output written on error:"; ls -A "$tmp"; fail=1; fi
+
+# A good axisymmetric run: the issue's keys, with units, and no NaN.
+"$bin" -q hertz --model axi --radius 0.01 --E 200e9 --nu 0.3 --load 100 --degree 1 --refine 2 --penalty-c 100 \
+  --json "$tmp/axi.json" || { echo "FAIL: axi run"; fail=1; }
+/usr/bin/python3 - "$tmp/axi.json" <<'PY' || fail=1
+import json, math, sys
+j = json.load(open(sys.argv[1]))
+keys = ["a_m", "a_hertz_m", "p0_pa", "p0_hertz_pa", "force_n", "dofs", "newton_its", "wall_s", "krylov_its",
+        "cells", "mesh_s", "assembly_s", "solve_s", "peak_memory_mb", "approach_m", "approach_hertz_m",
+        "max_shear_pa", "max_shear_depth_m", "max_von_mises_pa", "max_von_mises_depth_m", "profile", "flags"]
+missing = [k for k in keys if k not in j]
+assert not missing, f"missing keys {missing}"
+for k, v in j.items():
+    assert not (isinstance(v, float) and not math.isfinite(v)), f"{k} = {v}"
+assert j["model"] == "axi" and j["refine"] == 2
+assert abs(j["force_n"] - 100) < 1e-2, j["force_n"]
+assert len(j["profile"]["r_m"]) == len(j["profile"]["p_pa"]) > 10
+PY
+
+# The case files, through `rollcheck run`, coarse for speed.
+for case in hertz_hemisphere_axisymmetric hertz_cylinder hertz_hemisphere; do
+  "$bin" -q run "$here/cases/$case.toml" --set refine=0 --json "$tmp/$case.json" || { echo "FAIL: $case"; fail=1; }
+done
+/usr/bin/python3 - "$tmp/hertz_cylinder.json" <<'PY' || fail=1
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert "b_m" in j and "b_hertz_m" in j and "a_m" not in j, sorted(j)
+assert abs(j["force_per_length_n_per_m"] - 5000) < 0.05, j["force_per_length_n_per_m"]
+PY
+exit $fail
