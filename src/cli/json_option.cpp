@@ -3,6 +3,7 @@
 #include "geometry/error.h"
 #include <fstream>
 #include <iostream>
+#include <mpi.h>
 
 namespace rollcheck::cli
 {
@@ -14,6 +15,11 @@ CLI::Option* add_json_option(CLI::App* sub, std::string& path)
 void emit_json(const std::string& path, const nlohmann::json& summary)
 {
   if (path.empty())
+    return;
+  // Under mpirun every rank holds the same summary; one writes it.
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank != 0)
     return;
   // NaN has no JSON form; nlohmann writes it as null, which would hide a bug.
   const std::string text = summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
