@@ -1,30 +1,18 @@
-// Geometry benchmarks: building the 400-point oloid surface (Qhull hull plus
+// Geometry benchmarks: building the 400-point oloid surfaces (Qhull hull plus
 // checks), the mesh every oracle run starts from.
 #include "geometry/body.h"
-#include "geometry/mass_properties.h"
 #include <benchmark/benchmark.h>
 
 namespace
 {
-void BM_oloid_mesh_400(benchmark::State& state)
+void BM_body_mesh_400(benchmark::State& state, const char* body)
 {
-  rollcheck::geometry::BodySpec spec;
-  spec.body = "oloid";
-  spec.points = 400;
+  const rollcheck::geometry::BodySpec spec{.body = body, .points = 400};
   for (auto _ : state)
     benchmark::DoNotOptimize(rollcheck::geometry::make_body(spec));
 }
-BENCHMARK(BM_oloid_mesh_400)->Unit(benchmark::kMillisecond);
-
-void BM_paper_oloid_mesh_400(benchmark::State& state)
-{
-  rollcheck::geometry::BodySpec spec;
-  spec.body = "paper-oloid";
-  spec.points = 400;
-  for (auto _ : state)
-    benchmark::DoNotOptimize(rollcheck::geometry::make_body(spec));
-}
-BENCHMARK(BM_paper_oloid_mesh_400)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_body_mesh_400, oloid, "oloid")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_body_mesh_400, paper_oloid, "paper-oloid")->Unit(benchmark::kMillisecond);
 } // namespace
 
 BENCHMARK_MAIN();
