@@ -261,8 +261,11 @@ io::AuditTable audit(const Settings& s)
                      "roller"},
       {m.corrected, "every paper-compat quirk switch corrected (no `--paper-compat`; README quirk table); for the "
                     "FEM item, the penalty-contact FEM against analytic Hertz"},
-      {m.rolling, "rolling without slipping under gravity, exact support sets, resolution-free uniformity score "
-                  "(issue 7): no `rollcheck` command runs it yet"},
+      {m.rolling, "rolling without slipping under gravity from the stable ruling with 1.1x the barrier energy, "
+                  "exact support sets, Hertz contact width, scored with the normalised uniformity score U on the "
+                  "mesh with faces cut 8 x 8 (`rollcheck oracle --oracle rolling`, issue 7); U is a different "
+                  "score than CDS, so this column compares discrimination (which body is more uniform), not "
+                  "values"},
   };
   table.verdict_rules = {
       fmt::format("A value or ratio claim holds in a mode when the recomputed number is within {:.0f} % of the "
@@ -271,6 +274,8 @@ io::AuditTable audit(const Settings& s)
       "holds: the paper-compatible recomputation and every other applicable one satisfy the rule.",
       "holds only in paper-compatible mode: the paper-compatible recomputation satisfies it, another does not.",
       "does not hold: the paper-compatible recomputation (the preprint's own method and meshes) fails it.",
+      "real rolling: U is not CDS, so its cell holds when U discriminates the bodies the way the claim does (the "
+      "oloid's U below the cylinder's); the numbers are not compared with the paper's.",
       "n/a: the mode does not change this claim; not built yet: the code for that mode has no command yet."};
 
   CommandSet commands;
@@ -315,6 +320,9 @@ io::AuditTable audit(const Settings& s)
   const std::size_t area_true = commands.add({"mesh", "--body", "oloid"});
   const std::size_t fem_axi = commands.add({"hertz", "--model", "axi"});
   const std::size_t fem_line = commands.add({"hertz", "--model", "plane-strain"});
+  // Real rolling (defaults: 1.1 dV, one loop, Hertz width, faces cut 8 x 8).
+  const std::size_t rolling_oloid = commands.add({"oracle", "--oracle", "rolling", "--body", "oloid"});
+  const std::size_t rolling_cylinder = commands.add({"oracle", "--oracle", "rolling", "--body", "cylinder"});
 
   const fs::path scratch = [] {
     std::string pattern = (fs::temp_directory_path() / "rollcheck-audit-XXXXXX").string();
@@ -362,13 +370,19 @@ io::AuditTable audit(const Settings& s)
       const double v = commands.read(o, "/cds");
       c.cells[mode] = make(sci(v), {o}, within(v, 8.2e-7, claim_tolerance));
     }
-    c.cells[m.rolling] = not_built_cell();
+    const double u_oloid = commands.read(rolling_oloid, "/uniformity_score");
+    const double u_cylinder = commands.read(rolling_cylinder, "/uniformity_score");
+    c.cells[m.rolling] = make(fmt::format("U {:.3f} (cylinder {:.3f})", u_oloid, u_cylinder),
+                              {rolling_oloid, rolling_cylinder}, u_oloid < u_cylinder);
+    c.rule += " Real rolling: U is a different score than CDS, so the comparison is of discrimination, not values: "
+              "holds when the oloid's U is below the cylinder's.";
     c.note = "Matched resolution does not apply to an absolute value: CDS falls with the face count (see the N "
              "claim).";
     add_claim(c);
   }
 
-  auto ratio_claim = [&](const std::string& claim, const std::string& key, double paper) {
+  // with_rolling: the real-rolling cell compares the bodies' uniformity scores U.
+  auto ratio_claim = [&](const std::string& claim, const std::string& key, double paper, bool with_rolling) {
     io::AuditClaim c = new_claim(claim, times(paper),
                      fmt::format("holds when cylinder {0} / oloid {0} is within {1:.0f} % of {2:.0f}.", key,
                                  100 * claim_tolerance, paper));
@@ -379,9 +393,17 @@ io::AuditTable audit(const Settings& s)
       c.cells[mode] = make(times(r), {o, y}, within(r, paper, claim_tolerance));
     }
     c.cells[m.rolling] = not_built_cell();
+    if (with_rolling)
+    {
+      const double r = commands.read(rolling_cylinder, "/uniformity_score") /
+                       commands.read(rolling_oloid, "/uniformity_score");
+      c.cells[m.rolling] = make(fmt::format("U ratio {:.2f}x", r), {rolling_oloid, rolling_cylinder}, r > 1);
+      c.rule += " Real rolling: U is a different score than CDS, so the comparison is of discrimination, not "
+                "values: holds when cylinder U / oloid U exceeds 1 (the oloid the more uniform), whatever its size.";
+    }
     add_claim(c);
   };
-  ratio_claim("CDS cylinder / oloid", "cds", 58);
+  ratio_claim("CDS cylinder / oloid", "cds", 58, true);
 
   {
     io::AuditClaim c = new_claim("Oloid a local optimum of its search family (quick grid, rigid revalidation of the top 5)",
@@ -485,7 +507,7 @@ io::AuditTable audit(const Settings& s)
     add_claim(c);
   }
 
-  ratio_claim("SDS cylinder / oloid", "sds", 58);
+  ratio_claim("SDS cylinder / oloid", "sds", 58, false);
 
   {
     io::AuditClaim c = new_claim("TDS, WDS_vol, WDS_depth cylinder / oloid (the 46-68x range)", "68x, 68x, 46x",
@@ -577,7 +599,7 @@ void add_audit_command(CLI::App& app)
 {
   CLI::App* sub = app.add_subcommand(
       "audit", "Recompute every quantitative claim of the preprint in each mode (paper-compatible, matched "
-               "resolution, true oloid, corrected physics) and print the claim table with verdicts and commands");
+               "resolution, true oloid, corrected physics, real rolling) and print the claim table with verdicts and commands");
   static std::string json_path, markdown_path;
   static Settings settings{fs::path(ROLLCHECK_SOURCE_DIR) / ".." / "shared" / "reference" / "meshes", false, 0};
   static std::string meshes = settings.meshes.string();

@@ -1,5 +1,7 @@
 // `rollcheck oracle`: the preprint's approximate or rigid-body oracle on a
-// body, scored with CDS, SDS, TDS, WDS and FDS (README "rollcheck oracle").
+// body, scored with CDS, SDS, TDS, WDS and FDS (README "rollcheck oracle"),
+// or real rolling without slipping of a named body, scored with the
+// uniformity score U (`--oracle rolling`, README "Corrected physics").
 // Also the scene "oracle" of case files, and the paper-compat quirk table
 // (`--quirk-table`).
 #include "cli/body_from_parameters.h"
@@ -8,11 +10,13 @@
 #include "contact/face_curvature.h"
 #include "contact/face_pressure.h"
 #include "contact/trajectory_scores.h"
+#include "geometry/body.h"
 #include "geometry/error.h"
 #include "io/search_store.h"
 #include "oracle/approximate_oracle.h"
 #include "oracle/rigid_body_oracle.h"
 #include "oracle/rolling_body.h"
+#include "oracle/rolling_study.h"
 #include <chrono>
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -27,11 +31,29 @@ const io::Schema& oracle_schema()
     const oracle::ApproximateOptions a;
     const oracle::RigidBodyOptions r;
     const contact::ContactParameters c;
+    const oracle::RollingStudyParameters rolling;
     io::Schema s{"oracle", body_parameters()};
     const std::vector<io::Parameter> own = {
         {"oracle", "--oracle", std::string("rigid"), "",
-         "approx: the approximate oracle (Algorithm 1); rigid: the rigid-body oracle (Algorithm 2)",
-         {"approx", "rigid"}},
+         "approx: the approximate oracle (Algorithm 1); rigid: the rigid-body oracle (Algorithm 2); rolling: real "
+         "rolling without slipping under gravity of a named --body (oloid, paper-oloid, two-circle roller, "
+         "cylinder, sphere), scored with the uniformity score U instead of CDS ... FDS",
+         {"approx", "rigid", "rolling"}},
+        {"barrier_energy_excess", "--energy-excess", rolling.barrier_energy_excess, "",
+         "Rolling oracle: initial kinetic energy at the stable ruling / potential barrier dV - 1 (0.1: just over "
+         "every barrier without lifting a rim, README \"The preprint's bodies under real rolling\")"},
+        {"loops", "--loops", std::int64_t{rolling.loops}, "",
+         "Rolling oracle: complete loops of the contact curve scored (undamped, every loop is the same)"},
+        {"face_subdivisions", "--face-subdivisions", std::int64_t{8}, "",
+         "Rolling oracle: every mesh face cut into this^2 parts for scoring U; U on the mesh rises towards its "
+         "mesh-free value U_inf as this grows (8: the README's real-rolling table)"},
+        {"mass_points", "--mass-points", std::int64_t{rolling.mass_points}, "",
+         "Rolling oracle: samples per circle (cylinder: sides) of the fine mesh giving the exact body's mass, "
+         "inertia and area; U_inf's error from it falls as 1/mass_points^2"},
+        {"contact_width", "--contact-width", std::string("hertz"), "",
+         "Rolling oracle: width of the contact strip, hertz (the elastic Hertz patch, physical) or rigid (unit "
+         "width, the geometric sweep)",
+         {"hertz", "rigid"}},
         {"steps", "--steps", std::int64_t{a.steps}, "",
          "Approximate oracle: rotation steps T (the rigid-body oracle takes --duration / --dt)"},
         {"threshold_m", "--threshold", a.contact_threshold_m, "m",
@@ -63,8 +85,8 @@ const io::Schema& oracle_schema()
          "(0.7,-1.2,0.4), (0.1,0.8,-1), (-0.3,-0.6,1.5) rad/s (the preprint: 3)"},
         {"damping_n_m_s", "--damping", r.damping_n_m_s, "N m s",
          "Rigid-body oracle: damping gamma, torque per angular velocity (the preprint's)"},
-        {"mass_kg", "--mass", r.mass_kg, "kg", "Rigid-body oracle: mass m (the preprint's)"},
-        {"gravity_m_s2", "--gravity", r.gravity_m_s2, "m/s^2", "Rigid-body oracle: g (the preprint's)"},
+        {"mass_kg", "--mass", r.mass_kg, "kg", "Rigid-body and rolling oracles: mass m (the preprint's; U does not depend on it)"},
+        {"gravity_m_s2", "--gravity", r.gravity_m_s2, "m/s^2", "Rigid-body and rolling oracles: g (the preprint's)"},
         {"max_angular_speed_rad_s", "--max-spin", r.max_angular_speed_rad_s, "rad/s",
          "Rigid-body oracle: cap on |omega| (the reference code's)"},
         {"youngs_modulus_pa", "--youngs-modulus", c.hertz.youngs_modulus_pa, "Pa", "E of the body, mild steel (the preprint's)"},
@@ -389,8 +411,113 @@ nlohmann::json quirk_table(const geometry::SurfaceMesh& mesh, const Setup& paper
           {"quirks", table}};
 }
 
+/// The body of body_parameters() as a BodySpec: the rolling model needs the
+/// exact body, not a mesh of it.
+geometry::BodySpec body_spec_from(const io::Parameters& params)
+{
+  if (const std::string& file = params.text("mesh_file"); !file.empty())
+    throw InputError(fmt::format("option --mesh '{}': --oracle rolling rolls an exact named body, not a mesh; "
+                                 "give --body oloid|paper-oloid|roller|cylinder|sphere instead",
+                                 file));
+  geometry::BodySpec spec;
+  spec.body = params.text("body");
+  spec.family = params.text("family") == "paper" ? geometry::RollerFamily::paper
+                                                  : geometry::RollerFamily::centre_line;
+  spec.genome = {params.real("theta_deg"), params.real("offset"), params.real("ratio"),
+                 static_cast<int>(params.integer("circles"))};
+  spec.radius_m = params.real("radius_m");
+  spec.points = static_cast<int>(params.integer("points"));
+  spec.height_m = params.real("height_m");
+  spec.sections = static_cast<int>(params.integer("sections"));
+  spec.subdivisions = static_cast<int>(params.integer("subdivisions"));
+  return spec;
+}
+
+nlohmann::json run_rolling(const io::Parameters& params)
+{
+  if (params.flag("quirk_table") || params.flag("paper_compat") || params.flag("per_face"))
+    throw InputError("options --quirk-table, --paper-compat and --per-face belong to the preprint's oracles, not to "
+                     "--oracle rolling");
+  const geometry::BodySpec spec = body_spec_from(params);
+  oracle::RollingStudyParameters p;
+  p.mass_kg = params.real("mass_kg");
+  p.gravity_m_s2 = params.real("gravity_m_s2");
+  p.barrier_energy_excess = params.real("barrier_energy_excess");
+  const std::int64_t loops = params.integer("loops"), parts = params.integer("face_subdivisions");
+  if (loops < 1 || loops > 1000)
+    throw InputError(fmt::format("option --loops: must be 1 to 1000, got {}", loops));
+  if (parts < 1 || parts > 64)
+    throw InputError(fmt::format("option --face-subdivisions: must be 1 to 64, got {}", parts));
+  p.loops = static_cast<int>(loops);
+  p.face_subdivisions = static_cast<int>(parts);
+  const std::int64_t mass_points = params.integer("mass_points");
+  if (mass_points < 16 || mass_points > 1 << 20)
+    throw InputError(fmt::format("option --mass-points: must be 16 to {}, got {}", 1 << 20, mass_points));
+  p.mass_points = static_cast<int>(mass_points);
+  p.contact_width.model =
+      params.text("contact_width") == "rigid" ? oracle::ContactWidthModel::rigid : oracle::ContactWidthModel::hertz;
+  const std::string label = spec.body == "roller"
+                                ? fmt::format("roller({}, {}, {}, {}, {})", params.text("family"),
+                                              spec.genome.theta_deg, spec.genome.offset, spec.genome.ratio,
+                                              spec.genome.n_circles)
+                                : spec.body;
+  const auto start = std::chrono::steady_clock::now();
+  oracle::RollingStudyResult r;
+  try
+  {
+    r = oracle::rolling_study(spec, p);
+  }
+  catch (const InputError& e)
+  {
+    throw InputError(fmt::format("option --oracle rolling with --body {}: {}", label, e.what()));
+  }
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  auto maybe = [](double v) { return std::isnan(v) ? nlohmann::json(nullptr) : io::json_number(v); };
+  nlohmann::json j = {
+      {"oracle", "rolling"},
+      {"body", label},
+      {"contact", r.contact},
+      {"contact_width", params.text("contact_width")},
+      {"uniformity_score", io::json_number(r.uniformity)},
+      {"uniformity_score_continuum", maybe(r.continuum_uniformity)},
+      {"coverage", io::json_number(r.coverage)},
+      {"max_over_mean", io::json_number(r.max_over_mean)},
+      {"contact_held", r.contact_held},
+      {"loops_completed", io::json_number(r.loops_completed)},
+      {"initial_rate_rad_s", io::json_number(r.initial_rate_rad_s)},
+      {"loop_period_s", io::json_number(r.loop_period_s)},
+      {"scored_time_s", io::json_number(r.scored_time_s)},
+      {"max_energy_error", io::json_number(r.max_energy_error)},
+      {"centre_of_pressure_min", io::json_number(r.centre_of_pressure_min)},
+      {"centre_of_pressure_max", io::json_number(r.centre_of_pressure_max)},
+      {"friction_ratio_max", io::json_number(r.friction_ratio_max)},
+      {"barrier_energy_excess", p.barrier_energy_excess},
+      {"loops", p.loops},
+      {"face_subdivisions", p.face_subdivisions},
+      {"mass_points", p.mass_points},
+      {"n_faces", r.faces},
+      {"wall_s", wall_s},
+      {"cds", nullptr},
+      {"sds", nullptr},
+      {"tds", nullptr},
+      {"wds_vol", nullptr},
+      {"wds_depth", nullptr},
+      {"fds", nullptr},
+      {"not_computed",
+       "the rolling oracle scores its contact measure with the uniformity score U only (README \"The normalised "
+       "uniformity score\"); cds, sds, tds, wds_vol, wds_depth and fds are not computed and are null"}};
+  spdlog::info("{} (rolling oracle, {} width, {} faces, {:.3f} s): U {:.6g}, U_inf {}, coverage {:.4g}, contact "
+               "held {}, loops {:.3g}",
+               label, params.text("contact_width"), r.faces, wall_s, r.uniformity,
+               std::isnan(r.continuum_uniformity) ? std::string("-") : fmt::format("{:.6g}", r.continuum_uniformity),
+               r.coverage, r.contact_held ? "yes" : "no", r.loops_completed);
+  return j;
+}
+
 nlohmann::json run_oracle(const io::Parameters& params)
 {
+  if (params.text("oracle") == "rolling")
+    return run_rolling(params);
   std::string label;
   const geometry::SurfaceMesh mesh = body_from_parameters(params, &label);
   const Setup setup = setup_from(params);
@@ -417,7 +544,7 @@ void add_oracle_command(CLI::App& app)
 {
   CLI::App* sub = app.add_subcommand(
       "oracle", "Roll a body with the approximate or rigid-body oracle and score its contact, stress, heat, wear "
-                "and fatigue distributions");
+                "and fatigue distributions, or roll it for real (--oracle rolling) and score its contact with U");
   static std::string json_path;
   add_json_option(sub, json_path);
   static io::SchemaOptions* options = new io::SchemaOptions(sub, oracle_schema());

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# `rollcheck oracle --oracle rolling`: real rolling of a named body scored with
+# the uniformity score U (README "Corrected physics").
+# - cylinder: only its side is touched, uniformly in time, so its continuum
+#   score is U_inf = A / A_side - 1 = (2 pi r h + 2 pi r^2) / (2 pi r h) - 1 = r / h
+#   = 1/2 for r = 1, h = 2, at any rolling rate (two energy excesses); the exact
+#   body's area comes from a polygon of --mass-points sides, error ~ 1/n^2, so n
+#   = 16384 puts it far below 1e-6 (the default 2048 gives 1.2e-6);
+# - oloid: holds its ruling for one whole loop; the scoring mesh has the body
+#   mesh's faces (as `rollcheck mesh` builds it) times subdivisions^2; the mesh
+#   score approaches U_inf from below as the faces are cut finer;
+# - the JSON states that cds ... fds are not computed (null);
+# - a mesh file or a three-circle roller exits 2 with a clear message, nothing written.
+set -u
+bin=$1; shared=$2; tmp=$3
+rm -rf "$tmp"; mkdir -p "$tmp"
+fail=0
+check() { # check DESCRIPTION JQ-EXPRESSION FILE: the expression must print true
+  [[ $(jq -r "$2" "$3") == true ]] || { echo "FAIL: $1 ($2)"; jq -c . "$3" | head -c 2000; echo; fail=1; }
+}
+run() { # run NAME ARGS...: the JSON goes to $tmp/NAME.json
+  local name=$1; shift
+  "$bin" -q oracle --oracle rolling "$@" --json "$tmp/$name.json" 2> "$tmp/$name.err" \
+    || { echo "FAIL: oracle --oracle rolling $*"; cat "$tmp/$name.err"; fail=1; }
+}
+
+run cylinder --body cylinder --face-subdivisions 2 --mass-points 16384
+run cylinder_fast --body cylinder --face-subdivisions 2 --mass-points 16384 --energy-excess 1
+for name in cylinder cylinder_fast; do
+  check "$name: continuum U = r/h = 0.5" '(.uniformity_score_continuum - 0.5 | fabs) <= 1e-6' "$tmp/$name.json"
+  check "$name: contact held over one loop" '.contact_held == true and (.loops_completed - 1 | fabs) < 1e-6' "$tmp/$name.json"
+done
+
+run oloid2 --body oloid --points 100 --face-subdivisions 2
+run oloid4 --body oloid --points 100 --face-subdivisions 4
+"$bin" -q mesh --body oloid --points 100 --json "$tmp/mesh.json" 2> "$tmp/mesh.err" || { echo "FAIL: mesh"; fail=1; }
+faces=$(jq -r '.n_faces' "$tmp/mesh.json")
+for k in 2 4; do
+  j=$tmp/oloid$k.json
+  check "oloid x$k: every key, the others null and said so" \
+    '. as $j | (["uniformity_score","uniformity_score_continuum","coverage","contact_held","loops_completed","initial_rate_rad_s","n_faces","wall_s"] | all(. as $k | $j | has($k)))
+     and ([.cds, .sds, .tds, .wds_vol, .wds_depth, .fds] | all(. == null)) and (.not_computed | test("not computed"))' "$j"
+  check "oloid x$k: n_faces = mesh faces x $k^2" ".n_faces == $faces * $k * $k" "$j"
+  check "oloid x$k: holds its ruling for one loop" '.contact_held == true and (.loops_completed - 1 | fabs) < 1e-6 and .initial_rate_rad_s > 0' "$j"
+  # coverage is a ratio of area sums: 1 up to their round-off (1e-12)
+  check "oloid x$k: 0 < coverage <= 1, U on the mesh at most U_inf" \
+    '.coverage > 0 and .coverage <= 1 + 1e-12 and .uniformity_score > 0 and .uniformity_score <= .uniformity_score_continuum' "$j"
+done
+jq -n --slurpfile a "$tmp/oloid2.json" --slurpfile b "$tmp/oloid4.json" \
+  '$a[0].uniformity_score < $b[0].uniformity_score and $a[0].uniformity_score_continuum == $b[0].uniformity_score_continuum' \
+  > "$tmp/converge.txt"
+[[ $(cat "$tmp/converge.txt") == true ]] || { echo "FAIL: oloid U should rise towards U_inf as faces are cut finer"; fail=1; }
+
+"$bin" oracle --help > "$tmp/help.txt"
+for option in --energy-excess --loops --face-subdivisions --contact-width; do
+  grep -A3 -- "$option" "$tmp/help.txt" | grep -q "default" || { echo "FAIL: --help lacks $option with its default"; fail=1; }
+done
+
+expect() { # expect CODE PATTERN -- command...
+  local code=$1 pattern=$2; shift 3
+  local err; err=$("$@" 2>&1 >/dev/null); local rc=$?
+  if [[ $rc -ne $code ]]; then echo "FAIL ($rc != $code): $*"; echo "$err"; fail=1; return; fi
+  if ! grep -qiE "$pattern" <<<"$err"; then echo "FAIL (message lacks '$pattern'): $*"; echo "$err"; fail=1; fi
+}
+expect 2 "mesh.*named body" -- "$bin" oracle --oracle rolling --mesh "$shared/reference/meshes/oloid_reference.obj" --json "$tmp/bad1.json"
+expect 2 "rolling.*3 circles" -- "$bin" oracle --oracle rolling --body roller --circles 3 --theta 120 --json "$tmp/bad2.json"
+expect 2 "loops" -- "$bin" oracle --oracle rolling --body oloid --loops 0 --json "$tmp/bad3.json"
+[[ ! -e $tmp/bad1.json && ! -e $tmp/bad2.json && ! -e $tmp/bad3.json ]] || { echo "FAIL: bad input wrote output"; fail=1; }
+exit $fail
