@@ -6,16 +6,8 @@
 
 namespace rollcheck::cli
 {
-geometry::SurfaceMesh body_from_parameters(const io::Parameters& params, std::string* label)
+geometry::BodySpec body_spec_from_parameters(const io::Parameters& params)
 {
-  if (const std::string& file = params.text("mesh_file"); !file.empty())
-  {
-    geometry::SurfaceMesh mesh = geometry::read_mesh(file);
-    geometry::require_closed_convex(mesh, fmt::format("mesh file '{}'", file));
-    if (label)
-      *label = file;
-    return mesh;
-  }
   geometry::BodySpec spec;
   spec.body = params.text("body");
   spec.family = params.text("family") == "paper" ? geometry::RollerFamily::paper
@@ -27,6 +19,20 @@ geometry::SurfaceMesh body_from_parameters(const io::Parameters& params, std::st
   spec.height_m = params.real("height_m");
   spec.sections = static_cast<int>(params.integer("sections"));
   spec.subdivisions = static_cast<int>(params.integer("subdivisions"));
+  return spec;
+}
+
+geometry::SurfaceMesh body_from_parameters(const io::Parameters& params, std::string* label)
+{
+  if (const std::string& file = params.text("mesh_file"); !file.empty())
+  {
+    geometry::SurfaceMesh mesh = geometry::read_mesh(file);
+    geometry::require_closed_convex(mesh, fmt::format("mesh file '{}'", file));
+    if (label)
+      *label = file;
+    return mesh;
+  }
+  const geometry::BodySpec spec = body_spec_from_parameters(params);
   if (label)
     *label = spec.body == "roller" ? fmt::format("roller({}, {}, {}, {}, {})", params.text("family"), spec.genome.theta_deg,
                                                  spec.genome.offset, spec.genome.ratio, spec.genome.n_circles)

@@ -419,18 +419,7 @@ geometry::BodySpec body_spec_from(const io::Parameters& params)
     throw InputError(fmt::format("option --mesh '{}': --oracle rolling rolls an exact named body, not a mesh; "
                                  "give --body oloid|paper-oloid|roller|cylinder|sphere instead",
                                  file));
-  geometry::BodySpec spec;
-  spec.body = params.text("body");
-  spec.family = params.text("family") == "paper" ? geometry::RollerFamily::paper
-                                                  : geometry::RollerFamily::centre_line;
-  spec.genome = {params.real("theta_deg"), params.real("offset"), params.real("ratio"),
-                 static_cast<int>(params.integer("circles"))};
-  spec.radius_m = params.real("radius_m");
-  spec.points = static_cast<int>(params.integer("points"));
-  spec.height_m = params.real("height_m");
-  spec.sections = static_cast<int>(params.integer("sections"));
-  spec.subdivisions = static_cast<int>(params.integer("subdivisions"));
-  return spec;
+  return body_spec_from_parameters(params);
 }
 
 nlohmann::json run_rolling(const io::Parameters& params)
