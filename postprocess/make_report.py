@@ -7,7 +7,7 @@ scene kind, the scalar results and the parameters that vary; the files the
 cases wrote (FEM fields as XDMF). `rollcheck report --from STORE` runs it in
 a temporary folder that replaces the report folder when it succeeds.
 
-    /usr/bin/python3 postprocess/make_report.py --store STORE --out DIR
+    /usr/bin/python3 postprocess/make_report.py --store STORE --out DIR [--rollcheck BINARY]
 """
 import argparse
 import base64
@@ -194,7 +194,10 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--store", required=True, help="results store (results.h5)")
     parser.add_argument("--out", required=True, help="folder for report.md, report.html and the PNGs")
+    parser.add_argument("--rollcheck", help="the rollcheck binary, for plots that rebuild a body's surface")
     args = parser.parse_args()
+    if args.rollcheck:
+        os.environ["ROLLCHECK_BINARY"] = args.rollcheck
     root, cases = load_cases(args.store)
     os.makedirs(args.out, exist_ok=True)
     report = Report(args.out)

@@ -2,7 +2,8 @@
 
 Draws, log-log, the contact distribution score after each snapshot of the
 samples, for every case whose summary holds convergence snapshots: an array
-under a key containing "convergence" with rows [samples, cds], or an object
+with rows [samples, cds] named "convergence" or named with "cds" under such a
+key (convergence/cds; the other scores' snapshots are left out), or an object
 under such a key with a samples array (key containing "sample" or "step")
 and a score array (key containing "cds" or "score"). Without snapshots, it
 draws CDS against n_samples over cases of one body that differ in their
@@ -23,7 +24,9 @@ TITLE = "CDS against samples (convergence)"
 def snapshot_series(case):
     """(samples, cds, name) of every convergence snapshot series in a case."""
     for path, a in arrays(case.summary, ndim=2):
-        if "convergence" in path.lower() and a.shape[1] == 2 and len(a) > 1:
+        leaf = path.split("/")[-1].lower()
+        if "convergence" in path.lower() and (leaf == "convergence" or "cds" in leaf) and a.shape[1] == 2 \
+                and len(a) > 1:
             yield a[:, 0], a[:, 1], path
     for path, node in subtrees(case.summary, "convergence"):
         one_d = {k: np.asarray(v) for k, v in node.items()

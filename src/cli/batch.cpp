@@ -16,7 +16,8 @@ void add_batch_command(CLI::App& app)
   static std::string json_path;
   sub->add_option("cases", options.cases, "Case files (.toml), folders of them, or quoted globs")->required();
   sub->add_option("-j,--jobs", options.jobs,
-                  "Worker processes per MPI rank (default: 0 = one per CPU the rank may use)");
+                  "Worker processes per MPI rank (default: 0 = one per CPU: the CPUs mpirun bound the rank to, else the "
+                  "node's CPUs shared among its ranks)");
   sub->add_option("--out", options.out,
                   "Results folder: cases/<hash>/ per case, results.h5 for all (default: results)");
   sub->add_flag("--force", options.force, "Recompute cases already done (default: reuse their results)");

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <fmt/format.h>
 #include <glob.h>
-#include <map>
 #include <set>
 
 namespace rollcheck::io
@@ -117,17 +116,20 @@ std::vector<fs::path> expand_case_arguments(const std::vector<std::string>& argu
 std::vector<BatchCase> resolve_batch_cases(const std::vector<fs::path>& files, const FindSchema& find_schema)
 {
   std::vector<BatchCase> cases;
-  std::map<std::string, int> stems;
   for (const fs::path& file : files)
-  {
     cases.push_back(resolve_one(file, find_schema));
-    ++stems[cases.back().name];
-  }
-  // Case files of one name in different folders: the hash (or the position,
-  // for a case without one) tells their store groups apart.
+  // Case files of one name in different folders are told apart by their
+  // folder's name, and if that is not enough, by their position.
+  auto count = [&](const std::string& name) {
+    return std::count_if(cases.begin(), cases.end(), [&](const BatchCase& c) { return c.name == name; });
+  };
+  std::vector<std::string> names;
+  for (const BatchCase& c : cases)
+    names.push_back(count(c.name) > 1 ? fmt::format("{}_{}", c.file.parent_path().filename().string(), c.name)
+                                      : c.name);
   for (std::size_t i = 0; i < cases.size(); ++i)
-    if (stems[cases[i].name] > 1)
-      cases[i].name = fmt::format("{}_{}", cases[i].name, cases[i].hash.empty() ? std::to_string(i) : cases[i].hash.substr(0, 8));
+    cases[i].name = std::count(names.begin(), names.end(), names[i]) > 1 ? fmt::format("{}_{}", names[i], i)
+                                                                          : names[i];
   return cases;
 }
 } // namespace rollcheck::io

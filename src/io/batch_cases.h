@@ -18,7 +18,7 @@ using FindSchema = std::function<const Schema&(const std::string& kind, const st
 struct BatchCase
 {
   std::filesystem::path file;         ///< absolute path of the case file
-  std::string name;                   ///< its stem, made unique within the batch
+  std::string name;                   ///< its stem; folder_stem if another case has that stem
   std::string kind;                   ///< the scene
   nlohmann::json parameters;          ///< resolved: every default filled in
   std::vector<std::string> overrides; ///< `--set key=value` for the case's process

@@ -33,7 +33,7 @@ ReportFiles write_report(const fs::path& store, const fs::path& folder, const fs
   fs::remove_all(drawing);
   fs::create_directories(drawing);
   ChildProcess process({python.string(), script.string(), "--store", fs::absolute(store).string(), "--out",
-                        drawing.string()},
+                        drawing.string(), "--rollcheck", own_executable().string()},
                        drawing, drawing / "report.log");
   const ExitStatus status = process.wait();
   if (!status.success())

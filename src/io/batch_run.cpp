@@ -98,13 +98,21 @@ std::optional<Message> receive_text(int source)
   return m;
 }
 
-int cpus_available()
+/// Workers of this rank when -j is not given: the CPUs mpirun bound it to,
+/// or, unbound (one rank alone, or `mpirun --bind-to none`), its share of
+/// the node's CPUs among the ranks on the node. Collective.
+int default_workers()
 {
+  const int node_cpus = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   cpu_set_t set;
   CPU_ZERO(&set);
-  if (sched_getaffinity(0, sizeof set, &set) == 0)
-    return std::max(1, CPU_COUNT(&set));
-  return std::max(1u, std::thread::hardware_concurrency());
+  const int bound = sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : node_cpus;
+  MPI_Comm node;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+  int ranks_on_node = 1;
+  MPI_Comm_size(node, &ranks_on_node);
+  MPI_Comm_free(&node);
+  return std::max(1, bound < node_cpus ? bound : node_cpus / ranks_on_node);
 }
 
 fs::path find_program(const std::string& name)
@@ -541,7 +549,8 @@ BatchResult run_batch(const BatchOptions& options, const FindSchema& find_schema
   if (options.jobs < 0)
     throw InputError(fmt::format("batch -j {}: the number of workers must be at least 1 (0: one per CPU)",
                                  options.jobs));
-  const int jobs = options.jobs > 0 ? options.jobs : cpus_available();
+  const int automatic = default_workers(); // collective: every rank calls it, -j given or not
+  const int jobs = options.jobs > 0 ? options.jobs : automatic;
   std::vector<int> slots(ranks);
   MPI_Gather(&jobs, 1, MPI_INT, slots.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
 

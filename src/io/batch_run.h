@@ -22,7 +22,7 @@ namespace rollcheck::io
 struct BatchOptions
 {
   std::vector<std::string> cases;     ///< files, folders, globs
-  int jobs = 0;                       ///< worker processes per rank; 0: the CPUs the rank may use
+  int jobs = 0;                       ///< worker processes per rank; 0: the rank's share of the CPUs
   std::filesystem::path out = "results";
   bool force = false;                 ///< recompute cases already done
   double case_timeout_s = 0;          ///< a case running longer fails; 0: no limit

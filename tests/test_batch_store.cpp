@@ -1,0 +1,302 @@
+// The HDF5 results store: the documented JSON -> HDF5 mapping, read back with
+// the HDF5 C API (independently of the writer); atomic replacement; and the
+// report drawn from a store filled with the reference code's own outputs.
+#include "geometry/error.h"
+#include "io/results_store.h"
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <hdf5.h>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+using namespace rollcheck;
+namespace fs = std::filesystem;
+
+namespace
+{
+const fs::path shared_dir = ROLLCHECK_SHARED_DIR;
+
+fs::path fresh_folder(const std::string& name)
+{
+  const fs::path dir = fs::path(ROLLCHECK_TEST_TMP) / "batch_store" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+/// An opened HDF5 store, read with the plain C API.
+class Reader
+{
+public:
+  explicit Reader(const fs::path& path) : file_(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT)) {}
+  ~Reader()
+  {
+    if (file_ >= 0)
+      H5Fclose(file_);
+  }
+  bool ok() const { return file_ >= 0; }
+  bool exists(const std::string& path) const { return H5Lexists(file_, path.c_str(), H5P_DEFAULT) > 0; }
+
+  H5T_class_t type_class(const std::string& path) const
+  {
+    const hid_t set = H5Dopen2(file_, path.c_str(), H5P_DEFAULT);
+    const hid_t type = H5Dget_type(set);
+    const H5T_class_t c = H5Tget_class(type);
+    H5Tclose(type);
+    H5Dclose(set);
+    return c;
+  }
+
+  std::vector<hsize_t> shape(const std::string& path) const
+  {
+    const hid_t set = H5Dopen2(file_, path.c_str(), H5P_DEFAULT);
+    const hid_t space = H5Dget_space(set);
+    std::vector<hsize_t> dims(static_cast<std::size_t>(std::max(0, H5Sget_simple_extent_ndims(space))));
+    H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+    H5Sclose(space);
+    H5Dclose(set);
+    return dims;
+  }
+
+  H5S_class_t space_class(const std::string& path) const
+  {
+    const hid_t set = H5Dopen2(file_, path.c_str(), H5P_DEFAULT);
+    const hid_t space = H5Dget_space(set);
+    const H5S_class_t c = H5Sget_simple_extent_type(space);
+    H5Sclose(space);
+    H5Dclose(set);
+    return c;
+  }
+
+  template <typename T>
+  std::vector<T> numbers(const std::string& path, hid_t memory_type) const
+  {
+    const hid_t set = H5Dopen2(file_, path.c_str(), H5P_DEFAULT);
+    const hid_t space = H5Dget_space(set);
+    std::vector<T> data(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+    H5Dread(set, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
+    H5Sclose(space);
+    H5Dclose(set);
+    return data;
+  }
+
+  std::vector<std::string> strings(const std::string& path) const
+  {
+    const hid_t set = H5Dopen2(file_, path.c_str(), H5P_DEFAULT);
+    const hid_t space = H5Dget_space(set);
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, H5T_VARIABLE);
+    H5Tset_cset(type, H5T_CSET_UTF8); // HDF5 converts no strings between character sets
+    std::vector<char*> data(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+    H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
+    std::vector<std::string> out(data.begin(), data.end());
+    H5Dvlen_reclaim(type, space, H5P_DEFAULT, data.data());
+    H5Tclose(type);
+    H5Sclose(space);
+    H5Dclose(set);
+    return out;
+  }
+
+  std::string string_attribute(const std::string& object, const std::string& name) const
+  {
+    const hid_t attribute = H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, H5T_VARIABLE);
+    H5Tset_cset(type, H5T_CSET_UTF8); // HDF5 converts no strings between character sets
+    char* text = nullptr;
+    H5Aread(attribute, type, &text);
+    std::string out = text ? text : "";
+    H5free_memory(text);
+    H5Tclose(type);
+    H5Aclose(attribute);
+    return out;
+  }
+
+  template <typename T>
+  T number_attribute(const std::string& object, const std::string& name, hid_t memory_type) const
+  {
+    const hid_t attribute = H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+    T value{};
+    H5Aread(attribute, memory_type, &value);
+    H5Aclose(attribute);
+    return value;
+  }
+
+  /// Member names of a group in the order they were created.
+  std::vector<std::string> members_in_creation_order(const std::string& group) const
+  {
+    const hid_t g = H5Gopen2(file_, group.c_str(), H5P_DEFAULT);
+    H5G_info_t info;
+    H5Gget_info(g, &info);
+    std::vector<std::string> names;
+    for (hsize_t i = 0; i < info.nlinks; ++i)
+    {
+      char name[256];
+      H5Lget_name_by_idx(g, ".", H5_INDEX_CRT_ORDER, H5_ITER_INC, i, name, sizeof name, H5P_DEFAULT);
+      names.emplace_back(name);
+    }
+    H5Gclose(g);
+    return names;
+  }
+
+private:
+  hid_t file_;
+};
+
+nlohmann::json sample_record()
+{
+  return {
+      {"status", "ok"},
+      {"hash", "0123456789abcdef"},
+      {"wall_s", 1.5},
+      {"mpi_ranks", 1},
+      {"parameters", {{"kind", "demo"}, {"radius_m", 0.01}, {"points", 400}, {"flag", true}, {"mesh_file", ""}}},
+      {"summary",
+       {{"n_faces", 1198},
+        {"cds", 8.17e-7},
+        {"convex", true},
+        {"body", "oloid"},
+        {"fds", nullptr},
+        {"counts", {0, 3, 5}},
+        {"centroids", {{0.0, 1.0, 2.0}, {3.0, 4.0, 5.0}}},
+        {"touched", {true, false}},
+        {"mixed_numbers", {1, 2.5}},
+        {"flags", {"penalty_error_dominates", "coarse"}},
+        {"ragged", {{1, 2}, {3}}},
+        {"orientations", {{{"peak_pa", 2.0e9}}, {{"peak_pa", 1.9e9}}}},
+        {"empty", nlohmann::json::array()},
+        {"profile", {{"r_m", {0.0, 1e-5}}, {"p_pa", {2.1e9, 2.0e9}}}},
+        {"a/b", 1}}},
+      {"files", {"cases/0123456789abcdef/fields.xdmf"}}};
+}
+} // namespace
+
+TEST(ResultsStore, MapsSummaryJsonToDatasetsAndGroupsAsDocumented)
+{
+  const fs::path store = fresh_folder("mapping") / "results.h5";
+  io::write_results_store(store, {{"oloid", sample_record()}}, {{"n_cases", 1}});
+  const Reader r(store);
+  ASSERT_TRUE(r.ok());
+  const std::string s = "/cases/oloid/summary/";
+  // Scalars: typed scalar datasets.
+  EXPECT_EQ(r.type_class(s + "n_faces"), H5T_INTEGER);
+  EXPECT_EQ(r.numbers<std::int64_t>(s + "n_faces", H5T_NATIVE_INT64), std::vector<std::int64_t>{1198});
+  EXPECT_EQ(r.type_class(s + "cds"), H5T_FLOAT);
+  EXPECT_EQ(r.numbers<double>(s + "cds", H5T_NATIVE_DOUBLE), std::vector<double>{8.17e-7});
+  EXPECT_EQ(r.type_class(s + "convex"), H5T_ENUM);
+  EXPECT_EQ(r.strings(s + "body"), std::vector<std::string>{"oloid"});
+  EXPECT_EQ(r.space_class(s + "fds"), H5S_NULL);
+  // Rectangular numeric arrays: n-d datasets of the right type.
+  EXPECT_EQ(r.type_class(s + "counts"), H5T_INTEGER);
+  EXPECT_EQ(r.numbers<std::int64_t>(s + "counts", H5T_NATIVE_INT64), (std::vector<std::int64_t>{0, 3, 5}));
+  EXPECT_EQ(r.shape(s + "centroids"), (std::vector<hsize_t>{2, 3}));
+  EXPECT_EQ(r.numbers<double>(s + "centroids", H5T_NATIVE_DOUBLE), (std::vector<double>{0, 1, 2, 3, 4, 5}));
+  EXPECT_EQ(r.type_class(s + "touched"), H5T_ENUM);
+  EXPECT_EQ(r.type_class(s + "mixed_numbers"), H5T_FLOAT);
+  EXPECT_EQ(r.shape(s + "empty"), std::vector<hsize_t>{0});
+  EXPECT_EQ(r.strings(s + "flags"), (std::vector<std::string>{"penalty_error_dominates", "coarse"}));
+  // Other arrays: groups of indexed members, flagged json_array.
+  EXPECT_EQ(r.number_attribute<std::int64_t>(s + "ragged", "json_array", H5T_NATIVE_INT64), 1);
+  EXPECT_EQ(r.numbers<std::int64_t>(s + "ragged/1", H5T_NATIVE_INT64), std::vector<std::int64_t>{3});
+  EXPECT_EQ(r.numbers<double>(s + "orientations/1/peak_pa", H5T_NATIVE_DOUBLE), std::vector<double>{1.9e9});
+  // Objects: groups; '/' in a key becomes '_'.
+  EXPECT_EQ(r.numbers<double>(s + "profile/p_pa", H5T_NATIVE_DOUBLE), (std::vector<double>{2.1e9, 2.0e9}));
+  EXPECT_TRUE(r.exists(s + "a_b"));
+}
+
+TEST(ResultsStore, RecordFieldsAndParametersAreTypedAttributes)
+{
+  const fs::path store = fresh_folder("attributes") / "results.h5";
+  io::write_results_store(store, {{"oloid", sample_record()}}, {{"n_cases", 1}});
+  const Reader r(store);
+  EXPECT_EQ(r.string_attribute("/", "layout"), "rollcheck-results-1");
+  EXPECT_EQ(r.number_attribute<std::int64_t>("/", "n_cases", H5T_NATIVE_INT64), 1);
+  EXPECT_EQ(r.string_attribute("/cases/oloid", "status"), "ok");
+  EXPECT_EQ(r.string_attribute("/cases/oloid", "hash"), "0123456789abcdef");
+  EXPECT_EQ(r.number_attribute<double>("/cases/oloid", "wall_s", H5T_NATIVE_DOUBLE), 1.5);
+  EXPECT_EQ(r.number_attribute<double>("/cases/oloid/parameters", "radius_m", H5T_NATIVE_DOUBLE), 0.01);
+  EXPECT_EQ(r.number_attribute<std::int64_t>("/cases/oloid/parameters", "points", H5T_NATIVE_INT64), 400);
+  EXPECT_EQ(r.string_attribute("/cases/oloid/parameters", "mesh_file"), "");
+  EXPECT_EQ(r.strings("/cases/oloid/files"), std::vector<std::string>{"cases/0123456789abcdef/fields.xdmf"});
+}
+
+TEST(ResultsStore, KeepsTheBatchOrderOfCases)
+{
+  const fs::path store = fresh_folder("order") / "results.h5";
+  io::write_results_store(store, {{"zeta", sample_record()}, {"alpha", sample_record()}, {"mid", sample_record()}},
+                          nlohmann::json::object());
+  EXPECT_EQ(Reader(store).members_in_creation_order("/cases"), (std::vector<std::string>{"zeta", "alpha", "mid"}));
+}
+
+TEST(ResultsStore, AFailedWriteLeavesThePreviousStoreAndNoTemporaryFile)
+{
+  const fs::path dir = fresh_folder("atomic");
+  const fs::path store = dir / "results.h5";
+  io::write_results_store(store, {{"first", sample_record()}}, nlohmann::json::object());
+  std::ifstream before_in(store, std::ios::binary);
+  const std::string before((std::istreambuf_iterator<char>(before_in)), std::istreambuf_iterator<char>());
+  // Two cases of one name: HDF5 refuses the second group half-way through the file.
+  EXPECT_THROW(io::write_results_store(store, {{"twin", sample_record()}, {"twin", sample_record()}},
+                                       nlohmann::json::object()),
+               ComputationError);
+  std::ifstream after_in(store, std::ios::binary);
+  const std::string after((std::istreambuf_iterator<char>(after_in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(before, after);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  EXPECT_THROW(io::write_results_store(dir / "missing" / "results.h5", {}, nlohmann::json::object()), InputError);
+  EXPECT_FALSE(fs::exists(dir / "missing"));
+}
+
+TEST(ResultsStore, ReportDrawsTheReferenceCodesOwnConvergenceAndPerFaceContacts)
+{
+  // The published code's outputs (shared/reference) as two oracle-like
+  // records: its rigid-body CDS snapshots and per-face contact counts with
+  // face areas and centroids, and the mesh they were counted on. The report
+  // must draw both plots from them.
+  std::ifstream outputs_in(shared_dir / "reference" / "reference_outputs.json");
+  const nlohmann::json outputs = nlohmann::json::parse(outputs_in);
+  std::vector<io::StoreEntry> entries;
+  for (const std::string body : {"oloid", "cylinder"})
+  {
+    std::ifstream per_face_in(shared_dir / "reference" / ("perface_" + body + ".json"));
+    const nlohmann::json per_face = nlohmann::json::parse(per_face_in);
+    const nlohmann::json& rigid = outputs.at("geometries").at(body).at("rigid");
+    entries.push_back({body,
+                       {{"status", "ok"},
+                        {"kind", "oracle"},
+                        {"wall_s", rigid.at("wall_s")},
+                        {"parameters",
+                         {{"kind", "oracle"},
+                          {"body", body},
+                          {"mesh_file", (shared_dir / "reference" / "meshes" / (body + "_reference.obj")).string()}}},
+                        {"summary",
+                         {{"cds", rigid.at("cds")},
+                          {"n_samples", rigid.at("n_samples")},
+                          {"n_faces", per_face.at("face_areas").size()},
+                          {"convergence", rigid.at("convergence")},
+                          {"per_face",
+                           {{"face_areas_m2", per_face.at("face_areas")},
+                            {"face_centroids_m", per_face.at("face_centroids")},
+                            {"contact_counts", per_face.at("rigid_contact_counts")}}}}}}});
+  }
+  const fs::path dir = fresh_folder("report");
+  io::write_results_store(dir / "results.h5", entries, nlohmann::json::object());
+  const std::string command = std::string(ROLLCHECK_BINARY) + " -q report --from " + (dir / "results.h5").string()
+                              + " > " + (dir / "report_stdout.txt").string();
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  std::ifstream md_in(dir / "report" / "report.md");
+  std::stringstream md;
+  md << md_in.rdbuf();
+  EXPECT_NE(md.str().find("](cds_convergence.png)"), std::string::npos) << md.str();
+  EXPECT_NE(md.str().find("](contact_density_0.png)"), std::string::npos);
+  EXPECT_NE(md.str().find("](contact_density_1.png)"), std::string::npos);
+  EXPECT_EQ(md.str().find("FAILED to draw"), std::string::npos);
+  for (const char* png : {"cds_convergence.png", "contact_density_0.png", "contact_density_1.png"})
+    EXPECT_GT(fs::file_size(dir / "report" / png), 10000u) << png;
+  std::ifstream html_in(dir / "report" / "report.html");
+  std::stringstream html;
+  html << html_in.rdbuf();
+  EXPECT_NE(html.str().find("data:image/png;base64,"), std::string::npos);
+}
