@@ -1,4 +1,5 @@
 #include "io/results_store.h"
+#include "io/hdf5_handle.h"
 #include "geometry/atomic_file.h"
 #include "geometry/error.h"
 #include "rollcheck_version.h"
@@ -10,36 +11,8 @@ namespace rollcheck::io
 {
 namespace
 {
-/// Owns an HDF5 identifier and closes it with the matching H5?close.
-class Handle
-{
-public:
-  Handle(hid_t id, herr_t (*close)(hid_t), const std::string& what) : id_(id), close_(close)
-  {
-    if (id < 0)
-      throw ComputationError(fmt::format("HDF5: cannot {}", what));
-  }
-  Handle(Handle&& other) noexcept : id_(other.id_), close_(other.close_) { other.id_ = H5I_INVALID_HID; }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  Handle& operator=(Handle&&) = delete;
-  ~Handle()
-  {
-    if (id_ >= 0)
-      close_(id_);
-  }
-  operator hid_t() const { return id_; }
-
-private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
-
-void check(herr_t status, const std::string& what)
-{
-  if (status < 0)
-    throw ComputationError(fmt::format("HDF5: cannot {}", what));
-}
+using hdf5::Handle;
+using hdf5::check;
 
 std::string link_name(const std::string& key)
 {

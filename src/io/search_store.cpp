@@ -1,4 +1,5 @@
 #include "io/search_store.h"
+#include "io/hdf5_handle.h"
 #include "geometry/atomic_file.h"
 #include "geometry/error.h"
 #include <cmath>
@@ -84,30 +85,8 @@ nlohmann::json search_summary(const oracle::SearchResult& result)
 
 namespace
 {
-/// An HDF5 identifier closed with its H5?close on scope exit.
-class Handle
-{
-public:
-  Handle(hid_t id, herr_t (*close)(hid_t), const std::string& what) : id_(id), close_(close)
-  {
-    if (id_ < 0)
-      throw ComputationError("HDF5: cannot " + what);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  ~Handle() { close_(id_); }
-  operator hid_t() const { return id_; }
-
-private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
-
-void check(herr_t status, const std::string& what)
-{
-  if (status < 0)
-    throw ComputationError("HDF5: cannot " + what);
-}
+using hdf5::Handle;
+using hdf5::check;
 
 void write_doubles(hid_t parent, const std::string& name, const std::vector<double>& values)
 {
