@@ -11,3 +11,4 @@
 #include "fem/hertz_solve.h"
 #include "fem/hertz_studies.h"
 #include "fem/petsc_session.h"
+#include "fem/slice_contact.h"

@@ -12,17 +12,15 @@ namespace fs = std::filesystem;
 
 fs::path default_scripts_folder() { return fs::path(ROLLCHECK_SOURCE_DIR) / "postprocess"; }
 
-ReportFiles write_report(const fs::path& store, const fs::path& folder, const fs::path& scripts,
-                         const fs::path& python)
+void draw_folder(const fs::path& folder, const fs::path& python, const fs::path& script,
+                 const std::vector<std::string>& args, const std::string& log_name,
+                 const std::function<void(const fs::path&)>& prepare)
 {
-  const fs::path script = scripts / "make_report.py";
-  if (!fs::is_regular_file(store))
-    throw InputError(fmt::format("report --from '{}': no such results store", store.string()));
   if (!fs::is_regular_file(script))
-    throw InputError(fmt::format("report --scripts '{}': has no make_report.py", scripts.string()));
+    throw InputError(fmt::format("plotting script '{}': no such file", script.string()));
   if (access(python.c_str(), X_OK) != 0)
-    throw InputError(fmt::format("report --python '{}': not an executable (Debian's python3 with matplotlib and "
-                                 "h5py is needed: apt-get install python3-matplotlib python3-h5py)",
+    throw InputError(fmt::format("--python '{}': not an executable (Debian's python3 with matplotlib and h5py is "
+                                 "needed: apt-get install python3-matplotlib python3-h5py)",
                                  python.string()));
   const fs::path target = fs::absolute(folder).lexically_normal();
   const fs::path parent = target.parent_path();
@@ -32,23 +30,46 @@ ReportFiles write_report(const fs::path& store, const fs::path& folder, const fs
   const fs::path replaced = parent / fmt::format(".{}.old{}", stem, getpid());
   fs::remove_all(drawing);
   fs::create_directories(drawing);
-  ChildProcess process({python.string(), script.string(), "--store", fs::absolute(store).string(), "--out",
-                        drawing.string(), "--rollcheck", own_executable().string()},
-                       drawing, drawing / "report.log");
+  try
+  {
+    prepare(drawing);
+  }
+  catch (...)
+  {
+    fs::remove_all(drawing);
+    throw;
+  }
+  std::vector<std::string> argv{python.string(), script.string()};
+  argv.insert(argv.end(), args.begin(), args.end());
+  argv.insert(argv.end(), {"--out", drawing.string()});
+  ChildProcess process(argv, drawing, drawing / log_name);
   const ExitStatus status = process.wait();
   if (!status.success())
   {
-    std::ifstream log(drawing / "report.log");
+    std::ifstream log(drawing / log_name);
     std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
     fs::remove_all(drawing);
     if (text.size() > 2000)
       text = "..." + text.substr(text.size() - 2000);
-    throw ComputationError(fmt::format("report: {} failed ({}):\n{}", script.string(), status.describe(), text));
+    throw ComputationError(fmt::format("{} failed ({}):\n{}", script.string(), status.describe(), text));
   }
   if (fs::exists(target))
     fs::rename(target, replaced);
   fs::rename(drawing, target);
   fs::remove_all(replaced);
+}
+
+ReportFiles write_report(const fs::path& store, const fs::path& folder, const fs::path& scripts,
+                         const fs::path& python)
+{
+  if (!fs::is_regular_file(store))
+    throw InputError(fmt::format("report --from '{}': no such results store", store.string()));
+  if (!fs::is_regular_file(scripts / "make_report.py"))
+    throw InputError(fmt::format("report --scripts '{}': has no make_report.py", scripts.string()));
+  draw_folder(folder, python, scripts / "make_report.py",
+              {"--store", fs::absolute(store).string(), "--rollcheck", own_executable().string()}, "report.log",
+              [](const fs::path&) {});
+  const fs::path target = fs::absolute(folder).lexically_normal();
   return {target / "report.md", target / "report.html"};
 }
 } // namespace rollcheck::io

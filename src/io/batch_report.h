@@ -3,6 +3,9 @@
 // that postprocess/make_report.py draws from the store (Debian's
 // /usr/bin/python3 with matplotlib and h5py; README "Report").
 #include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
 
 namespace rollcheck::io
 {
@@ -14,6 +17,15 @@ struct ReportFiles
 
 /// The postprocess/ folder of the source tree the binary was built from.
 std::filesystem::path default_scripts_folder();
+
+/// Fills `folder` whole or not at all: `prepare` writes into a temporary
+/// folder beside it, then `python script args... --out TMP` runs there (its
+/// output in TMP/<log_name>), and the temporary folder replaces `folder` only
+/// when both succeeded. InputError for a missing script or interpreter;
+/// ComputationError (with the script's last output) if the script fails.
+void draw_folder(const std::filesystem::path& folder, const std::filesystem::path& python,
+                 const std::filesystem::path& script, const std::vector<std::string>& args,
+                 const std::string& log_name, const std::function<void(const std::filesystem::path&)>& prepare);
 
 /// Writes the report of `store` into `folder`, replacing an earlier report
 /// whole: it is drawn in a temporary folder that is renamed into place only

@@ -35,8 +35,9 @@ void validate(const RollingStudyParameters& p)
     throw InputError("rolling study: with rolling resistance the loop period is unknown; give a duration (s)");
 }
 
-/// The analytic circles of a line-contact body, InputError for the others.
-std::vector<Circle> circles_of(const geometry::BodySpec& spec)
+} // namespace
+
+std::vector<Circle> line_contact_circles(const geometry::BodySpec& spec)
 {
   const geometry::RollerGenome oloid{90.0, 1.0, 1.0, 2};
   if (spec.body == "oloid")
@@ -56,6 +57,9 @@ std::vector<Circle> circles_of(const geometry::BodySpec& spec)
                                "sphere)",
                                spec.body));
 }
+
+namespace
+{
 
 RollingParameters dynamics_parameters(const RollingStudyParameters& p, double duration_s)
 {
@@ -110,13 +114,15 @@ RealRolling real_rolling(const geometry::BodySpec& spec, const RollingStudyParam
   validate(p);
   if (spec.body == "sphere")
     return sphere_rolling(spec, p);
-  const TwoCircleBody body = two_circle_body(circles_of(spec));
+  const TwoCircleBody body = two_circle_body(line_contact_circles(spec));
   geometry::BodySpec fine_spec = spec;
   fine_spec.points = fine_spec.sections = p.mass_points;
   const geometry::SurfaceMesh fine = geometry::make_body(fine_spec);
   const MassModel mass = mass_model_of_mesh(fine, p.mass_kg);
   RealRolling run;
   run.surface_area_m2 = geometry::mass_properties(fine).area_m2;
+  run.circles = line_contact_circles(spec);
+  run.mass = mass;
 
   // The stable ruling, the potential along the loop, and the initial rate.
   const Eigen::Vector3d rest = resting_direction(body, mass, contact_curve_point(body, -Eigen::Vector3d::UnitZ()));

@@ -51,7 +51,15 @@ struct RealRolling
   double first_loop_end_s = 0;  ///< NaN if the first loop is not completed
   double loops_completed = 0;   ///< loops of the contact curve in the scored window
   double surface_area_m2 = 0;   ///< of the exact body (from the fine mass mesh)
+  /// The body's generating circles (empty for the sphere) and mass model, in
+  /// the frame of geometry::make_body(spec).
+  std::vector<Circle> circles;
+  MassModel mass;
 };
+
+/// The circles whose hull is the body (two-circle rollers, the oloids, the
+/// cylinder as the hull of its rims); InputError for other bodies.
+std::vector<Circle> line_contact_circles(const geometry::BodySpec& spec);
 
 /// Runs the dynamics. InputError for bodies the rolling model does not cover
 /// (uv-sphere, hemisphere, rollers of three or more circles) and for bad parameters.

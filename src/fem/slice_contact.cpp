@@ -1,0 +1,110 @@
+#include "fem/slice_contact.h"
+#include "fem/hertz_solve.h"
+#include "geometry/error.h"
+#include <array>
+#include <fmt/format.h>
+
+namespace rollcheck::fem
+{
+namespace
+{
+// A slice's result travels between ranks as these doubles.
+constexpr int packed_size = 10;
+
+std::array<double, packed_size> pack(const SliceFem& r)
+{
+  return {r.peak_pressure_pa,
+          r.refined_peak_pressure_pa,
+          r.half_width_m,
+          r.hertz_peak_pressure_pa,
+          r.hertz_half_width_m,
+          static_cast<double>(r.dofs),
+          static_cast<double>(r.refined_dofs),
+          static_cast<double>(r.newton_iterations),
+          static_cast<double>(r.krylov_iterations),
+          r.wall_s};
+}
+
+void unpack(const double* v, SliceFem& r)
+{
+  r.peak_pressure_pa = v[0];
+  r.refined_peak_pressure_pa = v[1];
+  r.half_width_m = v[2];
+  r.hertz_peak_pressure_pa = v[3];
+  r.hertz_half_width_m = v[4];
+  r.dofs = static_cast<std::int64_t>(v[5]);
+  r.refined_dofs = static_cast<std::int64_t>(v[6]);
+  r.newton_iterations = static_cast<int>(v[7]);
+  r.krylov_iterations = static_cast<int>(v[8]);
+  r.wall_s = v[9];
+}
+
+SliceFem solve_slice(const SliceLoad& load, const SliceSettings& settings)
+{
+  SliceFem r;
+  r.load = load;
+  HertzSetup setup;
+  setup.model = Model::plane_strain;
+  setup.radius_m = load.radius_m;
+  setup.youngs_modulus_pa = settings.youngs_modulus_pa;
+  setup.poisson_ratio = settings.poisson_ratio;
+  setup.force_n = load.load_n_per_m; // per unit length
+  setup.length_m = 1.0;
+  setup.penalty_c = settings.penalty_c;
+  setup.elastic_plane = settings.elastic_plane;
+  setup.petsc_options = settings.petsc_options;
+  setup.refine = settings.refine < 0 ? default_refine(Model::plane_strain, 1) : settings.refine;
+  const HertzResult coarse = solve_hertz(MPI_COMM_SELF, setup);
+  ++setup.refine;
+  const HertzResult fine = solve_hertz(MPI_COMM_SELF, setup);
+  r.peak_pressure_pa = coarse.max_nodal_pressure_pa;
+  r.refined_peak_pressure_pa = fine.max_nodal_pressure_pa;
+  r.half_width_m = coarse.contact_size_m;
+  r.hertz_peak_pressure_pa = coarse.hertz.peak_pressure_pa;
+  r.hertz_half_width_m = coarse.hertz.contact_size_m;
+  r.dofs = coarse.dofs;
+  r.refined_dofs = fine.dofs;
+  r.newton_iterations = coarse.newton_iterations + fine.newton_iterations;
+  r.krylov_iterations = coarse.krylov_iterations + fine.krylov_iterations;
+  r.wall_s = coarse.wall_s + fine.wall_s;
+  return r;
+}
+} // namespace
+
+std::vector<SliceFem> solve_slices(MPI_Comm comm, std::span<const SliceLoad> slices, const SliceSettings& settings)
+{
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  std::vector<double> packed(slices.size() * packed_size, 0.0);
+  std::string failure;
+  for (std::size_t i = rank; i < slices.size() && failure.empty(); i += size)
+  {
+    if (!(slices[i].load_n_per_m > 0))
+      continue;
+    try
+    {
+      const auto values = pack(solve_slice(slices[i], settings));
+      std::copy(values.begin(), values.end(), packed.begin() + i * packed_size);
+    }
+    catch (const std::exception& e)
+    {
+      failure = fmt::format("slice at {:.6g} m (R = {:.6g} m, q = {:.6g} N/m) on rank {}: {}", slices[i].position_m,
+                            slices[i].radius_m, slices[i].load_n_per_m, rank, e.what());
+    }
+  }
+  int failed = failure.empty() ? 0 : 1;
+  MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MAX, comm);
+  if (failed)
+    throw ComputationError(failure.empty() ? std::string("plane-strain slice solve failed on another rank")
+                                           : "plane-strain slice solve failed: " + failure);
+  MPI_Allreduce(MPI_IN_PLACE, packed.data(), static_cast<int>(packed.size()), MPI_DOUBLE, MPI_SUM, comm);
+  std::vector<SliceFem> results(slices.size());
+  for (std::size_t i = 0; i < slices.size(); ++i)
+  {
+    results[i].load = slices[i];
+    unpack(&packed[i * packed_size], results[i]);
+  }
+  return results;
+}
+} // namespace rollcheck::fem
