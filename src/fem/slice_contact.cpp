@@ -1,5 +1,6 @@
 #include "fem/slice_contact.h"
 #include "fem/hertz_solve.h"
+#include "fem/petsc_session.h"
 #include "geometry/error.h"
 #include <array>
 #include <fmt/format.h>
@@ -73,6 +74,7 @@ SliceFem solve_slice(const SliceLoad& load, const SliceSettings& settings)
 
 std::vector<SliceFem> solve_slices(MPI_Comm comm, std::span<const SliceLoad> slices, const SliceSettings& settings)
 {
+  ensure_petsc();
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);

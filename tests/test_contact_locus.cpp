@@ -1,0 +1,155 @@
+// Stratified sampling and contact loci (fem-sds): the picks against their
+// definition, the loci of the cylinder and the oloid against closed forms and
+// a brute-force count of the preprint's contact faces.
+#include "contact/contact_locus.h"
+#include "geometry/body.h"
+#include "geometry/error.h"
+#include "oracle/contact_density.h"
+#include "oracle/rolling_body.h"
+#include "oracle/rolling_study.h"
+#include "oracle/stratified_samples.h"
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+#include <numbers>
+#include <set>
+
+using namespace rollcheck;
+
+namespace
+{
+Eigen::Matrix3d resting_on(const Eigen::Vector3d& down)
+{
+  return Eigen::Quaterniond::FromTwoVectors(down.normalized(), -Eigen::Vector3d::UnitZ()).toRotationMatrix();
+}
+
+/// Faces whose centroid is within eps of the lowest centroid, by brute force.
+std::vector<int> faces_within(const geometry::SurfaceMesh& mesh, const Eigen::Matrix3d& rotation, double eps)
+{
+  std::vector<double> heights;
+  for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f)
+  {
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k)
+      centroid += mesh.vertices.row(mesh.faces(f, k)).transpose() / 3;
+    heights.push_back(rotation.row(2).dot(centroid));
+  }
+  const double lowest = *std::min_element(heights.begin(), heights.end());
+  std::vector<int> faces;
+  for (std::size_t f = 0; f < heights.size(); ++f)
+    if (heights[f] - lowest < eps)
+      faces.push_back(static_cast<int>(f));
+  return faces;
+}
+
+struct Body
+{
+  geometry::BodySpec spec;
+  geometry::SurfaceMesh mesh;
+  oracle::RollingBody rolling;
+  std::vector<oracle::Circle> circles;
+};
+
+Body make(const std::string& name)
+{
+  geometry::BodySpec spec;
+  spec.body = name;
+  geometry::SurfaceMesh mesh = geometry::make_body(spec);
+  oracle::RollingBody rolling = oracle::make_rolling_body(mesh, oracle::PaperCompat::reference());
+  return {spec, mesh, rolling, oracle::line_contact_circles(spec)};
+}
+} // namespace
+
+TEST(StratifiedSamples, OnePickPerStratumReproducibleFromTheSeed)
+{
+  const auto a = oracle::stratified_samples(1000, 12, 7);
+  ASSERT_EQ(a.size(), 12u);
+  for (std::size_t j = 0; j < a.size(); ++j)
+  {
+    EXPECT_GE(a[j], j * 1000 / 12);
+    EXPECT_LT(a[j], (j + 1) * 1000 / 12);
+  }
+  EXPECT_EQ(a, oracle::stratified_samples(1000, 12, 7));
+  EXPECT_NE(a, oracle::stratified_samples(1000, 12, 8));
+  const auto all = oracle::stratified_samples(5, 5, 3);
+  EXPECT_EQ(all, (std::vector<std::size_t>{0, 1, 2, 3, 4}));
+  EXPECT_THROW(oracle::stratified_samples(5, 6, 1), InputError);
+  EXPECT_THROW(oracle::stratified_samples(5, 0, 1), InputError);
+}
+
+TEST(ContactLocus, CylinderOnItsSideTouchesAGeneratorWithCreasesAtBothRims)
+{
+  const Body b = make("cylinder"); // r = 1, height 2, axis z
+  const Eigen::Matrix3d rotation = resting_on(Eigen::Vector3d(1, 0.3, 0));
+  const contact::ContactLocus locus =
+      contact::contact_locus(b.circles, b.rolling.mass.centre_of_mass, b.rolling, rotation, {});
+  ASSERT_EQ(locus.support.kind, oracle::CircleSupportKind::segment);
+  ASSERT_TRUE(locus.ruling);
+  EXPECT_NEAR(locus.ruling->length_m, 2.0, 1e-12);
+  EXPECT_NEAR(locus.ruling->start_radius_m, 1.0, 1e-9);
+  EXPECT_NEAR(locus.ruling->end_radius_m, 1.0, 1e-9);
+  EXPECT_NEAR(locus.centre_of_pressure, 0.5, 1e-12);
+  EXPECT_TRUE(locus.in_equilibrium);
+  EXPECT_EQ(locus.loaded_from, 0.0);
+  EXPECT_EQ(locus.loaded_to, 1.0);
+  EXPECT_EQ(locus.creases.size(), 2u);
+  // The preprint's faces: the threshold search equals the brute-force count
+  // (ground at the lowest centroid, as the reference).
+  EXPECT_EQ(locus.oracle_faces, faces_within(b.mesh, rotation, 0.04));
+}
+
+TEST(ContactLocus, TiltedCylinderStandsOnARimPoint)
+{
+  const Body b = make("cylinder");
+  const contact::ContactLocus locus = contact::contact_locus(
+      b.circles, b.rolling.mass.centre_of_mass, b.rolling, resting_on(Eigen::Vector3d(1, 0, -0.2)), {});
+  EXPECT_EQ(locus.support.kind, oracle::CircleSupportKind::point);
+  EXPECT_FALSE(locus.ruling);
+  ASSERT_EQ(locus.creases.size(), 1u);
+  EXPECT_NE(locus.creases[0].find("rim"), std::string::npos);
+}
+
+TEST(ContactLocus, OloidAlongItsContactCurveHasTheStaticCentreOfPressure)
+{
+  const Body b = make("oloid");
+  const oracle::TwoCircleBody pair = oracle::two_circle_body(b.circles);
+  const Eigen::Vector3d centre = b.rolling.mass.centre_of_mass;
+  std::set<std::size_t> crease_counts;
+  for (const Eigen::Vector3d hint : {Eigen::Vector3d(0, 0, -1), Eigen::Vector3d(0.3, -1, -0.2),
+                                     Eigen::Vector3d(-1, 0.2, 0.4)})
+  {
+    const Eigen::Vector3d u = oracle::contact_curve_point(pair, hint);
+    const contact::ContactLocus locus =
+        contact::contact_locus(b.circles, centre, b.rolling, resting_on(u), {});
+    ASSERT_EQ(locus.support.kind, oracle::CircleSupportKind::segment);
+    const oracle::Ruling& r = *locus.ruling;
+    // Independent: the centre of mass's foot on the segment, by least squares.
+    const Eigen::Vector3d d = r.end_m - r.start_m;
+    const double foot = d.dot(centre - r.start_m) / d.squaredNorm();
+    EXPECT_NEAR(locus.centre_of_pressure, foot, 1e-12);
+    EXPECT_TRUE(locus.in_equilibrium);
+    // No-tension rule: the loaded part has length min(1, 3 c, 3 (1 - c)) of the ruling.
+    const double c = foot;
+    EXPECT_NEAR(locus.loaded_to - locus.loaded_from, std::min({1.0, 3 * c, 3 * (1 - c)}), 1e-12);
+    EXPECT_EQ(locus.creases.size(), (c >= 1.0 / 3 && c <= 2.0 / 3) ? 2u : 1u);
+    crease_counts.insert(locus.creases.size());
+    // Every ruling point lies in a face whose cone holds it.
+    const oracle::FaceCones cones = oracle::face_cones(b.mesh);
+    const std::vector<double> fractions{0.1, 0.5, 0.9};
+    const std::vector<int> faces = contact::faces_along_ruling(cones, locus, fractions);
+    ASSERT_EQ(faces.size(), 3u);
+    for (std::size_t k = 0; k < faces.size(); ++k)
+    {
+      const Eigen::Vector3d x = r.start_m + fractions[k] * d - cones.centre_m;
+      for (int e = 0; e < 3; ++e)
+        EXPECT_GE(cones.planes.row(faces[k]).segment<3>(3 * e).dot(x), -1e-12 * x.norm());
+    }
+  }
+}
+
+TEST(ContactLocus, FewerThanTwoCirclesIsAnInputError)
+{
+  const Body b = make("oloid");
+  const std::vector<oracle::Circle> one{b.circles[0]};
+  EXPECT_THROW(contact::contact_locus(one, Eigen::Vector3d::Zero(), b.rolling, Eigen::Matrix3d::Identity(), {}),
+               InputError);
+}
