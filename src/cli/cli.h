@@ -20,8 +20,6 @@ CLI::Option* add_json_option(CLI::App* sub, std::string& path);
 /// Writes `summary` to `path` when it is non-empty ("-" is stdout), atomically.
 void emit_json(const std::string& path, const nlohmann::json& summary);
 
-/// For subcommands that are not built yet: says so and exits 2.
-int not_built(const std::string& name, const std::string& issue);
 
 void add_mesh_command(CLI::App& app);
 void add_oracle_command(CLI::App& app);

@@ -393,9 +393,13 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
     throw InputError(fmt::format("mesh_file '{}': fem-sds needs the exact body (its circles), give --body "
                                  "oloid|paper-oloid|roller|cylinder",
                                  params.text("mesh_file")));
+  const geometry::BodySpec spec = body_spec_from_parameters(params);
+  if (spec.body != "oloid" && spec.body != "paper-oloid" && spec.body != "roller" && spec.body != "cylinder")
+    throw InputError(fmt::format("body '{}': fem-sds covers the hulls of circles (oloid, paper-oloid, roller, "
+                                 "cylinder), whose contact is a ruling; a sphere's point contact is `rollcheck hertz`",
+                                 spec.body));
   std::string label;
   const geometry::SurfaceMesh mesh = body_from_parameters(params, &label);
-  const geometry::BodySpec spec = body_spec_from_parameters(params);
   const Settings s = settings_from(params);
   const oracle::RollingBody body = oracle::make_rolling_body(mesh, s.compat);
   const contact::FaceCurvature curvature = contact::face_curvature(mesh, s.hertz, s.compat);

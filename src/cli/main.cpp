@@ -21,12 +21,6 @@ std::map<const CLI::App*, std::function<int()>>& runners()
 namespace rollcheck::cli
 {
 void on_run(CLI::App* sub, std::function<int()> runner) { runners()[sub] = std::move(runner); }
-
-int not_built(const std::string& name, const std::string& issue)
-{
-  spdlog::error("`rollcheck {}` is not built yet ({}).", name, issue);
-  return 2;
-}
 } // namespace rollcheck::cli
 
 namespace
