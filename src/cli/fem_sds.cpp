@@ -302,14 +302,19 @@ OrientationResult evaluate_orientation(const OrientationSource& source, std::siz
 
 nlohmann::json number(double v) { return io::json_number(v); }
 
+const char* support_name(oracle::CircleSupportKind kind)
+{
+  static const char* names[] = {"point", "segment", "polygon", "disc"};
+  return names[static_cast<int>(kind)];
+}
+
 nlohmann::json orientation_json(const OrientationResult& r, std::size_t index)
 {
   const contact::ContactLocus& l = r.locus;
-  const char* kinds[] = {"point", "segment", "polygon", "disc"};
   nlohmann::json j = {{"index", index},
                       {"sample", l.sample},
                       {"time_s", number(l.time_s)},
-                      {"support", kinds[static_cast<int>(l.support.kind)]},
+                      {"support", support_name(l.support.kind)},
                       {"creases", l.creases},
                       {"reaches_crease", !l.creases.empty()},
                       {"oracle_faces", l.oracle_faces.size()},
@@ -370,9 +375,8 @@ std::string markdown_table(const std::vector<OrientationResult>& results)
   for (std::size_t i = 0; i < results.size(); ++i)
   {
     const OrientationResult& r = results[i];
-    const char* kinds[] = {"point", "segment", "polygon", "disc"};
-    t += fmt::format("| {} | {:.4g} | {} | {} | {} | {:.4g} |", i, r.locus.time_s,
-                     kinds[static_cast<int>(r.locus.support.kind)],
+      t += fmt::format("| {} | {:.4g} | {} | {} | {} | {:.4g} |", i, r.locus.time_s,
+                     support_name(r.locus.support.kind),
                      r.locus.ruling ? fmt::format("{:.3f}", r.locus.centre_of_pressure) : std::string("-"),
                      r.locus.creases.size(), r.point_hertz_peak_pa / 1e6);
     if (r.solved)
