@@ -16,6 +16,7 @@
 #include "contact/face_curvature.h"
 #include "contact/face_pressure.h"
 #include "contact/hertz.h"
+#include "fem/slab_contact.h"
 #include "fem/slice_contact.h"
 #include "geometry/atomic_file.h"
 #include "geometry/body.h"
@@ -77,6 +78,13 @@ const io::Schema& fem_sds_schema()
         {"refine", "--refine", std::int64_t{slice.refine}, "",
          "Plane-strain mesh level of the slices (hertz --refine); the error estimate runs one level finer"},
         {"penalty_c", "--penalty-c", slice.penalty_c, "", "Penalty kappa = c E / h_c (README: penalty study)"},
+        {"slab_orientations", "--slab-check", std::int64_t{0}, "",
+         "The first N solved orientations are also solved as one 3D slab of the whole ruling (fem/slab_contact.h), "
+         "at two section levels: the fuller model the slices must agree with (peak within 2 %), and the pressure at "
+         "the ruling's ends; 0: none"},
+        {"slab_refine", "--slab-refine", std::int64_t{0}, "",
+         "Section level of the 3D slab (elements across the narrowest half-width: 10 * 2^(level / 2)); the second "
+         "solve is one level finer"},
         {"elastic_plane", "--elastic-plane", false, "",
          "FEM against the E* of two identical steel bodies (the preprint's) instead of a rigid plane"},
         {"out", "--out", std::string(), "",
@@ -103,6 +111,8 @@ struct Settings
   oracle::PaperCompat compat;
   contact::LocusOptions locus;
   fem::SliceSettings slice;
+  std::size_t slab_orientations = 1;
+  fem::SlabSettings slab;
 };
 
 std::int64_t bounded(const io::Parameters& p, const std::string& key, std::int64_t lo, std::int64_t hi)
@@ -147,6 +157,12 @@ Settings settings_from(const io::Parameters& p)
   s.slice.refine = static_cast<int>(bounded(p, "refine", -1, 12));
   s.slice.penalty_c = positive(p, "penalty_c");
   s.slice.elastic_plane = p.flag("elastic_plane");
+  s.slab_orientations = static_cast<std::size_t>(bounded(p, "slab_orientations", 0, 10000));
+  s.slab.youngs_modulus_pa = s.slice.youngs_modulus_pa;
+  s.slab.poisson_ratio = s.slice.poisson_ratio;
+  s.slab.penalty_c = s.slice.penalty_c;
+  s.slab.elastic_plane = s.slice.elastic_plane;
+  s.slab.refine = static_cast<int>(bounded(p, "slab_refine", 0, 8));
   s.effective_modulus_pa = s.slice.elastic_plane
                                ? contact::effective_modulus_identical_bodies(s.hertz.youngs_modulus_pa, s.hertz.poisson_ratio)
                                : contact::effective_modulus_rigid_plane(s.hertz.youngs_modulus_pa, s.hertz.poisson_ratio);
@@ -229,7 +245,39 @@ struct OrientationResult
   int newton_iterations = 0, krylov_iterations = 0;
   double wall_s = 0;
   std::vector<std::pair<int, double>> fem_faces, line_faces; ///< (face, peak) along the ruling
+  std::vector<fem::SlabFem> slab;          ///< the 3D check at two section levels, if run
+  /// The slab's peak over the slices' positions against the slices' peak,
+  /// minus 1: the orientation's peak under the fuller model.
+  double slab_peak_difference(const fem::SlabFem& level) const
+  {
+    const auto& p = level.slice_peak_pressure_pa;
+    return *std::max_element(p.begin(), p.end()) / fem_peak_pa - 1;
+  }
+  /// Largest |slab / slice - 1| over the loaded slices: the outermost show
+  /// the free end's compliance that plane strain leaves out.
+  double slab_slice_difference(const fem::SlabFem& level) const
+  {
+    double worst = 0;
+    for (std::size_t i = 0; i < slices.size(); ++i)
+      if (slices[i].peak_pressure_pa > 0)
+        worst = std::max(worst, std::abs(level.slice_peak_pressure_pa[i] / slices[i].peak_pressure_pa - 1));
+    return worst;
+  }
 };
+
+/// The fuller model of a solved orientation: its whole ruling as one 3D slab
+/// under the slices' approaches, at the slab level and one finer.
+void check_with_slab(OrientationResult& r, const Settings& s)
+{
+  const oracle::Ruling& ruling = *r.locus.ruling;
+  for (const int level : {s.slab.refine, s.slab.refine + 1})
+  {
+    fem::SlabSettings settings = s.slab;
+    settings.refine = level;
+    r.slab.push_back(fem::solve_slab(MPI_COMM_WORLD, ruling.length_m, ruling.start_radius_m, ruling.end_radius_m,
+                                     s.force_n, r.slices, settings));
+  }
+}
 
 OrientationResult evaluate_orientation(const OrientationSource& source, std::size_t pick, const Settings& s,
                                        const oracle::RollingBody& body, const contact::FacePressure& pressure,
@@ -364,6 +412,34 @@ nlohmann::json orientation_json(const OrientationResult& r, std::size_t index)
     return a;
   };
   j["fem_faces"] = faces_json(r.fem_faces);
+  if (!r.slab.empty())
+  {
+    nlohmann::json levels = nlohmann::json::array();
+    for (const fem::SlabFem& slab : r.slab)
+    {
+      nlohmann::json peaks = nlohmann::json::array(), planes = nlohmann::json::array();
+      for (double p : slab.slice_peak_pressure_pa)
+        peaks.push_back(number(p));
+      for (std::size_t k = 0; k < slab.plane_position_m.size(); ++k)
+        planes.push_back({number(slab.plane_position_m[k]), number(slab.plane_peak_pressure_pa[k])});
+      levels.push_back({{"refine", slab.refine},
+                        {"dofs", slab.dofs},
+                        {"layers", slab.layers},
+                        {"end_layer_m", number(slab.end_layer_m)},
+                        {"newton_iterations", slab.newton_iterations},
+                        {"krylov_iterations", slab.krylov_iterations},
+                        {"wall_s", number(slab.wall_s)},
+                        {"approach_factor", number(slab.approach_factor)},
+                        {"force_n", number(slab.force_n)},
+                        {"centre_of_pressure", number(slab.centre_of_pressure)},
+                        {"slice_peak_pa", peaks},
+                        {"peak_difference_vs_slices", number(r.slab_peak_difference(slab))},
+                        {"max_slice_difference", number(r.slab_slice_difference(slab))},
+                        {"end_peak_pa", {number(slab.end_peak_pressure_pa[0]), number(slab.end_peak_pressure_pa[1])}},
+                        {"plane_peaks", planes}});
+    }
+    j["slab"] = levels;
+  }
   return j;
 }
 
@@ -387,6 +463,23 @@ std::string markdown_table(const std::vector<OrientationResult>& results)
     else
       t += " - | - | - | - | - | - | - | - | - | - |\n";
   }
+  return t;
+}
+
+std::string slab_table(const std::vector<OrientationResult>& results)
+{
+  std::string t = "| # | level | DOFs | layers | Newton | s | approach factor | c (slab / locus) | slab peak / slices' - 1 "
+                  "| max over slices of abs(slab / slice - 1) | end p at s = 0, L (MPa) |\n"
+                  "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (std::size_t i = 0; i < results.size(); ++i)
+    for (const fem::SlabFem& slab : results[i].slab)
+    {
+      t += fmt::format("| {} | {} | {} | {} | {} | {:.1f} | {:.4f} | {:.4f} / {:.4f} | {:+.2f} % | {:.2f} % | {:.4g}, {:.4g} |\n",
+                       i, slab.refine, slab.dofs, slab.layers, slab.newton_iterations, slab.wall_s,
+                       slab.approach_factor, slab.centre_of_pressure, results[i].locus.centre_of_pressure,
+                       100 * results[i].slab_peak_difference(slab), 100 * results[i].slab_slice_difference(slab),
+                       slab.end_peak_pressure_pa[0] / 1e6, slab.end_peak_pressure_pa[1] / 1e6);
+    }
   return t;
 }
 
@@ -423,7 +516,8 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
   std::vector<OrientationResult> results;
   nlohmann::json per_orientation = nlohmann::json::array();
   std::size_t solved = 0, with_crease = 0, standing_on_crease = 0;
-  double worst_change = 0, max_wall = 0;
+  double worst_change = 0, max_wall = 0, worst_slab = 0;
+  std::size_t slab_checked = 0;
   for (const std::size_t pick : picks)
   {
     results.push_back(evaluate_orientation(source, pick, s, body, pressure, cones));
@@ -447,6 +541,13 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
       continue;
     }
     ++solved;
+    if (solved <= s.slab_orientations)
+    {
+      check_with_slab(results.back(), s);
+      for (const fem::SlabFem& slab : r.slab)
+        worst_slab = std::max(worst_slab, std::abs(r.slab_peak_difference(slab)));
+      ++slab_checked;
+    }
     for (const auto& [f, p] : r.fem_faces)
       fem[f] += p;
     for (const auto& [f, p] : r.line_faces)
@@ -480,6 +581,8 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
       {"fem_sds", score(fem)},
       {"fem_peak_worst_refinement_change", number(worst_change)},
       {"max_orientation_wall_s", number(max_wall)},
+      {"slab_checked_orientations", slab_checked},
+      {"slab_worst_peak_difference", number(worst_slab)},
       {"effective_modulus_pa", s.effective_modulus_pa},
       {"analytic_effective_modulus_pa", pressure.effective_modulus_pa},
       {"n_faces", faces},
@@ -490,7 +593,9 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
        "does not apply there (k1 k2 = 0 on the exact surface); the FEM and line-Hertz columns treat the ruling as "
        "plane-strain slices; peaks are taken away from the ruling's ends, where it meets the body's rims (creases, "
        "singular in linear elasticity)"}};
-  const std::string table = markdown_table(results);
+  std::string table = markdown_table(results);
+  if (slab_checked > 0)
+    table += "\n3D slab of the whole ruling against the slices (fem/slab_contact.h):\n\n" + slab_table(results);
   if (rank == 0)
     fmt::print("\nfem-sds {} ({}):\n\n{}\nanalytic SDS {}, line-Hertz SDS {}, FEM-SDS {} over {} solved of {} "
                "orientations; {} reach a crease\n\n",

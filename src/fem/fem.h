@@ -11,4 +11,5 @@
 #include "fem/hertz_solve.h"
 #include "fem/hertz_studies.h"
 #include "fem/petsc_session.h"
+#include "fem/slab_contact.h"
 #include "fem/slice_contact.h"

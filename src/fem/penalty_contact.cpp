@@ -143,16 +143,16 @@ PenaltyContact::PenaltyContact(const SceneMesh& scene, Model model, int degree, 
     std::vector<std::int32_t> dofs = dfem::locate_dofs_topological(*Vc, fdim, *plane_facets);
     _bcs.push_back(std::make_shared<const dfem::DirichletBC<T>>(T(0), std::move(dofs), Vc));
   }
-  const int gdim = model == Model::solid ? 3 : 2;
-  _top_value = std::make_shared<dfem::Constant<T>>(std::vector<T>(gdim, 0.0));
-  std::vector<std::int32_t> top_blocks = dfem::locate_dofs_topological(*_V, fdim, _scene.top_facets);
+  _top_displacement = std::make_shared<dfem::Function<T>>(_V);
+  _top_blocks = dfem::locate_dofs_topological(*_V, fdim, _scene.top_facets);
+  _top_weights.assign(_top_blocks.size(), 1.0);
   const std::int32_t owned_blocks = _V->dofmap()->index_map->size_local();
   const int bs = _V->dofmap()->index_map_bs();
-  for (std::int32_t b : top_blocks)
+  for (std::int32_t b : _top_blocks)
     if (b < owned_blocks)
       _top_z_dofs.push_back(b * bs + _z_component);
   _bcs.push_back(std::make_shared<const dfem::DirichletBC<T>>(
-      std::shared_ptr<const dfem::Constant<T>>(_top_value), std::move(top_blocks), _V));
+      std::shared_ptr<const dfem::Function<T>>(_top_displacement), _top_blocks));
 
   // Linear solver.
   _A = dfem::petsc::create_matrix(*_jacobian, "aij");
@@ -202,15 +202,27 @@ void PenaltyContact::start_translated(double shift_m, double approach_m)
   std::fill(u.begin(), u.end(), 0.0);
   for (std::size_t i = _z_component; i < u.size(); i += bs)
     u[i] = -shift_m;
-  _top_value->value.back() = -approach_m;
-  dolfinx::fem::set_bc(u, _bcs, 1.0);
-  _u->x()->scatter_fwd();
+  apply_approach(approach_m);
 }
 
-void PenaltyContact::set_approach(double approach_m)
+void PenaltyContact::set_approach(double approach_m) { apply_approach(approach_m); }
+
+void PenaltyContact::set_approach_profile(const std::function<double(const double* x)>& weight)
 {
+  const std::vector<double> x = _V->tabulate_dof_coordinates(false);
+  for (std::size_t i = 0; i < _top_blocks.size(); ++i)
+    _top_weights[i] = weight(&x[3 * _top_blocks[i]]);
+}
+
+void PenaltyContact::apply_approach(double approach_m)
+{
+  // The top face is bonded to the loading plate: its horizontal displacement is zero.
+  _approach_m = approach_m;
+  std::span<T> g = _top_displacement->x()->mutable_array();
+  const int bs = _V->dofmap()->index_map_bs();
+  for (std::size_t i = 0; i < _top_blocks.size(); ++i)
+    g[_top_blocks[i] * bs + _z_component] = -approach_m * _top_weights[i];
   std::span<T> u = _u->x()->mutable_array();
-  _top_value->value.back() = -approach_m;
   dolfinx::fem::set_bc(u, _bcs, 1.0);
   _u->x()->scatter_fwd();
 }

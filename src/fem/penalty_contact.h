@@ -21,6 +21,7 @@
 #include <dolfinx/fem/Function.h>
 #include <dolfinx/fem/FunctionSpace.h>
 #include <dolfinx/la/Vector.h>
+#include <functional>
 #include <petscksp.h>
 
 namespace rollcheck::fem
@@ -52,7 +53,12 @@ public:
   /// else: the first Newton step then is the tangent (Euler) predictor, the
   /// linear response of the current state to the change of approach.
   void set_approach(double approach_m);
-  double approach_m() const { return -_top_value->value.back(); }
+  double approach_m() const { return _approach_m; }
+  /// The top face's vertical displacement becomes -approach_m * weight(x) at
+  /// each of its nodes (1 before this is called): a top face that follows a
+  /// prescribed profile, e.g. the approaches of plane-strain slices along a
+  /// ruling (fem/slab_contact.h). Applies from the next set_approach.
+  void set_approach_profile(const std::function<double(const double* x)>& weight);
 
   /// Newton to convergence at the current approach; throws ComputationError
   /// on a diverged linear solve or when Newton does not converge.
@@ -87,7 +93,11 @@ private:
   ContactForms _forms;
   std::shared_ptr<dolfinx::fem::FunctionSpace> _V;
   std::shared_ptr<dolfinx::fem::Function<T>> _u;
-  std::shared_ptr<dolfinx::fem::Constant<T>> _top_value;
+  void apply_approach(double approach_m);
+  std::shared_ptr<dolfinx::fem::Function<T>> _top_displacement; ///< the top face's prescribed values
+  std::vector<std::int32_t> _top_blocks;  ///< owned and ghost
+  std::vector<double> _top_weights;       ///< per top block, see set_approach_profile
+  double _approach_m = 0;
   std::map<std::string, std::shared_ptr<const dolfinx::fem::Constant<T>>> _constants;
   std::shared_ptr<dolfinx::mesh::MeshTags<int>> _contact_tags;
   std::map<dolfinx::fem::IntegralType, const dolfinx::mesh::MeshTags<int>*> _subdomains;

@@ -7,6 +7,7 @@
 #include <dolfinx/io/cells.h>
 #include <dolfinx/mesh/cell_types.h>
 #include <dolfinx/mesh/utils.h>
+#include <functional>
 #include <gmsh.h>
 #include <numbers>
 #include <unordered_map>
@@ -91,22 +92,35 @@ void set_graded_size_field(int pole, const MeshGrading& g)
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
 }
 
-RawMesh mesh_with_gmsh(Model model, double R, const MeshGrading& grading)
+/// Quarter disc of radius 1 extruded along gmsh's z by `length` in the given
+/// layers (structured, tetrahedra); returns the tag of the point of contact
+/// on the section z = 0.
+int add_extruded_quarter_disc(double length, const std::vector<double>& layer_fractions)
 {
-  const bool solid = model == Model::solid;
+  const int pole = add_quarter_disc(1.0);
+  gmsh::vectorpair out;
+  gmsh::model::occ::extrude({{2, 1}}, 0, 0, length, out, std::vector<int>(layer_fractions.size(), 1),
+                            layer_fractions, false);
+  gmsh::model::occ::synchronize();
+  return pole;
+}
+
+/// Runs gmsh on the geometry `add_geometry` builds (it returns the tag of the
+/// point of contact) with the grading about that point; nodes with `dim`
+/// coordinates, cells of the simplex of dimension `dim`.
+RawMesh mesh_with_gmsh(int dim, const std::function<int()>& add_geometry, const MeshGrading& grading)
+{
   gmsh::initialize();
   RawMesh raw;
   try
   {
     gmsh::option::setNumber("General.Terminal", 0);
     gmsh::option::setNumber("General.NumThreads", 1);
-    gmsh::model::add("hertz");
-    const int pole = solid ? add_quarter_hemisphere(R) : add_quarter_disc(R);
-    set_graded_size_field(pole, grading);
+    gmsh::model::add("scene");
+    set_graded_size_field(add_geometry(), grading);
     gmsh::option::setNumber("Mesh.Algorithm", 6);   // Frontal-Delaunay: near-equilateral triangles
     gmsh::option::setNumber("Mesh.Algorithm3D", 1); // Delaunay
     gmsh::option::setNumber("Mesh.Optimize", 1);
-    const int dim = solid ? 3 : 2;
     gmsh::model::mesh::generate(dim);
 
     std::vector<std::size_t> node_tags;
@@ -121,7 +135,7 @@ RawMesh mesh_with_gmsh(Model model, double R, const MeshGrading& grading)
       for (int j = 0; j < dim; ++j)
         raw.x.push_back(coords[3 * i + j]);
 
-    const int gmsh_type = solid ? 4 : 2; // 4-node tetrahedron, 3-node triangle
+    const int gmsh_type = dim == 3 ? 4 : 2; // 4-node tetrahedron, 3-node triangle
     std::vector<std::size_t> element_tags, element_nodes;
     gmsh::model::mesh::getElementsByType(gmsh_type, element_tags, element_nodes);
     raw.cells.reserve(element_nodes.size());
@@ -143,9 +157,10 @@ RawMesh mesh_with_gmsh(Model model, double R, const MeshGrading& grading)
   return raw;
 }
 
+using Predicate = std::function<bool(double, double, double)>;
+
 /// Boundary facets whose vertices all satisfy `on`.
-std::vector<std::int32_t> boundary_facets(const dolfinx::mesh::Mesh& mesh,
-                                          const std::function<bool(double, double, double)>& on)
+std::vector<std::int32_t> boundary_facets(const dolfinx::mesh::Mesh& mesh, const Predicate& on)
 {
   const int fdim = mesh.topology().dim() - 1;
   return dolfinx::mesh::locate_entities_boundary(mesh, fdim, [&](const xt::xtensor<double, 2>& x) {
@@ -155,17 +170,14 @@ std::vector<std::int32_t> boundary_facets(const dolfinx::mesh::Mesh& mesh,
     return marked;
   });
 }
-} // namespace
 
-SceneMesh build_scene_mesh(MPI_Comm comm, Model model, double R, const MeshGrading& grading)
+/// The mesh `make_raw` returns on rank 0, distributed over `comm`.
+SceneMesh distribute(MPI_Comm comm, int gdim, const std::function<RawMesh()>& make_raw)
 {
-  const auto start = std::chrono::steady_clock::now();
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  const bool solid = model == Model::solid;
-  const int gdim = solid ? 3 : 2;
-  const auto cell_type = solid ? dolfinx::mesh::CellType::tetrahedron : dolfinx::mesh::CellType::triangle;
-  const int nodes_per_cell = solid ? 4 : 3;
+  const auto cell_type = gdim == 3 ? dolfinx::mesh::CellType::tetrahedron : dolfinx::mesh::CellType::triangle;
+  const int nodes_per_cell = gdim + 1;
 
   // gmsh runs on rank 0 only; the other ranks enter create_mesh empty-handed.
   RawMesh raw;
@@ -175,7 +187,7 @@ SceneMesh build_scene_mesh(MPI_Comm comm, Model model, double R, const MeshGradi
   {
     try
     {
-      raw = mesh_with_gmsh(model, R, grading);
+      raw = make_raw();
     }
     catch (const std::exception& e)
     {
@@ -195,40 +207,112 @@ SceneMesh build_scene_mesh(MPI_Comm comm, Model model, double R, const MeshGradi
   auto mesh = std::make_shared<dolfinx::mesh::Mesh>(dolfinx::mesh::create_mesh(
       comm, dolfinx::graph::regular_adjacency_list(std::move(cells), nodes_per_cell), cmap, raw.x,
       {raw.x.size() / gdim, std::size_t(gdim)}, dolfinx::mesh::GhostMode::none));
-
   const int tdim = mesh->topology().dim();
   mesh->topology_mutable().create_entities(tdim - 1);
   mesh->topology_mutable().create_connectivity(tdim - 1, tdim);
-
   SceneMesh scene;
   scene.mesh = mesh;
+  return scene;
+}
+
+/// Where a scene's boundary parts lie, as predicates on points (x, y, z)
+/// (DOLFINx pads 2D points with z = 0; the 2D vertical is y).
+struct SceneParts
+{
+  Predicate symmetry_x, symmetry_y, top;
+  Predicate curved;   ///< on the surface that may touch the plane
+  Predicate in_plane; ///< in one of the scene's planes
+};
+
+/// Tags the parts; the contact facets are the facets with all vertices on the
+/// curved surface except those lying in a plane (a plane facet can have all
+/// its vertices on a rim).
+void tag_parts(SceneMesh& scene, const SceneParts& parts)
+{
+  const dolfinx::mesh::Mesh& mesh = *scene.mesh;
+  const int fdim = mesh.topology().dim() - 1;
+  if (parts.symmetry_x)
+    scene.symmetry_x_facets = boundary_facets(mesh, parts.symmetry_x);
+  if (parts.symmetry_y)
+    scene.symmetry_y_facets = boundary_facets(mesh, parts.symmetry_y);
+  scene.top_facets = boundary_facets(mesh, parts.top);
+  std::vector<std::int32_t> candidates = boundary_facets(mesh, parts.curved);
+  const std::vector<double> mid = dolfinx::mesh::compute_midpoints(mesh, fdim, candidates);
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (!parts.in_plane(mid[3 * i], mid[3 * i + 1], mid[3 * i + 2]))
+      scene.contact_facets.push_back(candidates[i]);
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+} // namespace
+
+SceneMesh build_scene_mesh(MPI_Comm comm, Model model, double R, const MeshGrading& grading)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const bool solid = model == Model::solid;
+  const int gdim = solid ? 3 : 2;
+  SceneMesh scene = distribute(comm, gdim, [&] {
+    return mesh_with_gmsh(
+        gdim, [&] { return solid ? add_quarter_hemisphere(R) : add_quarter_disc(R); }, grading);
+  });
   const double tol = 1e-9 * R;
-  // The vertical coordinate is x[1] in 2D, x[2] in 3D (DOLFINx pads to 3).
-  const int zi = gdim - 1;
-  auto z_of = [zi](double, double y, double z) { return zi == 1 ? y : z; };
-  auto on_sphere = [&](double x, double y, double z) {
-    const double h = z_of(x, y, z) - R;
+  auto z_of = [solid](double y, double z) { return solid ? z : y; };
+  SceneParts parts;
+  parts.symmetry_x = [tol](double x, double, double) { return std::abs(x) < tol; };
+  if (solid)
+    parts.symmetry_y = [tol](double, double y, double) { return std::abs(y) < tol; };
+  parts.top = [&](double, double y, double z) { return std::abs(z_of(y, z) - R) < tol; };
+  parts.curved = [&](double x, double y, double z) {
+    const double h = z_of(y, z) - R;
     const double r2 = solid ? x * x + y * y : x * x;
     return std::abs(std::sqrt(r2 + h * h) - R) < 1e-7 * R;
   };
-  scene.symmetry_x_facets = boundary_facets(*mesh, [&](double x, double, double) { return std::abs(x) < tol; });
-  if (solid)
-    scene.symmetry_y_facets = boundary_facets(*mesh, [&](double, double y, double) { return std::abs(y) < tol; });
-  scene.top_facets = boundary_facets(*mesh, [&](double x, double y, double z) { return std::abs(z_of(x, y, z) - R) < tol; });
-
-  // Facets with all vertices on the sphere, except those lying in a plane of
-  // the scene (a plane facet can have all its vertices on the rim circle).
-  std::vector<std::int32_t> candidates = boundary_facets(*mesh, on_sphere);
-  const std::vector<double> mid = dolfinx::mesh::compute_midpoints(*mesh, tdim - 1, candidates);
-  for (std::size_t i = 0; i < candidates.size(); ++i)
-  {
-    const double x = mid[3 * i], y = mid[3 * i + 1], z = mid[3 * i + 2];
-    const bool in_plane = std::abs(x) < tol || (solid && std::abs(y) < tol) || std::abs(z_of(x, y, z) - R) < tol;
-    if (!in_plane)
-      scene.contact_facets.push_back(candidates[i]);
-  }
+  parts.in_plane = [&](double x, double y, double z) {
+    return std::abs(x) < tol || (solid && std::abs(y) < tol) || std::abs(z_of(y, z) - R) < tol;
+  };
+  tag_parts(scene, parts);
   scene.symmetry_multiplicity = model == Model::axisymmetric ? 1 : model == Model::plane_strain ? 2 : 4;
-  scene.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  scene.wall_s = seconds_since(start);
+  return scene;
+}
+
+SceneMesh build_slab_mesh(MPI_Comm comm, const SlabGeometry& slab, const MeshGrading& section_grading)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const double L = slab.length_m;
+  auto radius = [&](double x) { return slab.start_radius_m + (slab.end_radius_m - slab.start_radius_m) * x / L; };
+  SceneMesh scene = distribute(comm, 3, [&] {
+    RawMesh raw = mesh_with_gmsh(
+        3, [&] { return add_extruded_quarter_disc(L, slab.layer_fractions); }, section_grading);
+    // gmsh (across, up, along) at unit radius -> (along, R across, R up).
+    for (std::size_t i = 0; i < raw.x.size(); i += 3)
+    {
+      const double across = raw.x[i], up = raw.x[i + 1], along = raw.x[i + 2];
+      raw.x[i] = along;
+      raw.x[i + 1] = radius(along) * across;
+      raw.x[i + 2] = radius(along) * up;
+    }
+    return raw;
+  });
+  // Tolerances relative to the local radius: the section is the unit disc scaled.
+  const double tol = 1e-9;
+  SceneParts parts;
+  parts.symmetry_y = [&](double x, double y, double) { return std::abs(y / radius(x)) < tol; };
+  parts.top = [&](double x, double, double z) { return std::abs(z / radius(x) - 1) < tol; };
+  parts.curved = [&](double x, double y, double z) {
+    const double R = radius(x);
+    return std::abs(std::hypot(y / R, z / R - 1) - 1) < 1e-7;
+  };
+  parts.in_plane = [&](double x, double y, double z) {
+    return std::abs(x) < tol * L || std::abs(x - L) < tol * L || std::abs(y / radius(x)) < tol
+           || std::abs(z / radius(x) - 1) < tol;
+  };
+  tag_parts(scene, parts);
+  scene.symmetry_multiplicity = 2;
+  scene.wall_s = seconds_since(start);
   return scene;
 }
 } // namespace rollcheck::fem

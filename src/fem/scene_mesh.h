@@ -12,9 +12,19 @@
 //   below z = R. The sphere is turned so that its parametric poles lie on the
 //   top face, far from the contact, where they cannot distort the surface mesh.
 //
+// - slab (build_slab_mesh): the neighbourhood of a contact ruling of length L
+//   along x in [0, L], the y >= 0 half by symmetry: the quarter disc of the
+//   plane-strain scene, of radius R(x) = R_0 + (R_L - R_0) x / L in each
+//   section x = const, stacked along the ruling. It is a cone (a cylinder if
+//   R_0 = R_L) touching z = 0 along the ruling, whose sections across the
+//   ruling are exactly the slices of fem/slice_contact.h; its end faces x = 0
+//   and x = L are free, and meet the curved surface at a right-angled edge.
+//
 // Grading: element size h(d) = min(h_far, h_c + g max(0, d - r_fine)) with d
 // the distance from the first point of contact (gmsh Distance + Threshold
-// fields, linear in between); see MeshGrading.
+// fields, linear in between); see MeshGrading. The slab is the plane-strain
+// section meshed at unit radius and extruded in layers (gmsh structured
+// extrusion, each prism split into tetrahedra), then scaled by R(x).
 #include "fem/hertz_setup.h"
 #include <dolfinx/mesh/Mesh.h>
 #include <memory>
@@ -30,8 +40,8 @@ struct SceneMesh
   std::vector<std::int32_t> contact_facets;
   /// Loaded face z = R, where the prescribed approach acts.
   std::vector<std::int32_t> top_facets;
-  /// Symmetry planes: x = 0 (all models; the axis in the axisymmetric one)
-  /// and y = 0 (solid only).
+  /// Symmetry planes: x = 0 (the Hertz scenes; the axis in the axisymmetric
+  /// one) and y = 0 (solid and slab).
   std::vector<std::int32_t> symmetry_x_facets;
   std::vector<std::int32_t> symmetry_y_facets;
   /// The model covers 1 / multiplicity of the body (plane strain 2, solid 4).
@@ -40,4 +50,17 @@ struct SceneMesh
 };
 
 SceneMesh build_scene_mesh(MPI_Comm comm, Model model, double radius_m, const MeshGrading& grading);
+
+struct SlabGeometry
+{
+  double length_m = 0;        ///< L, along the ruling
+  double start_radius_m = 0;  ///< R_0, at x = 0
+  double end_radius_m = 0;    ///< R_L, at x = L
+  /// Layer boundaries along the ruling as fractions of L, increasing, ending at 1.
+  std::vector<double> layer_fractions;
+};
+
+/// `section_grading` in units of the local radius (the section at unit
+/// radius). Model::solid conventions; symmetry multiplicity 2.
+SceneMesh build_slab_mesh(MPI_Comm comm, const SlabGeometry& slab, const MeshGrading& section_grading);
 } // namespace rollcheck::fem

@@ -10,7 +10,7 @@ namespace rollcheck::fem
 namespace
 {
 // A slice's result travels between ranks as these doubles.
-constexpr int packed_size = 10;
+constexpr int packed_size = 11;
 
 std::array<double, packed_size> pack(const SliceFem& r)
 {
@@ -23,7 +23,8 @@ std::array<double, packed_size> pack(const SliceFem& r)
           static_cast<double>(r.refined_dofs),
           static_cast<double>(r.newton_iterations),
           static_cast<double>(r.krylov_iterations),
-          r.wall_s};
+          r.wall_s,
+          r.approach_m};
 }
 
 void unpack(const double* v, SliceFem& r)
@@ -38,6 +39,7 @@ void unpack(const double* v, SliceFem& r)
   r.newton_iterations = static_cast<int>(v[7]);
   r.krylov_iterations = static_cast<int>(v[8]);
   r.wall_s = v[9];
+  r.approach_m = v[10];
 }
 
 SliceFem solve_slice(const SliceLoad& load, const SliceSettings& settings)
@@ -63,6 +65,7 @@ SliceFem solve_slice(const SliceLoad& load, const SliceSettings& settings)
   r.half_width_m = coarse.contact_size_m;
   r.hertz_peak_pressure_pa = coarse.hertz.peak_pressure_pa;
   r.hertz_half_width_m = coarse.hertz.contact_size_m;
+  r.approach_m = coarse.approach_m;
   r.dofs = coarse.dofs;
   r.refined_dofs = fine.dofs;
   r.newton_iterations = coarse.newton_iterations + fine.newton_iterations;

@@ -41,6 +41,7 @@ struct SliceFem
   double half_width_m = 0;              ///< b of the Hertz-form fit, at the settings' level
   double hertz_peak_pressure_pa = 0;    ///< sqrt(q E* / (pi R))
   double hertz_half_width_m = 0;        ///< sqrt(4 q R / (pi E*))
+  double approach_m = 0;                ///< of the slice's top (height R) at q, at the settings' level
   std::int64_t dofs = 0;                ///< at the settings' level
   std::int64_t refined_dofs = 0;
   int newton_iterations = 0;            ///< both levels

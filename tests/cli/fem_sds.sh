@@ -3,7 +3,9 @@
 # form p0 = sqrt((F / L) E* / (pi R)) of its uniformly loaded generator, both
 # creases of every orientation reported, FEM-SDS against line-Hertz SDS, the
 # table and plots written whole by `run CASE --set out=...`; the rigid oracle's
-# rim-point orientations reported apart; bad input exits 2 naming the input.
+# rim-point orientations reported apart; the 3D slab check (10 mm cylinder)
+# within 2 % of the slices, with its square ends below the middle; bad input
+# exits 2 naming the input.
 set -u
 bin=$1; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp"
@@ -11,10 +13,12 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_TH
 here=$(cd "$(dirname "$0")/../.." && pwd)
 mpi="mpirun -n 2 --oversubscribe"
 fail=0
-$mpi "$bin" -q run "$here/cases/fem_sds_cylinder.toml" --set orientations=2 --set fem_slices=3 \
+$mpi "$bin" -q run "$here/cases/fem_sds_cylinder.toml" --set orientations=2 --set fem_slices=3 --set slab_orientations=0 \
   --set "out=$tmp/cylinder" --json "$tmp/cylinder.json" > "$tmp/cylinder.log" 2>&1 || { echo "FAIL: cylinder run"; cat "$tmp/cylinder.log"; fail=1; }
 "$bin" -q fem-sds --body oloid --oracle rigid --orientations 3 --fem-slices 3 --json "$tmp/rigid.json" \
   > "$tmp/rigid.log" 2>&1 || { echo "FAIL: rigid-oracle run"; cat "$tmp/rigid.log"; fail=1; }
+$mpi "$bin" -q fem-sds --body cylinder --radius 0.01 --height 0.02 --sections 60 --orientations 1 --fem-slices 3 \
+  --slab-check 1 --json "$tmp/slab.json" > "$tmp/slab.log" 2>&1 || { echo "FAIL: slab run"; cat "$tmp/slab.log"; fail=1; }
 [[ $fail -eq 0 ]] || exit 1
 for f in fem_sds.json table.md peaks.png profiles.png; do
   [[ -s "$tmp/cylinder/$f" ]] || { echo "FAIL: $tmp/cylinder/$f missing"; fail=1; }
@@ -39,6 +43,17 @@ for o in r["per_orientation"]:
           f"finer {100 * o['fem_peak_refinement_change']:+.3f} %")
 # Uniform pressure along the generator: FEM-SDS equals line-Hertz SDS to the FEM's accuracy.
 assert abs(r["fem_sds"] / r["line_hertz_sds"] - 1) < 0.005, (r["fem_sds"], r["line_hertz_sds"])
+slab = json.load(open(f"{d}/slab.json"))
+assert slab["slab_checked_orientations"] == 1 and slab["slab_worst_peak_difference"] < 0.02, slab
+levels = slab["per_orientation"][0]["slab"]
+assert [l["refine"] for l in levels] == [0, 1] and levels[1]["dofs"] > levels[0]["dofs"]
+for l in levels:
+    middle = l["slice_peak_pa"][1]
+    assert abs(l["force_n"] / 100 - 1) < 1e-3 and abs(l["approach_factor"] - 1) < 0.02, l
+    assert abs(l["peak_difference_vs_slices"]) < 0.02 and max(l["end_peak_pa"]) < 0.8 * middle, l
+    print(f"slab level {l['refine']}: {l['dofs']} DOFs, peak {100 * l['peak_difference_vs_slices']:+.2f} %, "
+          f"largest slice difference {100 * l['max_slice_difference']:.2f} %, "
+          f"ends {l['end_peak_pa'][0]:.4g}, {l['end_peak_pa'][1]:.4g} Pa < middle {middle:.4g} Pa")
 rigid = json.load(open(f"{d}/rigid.json"))
 unsolved = [o for o in rigid["per_orientation"] if not o["fem_solved"]]
 assert len(unsolved) == rigid["orientations"] - rigid["fem_solved_orientations"]
@@ -59,4 +74,5 @@ expect_input_error "crease_margin" fem-sds --body cylinder --crease-margin 0.3
 expect_input_error "normal_load_n" fem-sds --body cylinder --load nan
 expect_input_error "mesh_file" fem-sds --mesh "$tmp/none.obj"
 expect_input_error "sphere" fem-sds --body sphere
+expect_input_error "slab_orientations" fem-sds --body cylinder --slab-check -1
 exit $fail

@@ -1,0 +1,188 @@
+#include "fem/slab_contact.h"
+#include "contact/hertz.h"
+#include "fem/hertz_setup.h"
+#include "fem/load_control.h"
+#include "fem/nodal_fields.h"
+#include "fem/petsc_session.h"
+#include "fem/scene_mesh.h"
+#include "geometry/error.h"
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <numeric>
+#include <spdlog/spdlog.h>
+
+namespace rollcheck::fem
+{
+namespace
+{
+constexpr double layer_growth = 1.5;
+constexpr double section_growth = 0.5;
+constexpr int layers_across_length = 24; ///< the largest layer is L / this
+
+/// Layer boundaries in (0, 1]: thickness h_0 at x = 0 and h_L at x = L,
+/// growing by layer_growth with the distance from the nearer end.
+std::vector<double> layer_fractions(double length, double h_0, double h_L)
+{
+  const double largest = length / layers_across_length;
+  std::vector<double> x;
+  for (double t = 0; t < length;)
+  {
+    t += std::min({largest, h_0 + (layer_growth - 1) * t, h_L + (layer_growth - 1) * (length - t)});
+    x.push_back(t);
+  }
+  std::vector<double> fractions;
+  for (double t : x)
+    fractions.push_back(t / x.back());
+  return fractions;
+}
+
+/// Piecewise-linear interpolation through (xs, ys), continued linearly
+/// beyond the first and last points; constant for a single point.
+double interpolate(std::span<const double> xs, std::span<const double> ys, double x)
+{
+  if (xs.size() == 1)
+    return ys[0];
+  std::size_t i = std::upper_bound(xs.begin(), xs.end(), x) - xs.begin();
+  i = std::clamp<std::size_t>(i, 1, xs.size() - 1);
+  const double t = (x - xs[i - 1]) / (xs[i] - xs[i - 1]);
+  return ys[i - 1] + t * (ys[i] - ys[i - 1]);
+}
+
+std::vector<double> all_gather(MPI_Comm comm, const std::vector<double>& local)
+{
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  int n = static_cast<int>(local.size());
+  std::vector<int> counts(size), offsets(size + 1, 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+  for (int r = 0; r < size; ++r)
+    offsets[r + 1] = offsets[r] + counts[r];
+  std::vector<double> all(offsets[size]);
+  MPI_Allgatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, comm);
+  return all;
+}
+} // namespace
+
+SlabFem solve_slab(MPI_Comm comm, double length_m, double start_radius_m, double end_radius_m, double force_n,
+                   std::span<const SliceFem> slices, const SlabSettings& settings)
+{
+  const auto start = std::chrono::steady_clock::now();
+  for (double v : {length_m, start_radius_m, end_radius_m, force_n})
+    if (!std::isfinite(v) || v <= 0)
+      throw InputError(fmt::format("slab: length, radii and force must be positive and finite, got L = {} m, "
+                                   "R = {} m, {} m, F = {} N",
+                                   length_m, start_radius_m, end_radius_m, force_n));
+  // The slices that carry load define the top's profile and the force.
+  std::vector<double> positions, approaches;
+  double smallest_b_over_r = INFINITY, largest_b_over_r = 0;
+  for (const SliceFem& s : slices)
+    if (s.load.load_n_per_m > 0)
+    {
+      positions.push_back(s.load.position_m);
+      approaches.push_back(s.approach_m);
+      smallest_b_over_r = std::min(smallest_b_over_r, s.hertz_half_width_m / s.load.radius_m);
+      largest_b_over_r = std::max(largest_b_over_r, s.hertz_half_width_m / s.load.radius_m);
+    }
+  if (positions.empty())
+    throw InputError("slab: no slice carries load");
+  if (!std::is_sorted(positions.begin(), positions.end()))
+    throw InputError("slab: slices must be ordered along the ruling");
+  const double mean_approach = std::accumulate(approaches.begin(), approaches.end(), 0.0) / approaches.size();
+  ensure_petsc();
+
+  SlabFem result;
+  result.refine = settings.refine >= 0 ? settings.refine : default_refine(Model::solid, 1);
+  // The section at unit radius, graded as the plane-strain scene.
+  HertzSetup unit;
+  unit.model = Model::plane_strain;
+  unit.radius_m = 1.0;
+  unit.refine = result.refine;
+  HertzReference unit_reference{};
+  unit_reference.contact_size_m = largest_b_over_r;
+  MeshGrading section = mesh_grading(unit, unit_reference);
+  section.contact_size_m = smallest_b_over_r / (10.0 * std::pow(2.0, result.refine / 2.0));
+  section.growth = section_growth;
+
+  SlabGeometry geometry;
+  geometry.length_m = length_m;
+  geometry.start_radius_m = start_radius_m;
+  geometry.end_radius_m = end_radius_m;
+  const double h_0 = section.contact_size_m * start_radius_m, h_L = section.contact_size_m * end_radius_m;
+  geometry.layer_fractions = layer_fractions(length_m, h_0, h_L);
+  result.layers = static_cast<int>(geometry.layer_fractions.size());
+  result.end_layer_m = std::min(h_0, h_L);
+  const SceneMesh scene = build_slab_mesh(comm, geometry, section);
+
+  const double E_star = settings.elastic_plane
+                            ? contact::effective_modulus_identical_bodies(settings.youngs_modulus_pa, settings.poisson_ratio)
+                            : contact::effective_modulus_rigid_plane(settings.youngs_modulus_pa, settings.poisson_ratio);
+  const double body_modulus = E_star * (1 - settings.poisson_ratio * settings.poisson_ratio);
+  const double kappa = settings.penalty_c * body_modulus / result.end_layer_m;
+  PenaltyContact problem(scene, Model::solid, 1, body_modulus, settings.poisson_ratio, kappa, settings.petsc_options);
+  result.dofs = problem.num_dofs();
+  problem.set_approach_profile(
+      [&](const double* x) { return interpolate(positions, approaches, x[0]) / mean_approach; });
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  if (rank == 0)
+    spdlog::info("slab L = {:.4g} m, R = {:.4g}..{:.4g} m: {} layers, {} dofs, end layer {:.3g} m", length_m,
+                 start_radius_m, end_radius_m, result.layers, result.dofs, result.end_layer_m);
+
+  // Start as the slices do (fem/hertz_solve.cpp): their approach, the body
+  // shifted by the height of its surface at the contact edge, exponent of a
+  // line contact.
+  const double b_over_r = 0.5 * (smallest_b_over_r + largest_b_over_r);
+  const double mean_radius = 0.5 * (start_radius_m + end_radius_m);
+  const double log_term = 2 * std::log(4 / b_over_r) - 1;
+  const LoadControlReport load = reach_force(problem, force_n, mean_approach, 0.5 * b_over_r * b_over_r * mean_radius,
+                                             log_term / (log_term - 1), 1e-6);
+  result.approach_factor = load.approach_m / mean_approach;
+  result.newton_iterations = load.newton.newton_iterations;
+  result.krylov_iterations = load.newton.krylov_iterations;
+  result.force_n = problem.contact_force_n();
+
+  // Nodal pressure on the contact surface, by node plane x = const.
+  const NodalFields fields = recover_nodal_fields(problem);
+  const std::vector<double> xq = fields.pressure->function_space()->tabulate_dof_coordinates(false);
+  std::span<const double> p = fields.pressure->x()->array();
+  std::vector<double> local;
+  for (std::size_t i = 0; i < fields.contact_weight.size(); ++i)
+    if (fields.contact_weight[i] > 0)
+      local.insert(local.end(), {xq[3 * i], p[i], fields.contact_weight[i]});
+  const std::vector<double> surface = all_gather(comm, local);
+  std::vector<std::array<double, 2>> nodes; // (x, p)
+  double moment = 0, total = 0;
+  for (std::size_t i = 0; i < surface.size(); i += 3)
+  {
+    nodes.push_back({surface[i], surface[i + 1]});
+    moment += surface[i] * surface[i + 1] * surface[i + 2];
+    total += surface[i + 1] * surface[i + 2];
+  }
+  if (!(total > 0))
+    throw ComputationError("slab: no contact pressure on the surface after load control");
+  result.centre_of_pressure = moment / total / length_m;
+  std::sort(nodes.begin(), nodes.end());
+  const double same_plane = 1e-9 * length_m;
+  for (const auto& [x, pressure] : nodes)
+  {
+    if (result.plane_position_m.empty() || x - result.plane_position_m.back() > same_plane)
+    {
+      result.plane_position_m.push_back(x);
+      result.plane_peak_pressure_pa.push_back(0);
+    }
+    result.plane_peak_pressure_pa.back() = std::max(result.plane_peak_pressure_pa.back(), pressure);
+  }
+  result.end_peak_pressure_pa = {result.plane_peak_pressure_pa.front(), result.plane_peak_pressure_pa.back()};
+  for (const SliceFem& s : slices)
+    result.slice_peak_pressure_pa.push_back(
+        s.load.load_n_per_m > 0
+            ? interpolate(result.plane_position_m, result.plane_peak_pressure_pa, s.load.position_m)
+            : 0.0);
+  double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  MPI_Allreduce(MPI_IN_PLACE, &wall, 1, MPI_DOUBLE, MPI_MAX, comm);
+  result.wall_s = wall;
+  return result;
+}
+} // namespace rollcheck::fem

@@ -1,0 +1,82 @@
+#pragma once
+// The fuller model behind the plane-strain slices of a line contact
+// (fem/slice_contact.h): the 3D slab of the contact ruling (fem/scene_mesh.h
+// build_slab_mesh), whose sections across the ruling are the slices' quarter
+// discs of radius R(x), pressed onto the rigid plane with its top face (height
+// R(x)) following the slices' own approaches, linear between slice centres
+// and extrapolated linearly to the ends, and scaled by load control until the
+// slab carries the slices' total force. Where the slices are right (plane
+// strain: no shear transfer between neighbouring sections), the slab's peak
+// pressure in the section of each slice equals the slice's, and the approach
+// factor is 1.
+//
+// The slab also holds what slices cannot: the ends of the ruling, where the
+// curved surface meets the free end face at a right-angled edge (the
+// cylinder's rim). Against a rigid frictionless plane that edge is not
+// singular: mirrored in the plane, the contact face becomes a plane of
+// symmetry and the right-angled corner a straight free boundary, and a
+// free-free wedge of angle 2 theta is singular only for 2 theta > pi (M. L.
+// Williams, J. Appl. Mech. 19, 1952). The free end face makes the end more
+// compliant, so the pressure falls towards it. The singular end pressure of
+// a flat-ended roller (T. A. Harris, M. N. Kotzalas, "Rolling Bearing
+// Analysis", 5th ed., 2007, ch. 6) needs an elastic counter-face, which the
+// rigid-plane model does not have. The end sections' peaks are reported at
+// each level so that a study can see which case it is in.
+//
+// Mesh: the section is graded as the plane-strain scene (fem/hertz_setup.h
+// mesh_grading), with the contact element size h_c = min(b / R) R(x) / (10
+// 2^(refine / 2)) over the loaded slices, but growing twice as fast away from
+// the contact (0.5 h per h instead of 0.25: a third of the nodes); along the ruling the layers are h_c
+// thick at each end and grow geometrically by 1.5 towards the middle, up to L / 24.
+#include "fem/slice_contact.h"
+#include <array>
+#include <cstdint>
+#include <mpi.h>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace rollcheck::fem
+{
+struct SlabSettings
+{
+  double youngs_modulus_pa = 200e9; ///< steel (the preprint's)
+  double poisson_ratio = 0.3;       ///< steel (the preprint's)
+  /// Section level, as HertzSetup::refine; -1: the 3D P1 default (default_refine).
+  int refine = -1;
+  double penalty_c = 100.0;         ///< HertzSetup::penalty_c, with h = the smallest h_c
+  bool elastic_plane = false;       ///< HertzSetup::elastic_plane (the preprint's E*)
+  /// Prefix "hertz_". Default MUMPS LU: the layers are up to 10^4 times
+  /// longer than the contact elements are wide, and GMRES + GAMG (the 3D
+  /// default) broke down on them (DIVERGED_BREAKDOWN, cylinder test).
+  std::string petsc_options = "-hertz_ksp_type preonly -hertz_pc_type lu -hertz_pc_factor_mat_solver_type mumps";
+};
+
+struct SlabFem
+{
+  int refine = 0;                     ///< the section level used
+  /// The slab's peak pressure in the section of each slice (the largest
+  /// nodal pressure of the node planes either side, interpolated to the
+  /// slice's position); 0 for slices without load.
+  std::vector<double> slice_peak_pressure_pa;
+  std::array<double, 2> end_peak_pressure_pa{}; ///< largest nodal pressure in the end sections x = 0, x = L
+  std::vector<double> plane_position_m;      ///< node planes along the ruling
+  std::vector<double> plane_peak_pressure_pa; ///< largest nodal pressure in each
+  double approach_factor = 0;        ///< slab approach over the slices' at the same total force
+  double force_n = 0;                ///< integrated contact pressure, whole slab
+  double centre_of_pressure = 0;     ///< fraction of L, from the nodal contact forces
+  double end_layer_m = 0;            ///< thickness of the end layers (the smaller end's)
+  int layers = 0;
+  std::int64_t dofs = 0;
+  int newton_iterations = 0;
+  int krylov_iterations = 0;
+  double wall_s = 0;
+};
+
+/// `slices` are the solved slices, ordered along a ruling of length
+/// `length_m` with radii R(0) = start_radius_m, R(L) = end_radius_m, whose
+/// line load integrates to `force_n`; at least one must carry load.
+/// ComputationError on a failed solve (every rank), InputError for bad sizes.
+SlabFem solve_slab(MPI_Comm comm, double length_m, double start_radius_m, double end_radius_m, double force_n,
+                   std::span<const SliceFem> slices, const SlabSettings& settings);
+} // namespace rollcheck::fem
