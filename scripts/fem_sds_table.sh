@@ -2,7 +2,9 @@
 # The README's FEM-SDS table: runs the four fem-sds cases on two ranks and
 # prints analytic SDS, line-Hertz SDS, FEM-SDS, their ratios, the
 # oloid/cylinder discrimination under each and the orientations that reach a
-# crease. Results (JSON, table.md, plots) go to OUT/<case>/.
+# crease, and the 3D slab check of each body's first orientation (peak
+# against the slices, end-section pressure over the nearest slice's, at two
+# section levels). Results (JSON, table.md, plots) go to OUT/<case>/.
 #   bash scripts/fem_sds_table.sh [BINARY] [OUT]
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -33,4 +35,17 @@ for name in ("oloid", "paper_oloid", "candidate"):
     r = runs[name]
     print(f"| {r['body']} / cylinder | {r['analytic_sds'] / cyl['analytic_sds']:.4g} | "
           f"{r['line_hertz_sds'] / cyl['line_hertz_sds']:.4g} | {r['fem_sds'] / cyl['fem_sds']:.4g} |")
+print()
+print("| body | orientation (c) | slab level | DOFs | Newton | s | slab peak / slices' - 1 | "
+      "max over slices abs(slab / slice - 1) | end p / nearest slice p (s = 0, L) |")
+print("|---|---|---|---|---|---|---|---|---|")
+for name, r in runs.items():
+    for o in r["per_orientation"]:
+        for l in o.get("slab", []):
+            first, last = o["slices"][0]["fem_peak_pa"], o["slices"][-1]["fem_peak_pa"]
+            ends = [l["end_peak_pa"][0] / first if first > 0 else float("nan"),
+                    l["end_peak_pa"][1] / last if last > 0 else float("nan")]
+            print(f"| {r['body']} | {o['index']} ({o['centre_of_pressure']:.3f}) | {l['refine']} | {l['dofs']} | "
+                  f"{l['newton_iterations']} | {l['wall_s']:.1f} | {100 * l['peak_difference_vs_slices']:+.2f} % | "
+                  f"{100 * l['max_slice_difference']:.2f} % | {ends[0]:.3f}, {ends[1]:.3f} |")
 PY

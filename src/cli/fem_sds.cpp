@@ -591,8 +591,8 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
       {"contact_model",
        "developable bodies touch the plane along a ruling: the preprint's point-contact Hertz with R = 1/sqrt(k1 k2) "
        "does not apply there (k1 k2 = 0 on the exact surface); the FEM and line-Hertz columns treat the ruling as "
-       "plane-strain slices; peaks are taken away from the ruling's ends, where it meets the body's rims (creases, "
-       "singular in linear elasticity)"}};
+       "plane-strain slices; peaks are taken away from the ruling's ends, where it meets the body's rims (creases: "
+       "singular between two elastic bodies, not plane strain in any case; the 3D slab check shows the end)"}};
   std::string table = markdown_table(results);
   if (slab_checked > 0)
     table += "\n3D slab of the whole ruling against the slices (fem/slab_contact.h):\n\n" + slab_table(results);

@@ -17,12 +17,16 @@
 //   outside (0, 1) the body is not in equilibrium on the ruling (it tips).
 // - creases: every ruling ends on the two circles, which are the bodies'
 //   edges (the oloid's rims, the cylinder's rims): where the line load at an
-//   end is not zero, the contact reaches a crease, where linear elasticity
-//   gives a singular pressure, as under the edge of a flat punch (K. L.
-//   Johnson, "Contact Mechanics", CUP 1985, ch. 2) or at the end of an
-//   uncrowned roller (T. A. Harris, M. N. Kotzalas, "Rolling Bearing
-//   Analysis", 5th ed., 2007, ch. 6): its FEM peak grows under refinement. A
-//   point support on a rim and a disc support are creases by themselves.
+//   end is not zero, the contact reaches a crease. Between two elastic
+//   bodies (the preprint's steel on steel) the end of an uncrowned roller
+//   carries a singular edge pressure (T. A. Harris, M. N. Kotzalas, "Rolling
+//   Bearing Analysis", 5th ed., 2007, ch. 6), like the edge of a flat punch
+//   (K. L. Johnson, "Contact Mechanics", CUP 1985, ch. 2); against a rigid
+//   frictionless plane a right-angled end is not singular (the 3D slab of
+//   fem/slab_contact.h: the pressure falls towards it). Either way slices
+//   near a crease are not plane strain, so the FEM takes its peaks away from
+//   it. A point support on a rim and a disc support are creases by
+//   themselves: the contact then holds the edge itself.
 #include "geometry/surface_mesh.h"
 #include "oracle/contact_density.h"
 #include "oracle/rolling_body.h"
