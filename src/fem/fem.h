@@ -7,6 +7,7 @@
 // the post-processing that sets every result next to Hertz theory
 // (contact/hertz.h). Knows nothing of files beyond its own XDMF field output,
 // nor of the command line.
+#include "fem/crease_contact.h"
 #include "fem/hertz_setup.h"
 #include "fem/hertz_solve.h"
 #include "fem/hertz_studies.h"

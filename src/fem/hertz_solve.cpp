@@ -1,5 +1,6 @@
 #include "fem/hertz_solve.h"
 #include "contact/hertz.h"
+#include "fem/all_gather.h"
 #include "fem/load_control.h"
 #include "fem/nodal_fields.h"
 #include "fem/petsc_session.h"
@@ -19,21 +20,6 @@ namespace
 {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-/// Every rank's values, concatenated in rank order.
-std::vector<double> all_gather(MPI_Comm comm, const std::vector<double>& local)
-{
-  int size = 1;
-  MPI_Comm_size(comm, &size);
-  int n = static_cast<int>(local.size());
-  std::vector<int> counts(size), offsets(size + 1, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  for (int r = 0; r < size; ++r)
-    offsets[r + 1] = offsets[r] + counts[r];
-  std::vector<double> all(offsets[size]);
-  MPI_Allgatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, comm);
-  return all;
-}
 
 void flag(HertzResult& result, const std::string& name, const std::string& warning, int rank)
 {

@@ -1,5 +1,6 @@
 #include "fem/scene_mesh.h"
 #include "geometry/error.h"
+#include <fmt/format.h>
 #include <chrono>
 #include <cmath>
 #include <dolfinx/fem/CoordinateElement.h>
@@ -55,6 +56,23 @@ int add_quarter_disc(double R)
   occ::addPlaneSurface({occ::addCurveLoop({arc, top, axis})});
   occ::synchronize();
   return pole;
+}
+
+/// The kink scene's polygon in the xy-plane of gmsh (y is the model's z);
+/// returns the tag of the apex.
+int add_half_kink(const KinkGeometry& k)
+{
+  namespace occ = gmsh::model::occ;
+  const double W = k.width_m, H = k.height_m;
+  const int apex = occ::addPoint(0, 0, 0);
+  const int face_end = occ::addPoint(W, W * std::tan(k.face_angle_rad), 0);
+  const int top_right = occ::addPoint(W, H, 0);
+  const int top_left = occ::addPoint(0, H, 0);
+  const std::vector<int> lines = {occ::addLine(apex, face_end), occ::addLine(face_end, top_right),
+                                  occ::addLine(top_right, top_left), occ::addLine(top_left, apex)};
+  occ::addPlaneSurface({occ::addCurveLoop(lines)});
+  occ::synchronize();
+  return apex;
 }
 
 /// Quarter hemisphere x, y >= 0, z <= R of the sphere about (0, 0, R). The cut
@@ -275,6 +293,27 @@ SceneMesh build_scene_mesh(MPI_Comm comm, Model model, double R, const MeshGradi
   };
   tag_parts(scene, parts);
   scene.symmetry_multiplicity = model == Model::axisymmetric ? 1 : model == Model::plane_strain ? 2 : 4;
+  scene.wall_s = seconds_since(start);
+  return scene;
+}
+
+SceneMesh build_kink_mesh(MPI_Comm comm, const KinkGeometry& kink, const MeshGrading& grading)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const double W = kink.width_m, H = kink.height_m, slope = std::tan(kink.face_angle_rad);
+  if (!(W > 0 && H > 2 * W * slope && kink.face_angle_rad > 0 && kink.face_angle_rad <= std::numbers::pi / 4))
+    throw InputError(fmt::format("kink scene: need W > 0, 0 < beta <= 45 deg and H above the face's end "
+                                 "(W = {} m, H = {} m, beta = {} rad)",
+                                 W, H, kink.face_angle_rad));
+  SceneMesh scene = distribute(comm, 2, [&] { return mesh_with_gmsh(2, [&] { return add_half_kink(kink); }, grading); });
+  const double tol = 1e-9 * W;
+  SceneParts parts;
+  parts.symmetry_x = [tol](double x, double, double) { return std::abs(x) < tol; };
+  parts.top = [H, tol](double, double y, double) { return std::abs(y - H) < tol; };
+  parts.curved = [slope, tol](double x, double y, double) { return std::abs(y - x * slope) < tol; };
+  parts.in_plane = [W, tol](double x, double, double) { return std::abs(x) < tol || std::abs(x - W) < tol; };
+  tag_parts(scene, parts);
+  scene.symmetry_multiplicity = 2;
   scene.wall_s = seconds_since(start);
   return scene;
 }

@@ -19,6 +19,11 @@
 //   R_0 = R_L) touching z = 0 along the ruling, whose sections across the
 //   ruling are exactly the slices of fem/slice_contact.h; its end faces x = 0
 //   and x = L are free, and meet the curved surface at a right-angled edge.
+// - kink (build_kink_mesh): a crease in contact, in plane strain: the half
+//   x >= 0 (symmetry about x = 0) of a body whose lower surface is the
+//   straight face z = x tan(beta) from the apex (0, 0) to x = W, closed by the
+//   side x = W and the top z = H. Mirrored, the surface has a kink of
+//   180 deg - 2 beta at the apex, which touches the plane first.
 //
 // Grading: element size h(d) = min(h_far, h_c + g max(0, d - r_fine)) with d
 // the distance from the first point of contact (gmsh Distance + Threshold
@@ -59,6 +64,17 @@ struct SlabGeometry
   /// Layer boundaries along the ruling as fractions of L, increasing, ending at 1.
   std::vector<double> layer_fractions;
 };
+
+struct KinkGeometry
+{
+  double width_m = 0;          ///< W
+  double height_m = 0;         ///< H, above the apex
+  double face_angle_rad = 0;   ///< beta, between the face and the plane, in (0, pi / 4]
+};
+
+/// Model::plane_strain conventions (the vertical is the second coordinate);
+/// symmetry multiplicity 2.
+SceneMesh build_kink_mesh(MPI_Comm comm, const KinkGeometry& kink, const MeshGrading& grading);
 
 /// `section_grading` in units of the local radius (the section at unit
 /// radius). Model::solid conventions; symmetry multiplicity 2.

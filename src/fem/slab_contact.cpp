@@ -1,6 +1,7 @@
 #include "fem/slab_contact.h"
 #include "contact/hertz.h"
 #include "fem/hertz_setup.h"
+#include "fem/all_gather.h"
 #include "fem/load_control.h"
 #include "fem/nodal_fields.h"
 #include "fem/petsc_session.h"
@@ -50,19 +51,6 @@ double interpolate(std::span<const double> xs, std::span<const double> ys, doubl
   return ys[i - 1] + t * (ys[i] - ys[i - 1]);
 }
 
-std::vector<double> all_gather(MPI_Comm comm, const std::vector<double>& local)
-{
-  int size = 1;
-  MPI_Comm_size(comm, &size);
-  int n = static_cast<int>(local.size());
-  std::vector<int> counts(size), offsets(size + 1, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  for (int r = 0; r < size; ++r)
-    offsets[r + 1] = offsets[r] + counts[r];
-  std::vector<double> all(offsets[size]);
-  MPI_Allgatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, comm);
-  return all;
-}
 } // namespace
 
 SlabFem solve_slab(MPI_Comm comm, double length_m, double start_radius_m, double end_radius_m, double force_n,
