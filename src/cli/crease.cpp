@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <mpi.h>
 #include <numbers>
+#include <spdlog/spdlog.h>
 
 namespace rollcheck::cli
 {
@@ -75,8 +76,9 @@ nlohmann::json run_crease(const io::Parameters& p)
   }
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  // Tables go to the log (stderr), so that `--json -` stays JSON alone.
   if (rank == 0)
-    fmt::print("\ncrease of {:.4g} deg under {:.4g} N/m (a = {:.4g} m, p(a/2) = {:.5g} Pa, apex growth per level "
+    spdlog::info("\ncrease of {:.4g} deg under {:.4g} N/m (a = {:.4g} m, p(a/2) = {:.5g} Pa, apex growth per level "
                "{:.4g} Pa by theory):\n\n{}\nThe apex pressure is singular: it grows with every level and is not a "
                "converged number; p(a/2) and the contact edge converge.\n\n",
                180 - 2 * p.real("face_angle_deg"), setup.load_n_per_m, study.half_width_m,
@@ -88,6 +90,13 @@ nlohmann::json run_crease(const io::Parameters& p)
           {"half_contact_pressure_pa", study.half_contact_pressure_pa},
           {"apex_growth_per_level_pa", study.apex_growth_per_level_pa},
           {"apex_pressure_converged", false},
+          {"apex_pressure_coarsest_pa", study.levels.front().apex_pressure_pa},
+          {"apex_pressure_finest_pa", study.levels.back().apex_pressure_pa},
+          {"apex_mean_growth_over_theory",
+           (study.levels.back().apex_pressure_pa - study.levels.front().apex_pressure_pa)
+               / static_cast<double>(study.levels.size() - 1) / study.apex_growth_per_level_pa},
+          {"finest_half_contact_pressure_error",
+           study.levels.back().half_contact_pressure_pa / study.half_contact_pressure_pa - 1},
           {"levels", levels}};
 }
 } // namespace

@@ -596,8 +596,9 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
   std::string table = markdown_table(results);
   if (slab_checked > 0)
     table += "\n3D slab of the whole ruling against the slices (fem/slab_contact.h):\n\n" + slab_table(results);
+  // Tables go to the log (stderr), so that `--json -` stays JSON alone.
   if (rank == 0)
-    fmt::print("\nfem-sds {} ({}):\n\n{}\nanalytic SDS {}, line-Hertz SDS {}, FEM-SDS {} over {} solved of {} "
+    spdlog::info("\nfem-sds {} ({}):\n\n{}\nanalytic SDS {}, line-Hertz SDS {}, FEM-SDS {} over {} solved of {} "
                "orientations; {} reach a crease\n\n",
                label, source.description, table, j["analytic_sds"].dump(), j["line_hertz_sds"].dump(),
                j["fem_sds"].dump(), solved, picks.size(), with_crease);
