@@ -1,6 +1,5 @@
 #include "fem/crease_contact.h"
 #include "contact/hertz.h"
-#include "fem/all_gather.h"
 #include "fem/hertz_setup.h"
 #include "fem/load_control.h"
 #include "fem/nodal_fields.h"
@@ -58,17 +57,9 @@ KinkLevel solve_level(MPI_Comm comm, const KinkStudy& study, int refine)
   level.newton_iterations = report.newton.newton_iterations;
   level.krylov_iterations = report.newton.krylov_iterations;
 
-  const NodalFields fields = recover_nodal_fields(problem);
-  const std::vector<double> xq = fields.pressure->function_space()->tabulate_dof_coordinates(false);
-  std::span<const double> p = fields.pressure->x()->array();
-  std::vector<double> local;
-  for (std::size_t i = 0; i < fields.contact_weight.size(); ++i)
-    if (fields.contact_weight[i] > 0)
-      local.insert(local.end(), {xq[3 * i], p[i]});
-  const std::vector<double> surface = all_gather(comm, local);
-  std::vector<std::array<double, 2>> nodes;
-  for (std::size_t i = 0; i < surface.size(); i += 2)
-    nodes.push_back({surface[i], surface[i + 1]});
+  std::vector<std::array<double, 2>> nodes; // (x, p)
+  for (const SurfacePressureNode& node : gather_surface_pressure(comm, recover_nodal_fields(problem)))
+    nodes.push_back({node.x[0], node.pressure_pa});
   std::sort(nodes.begin(), nodes.end());
   if (nodes.size() < 3 || !(nodes.front()[0] < 1e-9 * s.width_m) || !(nodes[1][1] > 0))
     throw ComputationError(fmt::format("crease: unresolved contact at level {} (element {:.3g} m, a = {:.3g} m)",

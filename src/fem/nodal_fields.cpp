@@ -1,4 +1,5 @@
 #include "fem/nodal_fields.h"
+#include "fem/all_gather.h"
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
@@ -87,5 +88,19 @@ NodalFields recover_nodal_fields(const PenaltyContact& problem)
   for (const auto& field : {f.pressure, f.stress, f.von_mises, f.max_shear})
     field->x()->scatter_fwd();
   return f;
+}
+std::vector<SurfacePressureNode> gather_surface_pressure(MPI_Comm comm, const NodalFields& fields)
+{
+  const std::vector<double> xq = fields.pressure->function_space()->tabulate_dof_coordinates(false);
+  std::span<const double> p = fields.pressure->x()->array();
+  std::vector<double> local;
+  for (std::size_t i = 0; i < fields.contact_weight.size(); ++i)
+    if (fields.contact_weight[i] > 0)
+      local.insert(local.end(), {xq[3 * i], xq[3 * i + 1], xq[3 * i + 2], p[i], fields.contact_weight[i]});
+  const std::vector<double> all = all_gather(comm, local);
+  std::vector<SurfacePressureNode> nodes;
+  for (std::size_t i = 0; i < all.size(); i += 5)
+    nodes.push_back({{all[i], all[i + 1], all[i + 2]}, all[i + 3], all[i + 4]});
+  return nodes;
 }
 } // namespace rollcheck::fem

@@ -9,6 +9,9 @@
 // von Mises and the maximum shear (Tresca, (sigma_1 - sigma_3) / 2) are
 // evaluated from the recovered nodal stress.
 #include "fem/penalty_contact.h"
+#include <array>
+#include <mpi.h>
+#include <vector>
 
 namespace rollcheck::fem
 {
@@ -24,4 +27,16 @@ struct NodalFields
 };
 
 NodalFields recover_nodal_fields(const PenaltyContact& problem);
+
+/// A P1 node of the contact surface: position, recovered pressure and lumped
+/// contact-surface weight (its tributary area, or length in 2D).
+struct SurfacePressureNode
+{
+  std::array<double, 3> x;
+  double pressure_pa;
+  double weight;
+};
+
+/// Every rank's contact-surface nodes, on every rank.
+std::vector<SurfacePressureNode> gather_surface_pressure(MPI_Comm comm, const NodalFields& fields);
 } // namespace rollcheck::fem

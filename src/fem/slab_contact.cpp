@@ -1,7 +1,6 @@
 #include "fem/slab_contact.h"
 #include "contact/hertz.h"
 #include "fem/hertz_setup.h"
-#include "fem/all_gather.h"
 #include "fem/load_control.h"
 #include "fem/nodal_fields.h"
 #include "fem/petsc_session.h"
@@ -132,21 +131,13 @@ SlabFem solve_slab(MPI_Comm comm, double length_m, double start_radius_m, double
   result.force_n = problem.contact_force_n();
 
   // Nodal pressure on the contact surface, by node plane x = const.
-  const NodalFields fields = recover_nodal_fields(problem);
-  const std::vector<double> xq = fields.pressure->function_space()->tabulate_dof_coordinates(false);
-  std::span<const double> p = fields.pressure->x()->array();
-  std::vector<double> local;
-  for (std::size_t i = 0; i < fields.contact_weight.size(); ++i)
-    if (fields.contact_weight[i] > 0)
-      local.insert(local.end(), {xq[3 * i], p[i], fields.contact_weight[i]});
-  const std::vector<double> surface = all_gather(comm, local);
   std::vector<std::array<double, 2>> nodes; // (x, p)
   double moment = 0, total = 0;
-  for (std::size_t i = 0; i < surface.size(); i += 3)
+  for (const SurfacePressureNode& node : gather_surface_pressure(comm, recover_nodal_fields(problem)))
   {
-    nodes.push_back({surface[i], surface[i + 1]});
-    moment += surface[i] * surface[i + 1] * surface[i + 2];
-    total += surface[i + 1] * surface[i + 2];
+    nodes.push_back({node.x[0], node.pressure_pa});
+    moment += node.x[0] * node.pressure_pa * node.weight;
+    total += node.pressure_pa * node.weight;
   }
   if (!(total > 0))
     throw ComputationError("slab: no contact pressure on the surface after load control");
