@@ -274,8 +274,9 @@ void check_with_slab(OrientationResult& r, const Settings& s)
   {
     fem::SlabSettings settings = s.slab;
     settings.refine = level;
-    r.slab.push_back(fem::solve_slab(MPI_COMM_WORLD, ruling.length_m, ruling.start_radius_m, ruling.end_radius_m,
-                                     s.force_n, r.slices, settings));
+    r.slab.push_back(fem::solve_slab(
+        MPI_COMM_WORLD, {ruling.length_m, ruling.start_radius_m, ruling.end_radius_m, s.force_n, {0.0, 0.0}}, r.slices,
+        settings));
   }
 }
 

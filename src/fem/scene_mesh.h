@@ -17,8 +17,11 @@
 //   plane-strain scene, of radius R(x) = R_0 + (R_L - R_0) x / L in each
 //   section x = const, stacked along the ruling. It is a cone (a cylinder if
 //   R_0 = R_L) touching z = 0 along the ruling, whose sections across the
-//   ruling are exactly the slices of fem/slice_contact.h; its end faces x = 0
-//   and x = L are free, and meet the curved surface at a right-angled edge.
+//   ruling are exactly the slices of fem/slice_contact.h. Its end faces are
+//   free; they are the planes x = 0 and x = L, meeting the curved surface at a
+//   right-angled edge, or, with an overhang t, sheared so that the end face
+//   leans out by t from the vertical (an edge of interior angle 90 deg + t):
+//   x = a + z s(a), s linear from -tan t_0 at a = 0 to tan t_L at a = L.
 // - kink (build_kink_mesh): a crease in contact, in plane strain: the half
 //   x >= 0 (symmetry about x = 0) of a body whose lower surface is the
 //   straight face z = x tan(beta) from the apex (0, 0) to x = W, closed by the
@@ -32,6 +35,7 @@
 // extrusion, each prism split into tetrahedra), then scaled by R(x).
 #include "fem/hertz_setup.h"
 #include <dolfinx/mesh/Mesh.h>
+#include <array>
 #include <memory>
 #include <mpi.h>
 #include <vector>
@@ -63,7 +67,14 @@ struct SlabGeometry
   double end_radius_m = 0;    ///< R_L, at x = L
   /// Layer boundaries along the ruling as fractions of L, increasing, ending at 1.
   std::vector<double> layer_fractions;
+  /// Lean of the end faces at x = 0 and x = L from the vertical, outwards
+  /// positive, within +-60 deg.
+  std::array<double, 2> end_overhang_rad{0.0, 0.0};
 };
+
+/// The position a along the ruling of a point x of the slab (the inverse of
+/// its shear; x[0] itself without overhang).
+double slab_along(const SlabGeometry& slab, const double* x);
 
 struct KinkGeometry
 {

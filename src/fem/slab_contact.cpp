@@ -52,9 +52,11 @@ double interpolate(std::span<const double> xs, std::span<const double> ys, doubl
 
 } // namespace
 
-SlabFem solve_slab(MPI_Comm comm, double length_m, double start_radius_m, double end_radius_m, double force_n,
-                   std::span<const SliceFem> slices, const SlabSettings& settings)
+SlabFem solve_slab(MPI_Comm comm, const SlabBody& body, std::span<const SliceFem> slices,
+                   const SlabSettings& settings)
 {
+  const double length_m = body.length_m, start_radius_m = body.start_radius_m, end_radius_m = body.end_radius_m,
+               force_n = body.force_n;
   const auto start = std::chrono::steady_clock::now();
   for (double v : {length_m, start_radius_m, end_radius_m, force_n})
     if (!std::isfinite(v) || v <= 0)
@@ -96,6 +98,7 @@ SlabFem solve_slab(MPI_Comm comm, double length_m, double start_radius_m, double
   geometry.length_m = length_m;
   geometry.start_radius_m = start_radius_m;
   geometry.end_radius_m = end_radius_m;
+  geometry.end_overhang_rad = body.end_overhang_rad;
   const double h_0 = section.contact_size_m * start_radius_m, h_L = section.contact_size_m * end_radius_m;
   geometry.layer_fractions = layer_fractions(length_m, h_0, h_L);
   result.layers = static_cast<int>(geometry.layer_fractions.size());
@@ -110,7 +113,7 @@ SlabFem solve_slab(MPI_Comm comm, double length_m, double start_radius_m, double
   PenaltyContact problem(scene, Model::solid, 1, body_modulus, settings.poisson_ratio, kappa, settings.petsc_options);
   result.dofs = problem.num_dofs();
   problem.set_approach_profile(
-      [&](const double* x) { return interpolate(positions, approaches, x[0]) / mean_approach; });
+      [&](const double* x) { return interpolate(positions, approaches, slab_along(geometry, x)) / mean_approach; });
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   if (rank == 0)
@@ -135,8 +138,9 @@ SlabFem solve_slab(MPI_Comm comm, double length_m, double start_radius_m, double
   double moment = 0, total = 0;
   for (const SurfacePressureNode& node : gather_surface_pressure(comm, recover_nodal_fields(problem)))
   {
-    nodes.push_back({node.x[0], node.pressure_pa});
-    moment += node.x[0] * node.pressure_pa * node.weight;
+    const double along = slab_along(geometry, node.x.data());
+    nodes.push_back({along, node.pressure_pa});
+    moment += along * node.pressure_pa * node.weight;
     total += node.pressure_pa * node.weight;
   }
   if (!(total > 0))

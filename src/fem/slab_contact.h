@@ -20,8 +20,11 @@
 // compliant, so the pressure falls towards it. The singular end pressure of
 // a flat-ended roller (T. A. Harris, M. N. Kotzalas, "Rolling Bearing
 // Analysis", 5th ed., 2007, ch. 6) needs an elastic counter-face, which the
-// rigid-plane model does not have. The end sections' peaks are reported at
-// each level so that a study can see which case it is in.
+// rigid-plane model does not have. An end face that overhangs by t > 0
+// (an obtuse edge of 90 deg + t, fem/scene_mesh.h) mirrors into a re-entrant
+// free-free wedge of 180 deg + 2 t, which is singular: its FEM end peak
+// exceeds the middle's and grows under refinement. The end sections' peaks
+// are reported at each level so that a study can see which case it is in.
 //
 // Mesh: the section is graded as the plane-strain scene (fem/hertz_setup.h
 // mesh_grading), with the contact element size h_c = min(b / R) R(x) / (10
@@ -73,10 +76,20 @@ struct SlabFem
   double wall_s = 0;
 };
 
-/// `slices` are the solved slices, ordered along a ruling of length
-/// `length_m` with radii R(0) = start_radius_m, R(L) = end_radius_m, whose
-/// line load integrates to `force_n`; at least one must carry load.
-/// ComputationError on a failed solve (every rank), InputError for bad sizes.
-SlabFem solve_slab(MPI_Comm comm, double length_m, double start_radius_m, double end_radius_m, double force_n,
-                   std::span<const SliceFem> slices, const SlabSettings& settings);
+/// The ruling's body: length L, radii R(0) and R(L), the force its line load
+/// integrates to, and the overhang of its end faces (fem/scene_mesh.h).
+struct SlabBody
+{
+  double length_m = 0;
+  double start_radius_m = 0;
+  double end_radius_m = 0;
+  double force_n = 0;
+  std::array<double, 2> end_overhang_rad{0.0, 0.0};
+};
+
+/// `slices` are the solved slices, ordered along the ruling; at least one
+/// must carry load. ComputationError on a failed solve (every rank),
+/// InputError for bad sizes.
+SlabFem solve_slab(MPI_Comm comm, const SlabBody& body, std::span<const SliceFem> slices,
+                   const SlabSettings& settings);
 } // namespace rollcheck::fem
