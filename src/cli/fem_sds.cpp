@@ -440,6 +440,7 @@ nlohmann::json orientation_json(const OrientationResult& r, std::size_t index)
                         {"plane_peaks", planes}});
     }
     j["slab"] = levels;
+    j["slab_end_faces"] = "square: exact for the cylinder's rims, a stand-in for the rollers'";
   }
   return j;
 }
@@ -596,7 +597,9 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
        "singular between two elastic bodies, not plane strain in any case; the 3D slab check shows the end)"}};
   std::string table = markdown_table(results);
   if (slab_checked > 0)
-    table += "\n3D slab of the whole ruling against the slices (fem/slab_contact.h):\n\n" + slab_table(results);
+    table += "\n3D slab of the whole ruling against the slices (fem/slab_contact.h; square end faces: exact for the "
+             "cylinder's rims, a stand-in for the rollers', README \"Creases\"):\n\n"
+             + slab_table(results);
   // Tables go to the log (stderr), so that `--json -` stays JSON alone.
   if (rank == 0)
     spdlog::info("\nfem-sds {} ({}):\n\n{}\nanalytic SDS {}, line-Hertz SDS {}, FEM-SDS {} over {} solved of {} "
