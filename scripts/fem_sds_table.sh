@@ -37,8 +37,8 @@ for name in ("oloid", "paper_oloid", "candidate"):
           f"{r['line_hertz_sds'] / cyl['line_hertz_sds']:.4g} | {r['fem_sds'] / cyl['fem_sds']:.4g} |")
 print()
 print("| body | orientation (c) | slab level | DOFs | Newton | s | slab peak / slices' - 1 | "
-      "max over slices abs(slab / slice - 1) | end p / nearest slice p (s = 0, L) |")
-print("|---|---|---|---|---|---|---|---|---|")
+      "max over slices abs(slab / slice - 1) | rim overhang (deg, s = 0, L) | end p / nearest slice p (s = 0, L) |")
+print("|---|---|---|---|---|---|---|---|---|---|")
 for name, r in runs.items():
     for o in r["per_orientation"]:
         for l in o.get("slab", []):
@@ -47,5 +47,6 @@ for name, r in runs.items():
                     l["end_peak_pa"][1] / last if last > 0 else float("nan")]
             print(f"| {r['body']} | {o['index']} ({o['centre_of_pressure']:.3f}) | {l['refine']} | {l['dofs']} | "
                   f"{l['newton_iterations']} | {l['wall_s']:.1f} | {100 * l['peak_difference_vs_slices']:+.2f} % | "
-                  f"{100 * l['max_slice_difference']:.2f} % | {ends[0]:.3f}, {ends[1]:.3f} |")
+                  f"{100 * l['max_slice_difference']:.2f} % | {o['rim_overhang_deg'][0]:.1f}, {o['rim_overhang_deg'][1]:.1f} | "
+                  f"{ends[0]:.3f}, {ends[1]:.3f} |")
 PY

@@ -2,6 +2,8 @@
 // definition, the loci of the cylinder and the oloid against closed forms and
 // a brute-force count of the preprint's contact faces.
 #include "contact/contact_locus.h"
+#include "contact/rim_overhang.h"
+#include <cstdio>
 #include "geometry/body.h"
 #include "geometry/error.h"
 #include "oracle/contact_density.h"
@@ -152,4 +154,56 @@ TEST(ContactLocus, FewerThanTwoCirclesIsAnInputError)
   const std::vector<oracle::Circle> one{b.circles[0]};
   EXPECT_THROW(contact::contact_locus(one, Eigen::Vector3d::Zero(), b.rolling, Eigen::Matrix3d::Identity(), {}),
                InputError);
+}
+
+namespace
+{
+/// Largest x . n over points sampled densely on every circle, by brute force.
+double sampled_support(const std::vector<oracle::Circle>& circles, const Eigen::Vector3d& n)
+{
+  double best = -1e300;
+  for (const oracle::Circle& c : circles)
+  {
+    const Eigen::Vector3d e1 = c.normal.unitOrthogonal(), e2 = c.normal.cross(e1);
+    for (int k = 0; k < 200000; ++k)
+    {
+      const double a = 2 * std::numbers::pi * k / 200000;
+      best = std::max(best, (c.centre_m + c.radius_m * (std::cos(a) * e1 + std::sin(a) * e2)).dot(n));
+    }
+  }
+  return best;
+}
+} // namespace
+
+TEST(RimOverhang, CylinderRimsAreSquareAndTheOloidsOtherFaceSupportsTheHull)
+{
+  const Body cylinder = make("cylinder");
+  const contact::ContactLocus side = contact::contact_locus(
+      cylinder.circles, cylinder.rolling.mass.centre_of_mass, cylinder.rolling, resting_on(Eigen::Vector3d(1, 0.3, 0)), {});
+  const auto square = contact::rim_overhang(cylinder.circles, side.support.circles[0], side.support.circles[1], *side.ruling);
+  EXPECT_NEAR(square[0], 0.0, 1e-9);
+  EXPECT_NEAR(square[1], 0.0, 1e-9);
+
+  // The oloid: the other face at each ruling end is a supporting plane of the
+  // hull through that end (checked on 200,000 points per circle), not the
+  // ground's.
+  const Body oloid = make("oloid");
+  const oracle::TwoCircleBody pair = oracle::two_circle_body(oloid.circles);
+  const Eigen::Vector3d u = oracle::contact_curve_point(pair, Eigen::Vector3d(0.3, -1, -0.2));
+  const contact::ContactLocus locus =
+      contact::contact_locus(oloid.circles, oloid.rolling.mass.centre_of_mass, oloid.rolling, resting_on(u), {});
+  const oracle::Ruling& r = *locus.ruling;
+  const std::array<Eigen::Vector3d, 2> ends{r.start_m, r.end_m};
+  for (int e = 0; e < 2; ++e)
+  {
+    const Eigen::Vector3d n = contact::other_face_normal(oloid.circles, locus.support.circles[e], ends[e], r.direction);
+    EXPECT_NEAR(n.norm(), 1.0, 1e-12);
+    EXPECT_GT((n - r.direction).norm(), 1e-3) << "end " << e; // a real edge
+    EXPECT_NEAR(sampled_support(oloid.circles, n), ends[e].dot(n), 1e-6) << "end " << e;
+  }
+  const auto overhang = contact::rim_overhang(oloid.circles, locus.support.circles[0], locus.support.circles[1], r);
+  for (double t : overhang)
+    EXPECT_TRUE(std::abs(t) < std::numbers::pi / 2) << t;
+  std::printf("oloid rim overhangs %.2f, %.2f deg\n", overhang[0] * 180 / std::numbers::pi,
+              overhang[1] * 180 / std::numbers::pi);
 }

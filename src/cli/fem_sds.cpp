@@ -13,6 +13,7 @@
 #include "cli/cli.h"
 #include "cli/scenes.h"
 #include "contact/contact_locus.h"
+#include "contact/rim_overhang.h"
 #include "contact/face_curvature.h"
 #include "contact/face_pressure.h"
 #include "contact/hertz.h"
@@ -246,6 +247,8 @@ struct OrientationResult
   double wall_s = 0;
   std::vector<std::pair<int, double>> fem_faces, line_faces; ///< (face, peak) along the ruling
   std::vector<fem::SlabFem> slab;          ///< the 3D check at two section levels, if run
+  std::array<double, 2> rim_overhang_rad{}; ///< of the body's rims at the ruling's ends (slab check only)
+  std::array<double, 2> slab_overhang_rad{}; ///< as the slab models them
   /// The slab's peak over the slices' positions against the slices' peak,
   /// minus 1: the orientation's peak under the fuller model.
   double slab_peak_difference(const fem::SlabFem& level) const
@@ -266,18 +269,24 @@ struct OrientationResult
 };
 
 /// The fuller model of a solved orientation: its whole ruling as one 3D slab
-/// under the slices' approaches, at the slab level and one finer.
-void check_with_slab(OrientationResult& r, const Settings& s)
+/// under the slices' approaches, with end faces leaning as the body's rims
+/// (contact/rim_overhang.h, within the slab's +-60 deg), at the slab level
+/// and one finer.
+void check_with_slab(OrientationResult& r, std::span<const oracle::Circle> circles, const Settings& s)
 {
   const oracle::Ruling& ruling = *r.locus.ruling;
+  r.rim_overhang_rad = contact::rim_overhang(circles, r.locus.support.circles[0], r.locus.support.circles[1], ruling);
+  fem::SlabBody body{ruling.length_m, ruling.start_radius_m, ruling.end_radius_m, s.force_n, r.rim_overhang_rad};
+  constexpr double slab_limit = std::numbers::pi / 3;
+  for (double& overhang : body.end_overhang_rad)
+    overhang = std::clamp(overhang, -slab_limit, slab_limit);
   for (const int level : {s.slab.refine, s.slab.refine + 1})
   {
     fem::SlabSettings settings = s.slab;
     settings.refine = level;
-    r.slab.push_back(fem::solve_slab(
-        MPI_COMM_WORLD, {ruling.length_m, ruling.start_radius_m, ruling.end_radius_m, s.force_n, {0.0, 0.0}}, r.slices,
-        settings));
+    r.slab.push_back(fem::solve_slab(MPI_COMM_WORLD, body, r.slices, settings));
   }
+  r.slab_overhang_rad = body.end_overhang_rad;
 }
 
 OrientationResult evaluate_orientation(const OrientationSource& source, std::size_t pick, const Settings& s,
@@ -440,7 +449,9 @@ nlohmann::json orientation_json(const OrientationResult& r, std::size_t index)
                         {"plane_peaks", planes}});
     }
     j["slab"] = levels;
-    j["slab_end_faces"] = "square: exact for the cylinder's rims, a stand-in for the rollers'";
+    const double deg = 180 / std::numbers::pi;
+    j["rim_overhang_deg"] = {number(r.rim_overhang_rad[0] * deg), number(r.rim_overhang_rad[1] * deg)};
+    j["slab_overhang_deg"] = {number(r.slab_overhang_rad[0] * deg), number(r.slab_overhang_rad[1] * deg)};
   }
   return j;
 }
@@ -471,16 +482,18 @@ std::string markdown_table(const std::vector<OrientationResult>& results)
 std::string slab_table(const std::vector<OrientationResult>& results)
 {
   std::string t = "| # | level | DOFs | layers | Newton | s | approach factor | c (slab / locus) | slab peak / slices' - 1 "
-                  "| max over slices of abs(slab / slice - 1) | end p at s = 0, L (MPa) |\n"
-                  "|---|---|---|---|---|---|---|---|---|---|---|\n";
+                  "| max over slices of abs(slab / slice - 1) | rim overhang at s = 0, L (deg) | end p at s = 0, L (MPa) |\n"
+                  "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < results.size(); ++i)
     for (const fem::SlabFem& slab : results[i].slab)
     {
-      t += fmt::format("| {} | {} | {} | {} | {} | {:.1f} | {:.4f} | {:.4f} / {:.4f} | {:+.2f} % | {:.2f} % | {:.4g}, {:.4g} |\n",
-                       i, slab.refine, slab.dofs, slab.layers, slab.newton_iterations, slab.wall_s,
-                       slab.approach_factor, slab.centre_of_pressure, results[i].locus.centre_of_pressure,
-                       100 * results[i].slab_peak_difference(slab), 100 * results[i].slab_slice_difference(slab),
-                       slab.end_peak_pressure_pa[0] / 1e6, slab.end_peak_pressure_pa[1] / 1e6);
+      t += fmt::format(
+          "| {} | {} | {} | {} | {} | {:.1f} | {:.4f} | {:.4f} / {:.4f} | {:+.2f} % | {:.2f} % | {:.1f}, {:.1f} | {:.4g}, {:.4g} |\n",
+          i, slab.refine, slab.dofs, slab.layers, slab.newton_iterations, slab.wall_s, slab.approach_factor,
+          slab.centre_of_pressure, results[i].locus.centre_of_pressure, 100 * results[i].slab_peak_difference(slab),
+          100 * results[i].slab_slice_difference(slab), results[i].slab_overhang_rad[0] * 180 / std::numbers::pi,
+          results[i].slab_overhang_rad[1] * 180 / std::numbers::pi, slab.end_peak_pressure_pa[0] / 1e6,
+          slab.end_peak_pressure_pa[1] / 1e6);
     }
   return t;
 }
@@ -545,7 +558,7 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
     ++solved;
     if (solved <= s.slab_orientations)
     {
-      check_with_slab(results.back(), s);
+      check_with_slab(results.back(), source.circles, s);
       for (const fem::SlabFem& slab : r.slab)
         worst_slab = std::max(worst_slab, std::abs(r.slab_peak_difference(slab)));
       ++slab_checked;
@@ -597,8 +610,8 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
        "singular between two elastic bodies, not plane strain in any case; the 3D slab check shows the end)"}};
   std::string table = markdown_table(results);
   if (slab_checked > 0)
-    table += "\n3D slab of the whole ruling against the slices (fem/slab_contact.h; square end faces: exact for the "
-             "cylinder's rims, a stand-in for the rollers', README \"Creases\"):\n\n"
+    table += "\n3D slab of the whole ruling against the slices (fem/slab_contact.h; end faces leaning as the rims, "
+             "contact/rim_overhang.h; README \"Creases\"):\n\n"
              + slab_table(results);
   // Tables go to the log (stderr), so that `--json -` stays JSON alone.
   if (rank == 0)
