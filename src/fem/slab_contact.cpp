@@ -19,6 +19,9 @@ namespace
 {
 constexpr double layer_growth = 1.5;
 constexpr double section_growth = 0.5;
+/// Largest ratio of b / R along the ruling that one section mesh serves: its
+/// fine zone covers the largest with elements sized for the smallest.
+constexpr double max_half_width_ratio = 2.0;
 constexpr int layers_across_length = 24; ///< the largest layer is L / this
 
 /// Layer boundaries in (0, 1]: thickness h_0 at x = 0 and h_L at x = L,
@@ -50,7 +53,25 @@ double interpolate(std::span<const double> xs, std::span<const double> ys, doubl
   return ys[i - 1] + t * (ys[i] - ys[i - 1]);
 }
 
+/// Smallest and largest b / R over the loaded slices (0, 0 if none).
+std::array<double, 2> half_width_range(std::span<const SliceFem> slices)
+{
+  std::array<double, 2> range{INFINITY, 0.0};
+  for (const SliceFem& s : slices)
+    if (s.load.load_n_per_m > 0)
+    {
+      range[0] = std::min(range[0], s.hertz_half_width_m / s.load.radius_m);
+      range[1] = std::max(range[1], s.hertz_half_width_m / s.load.radius_m);
+    }
+  return range[1] > 0 ? range : std::array<double, 2>{0.0, 0.0};
+}
 } // namespace
+
+bool slab_feasible(std::span<const SliceFem> slices)
+{
+  const auto [smallest, largest] = half_width_range(slices);
+  return largest > 0 && largest <= max_half_width_ratio * smallest;
+}
 
 SlabFem solve_slab(MPI_Comm comm, const SlabBody& body, std::span<const SliceFem> slices,
                    const SlabSettings& settings)
@@ -65,17 +86,19 @@ SlabFem solve_slab(MPI_Comm comm, const SlabBody& body, std::span<const SliceFem
                                    length_m, start_radius_m, end_radius_m, force_n));
   // The slices that carry load define the top's profile and the force.
   std::vector<double> positions, approaches;
-  double smallest_b_over_r = INFINITY, largest_b_over_r = 0;
   for (const SliceFem& s : slices)
     if (s.load.load_n_per_m > 0)
     {
       positions.push_back(s.load.position_m);
       approaches.push_back(s.approach_m);
-      smallest_b_over_r = std::min(smallest_b_over_r, s.hertz_half_width_m / s.load.radius_m);
-      largest_b_over_r = std::max(largest_b_over_r, s.hertz_half_width_m / s.load.radius_m);
     }
+  const auto [smallest_b_over_r, largest_b_over_r] = half_width_range(slices);
   if (positions.empty())
     throw InputError("slab: no slice carries load");
+  if (!slab_feasible(slices))
+    throw InputError(fmt::format("slab: the contact half-width over the radius varies {:.3g}-fold along the ruling "
+                                 "(at most {}): one extruded section cannot resolve it",
+                                 largest_b_over_r / smallest_b_over_r, max_half_width_ratio));
   if (!std::is_sorted(positions.begin(), positions.end()))
     throw InputError("slab: slices must be ordered along the ruling");
   const double mean_approach = std::accumulate(approaches.begin(), approaches.end(), 0.0) / approaches.size();
@@ -99,7 +122,11 @@ SlabFem solve_slab(MPI_Comm comm, const SlabBody& body, std::span<const SliceFem
   geometry.start_radius_m = start_radius_m;
   geometry.end_radius_m = end_radius_m;
   geometry.end_overhang_rad = body.end_overhang_rad;
-  const double h_0 = section.contact_size_m * start_radius_m, h_L = section.contact_size_m * end_radius_m;
+  // End layers as thick as the contact elements of the nearest loaded slice:
+  // a ruling may end near a cone's apex (R -> 0), where the contact is unloaded.
+  auto radius_at = [&](double x) { return start_radius_m + (end_radius_m - start_radius_m) * x / length_m; };
+  const double h_0 = section.contact_size_m * radius_at(positions.front()),
+               h_L = section.contact_size_m * radius_at(positions.back());
   geometry.layer_fractions = layer_fractions(length_m, h_0, h_L);
   result.layers = static_cast<int>(geometry.layer_fractions.size());
   result.end_layer_m = std::min(h_0, h_L);

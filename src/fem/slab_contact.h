@@ -29,8 +29,11 @@
 // Mesh: the section is graded as the plane-strain scene (fem/hertz_setup.h
 // mesh_grading), with the contact element size h_c = min(b / R) R(x) / (10
 // 2^(refine / 2)) over the loaded slices, but growing twice as fast away from
-// the contact (0.5 h per h instead of 0.25: a third of the nodes); along the ruling the layers are h_c
-// thick at each end and grow geometrically by 1.5 towards the middle, up to L / 24.
+// the contact (0.5 h per h instead of 0.25: a third of the nodes). Along the
+// ruling the layers are as thick as the contact elements of the loaded slice
+// nearest each end and grow geometrically by 1.5 towards the middle, up to
+// L / 24. One section serves the whole ruling, so b / R may vary at most
+// 2-fold along it (slab_feasible).
 #include "fem/slice_contact.h"
 #include <array>
 #include <cstdint>
@@ -87,8 +90,12 @@ struct SlabBody
   std::array<double, 2> end_overhang_rad{0.0, 0.0};
 };
 
+/// Whether one extruded section can resolve these slices (b / R within a
+/// factor 2 over the loaded ones).
+bool slab_feasible(std::span<const SliceFem> slices);
+
 /// `slices` are the solved slices, ordered along the ruling; at least one
-/// must carry load. ComputationError on a failed solve (every rank),
+/// must carry load, and slab_feasible. ComputationError on a failed solve (every rank),
 /// InputError for bad sizes.
 SlabFem solve_slab(MPI_Comm comm, const SlabBody& body, std::span<const SliceFem> slices,
                    const SlabSettings& settings);
