@@ -101,4 +101,13 @@ TEST(SlabContact, BadInputIsRejected)
   EXPECT_THROW(fem::solve_slab(MPI_COMM_WORLD, {length, radius, radius, force}, unloaded, {}), InputError);
   EXPECT_THROW(fem::solve_slab(MPI_COMM_WORLD, {-length, radius, radius, force}, unloaded, {}), InputError);
   EXPECT_THROW(fem::solve_slab(MPI_COMM_WORLD, {length, radius, NAN, force}, unloaded, {}), InputError);
+  // b / R varying 3-fold along the ruling: one extruded section cannot serve it.
+  std::vector<fem::SliceFem> uneven(2);
+  uneven[0].load = {0.005, radius, 100.0};
+  uneven[0].hertz_half_width_m = 1e-3 * radius;
+  uneven[1].load = {0.015, radius, 900.0};
+  uneven[1].hertz_half_width_m = 3e-3 * radius;
+  EXPECT_FALSE(fem::slab_feasible(uneven));
+  EXPECT_TRUE(fem::slab_feasible(std::span(uneven).first(1)));
+  EXPECT_THROW(fem::solve_slab(MPI_COMM_WORLD, {length, radius, radius, force}, uneven, {}), InputError);
 }
