@@ -6,12 +6,17 @@
 // volume and depth (WDS_vol, WDS_depth), each a distribution score on the
 // oracle layer's template; and the analytic Hertz formulas (hertz.h). Every
 // material and load parameter is a named option whose default is the
-// preprint's value. Knows nothing of how the trajectory was produced.
+// preprint's value. Also the contact loci of sampled orientations of bodies
+// that are hulls of circles (contact_locus.h: support set, load, creases) and
+// the rims at a ruling's ends (rim_overhang.h), which the FEM layer is given.
+// Knows nothing of how the trajectory was produced.
+#include "contact/contact_locus.h"
 #include "contact/contact_parameters.h"
 #include "contact/face_curvature.h"
 #include "contact/face_pressure.h"
 #include "contact/fatigue.h"
 #include "contact/hertz.h"
+#include "contact/rim_overhang.h"
 #include "contact/sliding_speed.h"
 #include "contact/trajectory_scores.h"
 #include "contact/wear.h"

@@ -3,7 +3,9 @@
 // by the finite element method on DOLFINx 0.5.2 with a penalty: the UFL forms
 // (forms/hertz.py), the gmsh scene meshes graded towards the contact (quarter
 // disc for the axisymmetric and plane-strain models, quarter hemisphere in
-// 3D), the load-controlled Newton/Krylov solves with checked convergence, and
+// 3D, the 3D slab of a contact ruling, the plane-strain crease), the
+// plane-strain slices and the 3D slab of a line contact, the crease study,
+// the load-controlled Newton/Krylov solves with checked convergence, and
 // the post-processing that sets every result next to Hertz theory
 // (contact/hertz.h). Knows nothing of files beyond its own XDMF field output,
 // nor of the command line.
