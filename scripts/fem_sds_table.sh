@@ -19,11 +19,12 @@ done
 import json, sys
 out = sys.argv[1]
 runs = {n: json.load(open(f"{out}/{n}.json")) for n in ("oloid", "paper_oloid", "cylinder", "candidate")}
-print("| body | orientations (FEM solved) | reach a crease | analytic SDS | line-Hertz SDS | FEM-SDS | FEM-SDS / analytic | "
+print("| body | orientations (FEM solved) | reach a crease | reach an obtuse rim | analytic SDS | line-Hertz SDS | FEM-SDS | FEM-SDS / analytic | "
       "FEM-SDS / line-Hertz | worst FEM refinement change | slowest orientation (s) |")
-print("|---|---|---|---|---|---|---|---|---|---|")
+print("|---|---|---|---|---|---|---|---|---|---|---|")
 for name, r in runs.items():
     print(f"| {r['body']} | {r['orientations']} ({r['fem_solved_orientations']}) | {r['orientations_reaching_crease']} | "
+          f"{r['orientations_reaching_obtuse_rim']} | "
           f"{r['analytic_sds']:.4g} | {r['line_hertz_sds']:.4g} | {r['fem_sds']:.4g} | {r['fem_sds'] / r['analytic_sds']:.4g} | "
           f"{r['fem_sds'] / r['line_hertz_sds']:.4f} | {100 * r['fem_peak_worst_refinement_change']:.2f} % | "
           f"{r['max_orientation_wall_s']:.1f} |")

@@ -122,11 +122,12 @@ SlabFem solve_slab(MPI_Comm comm, const SlabBody& body, std::span<const SliceFem
   geometry.start_radius_m = start_radius_m;
   geometry.end_radius_m = end_radius_m;
   geometry.end_overhang_rad = body.end_overhang_rad;
-  // End layers as thick as the contact elements of the nearest loaded slice:
-  // a ruling may end near a cone's apex (R -> 0), where the contact is unloaded.
+  // End layers as thick as the contact elements at each end, but not thinner
+  // than half those of the nearest loaded slice: a ruling may end near a
+  // cone's apex (R -> 0), where its contact is unloaded.
   auto radius_at = [&](double x) { return start_radius_m + (end_radius_m - start_radius_m) * x / length_m; };
-  const double h_0 = section.contact_size_m * radius_at(positions.front()),
-               h_L = section.contact_size_m * radius_at(positions.back());
+  const double h_0 = section.contact_size_m * std::max(start_radius_m, 0.5 * radius_at(positions.front())),
+               h_L = section.contact_size_m * std::max(end_radius_m, 0.5 * radius_at(positions.back()));
   geometry.layer_fractions = layer_fractions(length_m, h_0, h_L);
   result.layers = static_cast<int>(geometry.layer_fractions.size());
   result.end_layer_m = std::min(h_0, h_L);

@@ -30,9 +30,9 @@
 // mesh_grading), with the contact element size h_c = min(b / R) R(x) / (10
 // 2^(refine / 2)) over the loaded slices, but growing twice as fast away from
 // the contact (0.5 h per h instead of 0.25: a third of the nodes). Along the
-// ruling the layers are as thick as the contact elements of the loaded slice
-// nearest each end and grow geometrically by 1.5 towards the middle, up to
-// L / 24. One section serves the whole ruling, so b / R may vary at most
+// ruling the layers are as thick as the contact elements at each end (but
+// not thinner than half those of the nearest loaded slice) and grow
+// geometrically by 1.5 towards the middle, up to L / 24. One section serves the whole ruling, so b / R may vary at most
 // 2-fold along it (slab_feasible).
 #include "fem/slice_contact.h"
 #include <array>
