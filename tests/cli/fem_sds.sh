@@ -31,13 +31,15 @@ r = json.load(open(f"{d}/cylinder.json"))
 E, nu, F, L, R = 200e9, 0.3, 100.0, 2.0, 1.0
 p0 = math.sqrt(F / L * E / (1 - nu * nu) / (math.pi * R))
 assert r["orientations"] == 2 and r["fem_solved_orientations"] == 2, r
-assert r["orientations_reaching_crease"] == 2
+assert r["orientations_reaching_crease"] == 2 and r["orientations_reaching_obtuse_rim"] == 0
 for o in r["per_orientation"]:
     assert o["support"] == "segment" and len(o["creases"]) == 2, o["creases"]
     assert abs(o["centre_of_pressure"] - 0.5) < 1e-6
     assert abs(o["line_hertz_peak_pa"] / p0 - 1) < 1e-9, (o["line_hertz_peak_pa"], p0)
     assert abs(o["fem_peak_pa"] / p0 - 1) < 0.005, (o["fem_peak_pa"], p0)
     assert abs(o["fem_peak_refinement_change"]) < 0.03
+    # Square rims: the other face at each end is the flat end disc.
+    assert max(abs(v) for v in o["rim_overhang_deg"]) < 1e-6 and o["obtuse_loaded_rims"] == 0, o["rim_overhang_deg"]
     assert o["dofs"] > 0 and o["newton_iterations"] > 0 and o["wall_s"] > 0
     print(f"cylinder t = {o['time_s']:.3f} s: FEM p0 {o['fem_peak_pa']:.6g} Pa, closed form {p0:.6g} Pa, "
           f"finer {100 * o['fem_peak_refinement_change']:+.3f} %")
