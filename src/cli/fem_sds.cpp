@@ -17,6 +17,7 @@
 #include "contact/face_curvature.h"
 #include "contact/face_pressure.h"
 #include "contact/hertz.h"
+#include "fem/all_gather.h"
 #include "fem/slab_contact.h"
 #include "fem/slice_contact.h"
 #include "geometry/atomic_file.h"
@@ -164,9 +165,8 @@ Settings settings_from(const io::Parameters& p)
   s.slab.penalty_c = s.slice.penalty_c;
   s.slab.elastic_plane = s.slice.elastic_plane;
   s.slab.refine = static_cast<int>(bounded(p, "slab_refine", 0, 8));
-  s.effective_modulus_pa = s.slice.elastic_plane
-                               ? contact::effective_modulus_identical_bodies(s.hertz.youngs_modulus_pa, s.hertz.poisson_ratio)
-                               : contact::effective_modulus_rigid_plane(s.hertz.youngs_modulus_pa, s.hertz.poisson_ratio);
+  s.effective_modulus_pa
+      = contact::effective_modulus(s.hertz.youngs_modulus_pa, s.hertz.poisson_ratio, s.slice.elastic_plane);
   return s;
 }
 
@@ -325,8 +325,7 @@ OrientationResult evaluate_orientation(const OrientationSource& source, std::siz
   }
   const auto start = std::chrono::steady_clock::now();
   r.slices = fem::solve_slices(MPI_COMM_WORLD, loads, s.slice);
-  r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  MPI_Allreduce(MPI_IN_PLACE, &r.wall_s, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  r.wall_s = fem::wall_seconds_since(MPI_COMM_WORLD, start);
   std::vector<double> fem_values, line_values;
   for (const fem::SliceFem& slice : r.slices)
   {

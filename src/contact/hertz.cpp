@@ -61,6 +61,11 @@ double effective_modulus_identical_bodies(double E, double nu)
   return effective_modulus_rigid_plane(E, nu) / 2;
 }
 
+double effective_modulus(double E, double nu, bool elastic_plane)
+{
+  return elastic_plane ? effective_modulus_identical_bodies(E, nu) : effective_modulus_rigid_plane(E, nu);
+}
+
 PointHertz point_contact(double force_n, double radius_m, double effective_modulus_pa, double nu)
 {
   require_positive(force_n, "force (N)");

@@ -15,6 +15,8 @@ namespace rollcheck::contact
 double effective_modulus_rigid_plane(double youngs_modulus_pa, double poisson_ratio);
 /// E* of two identical elastic bodies: E / (2 (1 - nu^2)) (the preprint's choice).
 double effective_modulus_identical_bodies(double youngs_modulus_pa, double poisson_ratio);
+/// The first against a rigid plane, the second with `elastic_plane`.
+double effective_modulus(double youngs_modulus_pa, double poisson_ratio, bool elastic_plane);
 
 struct PointHertz
 {

@@ -1,6 +1,8 @@
 #pragma once
 // Every rank's values of a distributed post-processing quantity, concatenated
-// in rank order on every rank (the scenes' surface and axis samples are small).
+// in rank order on every rank (the scenes' surface and axis samples are
+// small), and the wall time of a collective step (its slowest rank's).
+#include <chrono>
 #include <mpi.h>
 #include <vector>
 
@@ -18,5 +20,13 @@ inline std::vector<double> all_gather(MPI_Comm comm, const std::vector<double>& 
   std::vector<double> all(offsets[size]);
   MPI_Allgatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, comm);
   return all;
+}
+
+/// Seconds since `start` on the slowest rank of `comm`.
+inline double wall_seconds_since(MPI_Comm comm, std::chrono::steady_clock::time_point start)
+{
+  double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  MPI_Allreduce(MPI_IN_PLACE, &wall, 1, MPI_DOUBLE, MPI_MAX, comm);
+  return wall;
 }
 } // namespace rollcheck::fem

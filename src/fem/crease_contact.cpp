@@ -1,5 +1,6 @@
 #include "fem/crease_contact.h"
 #include "contact/hertz.h"
+#include "fem/all_gather.h"
 #include "fem/hertz_setup.h"
 #include "fem/load_control.h"
 #include "fem/nodal_fields.h"
@@ -40,19 +41,18 @@ KinkLevel solve_level(MPI_Comm comm, const KinkStudy& study, int refine)
   const double a = study.half_width_m, slope = std::tan(s.face_angle_rad);
   KinkLevel level;
   level.refine = refine;
-  level.contact_element_m = a / (10.0 * std::pow(2.0, refine / 2.0));
-  // The Hertz scenes' grading about the apex (fem/hertz_setup.cpp mesh_grading).
-  const MeshGrading grading{level.contact_element_m, 1.25 * a, 0.25, s.width_m / 5};
-  const SceneMesh scene = build_kink_mesh(comm, {s.width_m, s.width_m, s.face_angle_rad}, grading);
+  level.contact_element_m = contact_element_size(a, refine);
+  const SceneMesh scene = build_kink_mesh(comm, {s.width_m, s.width_m, s.face_angle_rad},
+                                          contact_grading(a, level.contact_element_m, s.width_m));
   const double body_modulus = study.effective_modulus_pa * (1 - s.poisson_ratio * s.poisson_ratio);
   PenaltyContact problem(scene, Model::plane_strain, 1, body_modulus, s.poisson_ratio,
                          s.penalty_c * body_modulus / level.contact_element_m, s.petsc_options);
   level.dofs = problem.num_dofs();
-  // Start: the face's height at the contact edge as the shift, and the line
-  // contact's approach of the top (fem/hertz_solve.cpp) for the load; the
-  // load control corrects both.
-  const double log_term = 2 * std::log(4 * s.width_m / a) - 1;
-  const double first_approach = a * slope + s.load_n_per_m / (std::numbers::pi * study.effective_modulus_pa) * log_term;
+  // Start: the face's height at the contact edge as the shift, and that plus
+  // a line contact's approach (load_control.h) for the top; the load control
+  // corrects both.
+  const double first_approach
+      = a * slope + line_contact_approach(s.load_n_per_m, s.width_m, a, study.effective_modulus_pa).approach_m;
   const LoadControlReport report = reach_force(problem, s.load_n_per_m, first_approach, a * slope, 1.0, 1e-6);
   level.newton_iterations = report.newton.newton_iterations;
   level.krylov_iterations = report.newton.krylov_iterations;
@@ -75,9 +75,7 @@ KinkLevel solve_level(MPI_Comm comm, const KinkStudy& study, int refine)
       level.half_contact_pressure_pa = (1 - t) * nodes[i - 1][1] + t * nodes[i][1];
     }
   }
-  double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  MPI_Allreduce(MPI_IN_PLACE, &wall, 1, MPI_DOUBLE, MPI_MAX, comm);
-  level.wall_s = wall;
+  level.wall_s = wall_seconds_since(comm, start);
   return level;
 }
 } // namespace

@@ -70,8 +70,7 @@ HertzReference hertz_reference(const HertzSetup& s)
 {
   const double E = s.youngs_modulus_pa, nu = s.poisson_ratio;
   HertzReference r{};
-  r.effective_modulus_pa = s.elastic_plane ? contact::effective_modulus_identical_bodies(E, nu)
-                                           : contact::effective_modulus_rigid_plane(E, nu);
+  r.effective_modulus_pa = contact::effective_modulus(E, nu, s.elastic_plane);
   // Against a rigid plane the body alone supplies E*: E_body / (1 - nu^2) = E*.
   r.body_modulus_pa = r.effective_modulus_pa * (1 - nu * nu);
   if (s.model == Model::plane_strain)
@@ -103,17 +102,29 @@ HertzReference hertz_reference(const HertzSetup& s)
 MeshGrading mesh_grading(const HertzSetup& s, const HertzReference& ref)
 {
   const int refine = s.refine >= 0 ? s.refine : default_refine(s.model, s.degree);
+  return contact_grading(ref.contact_size_m,
+                         s.contact_element_size_m > 0 ? s.contact_element_size_m
+                                                      : contact_element_size(ref.contact_size_m, refine),
+                         s.radius_m);
+}
+
+double contact_element_size(double contact_size_m, int refine)
+{
+  return contact_size_m / (10.0 * std::pow(2.0, refine / 2.0));
+}
+
+MeshGrading contact_grading(double contact_size_m, double contact_element_m, double body_size_m)
+{
   MeshGrading g{};
-  g.contact_size_m = s.contact_element_size_m > 0 ? s.contact_element_size_m
-                                                  : ref.contact_size_m / (10.0 * std::pow(2.0, refine / 2.0));
+  g.contact_size_m = contact_element_m;
   // The fine ball covers the contact (radius c_H) with a margin for the
   // penalty's smearing of the edge, and the depth of the subsurface maxima
   // (0.48 a, 0.79 b).
-  g.fine_radius_m = std::max(1.25 * ref.contact_size_m, 2 * g.contact_size_m);
+  g.fine_radius_m = std::max(1.25 * contact_size_m, 2 * g.contact_size_m);
   // Sizes grow by 25 % of the distance: about 1 / 0.25 * ln(h_far / h_c)
   // element layers from the contact zone to the far field.
   g.growth = 0.25;
-  g.far_size_m = s.radius_m / 5;
+  g.far_size_m = body_size_m / 5;
   return g;
 }
 } // namespace rollcheck::fem

@@ -93,4 +93,11 @@ struct MeshGrading
   double far_size_m;
 };
 MeshGrading mesh_grading(const HertzSetup& setup, const HertzReference& reference);
+
+/// h_c = contact_size / (10 * 2^(refine / 2)): refine 0 puts 10 elements
+/// across the contact size, each step a factor sqrt(2) more.
+double contact_element_size(double contact_size_m, int refine);
+/// The grading every scene uses about a contact of size c with contact
+/// elements h_c, in a body of size R (see mesh_grading's comments).
+MeshGrading contact_grading(double contact_size_m, double contact_element_m, double body_size_m);
 } // namespace rollcheck::fem

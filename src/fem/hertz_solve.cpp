@@ -80,15 +80,13 @@ HertzResult solve_hertz(MPI_Comm comm, const HertzSetup& setup)
 
   // Load control. Start: the Hertz approach, the body shifted by the height
   // of its surface at the Hertz contact edge, so that the first active set
-  // is the Hertz contact. Line contact: the classical estimate of the
-  // approach of a cylinder's centre, delta = P / (pi E*) (2 ln(4R/b) - 1),
-  // whose local exponent d ln P / d ln delta is L / (L - 1), L = 2 ln(4R/b) - 1.
-  // Both only start the load control, which corrects them.
+  // is the Hertz contact; a line contact starts from the classical approach
+  // of a cylinder's centre (line_contact_approach). Both only start the load
+  // control, which corrects them.
   const double edge_height = c_H * c_H / (2 * R);
-  const double log_term = 2 * std::log(4 * R / c_H) - 1;
-  const double first_approach
-      = line ? ref.load / (std::numbers::pi * ref.effective_modulus_pa) * log_term : *ref.approach_m;
-  const double exponent = line ? log_term / (log_term - 1) : 1.5;
+  const LineApproach line_start = line_contact_approach(ref.load, R, c_H, ref.effective_modulus_pa);
+  const double first_approach = line ? line_start.approach_m : *ref.approach_m;
+  const double exponent = line ? line_start.exponent : 1.5;
   const LoadControlReport load
       = reach_force(problem, ref.load, first_approach, edge_height, exponent, setup.force_rtol);
   result.load_steps = load.load_steps;
@@ -195,9 +193,7 @@ HertzResult solve_hertz(MPI_Comm comm, const HertzSetup& setup)
   const double rss_mb = usage.ru_maxrss / 1024.0;
   MPI_Allreduce(&rss_mb, &result.peak_memory_mb, 1, MPI_DOUBLE, MPI_MAX, comm);
   MPI_Allreduce(&rss_mb, &result.total_peak_memory_mb, 1, MPI_DOUBLE, MPI_SUM, comm);
-  double wall = seconds_since(start);
-  MPI_Allreduce(MPI_IN_PLACE, &wall, 1, MPI_DOUBLE, MPI_MAX, comm);
-  result.wall_s = wall;
+  result.wall_s = wall_seconds_since(comm, start);
   return result;
 }
 } // namespace rollcheck::fem

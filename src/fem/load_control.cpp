@@ -3,10 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <numbers>
 #include <spdlog/spdlog.h>
 
 namespace rollcheck::fem
 {
+LineApproach line_contact_approach(double load_n_per_m, double radius_m, double half_width_m,
+                                   double effective_modulus_pa)
+{
+  const double log_term = 2 * std::log(4 * radius_m / half_width_m) - 1;
+  return {load_n_per_m / (std::numbers::pi * effective_modulus_pa) * log_term, log_term / (log_term - 1)};
+}
+
 LoadControlReport reach_force(PenaltyContact& problem, double target, double first_approach_m,
                               double first_shift_m, double exponent, double rtol)
 {

@@ -20,6 +20,18 @@ struct LoadControlReport
   NewtonReport newton;      ///< summed over the solves
 };
 
+/// The classical estimate of the approach of a cylinder's centre (radius R,
+/// Hertz half-width b) under a line load q: delta = q / (pi E*) L with
+/// L = 2 ln(4 R / b) - 1, whose local exponent d ln q / d ln delta is
+/// L / (L - 1). It starts the load control of the line contacts.
+struct LineApproach
+{
+  double approach_m;
+  double exponent;
+};
+LineApproach line_contact_approach(double load_n_per_m, double radius_m, double half_width_m,
+                                   double effective_modulus_pa);
+
 /// `first_approach_m` and `first_shift_m` start the first solve (see
 /// PenaltyContact::start_translated); `exponent` is n_0.
 LoadControlReport reach_force(PenaltyContact& problem, double target_force, double first_approach_m,

@@ -202,10 +202,8 @@ void PenaltyContact::start_translated(double shift_m, double approach_m)
   std::fill(u.begin(), u.end(), 0.0);
   for (std::size_t i = _z_component; i < u.size(); i += bs)
     u[i] = -shift_m;
-  apply_approach(approach_m);
+  set_approach(approach_m);
 }
-
-void PenaltyContact::set_approach(double approach_m) { apply_approach(approach_m); }
 
 void PenaltyContact::set_approach_profile(const std::function<double(const double* x)>& weight)
 {
@@ -214,7 +212,7 @@ void PenaltyContact::set_approach_profile(const std::function<double(const doubl
     _top_weights[i] = weight(&x[3 * _top_blocks[i]]);
 }
 
-void PenaltyContact::apply_approach(double approach_m)
+void PenaltyContact::set_approach(double approach_m)
 {
   // The top face is bonded to the loading plate: its horizontal displacement is zero.
   _approach_m = approach_m;

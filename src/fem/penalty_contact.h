@@ -49,8 +49,8 @@ public:
   /// Start state for a first solve: the body translated down by `shift_m`,
   /// its top face at -approach_m.
   void start_translated(double shift_m, double approach_m);
-  /// Sets the top face's prescribed displacement to -approach_m and nothing
-  /// else: the first Newton step then is the tangent (Euler) predictor, the
+  /// Sets the top face's prescribed displacement to -approach_m (times the
+  /// profile's weight) and nothing else: the first Newton step then is the tangent (Euler) predictor, the
   /// linear response of the current state to the change of approach.
   void set_approach(double approach_m);
   double approach_m() const { return _approach_m; }
@@ -93,7 +93,6 @@ private:
   ContactForms _forms;
   std::shared_ptr<dolfinx::fem::FunctionSpace> _V;
   std::shared_ptr<dolfinx::fem::Function<T>> _u;
-  void apply_approach(double approach_m);
   std::shared_ptr<dolfinx::fem::Function<T>> _top_displacement; ///< the top face's prescribed values
   std::vector<std::int32_t> _top_blocks;  ///< owned and ghost
   std::vector<double> _top_weights;       ///< per top block, see set_approach_profile

@@ -1,5 +1,6 @@
 #include "fem/slab_contact.h"
 #include "contact/hertz.h"
+#include "fem/all_gather.h"
 #include "fem/hertz_setup.h"
 #include "fem/load_control.h"
 #include "fem/nodal_fields.h"
@@ -107,14 +108,8 @@ SlabFem solve_slab(MPI_Comm comm, const SlabBody& body, std::span<const SliceFem
   SlabFem result;
   result.refine = settings.refine >= 0 ? settings.refine : default_refine(Model::solid, 1);
   // The section at unit radius, graded as the plane-strain scene.
-  HertzSetup unit;
-  unit.model = Model::plane_strain;
-  unit.radius_m = 1.0;
-  unit.refine = result.refine;
-  HertzReference unit_reference{};
-  unit_reference.contact_size_m = largest_b_over_r;
-  MeshGrading section = mesh_grading(unit, unit_reference);
-  section.contact_size_m = smallest_b_over_r / (10.0 * std::pow(2.0, result.refine / 2.0));
+  MeshGrading section
+      = contact_grading(largest_b_over_r, contact_element_size(smallest_b_over_r, result.refine), 1.0);
   section.growth = section_growth;
 
   SlabGeometry geometry;
@@ -133,9 +128,8 @@ SlabFem solve_slab(MPI_Comm comm, const SlabBody& body, std::span<const SliceFem
   result.end_layer_m = std::min(h_0, h_L);
   const SceneMesh scene = build_slab_mesh(comm, geometry, section);
 
-  const double E_star = settings.elastic_plane
-                            ? contact::effective_modulus_identical_bodies(settings.youngs_modulus_pa, settings.poisson_ratio)
-                            : contact::effective_modulus_rigid_plane(settings.youngs_modulus_pa, settings.poisson_ratio);
+  const double E_star
+      = contact::effective_modulus(settings.youngs_modulus_pa, settings.poisson_ratio, settings.elastic_plane);
   const double body_modulus = E_star * (1 - settings.poisson_ratio * settings.poisson_ratio);
   const double kappa = settings.penalty_c * body_modulus / result.end_layer_m;
   PenaltyContact problem(scene, Model::solid, 1, body_modulus, settings.poisson_ratio, kappa, settings.petsc_options);
@@ -153,9 +147,10 @@ SlabFem solve_slab(MPI_Comm comm, const SlabBody& body, std::span<const SliceFem
   // line contact.
   const double b_over_r = 0.5 * (smallest_b_over_r + largest_b_over_r);
   const double mean_radius = 0.5 * (start_radius_m + end_radius_m);
-  const double log_term = 2 * std::log(4 / b_over_r) - 1;
-  const LoadControlReport load = reach_force(problem, force_n, mean_approach, 0.5 * b_over_r * b_over_r * mean_radius,
-                                             log_term / (log_term - 1), 1e-6);
+  // The exponent depends on R / b alone.
+  const double exponent = line_contact_approach(1.0, 1.0, b_over_r, 1.0).exponent;
+  const LoadControlReport load
+      = reach_force(problem, force_n, mean_approach, 0.5 * b_over_r * b_over_r * mean_radius, exponent, 1e-6);
   result.approach_factor = load.approach_m / mean_approach;
   result.newton_iterations = load.newton.newton_iterations;
   result.krylov_iterations = load.newton.krylov_iterations;
@@ -191,9 +186,7 @@ SlabFem solve_slab(MPI_Comm comm, const SlabBody& body, std::span<const SliceFem
         s.load.load_n_per_m > 0
             ? interpolate(result.plane_position_m, result.plane_peak_pressure_pa, s.load.position_m)
             : 0.0);
-  double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  MPI_Allreduce(MPI_IN_PLACE, &wall, 1, MPI_DOUBLE, MPI_MAX, comm);
-  result.wall_s = wall;
+  result.wall_s = wall_seconds_since(comm, start);
   return result;
 }
 } // namespace rollcheck::fem
