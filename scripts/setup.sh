@@ -5,14 +5,15 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 
 packages=(
-  build-essential cmake pkg-config ninja-build git
+  build-essential cmake pkg-config ninja-build git jq ccache
   libdolfinx-dev libdolfinx-real-dev python3-ffcx
   libgmsh-dev libeigen3-dev libhdf5-openmpi-dev libqhull-dev
   libopenmpi-dev openmpi-bin
   libtomlplusplus-dev libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libopenblas0-pthread
-  python3-matplotlib python3-h5py python3-numpy
+  libnlopt-cxx-dev
+  python3-matplotlib python3-h5py python3-numpy python3-jinja2 python3-meshio
 )
 
 missing=()

@@ -16,7 +16,8 @@ namespace fs = std::filesystem;
 
 namespace
 {
-const fs::path shared_dir = ROLLCHECK_SHARED_DIR;
+const fs::path reference_meshes = ROLLCHECK_REFERENCE_MESH_DIR;
+const fs::path reference_data = ROLLCHECK_REFERENCE_DATA_DIR;
 
 fs::path fresh_folder(const std::string& name)
 {
@@ -251,16 +252,16 @@ TEST(ResultsStore, AFailedWriteLeavesThePreviousStoreAndNoTemporaryFile)
 
 TEST(ResultsStore, ReportDrawsTheReferenceCodesOwnConvergenceAndPerFaceContacts)
 {
-  // The published code's outputs (shared/reference) as two oracle-like
+  // The published code's outputs (tests/data/reference) as two oracle-like
   // records: its rigid-body CDS snapshots and per-face contact counts with
   // face areas and centroids, and the mesh they were counted on. The report
   // must draw both plots from them.
-  std::ifstream outputs_in(shared_dir / "reference" / "reference_outputs.json");
+  std::ifstream outputs_in(reference_data / "reference_outputs.json");
   const nlohmann::json outputs = nlohmann::json::parse(outputs_in);
   std::vector<io::StoreEntry> entries;
   for (const std::string body : {"oloid", "cylinder"})
   {
-    std::ifstream per_face_in(shared_dir / "reference" / ("perface_" + body + ".json"));
+    std::ifstream per_face_in(reference_data / ("perface_" + body + ".json"));
     const nlohmann::json per_face = nlohmann::json::parse(per_face_in);
     const nlohmann::json& rigid = outputs.at("geometries").at(body).at("rigid");
     entries.push_back({body,
@@ -270,7 +271,7 @@ TEST(ResultsStore, ReportDrawsTheReferenceCodesOwnConvergenceAndPerFaceContacts)
                         {"parameters",
                          {{"kind", "oracle"},
                           {"body", body},
-                          {"mesh_file", (shared_dir / "reference" / "meshes" / (body + "_reference.obj")).string()}}},
+                          {"mesh_file", (reference_meshes / (body + "_reference.obj")).string()}}},
                         {"summary",
                          {{"cds", rigid.at("cds")},
                           {"n_samples", rigid.at("n_samples")},

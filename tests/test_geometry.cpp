@@ -24,7 +24,8 @@ constexpr double pi = std::numbers::pi;
 
 namespace
 {
-const std::filesystem::path shared_dir = ROLLCHECK_SHARED_DIR;
+const std::filesystem::path reference_meshes = ROLLCHECK_REFERENCE_MESH_DIR;
+const std::filesystem::path reference_data = ROLLCHECK_REFERENCE_DATA_DIR;
 
 /// The true oloid's volume for r = 1, 3.0524184684 r^3 (Dirnboeck & Stachel 1997).
 constexpr double oloid_volume = 3.0524184684;
@@ -76,7 +77,7 @@ TEST(PaperOloid, MatchesTheReferenceMeshCounts)
 {
   // The reference scored this very construction: 601 vertices, 1198 faces.
   const SurfaceMesh mesh = two_circle_roller({90, 1, 1, 2}, RollerFamily::paper, 1.0, 400);
-  const SurfaceMesh reference = read_mesh(shared_dir / "reference/meshes/oloid_reference.obj");
+  const SurfaceMesh reference = read_mesh(reference_meshes / "oloid_reference.obj");
   EXPECT_EQ(mesh.vertices.rows(), reference.vertices.rows());
   EXPECT_EQ(mesh.faces.rows(), reference.faces.rows());
   EXPECT_NEAR(mass_properties(mesh).area_m2, mass_properties(reference).area_m2, 1e-12);
@@ -127,8 +128,8 @@ TEST_P(ReferenceMesh, MassPropertiesMatchTheReference)
 {
   const std::string name = GetParam();
   const std::string file = name == "sphere" ? "sphere_icosphere3.obj" : name + "_reference.obj";
-  const SurfaceMesh mesh = read_mesh(shared_dir / "reference/meshes" / file);
-  std::ifstream in(shared_dir / "reference/reference_outputs.json");
+  const SurfaceMesh mesh = read_mesh(reference_meshes / file);
+  std::ifstream in(reference_data / "reference_outputs.json");
   const nlohmann::json ref = nlohmann::json::parse(in)["geometries"][name]["mesh"];
   const MeshChecks checks = check_mesh(mesh);
   EXPECT_TRUE(checks.watertight && checks.consistently_oriented && checks.outward && checks.convex)

@@ -1,5 +1,5 @@
 // The paper-compatible oracles against the reference code's own outputs
-// (../shared/reference: reference_outputs.json, perface_*.json), on the exact
+// (tests/data/reference: reference_outputs.json, perface_*.json), on the exact
 // meshes it scored.
 #include "geometry/read_mesh.h"
 #include "oracle/approximate_oracle.h"
@@ -13,7 +13,7 @@
 namespace
 {
 using namespace rollcheck;
-const std::string reference_dir = std::string(ROLLCHECK_SHARED_DIR) + "/reference";
+const std::string reference_dir = std::string(ROLLCHECK_REFERENCE_DATA_DIR);
 
 const nlohmann::json& reference()
 {
@@ -29,7 +29,7 @@ nlohmann::json perface(const std::string& name)
 geometry::SurfaceMesh reference_mesh(const std::string& name)
 {
   const std::string file = name == "sphere" ? "sphere_icosphere3.obj" : name + "_reference.obj";
-  return geometry::read_mesh(reference_dir + "/meshes/" + file);
+  return geometry::read_mesh(std::string(ROLLCHECK_REFERENCE_MESH_DIR) + "/" + file);
 }
 
 double relative(double ours, double theirs) { return std::abs(ours - theirs) / std::abs(theirs); }

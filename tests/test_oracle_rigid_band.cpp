@@ -1,5 +1,5 @@
 // Rigid-body scores against the reference outputs. The rigid-body runs are
-// chaotic (../shared/reference/README.md): a 1e-12 rad/s change of the initial
+// chaotic (tests/data/reference/README.md): a 1e-12 rad/s change of the initial
 // spin moves the final orientations by ~1e-3 and the scores by up to ~10 %.
 // The reference's scores are therefore compared within the band of that
 // sensitivity, measured here on our own oracle: every run's initial spin is
@@ -22,7 +22,7 @@
 namespace
 {
 using namespace rollcheck;
-const std::string reference_dir = std::string(ROLLCHECK_SHARED_DIR) + "/reference";
+const std::string reference_dir = std::string(ROLLCHECK_REFERENCE_DATA_DIR);
 
 struct Scores
 {
@@ -49,7 +49,7 @@ class RigidBand : public ::testing::TestWithParam<std::string>
 TEST_P(RigidBand, ScoresLieWithinTheNudgeBand)
 {
   const std::string name = GetParam();
-  const auto mesh = geometry::read_mesh(reference_dir + "/meshes/" + name + "_reference.obj");
+  const auto mesh = geometry::read_mesh(std::string(ROLLCHECK_REFERENCE_MESH_DIR) + "/" + name + "_reference.obj");
   const auto ref = nlohmann::json::parse(std::ifstream(reference_dir + "/reference_outputs.json"))["geometries"][name];
   const oracle::RigidBodyOptions nominal_options;
   const Scores nominal = rigid_scores(mesh, nominal_options);

@@ -16,7 +16,7 @@
 namespace
 {
 using namespace rollcheck;
-const std::string reference_dir = std::string(ROLLCHECK_SHARED_DIR) + "/reference";
+const std::string reference_dir = std::string(ROLLCHECK_REFERENCE_DATA_DIR);
 
 class PerFace : public ::testing::TestWithParam<std::string>
 {
@@ -25,7 +25,7 @@ class PerFace : public ::testing::TestWithParam<std::string>
 TEST_P(PerFace, VertexCurvaturesAndEffectiveRadiiMatchReference)
 {
   const std::string name = GetParam();
-  const auto mesh = geometry::read_mesh(reference_dir + "/meshes/" + name + "_reference.obj");
+  const auto mesh = geometry::read_mesh(std::string(ROLLCHECK_REFERENCE_MESH_DIR) + "/" + name + "_reference.obj");
   const auto pf = nlohmann::json::parse(std::ifstream(reference_dir + "/perface_" + name + ".json"));
   const contact::FaceCurvature c = contact::face_curvature(mesh, {}, oracle::PaperCompat::reference());
   const auto h = pf["H_vertex"].get<std::vector<double>>();
@@ -60,7 +60,7 @@ INSTANTIATE_TEST_SUITE_P(Meshes, PerFace, ::testing::Values("oloid", "cylinder")
 TEST(DiscreteCurvature, AngleDefectsSumToFourPi)
 {
   for (const auto& mesh : {geometry::icosphere(1.0, 3), geometry::cylinder(1.0, 2.0, 60),
-                           geometry::read_mesh(reference_dir + "/meshes/oloid_reference.obj")})
+                           geometry::read_mesh(std::string(ROLLCHECK_REFERENCE_MESH_DIR) + "/oloid_reference.obj")})
   {
     const auto angles = geometry::internal_angles(mesh);
     EXPECT_NEAR(geometry::angle_defects(mesh, angles).sum(), 4 * std::numbers::pi, 1e-10);
@@ -69,7 +69,7 @@ TEST(DiscreteCurvature, AngleDefectsSumToFourPi)
 
 TEST(DiscreteCurvature, MixedVoronoiAreasTileTheSurface)
 {
-  const auto mesh = geometry::read_mesh(reference_dir + "/meshes/oloid_reference.obj");
+  const auto mesh = geometry::read_mesh(std::string(ROLLCHECK_REFERENCE_MESH_DIR) + "/oloid_reference.obj");
   const auto angles = geometry::internal_angles(mesh);
   EXPECT_NEAR(geometry::mixed_voronoi_vertex_areas(mesh, angles).sum(), angles.areas.sum(), 1e-12);
   EXPECT_NEAR(geometry::barycentric_vertex_areas(mesh, angles).sum(), angles.areas.sum(), 1e-12);

@@ -235,7 +235,7 @@ io::AuditTable audit(const Settings& s)
   for (const char* name : {"oloid_reference.obj", "cylinder_reference.obj"})
     if (!fs::is_regular_file(s.meshes / name))
       throw InputError(fmt::format("option --reference-meshes: '{}' has no {} (the reference meshes of "
-                                   "../shared/reference/meshes)",
+                                   "meshes/reference)",
                                    s.meshes.string(), name));
   const std::string oloid_mesh = (s.meshes / "oloid_reference.obj").string();
   const std::string cylinder_mesh = (s.meshes / "cylinder_reference.obj").string();
@@ -253,7 +253,7 @@ io::AuditTable audit(const Settings& s)
   table.quick = s.quick;
   table.modes = {
       {m.paper, "the reference code's arithmetic and quirks (`--paper-compat`), rigid-body oracle, on the meshes it "
-                "scored (shared/reference/meshes: oloid 1198 faces, cylinder 240)"},
+                "scored (meshes/reference: oloid 1198 faces, cylinder 240)"},
       {m.matched, "paper-compatible, but the cylinder meshed with 300 sides (1200 faces, the oloid's 1198) instead "
                   "of 60; in the search the anchor oloid meshed like the candidates (`--matched-resolution`)"},
       {m.true_oloid, "paper-compatible, with the true oloid (`--body oloid`: hull of two unit circles in "
@@ -456,7 +456,7 @@ io::AuditTable audit(const Settings& s)
                            within(r, 12, claim_tolerance));
     }
     c.cells[m.rolling] = not_built_cell();
-    c.note = "The reference code's own output (shared/reference/reference_outputs.json) has the paper-compatible "
+    c.note = "The reference code's own output (tests/data/reference/reference_outputs.json) has the paper-compatible "
              "2.87e-6 at 50 samples too, not the preprint's 8.46e-6.";
     add_claim(c);
   }
@@ -601,7 +601,7 @@ void add_audit_command(CLI::App& app)
       "audit", "Recompute every quantitative claim of the preprint in each mode (paper-compatible, matched "
                "resolution, true oloid, corrected physics, real rolling) and print the claim table with verdicts and commands");
   static std::string json_path, markdown_path;
-  static Settings settings{fs::path(ROLLCHECK_SOURCE_DIR) / ".." / "shared" / "reference" / "meshes", false, 0};
+  static Settings settings{fs::path(ROLLCHECK_SOURCE_DIR) / "meshes" / "reference", false, 0};
   static std::string meshes = settings.meshes.string();
   add_json_option(sub, json_path);
   sub->add_option("--markdown", markdown_path, "Also write the table as Markdown to PATH ('-' for stdout) (default: none)");
@@ -609,7 +609,7 @@ void add_audit_command(CLI::App& app)
                 "Fewer thresholds (0.01, 0.04, 0.16) and mesh sizes (100, 200, 400 points per circle) (default: off)");
   sub->add_option("--threads", settings.threads, "Commands run at once; 0 = one per core (default: 0)");
   sub->add_option("--reference-meshes", meshes,
-                  "Folder of the reference meshes (default: <source>/../shared/reference/meshes)");
+                  "Folder of the reference meshes (default: <source>/meshes/reference)");
   on_run(sub, [] {
     if (json_path == "-" && markdown_path == "-")
       throw InputError("options --json and --markdown: only one of them can be '-' (stdout)");

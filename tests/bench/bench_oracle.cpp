@@ -1,5 +1,5 @@
 // Oracle and search benchmarks on the reference meshes, each printed with the
-// reference code's wall time on this machine kind (../shared/reference/
+// reference code's wall time on this machine kind (tests/data/reference/
 // README.md) and the speed-up: counters reference_s and speedup (reference
 // time / our mean time per iteration).
 //   rollcheck_bench --benchmark_filter='oracle|search'
@@ -22,7 +22,7 @@ using namespace rollcheck;
 const geometry::SurfaceMesh& reference_oloid()
 {
   static const geometry::SurfaceMesh mesh
-      = geometry::read_mesh(std::string(ROLLCHECK_SHARED_DIR) + "/reference/meshes/oloid_reference.obj");
+      = geometry::read_mesh(std::string(ROLLCHECK_REFERENCE_MESH_DIR) + "/oloid_reference.obj");
   return mesh;
 }
 

@@ -5,13 +5,13 @@
 # when run on their own (an oracle run, a mesh run and a FEM run). Bad input
 # (a folder without the reference meshes) exits 2 and writes nothing.
 set -u
-bin=$1; shared=$2; tmp=$3
+bin=$1; source=$2; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp"
 fail=0
 check() { # check DESCRIPTION JQ-EXPRESSION FILE: the expression must print true
   [[ $(jq -r "$2" "$3") == true ]] || { echo "FAIL: $1 ($2)"; fail=1; }
 }
-meshes=$shared/reference/meshes
+meshes=$source/meshes/reference
 "$bin" -q audit --quick --reference-meshes "$meshes" --json "$tmp/audit.json" --markdown "$tmp/audit.md" \
   > "$tmp/stdout.md" || { echo "FAIL: audit run"; exit 1; }
 j=$tmp/audit.json

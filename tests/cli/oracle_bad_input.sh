@@ -3,10 +3,10 @@
 # naming the input, nothing written; a body that never touches gives the
 # documented "inf" scores, never NaN.
 set -u
-bin=$1; shared=$2; tmp=$3
+bin=$1; source=$2; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp"
 fail=0
-oloid=$shared/reference/meshes/oloid_reference.obj
+oloid=$source/meshes/reference/oloid_reference.obj
 expect() { # expect CODE PATTERN -- command...
   local code=$1 pattern=$2; shift 3
   local err; err=$("$@" 2>&1 >/dev/null); local rc=$?

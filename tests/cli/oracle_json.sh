@@ -4,14 +4,14 @@
 # paper-compatible mode; a case file runs the same scene; `rollcheck search`
 # writes JSON and HDF5.
 set -u
-bin=$1; shared=$2; tmp=$3
+bin=$1; source=$2; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp"
 fail=0
 check() { # check DESCRIPTION JQ-EXPRESSION FILE: the expression must print true
   [[ $(jq -r "$2" "$3") == true ]] || { echo "FAIL: $1 ($2)"; fail=1; }
 }
-oloid=$shared/reference/meshes/oloid_reference.obj
-ref=$shared/reference/reference_outputs.json
+oloid=$source/meshes/reference/oloid_reference.obj
+ref=$source/tests/data/reference/reference_outputs.json
 "$bin" -q oracle --mesh "$oloid" --paper-compat --per-face --json "$tmp/rigid.json" || { echo "FAIL: rigid run"; fail=1; }
 for key in cds sds tds wds_vol wds_depth fds mean_peak_pressure_pa stress_cv n_faces n_samples wall_s; do
   check "key $key present" "has(\"$key\")" "$tmp/rigid.json"

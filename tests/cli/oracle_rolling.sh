@@ -12,7 +12,7 @@
 # - the JSON states that cds ... fds are not computed (null);
 # - a mesh file or a three-circle roller exits 2 with a clear message, nothing written.
 set -u
-bin=$1; shared=$2; tmp=$3
+bin=$1; source=$2; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp"
 fail=0
 check() { # check DESCRIPTION JQ-EXPRESSION FILE: the expression must print true
@@ -62,7 +62,7 @@ expect() { # expect CODE PATTERN -- command...
   if [[ $rc -ne $code ]]; then echo "FAIL ($rc != $code): $*"; echo "$err"; fail=1; return; fi
   if ! grep -qiE "$pattern" <<<"$err"; then echo "FAIL (message lacks '$pattern'): $*"; echo "$err"; fail=1; fi
 }
-expect 2 "mesh.*named body" -- "$bin" oracle --oracle rolling --mesh "$shared/reference/meshes/oloid_reference.obj" --json "$tmp/bad1.json"
+expect 2 "mesh.*named body" -- "$bin" oracle --oracle rolling --mesh "$source/meshes/reference/oloid_reference.obj" --json "$tmp/bad1.json"
 expect 2 "rolling.*3 circles" -- "$bin" oracle --oracle rolling --body roller --circles 3 --theta 120 --json "$tmp/bad2.json"
 expect 2 "loops" -- "$bin" oracle --oracle rolling --body oloid --loops 0 --json "$tmp/bad3.json"
 [[ ! -e $tmp/bad1.json && ! -e $tmp/bad2.json && ! -e $tmp/bad3.json ]] || { echo "FAIL: bad input wrote output"; fail=1; }
