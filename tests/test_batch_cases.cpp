@@ -1,6 +1,6 @@
 // What a batch runs: expansion of its arguments (files, folders, globs) and
 // the resolution of each case file against its scene's schema.
-#include "geometry/error.h"
+#include "core/error.h"
 #include "io/batch_cases.h"
 #include <filesystem>
 #include <fstream>

@@ -1,7 +1,7 @@
 // The HDF5 results store: the documented JSON -> HDF5 mapping, read back with
 // the HDF5 C API (independently of the writer); atomic replacement; and the
 // report drawn from a store filled with the reference code's own outputs.
-#include "geometry/error.h"
+#include "core/error.h"
 #include "io/results_store.h"
 #include <cstdlib>
 #include <filesystem>

@@ -5,7 +5,7 @@
 #include "contact/rim_overhang.h"
 #include <cstdio>
 #include "geometry/body.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "oracle/contact_density.h"
 #include "oracle/rolling_body.h"
 #include "oracle/rolling_study.h"

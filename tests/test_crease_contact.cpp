@@ -5,7 +5,7 @@
 // grows with every level, on average by (E* tan beta / pi) ln sqrt 2, as a
 // logarithmic singularity sampled by elements sqrt 2 smaller must.
 #include "fem/crease_contact.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <cmath>
 #include <cstdio>
 #include <gtest/gtest.h>
@@ -14,11 +14,11 @@ using namespace rollcheck;
 
 TEST(CreaseContact, ApexPeakGrowsAsTheLogarithmWhileTheContactConverges)
 {
-  const fem::KinkStudy study = fem::solve_kink(MPI_COMM_WORLD, {});
+  const fem::CreaseStudy study = fem::solve_crease(MPI_COMM_WORLD, {});
   ASSERT_EQ(study.levels.size(), 3u);
   for (std::size_t k = 0; k < study.levels.size(); ++k)
   {
-    const fem::KinkLevel& level = study.levels[k];
+    const fem::CreaseLevel& level = study.levels[k];
     std::printf("level %d: h %.3g m, %lld dofs, apex %.5g Pa, p(a/2) %.5g Pa (theory %.5g), edge %.4g m (a %.4g)\n",
                 level.refine, level.contact_element_m, static_cast<long long>(level.dofs), level.apex_pressure_pa,
                 level.half_contact_pressure_pa, study.half_contact_pressure_pa, level.contact_edge_m, study.half_width_m);
@@ -40,13 +40,13 @@ TEST(CreaseContact, ApexPeakGrowsAsTheLogarithmWhileTheContactConverges)
 
 TEST(CreaseContact, BadSetupIsRejected)
 {
-  fem::KinkSetup setup;
+  fem::CreaseSetup setup;
   setup.face_angle_rad = 1.0;
-  EXPECT_THROW(fem::solve_kink(MPI_COMM_WORLD, setup), InputError);
+  EXPECT_THROW(fem::solve_crease(MPI_COMM_WORLD, setup), InputError);
   setup = {};
   setup.load_n_per_m = NAN;
-  EXPECT_THROW(fem::solve_kink(MPI_COMM_WORLD, setup), InputError);
+  EXPECT_THROW(fem::solve_crease(MPI_COMM_WORLD, setup), InputError);
   setup = {};
   setup.load_n_per_m = 1e9; // a contact as wide as the body
-  EXPECT_THROW(fem::solve_kink(MPI_COMM_WORLD, setup), InputError);
+  EXPECT_THROW(fem::solve_crease(MPI_COMM_WORLD, setup), InputError);
 }

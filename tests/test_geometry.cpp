@@ -1,6 +1,6 @@
 // Geometry against closed forms and against the reference code's meshes.
 #include "geometry/body.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "geometry/face_areas.h"
 #include "geometry/mass_properties.h"
 #include "geometry/mesh_checks.h"

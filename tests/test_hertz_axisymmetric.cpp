@@ -5,7 +5,7 @@
 // retuning. Also the documented outcome of each hard case.
 #include "contact/hertz.h"
 #include "fem/fem.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>

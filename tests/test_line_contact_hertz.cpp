@@ -5,7 +5,7 @@
 #include "contact/hertz.h"
 #include "contact/line_contact.h"
 #include "geometry/convex_hull.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "geometry/face_areas.h"
 #include "geometry/gaussian_curvature.h"
 #include "geometry/internal_angles.h"

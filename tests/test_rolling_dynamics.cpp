@@ -1,6 +1,6 @@
 // Rolling without slipping: energy, closed-form motions, and the trajectory's
 // own Newton-Euler balance recomputed by finite differences.
-#include "geometry/error.h"
+#include "core/error.h"
 #include "geometry/primitives.h"
 #include "geometry/two_circle_roller.h"
 #include "oracle/rolling_dynamics.h"

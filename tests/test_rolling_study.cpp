@@ -1,7 +1,7 @@
 // Real rolling of the preprint's bodies, scored by the normalised uniformity
 // score: the table of the README's "corrected physics" section.
 #include "geometry/body.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "oracle/rolling_study.h"
 #include <cmath>
 #include <limits>

@@ -6,7 +6,7 @@
 #include "contact/sliding_speed.h"
 #include "contact/trajectory_scores.h"
 #include "contact/wear.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "geometry/primitives.h"
 #include "oracle/rolling_body.h"
 #include <gtest/gtest.h>

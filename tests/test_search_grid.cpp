@@ -1,6 +1,6 @@
 // The parametric search: the reference's grids, determinism across thread
 // counts, the preprint's reported numbers, matched resolution, invalid genomes.
-#include "geometry/error.h"
+#include "core/error.h"
 #include "oracle/parametric_search.h"
 #include "oracle/search_grid.h"
 #include <gtest/gtest.h>

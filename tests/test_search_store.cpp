@@ -1,6 +1,6 @@
 // The search's JSON summary and HDF5 file: read back with the HDF5 C API.
 #include "io/search_store.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <hdf5.h>

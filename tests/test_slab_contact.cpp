@@ -12,7 +12,7 @@
 // are singular: there the end peak must exceed the middle's and grow.
 #include "fem/slab_contact.h"
 #include "fem/slice_contact.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <cmath>
 #include <cstdio>
 #include <gtest/gtest.h>

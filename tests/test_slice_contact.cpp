@@ -4,7 +4,7 @@
 // p0 = sqrt(q E* / (pi R)), E* = E / (1 - nu^2) on a rigid plane.
 #include "fem/petsc_session.h"
 #include "fem/slice_contact.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <cmath>
 #include <gtest/gtest.h>
 #include <numbers>

@@ -1,7 +1,7 @@
 // Exact support sets: polyhedra against hand-made cases, the circle hulls
 // against their closed forms and against their own inscribed meshes.
 #include "geometry/convex_hull.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "geometry/primitives.h"
 #include "geometry/two_circle_roller.h"
 #include "oracle/rolling_dynamics.h"

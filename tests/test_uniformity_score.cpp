@@ -1,6 +1,6 @@
 // The normalised score on hand-made densities, and the contact measure's
 // conservation and mesh independence.
-#include "geometry/error.h"
+#include "core/error.h"
 #include "geometry/face_areas.h"
 #include "geometry/primitives.h"
 #include "geometry/two_circle_roller.h"

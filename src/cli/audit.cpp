@@ -7,8 +7,8 @@
 // the table, so each listed command reproduces its number by construction.
 // Children run two at a time (one per core, std::thread workers).
 #include "cli/cli.h"
-#include "geometry/atomic_file.h"
-#include "geometry/error.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
 #include "io/audit_table.h"
 #include "rollcheck_version.h"
 #include <algorithm>

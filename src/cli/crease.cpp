@@ -6,7 +6,7 @@
 #include "cli/cli.h"
 #include "cli/scenes.h"
 #include "fem/crease_contact.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <fmt/format.h>
 #include <mpi.h>
 #include <numbers>
@@ -16,46 +16,42 @@ namespace rollcheck::cli
 {
 namespace
 {
-const io::Schema& crease_schema()
+const io::BoundSchema<fem::CreaseSetup>& crease_schema()
 {
-  static const io::Schema schema = [] {
-    const fem::KinkSetup d;
-    return io::Schema{
-        "crease",
-        {{"face_angle_deg", "--face-angle", d.face_angle_rad * 180 / std::numbers::pi, "deg",
-          "beta, between each face of the crease and the plane: the crease's angle is 180 - 2 beta (half-space "
-          "theory needs tan beta << 1)"},
-         {"load_n_per_m", "--load", d.load_n_per_m, "N/m",
-          "Load per unit length of crease (the preprint's F = 100 N over 10 mm)"},
-         {"width_m", "--width", d.width_m, "m", "Width and height of the modelled half of the body"},
-         {"youngs_modulus_pa", "--youngs-modulus", d.youngs_modulus_pa, "Pa", "E, steel (the preprint's)"},
-         {"poisson_ratio", "--poisson", d.poisson_ratio, "", "nu, steel (the preprint's)"},
-         {"penalty_c", "--penalty-c", d.penalty_c, "", "Penalty kappa = c E / h_c (README: penalty study)"},
-         {"refine", "--refine", std::int64_t{d.refine}, "", "First mesh level: h_c = a / (10 2^(level / 2))"},
-         {"levels", "--levels", std::int64_t{d.levels}, "", "Mesh levels, each h_c / sqrt 2 of the previous"}}};
+  using fem::CreaseSetup;
+  static const io::BoundSchema<CreaseSetup> schema = [] {
+    io::BoundSchema<CreaseSetup> s("crease");
+    s.real("face_angle_deg", "--face-angle", &CreaseSetup::face_angle_rad, "deg",
+           "beta, between each face of the crease and the plane: the crease's angle is 180 - 2 beta (half-space "
+           "theory needs tan beta << 1)",
+           io::Bounds{0, 45, true, false}, std::numbers::pi / 180)
+        .real("load_n_per_m", "--load-per-length", &CreaseSetup::load_n_per_m, "N/m",
+              "Load per unit length of crease (the preprint's F = 100 N over 10 mm)", io::positive)
+        .real("width_m", "--width", &CreaseSetup::width_m, "m", "Width and height of the modelled half of the body",
+              io::positive);
+    add_material(s, &CreaseSetup::youngs_modulus_pa, &CreaseSetup::poisson_ratio);
+    s.real("penalty_c", "--penalty-c", &CreaseSetup::penalty_c, "", "Penalty kappa = c E / h_c (README: penalty study)",
+           io::positive)
+        .integer("refine", "--refine", &CreaseSetup::refine, "", "First mesh level: h_c = a / (10 2^(level / 2))",
+                 io::Bounds{0, 10})
+        .integer("levels", "--levels", &CreaseSetup::levels, "", "Mesh levels, each h_c / sqrt 2 of the previous",
+                 io::Bounds{2, 6});
+    return s;
   }();
   return schema;
 }
 
 nlohmann::json run_crease(const io::Parameters& p)
 {
-  fem::KinkSetup setup;
-  setup.face_angle_rad = p.real("face_angle_deg") * std::numbers::pi / 180;
-  setup.load_n_per_m = p.real("load_n_per_m");
-  setup.width_m = p.real("width_m");
-  setup.youngs_modulus_pa = p.real("youngs_modulus_pa");
-  setup.poisson_ratio = p.real("poisson_ratio");
-  setup.penalty_c = p.real("penalty_c");
-  setup.refine = static_cast<int>(p.integer("refine"));
-  setup.levels = static_cast<int>(p.integer("levels"));
-  const fem::KinkStudy study = fem::solve_kink(MPI_COMM_WORLD, setup);
+  const fem::CreaseSetup setup = crease_schema().bind(p);
+  const fem::CreaseStudy study = fem::solve_crease(MPI_COMM_WORLD, setup);
 
   nlohmann::json levels = nlohmann::json::array();
   std::string table = "| level | h_c (m) | DOFs | Newton | s | apex p (Pa) | growth (Pa) | growth / theory | "
                       "p(a/2) (Pa) | p(a/2) / theory - 1 | contact edge / a |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (std::size_t k = 0; k < study.levels.size(); ++k)
   {
-    const fem::KinkLevel& l = study.levels[k];
+    const fem::CreaseLevel& l = study.levels[k];
     const double growth = k > 0 ? l.apex_pressure_pa - study.levels[k - 1].apex_pressure_pa : 0.0;
     levels.push_back({{"refine", l.refine},
                       {"contact_element_m", l.contact_element_m},
@@ -81,9 +77,9 @@ nlohmann::json run_crease(const io::Parameters& p)
     spdlog::info("\ncrease of {:.4g} deg under {:.4g} N/m (a = {:.4g} m, p(a/2) = {:.5g} Pa, apex growth per level "
                "{:.4g} Pa by theory):\n\n{}\nThe apex pressure is singular: it grows with every level and is not a "
                "converged number; p(a/2) and the contact edge converge.\n\n",
-               180 - 2 * p.real("face_angle_deg"), setup.load_n_per_m, study.half_width_m,
+               180 - 2 * setup.face_angle_rad * 180 / std::numbers::pi, setup.load_n_per_m, study.half_width_m,
                study.half_contact_pressure_pa, study.apex_growth_per_level_pa, table);
-  return {{"face_angle_deg", p.real("face_angle_deg")},
+  return {{"face_angle_deg", setup.face_angle_rad * 180 / std::numbers::pi},
           {"load_n_per_m", setup.load_n_per_m},
           {"effective_modulus_pa", study.effective_modulus_pa},
           {"half_width_m", study.half_width_m},
@@ -108,8 +104,8 @@ void add_crease_command(CLI::App& app)
                 "blunt-wedge solution: the apex peak grows with the mesh, the rest converges");
   static std::string json_path;
   add_json_option(sub, json_path);
-  static io::SchemaOptions* options = new io::SchemaOptions(sub, crease_schema());
-  register_scene({&crease_schema(), run_crease});
+  static io::SchemaOptions* options = new io::SchemaOptions(sub, crease_schema().schema());
+  register_scene({&crease_schema().schema(), run_crease});
   on_run(sub, [] {
     emit_json(json_path, run_crease(options->apply()));
     return 0;

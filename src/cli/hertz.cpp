@@ -6,8 +6,8 @@
 #include "cli/scenes.h"
 #include "contact/hertz.h"
 #include "fem/fem.h"
-#include "geometry/atomic_file.h"
-#include "geometry/error.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
 #include <cstdlib>
 #include <fmt/format.h>
 #include <fstream>

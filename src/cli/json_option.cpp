@@ -1,6 +1,6 @@
 #include "cli/cli.h"
-#include "geometry/atomic_file.h"
-#include "geometry/error.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
 #include <fstream>
 #include <iostream>
 #include <mpi.h>

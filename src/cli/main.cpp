@@ -1,7 +1,7 @@
 // rollcheck: validation of rolling-contact distribution scores and of Hertz
 // contact by penalty FEM. See README.md.
 #include "cli/cli.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "rollcheck_version.h"
 #include <map>
 #include <mpi.h>

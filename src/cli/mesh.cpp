@@ -3,7 +3,7 @@
 #include "cli/body_from_parameters.h"
 #include "cli/cli.h"
 #include "cli/scenes.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "geometry/mass_properties.h"
 #include "geometry/mesh_checks.h"
 #include "geometry/tetrahedralize.h"

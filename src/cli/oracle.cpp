@@ -11,7 +11,7 @@
 #include "contact/face_pressure.h"
 #include "contact/trajectory_scores.h"
 #include "geometry/body.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "io/search_store.h"
 #include "oracle/approximate_oracle.h"
 #include "oracle/rigid_body_oracle.h"

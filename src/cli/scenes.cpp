@@ -1,5 +1,5 @@
 #include "cli/scenes.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <fmt/format.h>
 #include <map>
 
@@ -29,6 +29,46 @@ std::vector<std::string> scene_kinds()
   for (const auto& [kind, scene] : registry())
     kinds.push_back(kind);
   return kinds;
+}
+
+const io::BoundSchema<geometry::BodySpec>& body_schema()
+{
+  using geometry::BodySpec;
+  // Resource guard: 100k points per circle is a 200k-vertex hull, far beyond
+  // any converged score (README: mesh convergence) and about 0.1 GB.
+  static const io::Bounds points_range{3, 100000};
+  static const io::BoundSchema<BodySpec> schema = [] {
+    io::BoundSchema<BodySpec> s("body");
+    s.text("body", "--body", &BodySpec::body,
+           "Body: oloid (true oloid), paper-oloid (the preprint's (90,1,1) roller, not an oloid), roller, cylinder, "
+           "sphere (icosphere), uv-sphere, hemisphere",
+           {"oloid", "paper-oloid", "roller", "cylinder", "sphere", "uv-sphere", "hemisphere"})
+        .choice("family", "--family", &BodySpec::family,
+                "Roller family: paper (C2's plane turned about z, the preprint's) or centre-line (turned about the "
+                "line of centres; its (90,1,1) is the true oloid)",
+                {{"paper", geometry::RollerFamily::paper}, {"centre-line", geometry::RollerFamily::centre_line}})
+        .real("theta_deg", "--theta", [](BodySpec& b) -> double& { return b.genome.theta_deg; }, "deg",
+              "Roller: angle between the circle planes", io::Bounds{0, 180, true, true})
+        .real("offset", "--offset", [](BodySpec& b) -> double& { return b.genome.offset; }, "",
+              "Roller: centre distance d in units of r1", io::non_negative)
+        .real("ratio", "--ratio", [](BodySpec& b) -> double& { return b.genome.ratio; }, "",
+              "Roller: radius ratio rho = r2 / r1", io::positive)
+        .integer("circles", "--circles", [](BodySpec& b) -> int& { return b.genome.n_circles; }, "",
+                 "Roller: number of generating circles (the reference's n >= 3 variant)", io::Bounds{2, 16})
+        .integer("points", "--points", &BodySpec::points, "",
+                 "Samples per generating circle (the reference: 400 for the oloid, 300 in its search)", points_range)
+        .real("radius_m", "--radius", &BodySpec::radius_m, "m",
+              "r1 of rollers, radius of the other bodies (the preprint: 1)", io::positive)
+        .real("height_m", "--height", &BodySpec::height_m, "m", "Cylinder height (the reference: 2)", io::positive)
+        .integer("sections", "--sections", &BodySpec::sections, "",
+                 "Cylinder sides, UV-sphere sectors (the reference: 60)", io::Bounds{4, 100000})
+        .integer("subdivisions", "--subdivisions", &BodySpec::subdivisions, "",
+                 "Icosphere subdivisions (the reference: 3)", io::Bounds{0, 8})
+        .text("mesh_file", "--mesh", &BodySpec::mesh_file,
+              "Read the body from a surface mesh file (OBJ/STL/PLY/OFF) instead");
+    return s;
+  }();
+  return schema;
 }
 
 std::vector<io::Parameter> body_parameters()

@@ -2,6 +2,8 @@
 // A scene is what a case file runs: a schema of parameters and a function from
 // resolved parameters to a JSON summary. Subcommands register theirs, so that
 // `rollcheck run CASE.toml` and `rollcheck <kind> --options` share one code path.
+#include "geometry/body.h"
+#include "io/bound_schema.h"
 #include "io/parameters.h"
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -19,6 +21,22 @@ void register_scene(const Scene& scene);
 const Scene& find_scene(const std::string& kind, const std::string& origin);
 std::vector<std::string> scene_kinds();
 
-/// Parameters shared by every scene that starts from a body.
+/// Parameters shared by every scene that starts from a body (old form; being
+/// replaced by body_schema()).
 std::vector<io::Parameter> body_parameters();
+
+/// The body's parameters, bound to geometry::BodySpec: include them with
+/// `schema.include(body_schema(), &Settings::body)`.
+const io::BoundSchema<geometry::BodySpec>& body_schema();
+
+/// The material pair's parameters, one spelling in every scene:
+/// youngs_modulus_pa (--youngs-modulus, Pa) and poisson_ratio (--poisson).
+template <class Settings, class Youngs, class Poisson>
+void add_material(io::BoundSchema<Settings>& schema, Youngs youngs_modulus, Poisson poisson_ratio)
+{
+  schema.real("youngs_modulus_pa", "--youngs-modulus", youngs_modulus, "Pa",
+              "Young's modulus E of the body (steel, the preprint's 200 GPa)", io::positive);
+  schema.real("poisson_ratio", "--poisson", poisson_ratio, "", "Poisson's ratio nu of the body (steel, the preprint's 0.3)",
+              io::poisson_range);
+}
 } // namespace rollcheck::cli

@@ -7,7 +7,7 @@
 #include "contact/face_curvature.h"
 #include "contact/face_pressure.h"
 #include "contact/trajectory_scores.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "io/search_store.h"
 #include "oracle/parametric_search.h"
 #include <algorithm>

@@ -1,5 +1,5 @@
 #include "contact/contact_locus.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "oracle/heights.h"
 #include <fmt/format.h>
 

@@ -1,5 +1,5 @@
 #include "contact/exact_curvature.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "geometry/face_centroids.h"
 #include "geometry/gaussian_curvature.h"
 #include "geometry/internal_angles.h"

@@ -1,5 +1,5 @@
 #include "contact/hertz.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>

@@ -1,5 +1,5 @@
 #include "contact/line_contact.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "oracle/contact_density.h"
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 #include "contact/rim_overhang.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <Eigen/Geometry>
 #include <cmath>
 #include <fmt/format.h>

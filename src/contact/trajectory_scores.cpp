@@ -2,7 +2,7 @@
 #include "contact/fatigue.h"
 #include "contact/sliding_speed.h"
 #include "contact/wear.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "oracle/heights.h"
 #include <cmath>
 #include <fmt/format.h>

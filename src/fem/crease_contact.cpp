@@ -6,7 +6,7 @@
 #include "fem/nodal_fields.h"
 #include "fem/petsc_session.h"
 #include "fem/scene_mesh.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -18,7 +18,7 @@ namespace rollcheck::fem
 {
 namespace
 {
-void validate(const KinkSetup& s)
+void validate(const CreaseSetup& s)
 {
   for (const auto& [value, name] : {std::pair{s.load_n_per_m, "load_n_per_m"}, std::pair{s.width_m, "width_m"},
                                     std::pair{s.youngs_modulus_pa, "youngs_modulus_pa"},
@@ -34,15 +34,15 @@ void validate(const KinkSetup& s)
                                  s.levels));
 }
 
-KinkLevel solve_level(MPI_Comm comm, const KinkStudy& study, int refine)
+CreaseLevel solve_level(MPI_Comm comm, const CreaseStudy& study, int refine)
 {
   const auto start = std::chrono::steady_clock::now();
-  const KinkSetup& s = study.setup;
+  const CreaseSetup& s = study.setup;
   const double a = study.half_width_m, slope = std::tan(s.face_angle_rad);
-  KinkLevel level;
+  CreaseLevel level;
   level.refine = refine;
   level.contact_element_m = contact_element_size(a, refine);
-  const SceneMesh scene = build_kink_mesh(comm, {s.width_m, s.width_m, s.face_angle_rad},
+  const SceneMesh scene = build_crease_mesh(comm, {s.width_m, s.width_m, s.face_angle_rad},
                                           contact_grading(a, level.contact_element_m, s.width_m));
   const double body_modulus = study.effective_modulus_pa * (1 - s.poisson_ratio * s.poisson_ratio);
   PenaltyContact problem(scene, Model::plane_strain, 1, body_modulus, s.poisson_ratio,
@@ -80,11 +80,11 @@ KinkLevel solve_level(MPI_Comm comm, const KinkStudy& study, int refine)
 }
 } // namespace
 
-KinkStudy solve_kink(MPI_Comm comm, const KinkSetup& setup)
+CreaseStudy solve_crease(MPI_Comm comm, const CreaseSetup& setup)
 {
   validate(setup);
   ensure_petsc();
-  KinkStudy study;
+  CreaseStudy study;
   study.setup = setup;
   study.effective_modulus_pa = contact::effective_modulus_rigid_plane(setup.youngs_modulus_pa, setup.poisson_ratio);
   const double coefficient = study.effective_modulus_pa * std::tan(setup.face_angle_rad) / std::numbers::pi;

@@ -1,6 +1,6 @@
 #pragma once
-// A crease inside the contact, by FEM: the kink scene (fem/scene_mesh.h
-// build_kink_mesh) pressed onto the rigid plane in plane strain, at several
+// A crease inside the contact, by FEM: the crease scene (fem/scene_mesh.h
+// build_crease_mesh) pressed onto the rigid plane in plane strain, at several
 // mesh levels. Where a body stands on an edge (the rigid-body oracle's rim
 // points, contact/contact_locus.h) the contact straddles the crease and the
 // surface slope jumps by 2 tan(beta) inside it. Half-space theory for the
@@ -21,7 +21,7 @@
 
 namespace rollcheck::fem
 {
-struct KinkSetup
+struct CreaseSetup
 {
   /// beta: a blunt crease, where half-space theory holds (tan beta << 1).
   double face_angle_rad = 5 * std::numbers::pi / 180;
@@ -36,7 +36,7 @@ struct KinkSetup
   std::string petsc_options;        ///< prefix "hertz_" (default MUMPS LU)
 };
 
-struct KinkLevel
+struct CreaseLevel
 {
   int refine = 0;
   double contact_element_m = 0;       ///< h_c
@@ -49,18 +49,18 @@ struct KinkLevel
   double wall_s = 0;
 };
 
-struct KinkStudy
+struct CreaseStudy
 {
-  KinkSetup setup;
+  CreaseSetup setup;
   double effective_modulus_pa = 0;   ///< E / (1 - nu^2)
   double half_width_m = 0;           ///< a
   double half_contact_pressure_pa = 0; ///< p(a / 2) = (E* tan beta / pi) arccosh 2
   /// (E* tan beta / pi) ln sqrt 2: the apex pressure's growth per level (h / sqrt 2).
   double apex_growth_per_level_pa = 0;
-  std::vector<KinkLevel> levels;
+  std::vector<CreaseLevel> levels;
 };
 
 /// Every rank gets the study. InputError for a bad setup, ComputationError
 /// for a failed solve.
-KinkStudy solve_kink(MPI_Comm comm, const KinkSetup& setup);
+CreaseStudy solve_crease(MPI_Comm comm, const CreaseSetup& setup);
 } // namespace rollcheck::fem

@@ -1,6 +1,6 @@
 #include "fem/hertz_setup.h"
 #include "contact/hertz.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <cmath>
 #include <fmt/format.h>
 

@@ -6,7 +6,7 @@
 #include "fem/petsc_session.h"
 #include "fem/scene_mesh.h"
 #include "fem/write_fields.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>

@@ -1,5 +1,5 @@
 #include "fem/load_control.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>

@@ -1,5 +1,5 @@
 #include "fem/penalty_contact.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <chrono>
 #include <cmath>
 #include <dolfinx/fem/assembler.h>

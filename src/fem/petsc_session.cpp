@@ -1,5 +1,5 @@
 #include "fem/petsc_session.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <cstdlib>
 #include <dolfinx/common/log.h>
 #include <petscsys.h>

@@ -1,5 +1,5 @@
 #include "fem/scene_mesh.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <fmt/format.h>
 #include <chrono>
 #include <cmath>
@@ -58,9 +58,9 @@ int add_quarter_disc(double R)
   return pole;
 }
 
-/// The kink scene's polygon in the xy-plane of gmsh (y is the model's z);
+/// The crease scene's polygon in the xy-plane of gmsh (y is the model's z);
 /// returns the tag of the apex.
-int add_half_kink(const KinkGeometry& k)
+int add_half_crease(const CreaseGeometry& k)
 {
   namespace occ = gmsh::model::occ;
   const double W = k.width_m, H = k.height_m;
@@ -297,15 +297,15 @@ SceneMesh build_scene_mesh(MPI_Comm comm, Model model, double R, const MeshGradi
   return scene;
 }
 
-SceneMesh build_kink_mesh(MPI_Comm comm, const KinkGeometry& kink, const MeshGrading& grading)
+SceneMesh build_crease_mesh(MPI_Comm comm, const CreaseGeometry& crease, const MeshGrading& grading)
 {
   const auto start = std::chrono::steady_clock::now();
-  const double W = kink.width_m, H = kink.height_m, slope = std::tan(kink.face_angle_rad);
-  if (!(W > 0 && H > 2 * W * slope && kink.face_angle_rad > 0 && kink.face_angle_rad <= std::numbers::pi / 4))
-    throw InputError(fmt::format("kink scene: need W > 0, 0 < beta <= 45 deg and H above the face's end "
+  const double W = crease.width_m, H = crease.height_m, slope = std::tan(crease.face_angle_rad);
+  if (!(W > 0 && H > 2 * W * slope && crease.face_angle_rad > 0 && crease.face_angle_rad <= std::numbers::pi / 4))
+    throw InputError(fmt::format("crease scene: need W > 0, 0 < beta <= 45 deg and H above the face's end "
                                  "(W = {} m, H = {} m, beta = {} rad)",
-                                 W, H, kink.face_angle_rad));
-  SceneMesh scene = distribute(comm, 2, [&] { return mesh_with_gmsh(2, [&] { return add_half_kink(kink); }, grading); });
+                                 W, H, crease.face_angle_rad));
+  SceneMesh scene = distribute(comm, 2, [&] { return mesh_with_gmsh(2, [&] { return add_half_crease(crease); }, grading); });
   const double tol = 1e-9 * W;
   SceneParts parts;
   parts.symmetry_x = [tol](double x, double, double) { return std::abs(x) < tol; };

@@ -22,7 +22,7 @@
 //   right-angled edge, or, with an overhang t, sheared so that the end face
 //   leans out by t from the vertical (an edge of interior angle 90 deg + t):
 //   x = a + z s(a), s linear from -tan t_0 at a = 0 to tan t_L at a = L.
-// - kink (build_kink_mesh): a crease in contact, in plane strain: the half
+// - crease (build_crease_mesh): a crease in contact, in plane strain: the half
 //   x >= 0 (symmetry about x = 0) of a body whose lower surface is the
 //   straight face z = x tan(beta) from the apex (0, 0) to x = W, closed by the
 //   side x = W and the top z = H. Mirrored, the surface has a kink of
@@ -76,7 +76,7 @@ struct SlabGeometry
 /// its shear; x[0] itself without overhang).
 double slab_along(const SlabGeometry& slab, const double* x);
 
-struct KinkGeometry
+struct CreaseGeometry
 {
   double width_m = 0;          ///< W
   double height_m = 0;         ///< H, above the apex
@@ -85,7 +85,7 @@ struct KinkGeometry
 
 /// Model::plane_strain conventions (the vertical is the second coordinate);
 /// symmetry multiplicity 2.
-SceneMesh build_kink_mesh(MPI_Comm comm, const KinkGeometry& kink, const MeshGrading& grading);
+SceneMesh build_crease_mesh(MPI_Comm comm, const CreaseGeometry& crease, const MeshGrading& grading);
 
 /// `section_grading` in units of the local radius (the section at unit
 /// radius). Model::solid conventions; symmetry multiplicity 2.

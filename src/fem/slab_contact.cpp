@@ -6,7 +6,7 @@
 #include "fem/nodal_fields.h"
 #include "fem/petsc_session.h"
 #include "fem/scene_mesh.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <algorithm>
 #include <chrono>
 #include <cmath>

@@ -1,7 +1,7 @@
 #include "fem/slice_contact.h"
 #include "fem/hertz_solve.h"
 #include "fem/petsc_session.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <array>
 #include <fmt/format.h>
 

@@ -1,5 +1,5 @@
 #include "fem/write_fields.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <dolfinx/io/XDMFFile.h>
 #include <fmt/format.h>
 #include <unistd.h>

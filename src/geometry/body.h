@@ -19,8 +19,15 @@ struct BodySpec
   double height_m = 2.0;  ///< cylinder height (reference: 2 r)
   int sections = 60;      ///< cylinder sides, UV-sphere sectors (reference: 60)
   int subdivisions = 3;   ///< icosphere subdivisions (reference: 3)
+  /// Read the body from this surface mesh (OBJ/STL/PLY/OFF) instead, when set.
+  std::string mesh_file;
 };
 
-/// Builds the body and checks it closed, outward and convex (InputError if not).
+/// Builds (or reads) the body and checks it closed, outward and convex
+/// (InputError naming the body or file if not).
 SurfaceMesh make_body(const BodySpec& spec);
+
+/// What the body is called in logs and results: the file, the roller with its
+/// family and genome, or the body's name.
+std::string body_label(const BodySpec& spec);
 } // namespace rollcheck::geometry

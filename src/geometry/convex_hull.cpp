@@ -1,5 +1,5 @@
 #include "geometry/convex_hull.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>

@@ -1,5 +1,5 @@
 #include "geometry/mesh_checks.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "geometry/mass_properties.h"
 #include <Eigen/Geometry>
 #include <fmt/format.h>

@@ -1,5 +1,5 @@
 #include "geometry/primitives.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <array>
 #include <cmath>
 #include <fmt/format.h>

@@ -1,5 +1,5 @@
 #include "geometry/read_mesh.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <algorithm>
 #include <array>
 #include <cstring>

@@ -1,6 +1,6 @@
 #include "geometry/tetrahedralize.h"
-#include "geometry/atomic_file.h"
-#include "geometry/error.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
 #include <cmath>
 #include <fmt/format.h>
 #include <gmsh.h>

@@ -1,6 +1,6 @@
 #include "geometry/two_circle_roller.h"
 #include "geometry/convex_hull.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "geometry/mesh_checks.h"
 #include <Eigen/Geometry>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "geometry/write_mesh.h"
-#include "geometry/atomic_file.h"
-#include "geometry/error.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cstring>

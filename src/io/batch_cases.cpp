@@ -1,5 +1,5 @@
 #include "io/batch_cases.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "io/case_hash.h"
 #include <algorithm>
 #include <fmt/format.h>

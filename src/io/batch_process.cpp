@@ -1,5 +1,5 @@
 #include "io/batch_process.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <cstring>
 #include <fcntl.h>
 #include <fmt/format.h>

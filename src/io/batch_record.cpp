@@ -1,6 +1,6 @@
 #include "io/batch_record.h"
-#include "geometry/atomic_file.h"
-#include "geometry/error.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
 #include <chrono>
 #include <cstring>
 #include <fcntl.h>

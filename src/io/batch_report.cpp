@@ -1,5 +1,5 @@
 #include "io/batch_report.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "io/batch_process.h"
 #include "rollcheck_version.h"
 #include <fmt/format.h>

@@ -1,5 +1,5 @@
 #include "io/batch_run.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "io/batch_process.h"
 #include "io/batch_progress.h"
 #include "io/batch_record.h"

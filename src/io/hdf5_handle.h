@@ -1,6 +1,6 @@
 #pragma once
 // RAII for HDF5 identifiers, shared by the HDF5 writers of the io layer.
-#include "geometry/error.h"
+#include "core/error.h"
 #include <fmt/format.h>
 #include <hdf5.h>
 #include <string>

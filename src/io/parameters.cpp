@@ -1,5 +1,5 @@
 #include "io/parameters.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <fmt/format.h>
@@ -64,6 +64,11 @@ void Parameters::set(const std::string& key, const Value& given, const std::stri
                                  to_text(given)));
   if (const double* x = std::get_if<double>(&value); x && !std::isfinite(*x))
     throw InputError(fmt::format("{}: '{}' must be finite, got {}", origin, key, *x));
+  if (const double* x = std::get_if<double>(&value); x && !p.bounds.contains(*x))
+    throw InputError(fmt::format("{}: '{}' must be {}{}, got {}", origin, key, p.bounds.describe(),
+                                 p.unit.empty() ? "" : " " + p.unit, *x));
+  if (const std::int64_t* n = std::get_if<std::int64_t>(&value); n && !p.bounds.contains(static_cast<double>(*n)))
+    throw InputError(fmt::format("{}: '{}' must be an integer {}, got {}", origin, key, p.bounds.describe(), *n));
   if (const std::string* s = std::get_if<std::string>(&value); s && !p.choices.empty()
       && std::find(p.choices.begin(), p.choices.end(), *s) == p.choices.end())
     throw InputError(fmt::format("{}: '{}' must be one of {}, got '{}'", origin, key, fmt::join(p.choices, "|"), *s));
@@ -103,10 +108,34 @@ void Parameters::set_text(const std::string& key, const std::string& text, const
   set(key, value, origin);
 }
 
-double Parameters::real(const std::string& key) const { return std::get<double>(values_.at(key)); }
-std::int64_t Parameters::integer(const std::string& key) const { return std::get<std::int64_t>(values_.at(key)); }
-bool Parameters::flag(const std::string& key) const { return std::get<bool>(values_.at(key)); }
-const std::string& Parameters::text(const std::string& key) const { return std::get<std::string>(values_.at(key)); }
+bool Bounds::contains(double x) const
+{
+  return (lower_open ? x > lower : x >= lower) && (upper_open ? x < upper : x <= upper);
+}
+
+std::string Bounds::describe() const
+{
+  const bool has_lower = std::isfinite(lower), has_upper = std::isfinite(upper);
+  if (has_lower && has_upper)
+    return fmt::format("in {}{:g}, {:g}{}", lower_open ? "(" : "[", lower, upper, upper_open ? ")" : "]");
+  if (has_lower)
+    return fmt::format("{} {:g}", lower_open ? ">" : ">=", lower);
+  if (has_upper)
+    return fmt::format("{} {:g}", upper_open ? "<" : "<=", upper);
+  return "finite";
+}
+
+const Value& Parameters::value(const std::string& key) const
+{
+  if (auto it = values_.find(key); it != values_.end())
+    return it->second;
+  throw std::logic_error(fmt::format("the '{}' scene has no parameter '{}'", schema_->kind, key));
+}
+
+double Parameters::real(const std::string& key) const { return std::get<double>(value(key)); }
+std::int64_t Parameters::integer(const std::string& key) const { return std::get<std::int64_t>(value(key)); }
+bool Parameters::flag(const std::string& key) const { return std::get<bool>(value(key)); }
+const std::string& Parameters::text(const std::string& key) const { return std::get<std::string>(value(key)); }
 
 nlohmann::json Parameters::to_json() const
 {
@@ -122,7 +151,9 @@ SchemaOptions::SchemaOptions(CLI::App* sub, const Schema& schema) : schema_(&sch
   for (const Parameter& p : schema.parameters)
   {
     const std::string unit = p.unit.empty() ? "" : fmt::format(" [{}]", p.unit);
-    const std::string help = fmt::format("{}{} (default: {})", p.help, unit, to_text(p.default_value));
+    const bool bounded = std::isfinite(p.bounds.lower) || std::isfinite(p.bounds.upper);
+    const std::string help = fmt::format("{}{} (default: {}{})", p.help, unit, to_text(p.default_value),
+                                         bounded ? "; " + p.bounds.describe() : "");
     if (std::holds_alternative<bool>(p.default_value))
     {
       switches_[p.key] = false;

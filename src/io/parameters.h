@@ -4,6 +4,7 @@
 // `--set key=value`), so the two cannot drift apart.
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -19,6 +20,18 @@ namespace rollcheck::io
 {
 using Value = std::variant<bool, std::int64_t, double, std::string>;
 
+/// Valid range of a number (an integer's too): lower <= x <= upper, or strict
+/// where the end is open. Checked in Parameters::set, the one place for it.
+struct Bounds
+{
+  double lower = -std::numeric_limits<double>::infinity();
+  double upper = std::numeric_limits<double>::infinity();
+  bool lower_open = false;
+  bool upper_open = false;
+  bool contains(double x) const;
+  std::string describe() const; ///< "> 0", "in [0, 1]", ...
+};
+
 struct Parameter
 {
   std::string key;     ///< case-file key, snake_case with its unit: radius_m
@@ -27,6 +40,7 @@ struct Parameter
   std::string unit;    ///< SI unit, or "" for a pure number
   std::string help;    ///< what it is and where the default comes from
   std::vector<std::string> choices = {}; ///< allowed strings, if restricted
+  Bounds bounds = {};                    ///< valid range of a number
 };
 
 struct Schema
@@ -48,6 +62,8 @@ public:
   std::int64_t integer(const std::string& key) const;
   bool flag(const std::string& key) const;
   const std::string& text(const std::string& key) const;
+  /// The value of `key`; std::logic_error naming it if the schema has no such key.
+  const Value& value(const std::string& key) const;
   const Schema& schema() const { return *schema_; }
   nlohmann::json to_json() const;
 

@@ -1,7 +1,7 @@
 #include "io/results_store.h"
 #include "io/hdf5_handle.h"
-#include "geometry/atomic_file.h"
-#include "geometry/error.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
 #include "rollcheck_version.h"
 #include <fmt/format.h>
 #include <hdf5.h>

@@ -1,7 +1,7 @@
 #include "io/search_store.h"
 #include "io/hdf5_handle.h"
-#include "geometry/atomic_file.h"
-#include "geometry/error.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
 #include <cmath>
 #include <fmt/format.h>
 #include <hdf5.h>

@@ -1,5 +1,5 @@
 #include "oracle/approximate_oracle.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "oracle/heights.h"
 #include "oracle/support_search.h"
 #include <cmath>

@@ -1,5 +1,5 @@
 #include "oracle/contact_density.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "geometry/face_areas.h"
 #include "geometry/mass_properties.h"
 #include <Eigen/Geometry>

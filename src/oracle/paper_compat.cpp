@@ -1,5 +1,5 @@
 #include "oracle/paper_compat.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <fmt/format.h>
 
 namespace rollcheck::oracle

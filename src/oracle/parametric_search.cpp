@@ -1,5 +1,5 @@
 #include "oracle/parametric_search.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "oracle/contact_distribution.h"
 #include "oracle/parallel_for.h"
 #include <algorithm>

@@ -1,5 +1,5 @@
 #include "oracle/rigid_body_oracle.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "oracle/heights.h"
 #include "oracle/support_search.h"
 #include <Eigen/Dense>

@@ -1,5 +1,5 @@
 #include "oracle/rolling_body.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "geometry/face_areas.h"
 #include "geometry/face_centroids.h"
 #include <algorithm>

@@ -1,5 +1,5 @@
 #include "oracle/rolling_dynamics.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "geometry/mass_properties.h"
 #include <Eigen/Geometry>
 #include <Eigen/Eigenvalues>

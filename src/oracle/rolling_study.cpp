@@ -1,5 +1,5 @@
 #include "oracle/rolling_study.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include "geometry/mass_properties.h"
 #include "oracle/contact_density.h"
 #include "oracle/rolling_dynamics.h"

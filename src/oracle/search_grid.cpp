@@ -1,5 +1,5 @@
 #include "oracle/search_grid.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <cmath>
 #include <fmt/format.h>
 

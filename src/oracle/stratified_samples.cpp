@@ -1,5 +1,5 @@
 #include "oracle/stratified_samples.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <fmt/format.h>
 #include <random>
 

@@ -1,5 +1,5 @@
 #include "oracle/support_set.h"
-#include "geometry/error.h"
+#include "core/error.h"
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 // Every result file is written whole or not at all: the writer fills a
 // temporary file beside the target, which is renamed over it only on success.
-// Lives in the base layer because every layer writes files.
+// Lives in core because every layer writes files.
 #include <filesystem>
 #include <functional>
 

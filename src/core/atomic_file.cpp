@@ -1,5 +1,5 @@
-#include "geometry/atomic_file.h"
-#include "geometry/error.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
 #include <fmt/format.h>
 #include <unistd.h>
 

@@ -1,4 +1,6 @@
 #pragma once
+// Layer: core. Owns what every layer shares and nothing else: the error types
+// (error.h) and the atomic writer (atomic_file.h). Depends on the standard library only.
 // The two failure kinds every layer raises; the CLI maps them to exit codes
 // (InputError -> 2, ComputationError -> 1).
 #include <stdexcept>
