@@ -33,6 +33,48 @@ std::string to_text(const Value& v)
       },
       v);
 }
+/// The [[check]] tables of a case file (io/case_checks.h), each validated.
+std::vector<CaseCheck> read_checks(const toml::table& table, const std::string& name)
+{
+  std::vector<CaseCheck> checks;
+  const toml::node* node = table.get("check");
+  if (!node)
+    return checks;
+  const toml::array* array = node->as_array();
+  if (!array || !array->is_array_of_tables())
+    throw InputError(fmt::format("case file '{}': 'check' must be an array of tables ([[check]])", name));
+  for (std::size_t i = 0; i < array->size(); ++i)
+  {
+    const toml::table& t = *array->get(i)->as_table();
+    const std::string where = fmt::format("case file '{}': check {}", name, i + 1);
+    for (const auto& [key, value] : t)
+      if (key.str() != "pointer" && key.str() != "reference" && key.str() != "max_abs" && key.str() != "value"
+          && key.str() != "rel_tol" && key.str() != "expect")
+        throw InputError(fmt::format("{}: unknown key '{}' (pointer, reference, max_abs, value, rel_tol, expect)",
+                                     where, key.str()));
+    CaseCheck c;
+    c.pointer = t["pointer"].value_or(std::string());
+    c.reference = t["reference"].value_or(std::string());
+    if (c.pointer.empty() || c.pointer[0] != '/')
+      throw InputError(fmt::format("{}: 'pointer' must be a JSON pointer such as \"/p0_error\"", where));
+    if (c.reference.empty())
+      throw InputError(fmt::format("{}: 'reference' must say what the value is compared with", where));
+    c.max_abs = t["max_abs"].value<double>();
+    c.value = t["value"].value<double>();
+    c.rel_tol = t["rel_tol"].value_or(0.0);
+    c.expect = t["expect"].value<bool>();
+    const int criteria = c.max_abs.has_value() + c.value.has_value() + c.expect.has_value();
+    if (criteria != 1)
+      throw InputError(fmt::format("{}: give exactly one of max_abs, value (with rel_tol) or expect", where));
+    if ((c.max_abs && !(*c.max_abs >= 0)) || (c.value && (!std::isfinite(*c.value) || *c.value == 0))
+        || !(c.rel_tol >= 0) || (c.value && t["rel_tol"].value<double>() == std::nullopt))
+      throw InputError(fmt::format("{}: max_abs and rel_tol must be >= 0; value must be finite and non-zero, with "
+                                   "its rel_tol",
+                                   where));
+    checks.push_back(std::move(c));
+  }
+  return checks;
+}
 } // namespace
 
 const Parameter& Schema::find(const std::string& key, const std::string& origin) const
@@ -202,8 +244,9 @@ CaseFile read_case_file(const std::filesystem::path& path)
                                  e.source().begin.line, e.description()));
   }
   for (const auto& [key, node] : table)
-    if (key.str() != "scene")
-      throw InputError(fmt::format("case file '{}': unknown top-level key '{}' (everything goes under [scene])",
+    if (key.str() != "scene" && key.str() != "check")
+      throw InputError(fmt::format("case file '{}': unknown top-level key '{}' (the scene goes under [scene], "
+                                   "its checks under [[check]])",
                                    name, key.str()));
   const toml::table* scene = table["scene"].as_table();
   if (!scene)
@@ -234,6 +277,7 @@ CaseFile read_case_file(const std::filesystem::path& path)
   }
   if (file.kind.empty())
     throw InputError(fmt::format("case file '{}': [scene] has no 'kind'", name));
+  file.checks = read_checks(table, name);
   return file;
 }
 

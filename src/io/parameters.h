@@ -3,6 +3,7 @@
 // the subcommand's options (--flag) and the case file's keys ([scene] table,
 // `--set key=value`), so the two cannot drift apart.
 #include <cstdint>
+#include "io/case_checks.h"
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -93,6 +94,7 @@ struct CaseFile
 {
   std::string kind;
   std::map<std::string, Value> values;
+  std::vector<CaseCheck> checks; ///< the [[check]] tables (io/case_checks.h)
 };
 CaseFile read_case_file(const std::filesystem::path& path);
 Parameters resolve_case(const CaseFile& file, const Schema& schema, const std::vector<std::string>& overrides,
