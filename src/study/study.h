@@ -3,6 +3,7 @@
 // FEM-SDS over the rolling loop (fem_sds.h), the quirk table and the spin-nudge
 // band of the paper-compatible oracles, score_body() (every score of one body
 // under one oracle, used by oracle, search, tests and the benchmark), and the
-// audit's claims as data with their runner. Each is a library function with a
+// audit's claims as data with their runner, and the continuous search of the
+// two-circle family (optimize.h: NLopt, noise, finite differences, sweeps). Each is a library function with a
 // result struct and its to_json; the CLI only declares options, calls and prints.
 // Depends on geometry, oracle, contact, fem and core; never on io or cli.
