@@ -2,11 +2,14 @@
 #include "core/error.h"
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <fmt/format.h>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 namespace rollcheck::geometry
@@ -68,12 +71,36 @@ double parse_double(const std::string& token, const std::string& where)
   }
 }
 
+bool fits_int(double value)
+{
+  return value >= std::numeric_limits<int>::min() && value <= std::numeric_limits<int>::max();
+}
+
 int parse_int(const std::string& token, const std::string& where)
 {
   const double value = parse_double(token, where);
-  if (value != static_cast<int>(value))
-    throw InputError(fmt::format("{}: '{}' is not an integer", where, token));
+  if (!fits_int(value) || value != std::trunc(value))
+    throw InputError(fmt::format("{}: '{}' is not an integer in the range of int", where, token));
   return static_cast<int>(value);
+}
+
+/// PLY lists hold integers as any numeric type; truncated like a C cast, but
+/// a value out of int's range is bad input, not undefined behaviour.
+int checked_int(double value, const std::string& where)
+{
+  if (!fits_int(value))
+    throw InputError(fmt::format("{}: {} is not an index or count in the range of int", where, value));
+  return static_cast<int>(value);
+}
+
+/// A count read from a file sizes an allocation only once the rest of the
+/// file can hold that many items: a few bytes must not claim gigabytes.
+void check_declared_count(long long count, std::size_t available, const std::string& where, std::string_view items,
+                          std::string_view units)
+{
+  if (count > 0 && static_cast<unsigned long long>(count) > available)
+    throw InputError(fmt::format("{} declares {} {} but the rest of the file holds only {} {}", where, count, items,
+                                 available, units));
 }
 
 SurfaceMesh read_obj(std::istream& in, const std::string& name)
@@ -140,11 +167,13 @@ SurfaceMesh read_off(std::istream& in, const std::string& name)
     b.vertices.push_back({parse_double(next(), name), parse_double(next(), name), parse_double(next(), name)});
   for (int i = 0; i < nf; ++i)
   {
+    const std::string where = fmt::format("{}: face {}", name, i + 1);
     const int n = parse_int(next(), name);
+    check_declared_count(n, tokens.size() - at, where, "vertices", "values");
     std::vector<int> poly(static_cast<std::size_t>(std::max(n, 0)));
     for (int& v : poly)
       v = parse_int(next(), name);
-    b.add_polygon(poly, fmt::format("{}: face {}", name, i + 1));
+    b.add_polygon(poly, where);
   }
   return b.finish(name);
 }
@@ -268,7 +297,10 @@ SurfaceMesh read_ply(const std::string& bytes, const std::string& name)
   }
   if (format != "ascii" && format != "binary_little_endian")
     throw InputError(fmt::format("mesh file '{}': PLY format '{}' is not supported", name, format));
-  std::size_t pos = bytes.find('\n', header_end) + 1;
+  const auto header_line_end = bytes.find('\n', header_end);
+  if (header_line_end == std::string::npos)
+    throw InputError(fmt::format("mesh file '{}': PLY header line 'end_header' does not end", name));
+  std::size_t pos = header_line_end + 1;
   std::istringstream text(format == "ascii" ? bytes.substr(pos) : std::string());
   auto size_of = [&](const std::string& t) -> std::size_t {
     if (t == "char" || t == "uchar" || t == "int8" || t == "uint8")
@@ -309,6 +341,10 @@ SurfaceMesh read_ply(const std::string& bytes, const std::string& name)
   };
   Builder b;
   for (const Element& e : elements)
+  {
+    // Every item takes at least one byte (a list's count, a value).
+    check_declared_count(e.count, bytes.size() - pos, fmt::format("{}: element '{}'", name, e.name),
+                         "items", "bytes");
     for (long i = 0; i < e.count; ++i)
     {
       std::array<double, 3> p{};
@@ -316,12 +352,14 @@ SurfaceMesh read_ply(const std::string& bytes, const std::string& name)
       {
         if (prop.type.rfind("list:", 0) == 0)
         {
-          const int n = static_cast<int>(read_value(prop.count_type));
+          const std::string where = fmt::format("{}: {} {}", name, e.name, i + 1);
+          const int n = checked_int(read_value(prop.count_type), where);
+          check_declared_count(n, bytes.size() - pos, where, "list entries", "bytes");
           std::vector<int> poly(static_cast<std::size_t>(std::max(n, 0)));
           for (int& v : poly)
-            v = static_cast<int>(read_value(prop.type.substr(5)));
+            v = checked_int(read_value(prop.type.substr(5)), where);
           if (e.name == "face" && (pname == "vertex_indices" || pname == "vertex_index"))
-            b.add_polygon(poly, fmt::format("{}: face {}", name, i + 1));
+            b.add_polygon(poly, where);
           continue;
         }
         const double value = read_value(prop.type);
@@ -331,6 +369,7 @@ SurfaceMesh read_ply(const std::string& bytes, const std::string& name)
       if (e.name == "vertex")
         b.vertices.push_back(p);
     }
+  }
   return b.finish(name);
 }
 } // namespace

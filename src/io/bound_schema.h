@@ -38,7 +38,7 @@ public:
   {
     add({std::move(key), std::move(flag), 0.0, std::move(unit), std::move(help), {}, bounds},
         [access, scale](Settings& s, const Value& v) { std::invoke(access, s) = std::get<double>(v) * scale; },
-        [access, scale](const Settings& s) -> Value { return std::invoke(access, s) / scale; });
+        [access, scale](const Settings& s) -> Value { return read(access, s) / scale; });
     return *this;
   }
 
@@ -55,7 +55,7 @@ public:
     bounds.upper = std::min({bounds.upper, static_cast<double>(std::numeric_limits<T>::max()), 9007199254740992.0});
     add({std::move(key), std::move(flag), std::int64_t{0}, std::move(unit), std::move(help), {}, bounds},
         [access](Settings& s, const Value& v) { std::invoke(access, s) = static_cast<T>(std::get<std::int64_t>(v)); },
-        [access](const Settings& s) -> Value { return static_cast<std::int64_t>(std::invoke(access, s)); });
+        [access](const Settings& s) -> Value { return static_cast<std::int64_t>(read(access, s)); });
     return *this;
   }
 
@@ -64,7 +64,7 @@ public:
   {
     add({std::move(key), std::move(flag), false, "", std::move(help)},
         [access](Settings& s, const Value& v) { std::invoke(access, s) = std::get<bool>(v); },
-        [access](const Settings& s) -> Value { return static_cast<bool>(std::invoke(access, s)); });
+        [access](const Settings& s) -> Value { return static_cast<bool>(read(access, s)); });
     return *this;
   }
 
@@ -75,7 +75,7 @@ public:
   {
     add({std::move(key), std::move(flag), std::string(), "", std::move(help), std::move(choices)},
         [access](Settings& s, const Value& v) { std::invoke(access, s) = std::get<std::string>(v); },
-        [access](const Settings& s) -> Value { return std::string(std::invoke(access, s)); });
+        [access](const Settings& s) -> Value { return std::string(read(access, s)); });
     return *this;
   }
 
@@ -95,7 +95,7 @@ public:
         },
         [access, names](const Settings& s) -> Value {
           for (const auto& [name, value] : names)
-            if (value == std::invoke(access, s))
+            if (value == read(access, s))
               return name;
           return std::string();
         });
@@ -119,7 +119,7 @@ public:
     for (std::size_t i = 0; i < group.schema().parameters.size(); ++i)
       add(group.schema().parameters[i],
           [set = group.setter(i), access](Settings& s, const Value& v) { set(std::invoke(access, s), v); },
-          [get = group.getter(i), access](const Settings& s) { return get(std::invoke(access, s)); });
+          [get = group.getter(i), access](const Settings& s) { return get(read(access, s)); });
     return *this;
   }
 
@@ -137,6 +137,15 @@ public:
   const std::function<Value(const Settings&)>& getter(std::size_t i) const { return getters_[i]; }
 
 private:
+  /// The member `access` leads to, read from a const Settings: accessors are
+  /// written for Settings& (they also set), so they read a copy.
+  template <class Access>
+  static auto read(const Access& access, const Settings& s)
+  {
+    Settings copy = s;
+    return std::remove_cvref_t<std::invoke_result_t<Access, Settings&>>(std::invoke(access, copy));
+  }
+
   /// The default is the member's value in Settings{}: the library struct is
   /// the only place a default is written.
   void add(Parameter parameter, std::function<void(Settings&, const Value&)> set,

@@ -33,6 +33,19 @@ std::string to_text(const Value& v)
       },
       v);
 }
+bool valid_utf8(const std::string& text)
+{
+  try
+  {
+    (void)nlohmann::json(text).dump();
+    return true;
+  }
+  catch (const nlohmann::json::type_error&)
+  {
+    return false;
+  }
+}
+
 /// The [[check]] tables of a case file (io/case_checks.h), each validated.
 std::vector<CaseCheck> read_checks(const toml::table& table, const std::string& name)
 {
@@ -111,6 +124,8 @@ void Parameters::set(const std::string& key, const Value& given, const std::stri
                                  p.unit.empty() ? "" : " " + p.unit, *x));
   if (const std::int64_t* n = std::get_if<std::int64_t>(&value); n && !p.bounds.contains(static_cast<double>(*n)))
     throw InputError(fmt::format("{}: '{}' must be an integer {}, got {}", origin, key, p.bounds.describe(), *n));
+  if (const std::string* s = std::get_if<std::string>(&value); s && !valid_utf8(*s))
+    throw InputError(fmt::format("{}: '{}' is not valid UTF-8 text", origin, key));
   if (const std::string* s = std::get_if<std::string>(&value); s && !p.choices.empty()
       && std::find(p.choices.begin(), p.choices.end(), *s) == p.choices.end())
     throw InputError(fmt::format("{}: '{}' must be one of {}, got '{}'", origin, key, fmt::join(p.choices, "|"), *s));
@@ -183,8 +198,8 @@ nlohmann::json Parameters::to_json() const
 {
   nlohmann::json j = nlohmann::json::object();
   j["kind"] = schema_->kind;
-  for (const auto& [key, value] : values_)
-    std::visit([&](const auto& x) { j[key] = x; }, value);
+  for (const auto& entry : values_)
+    std::visit([&](const auto& x) { j[entry.first] = x; }, entry.second);
   return j;
 }
 
