@@ -1,21 +1,30 @@
 """The report of a rollcheck results store: report.md (the PNGs beside it)
-and report.html (the same, PNGs embedded, one self-contained file).
+and report.html (the same, PNGs embedded: one self-contained file), rendered
+from templates/report.md.j2 and templates/report.html.j2 (Jinja2).
 
-Sections: the cases and their status; every plot of the plot_*.py modules
-that the store has data for (each says what it needs when it has none); per
-scene kind, the scalar results and the parameters that vary; the files the
-cases wrote (FEM fields as XDMF). `rollcheck report --from STORE` runs it in
-a temporary folder that replaces the report folder when it succeeds.
+In order (docs/report.md): 1. verdicts: the validation checks (--validation,
+the JSON `rollcheck validate` writes) and the status of every case; 2. the
+audit of the preprint's claims (--audit, the JSON of `rollcheck audit
+--json`); 3. the plots, each with what it shows and what to conclude; 4. FEM
+against analytic SDS; appendix: the raw scalar results and parameters per
+scene kind, the files the cases wrote. An optional input not given is a
+section saying how to get it; a key missing from an input is an error naming
+it (exit 1). `rollcheck report --from STORE` runs this in a temporary folder
+that replaces the report folder when it succeeds.
 
     /usr/bin/python3 postprocess/make_report.py --store STORE --out DIR [--rollcheck BINARY]
+        [--validation VALIDATION.json] [--audit AUDIT.json]
 """
 import argparse
 import base64
-import html
+import json
 import os
+import re
 import sys
-import traceback
+from dataclasses import dataclass, field
 
+import jinja2
+import markupsafe
 import numpy as np
 
 import plot_cds_convergence
@@ -23,14 +32,19 @@ import plot_contact_density
 import plot_fem_sds
 import plot_fem_speed_error
 import plot_pressure_profile
-from rollcheck_store import Skip, is_number, load_cases, scalars, walk
+from rollcheck_store import MissingKey, Skip, count, is_number, load_cases, require
 
-PLOTS = (plot_cds_convergence, plot_contact_density, plot_pressure_profile, plot_fem_speed_error, plot_fem_sds)
-WIDE = 8          # more result columns than this: one row per quantity instead
-TABLE_TEXT = 40   # longer strings go below a table as notes
+PLOTS = (plot_pressure_profile, plot_fem_speed_error, plot_cds_convergence, plot_contact_density)
+TEMPLATES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "templates")
+WIDE = 8          # more cases of one scene kind than this: the raw table is split
+NOTE = 60         # a longer text result goes below its table, as a note
+NUMBER = re.compile(r"^[-+]?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?$|^-?inf$")
+VERDICT_CLASS = {"holds": "pass", "holds only in paper-compatible mode": "partial", "does not hold": "fail",
+                 "not built yet": "none"}
 
 
 def cell(v):
+    """A value as table text."""
     if v is None:
         return "-"
     if isinstance(v, bool):
@@ -44,150 +58,172 @@ def cell(v):
     return str(v).replace("\n", " ")
 
 
-class Report:
-    """Blocks (heading, text, table, image) rendered to Markdown and to HTML."""
+@dataclass
+class Table:
+    """A table for the templates: text cells, and a CSS class per row ("pass", "fail", ...)."""
+    header: list
+    rows: list
+    row_class: list = field(default_factory=list)
 
-    def __init__(self, out_dir):
-        self.out_dir, self.blocks = out_dir, []
-
-    def heading(self, level, text):
-        self.blocks.append(("heading", level, text))
-
-    def text(self, text):
-        self.blocks.append(("text", text))
-
-    def table(self, header, rows):
-        self.blocks.append(("table", header, [[cell(v) for v in r] for r in rows]))
-
-    def image(self, png, caption):
-        self.blocks.append(("image", png, caption))
-
-    def markdown(self):
-        out = []
-        for b in self.blocks:
-            if b[0] == "heading":
-                out.append("#" * b[1] + " " + b[2])
-            elif b[0] == "text":
-                out.append(b[1])
-            elif b[0] == "table":
-                esc = lambda s: s.replace("|", "\\|")
-                out.append("| " + " | ".join(map(esc, b[1])) + " |")
-                out.append("|" + "|".join("---" for _ in b[1]) + "|")
-                out.extend("| " + " | ".join(map(esc, r)) + " |" for r in b[2])
-            elif b[0] == "image":
-                out.append(f"![{b[2]}]({b[1]})\n\n*{b[2]}*")
-            out.append("")
-        return "\n".join(out)
-
-    def html(self, title):
-        out = [f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>{html.escape(title)}</title><style>"
-               "body{font-family:sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;color:#222}"
-               "table{border-collapse:collapse;margin:0.5em 0 1.5em;font-size:0.85em}"
-               "th,td{border:1px solid #ccc;padding:3px 7px;text-align:left}th{background:#eee}"
-               "td.n{text-align:right;font-family:monospace}img{max-width:100%;border:1px solid #ddd}"
-               "figcaption{font-style:italic;font-size:0.9em;margin-bottom:2em}</style></head><body>"]
-        numeric = lambda s: s.replace(".", "", 1).replace("e", "", 1).replace("-", "").replace("+", "").isdigit()
-        for b in self.blocks:
-            if b[0] == "heading":
-                out.append(f"<h{b[1]}>{html.escape(b[2])}</h{b[1]}>")
-            elif b[0] == "text":
-                out.append(f"<p>{html.escape(b[1]).replace('`', '')}</p>")
-            elif b[0] == "table":
-                out.append("<table><tr>" + "".join(f"<th>{html.escape(h)}</th>" for h in b[1]) + "</tr>")
-                for r in b[2]:
-                    out.append("<tr>" + "".join(
-                        f"<td class='n'>{html.escape(v)}</td>" if numeric(v) else f"<td>{html.escape(v)}</td>"
-                        for v in r) + "</tr>")
-                out.append("</table>")
-            elif b[0] == "image":
-                with open(os.path.join(self.out_dir, b[1]), "rb") as f:
-                    data = base64.b64encode(f.read()).decode("ascii")
-                out.append(f"<figure><img src='data:image/png;base64,{data}' alt='{html.escape(b[2])}'>"
-                           f"<figcaption>{html.escape(b[2])}</figcaption></figure>")
-        out.append("</body></html>")
-        return "\n".join(out)
+    def __post_init__(self):
+        self.rows = [[cell(v) for v in r] for r in self.rows]
+        self.row_class = self.row_class or [""] * len(self.rows)
 
 
-def overview(report, store, root, cases):
-    report.heading(1, "rollcheck report")
-    report.text(f"Store `{store}` (layout {root.get('layout', '?')}), rollcheck {root.get('rollcheck_version', '?')}, "
-                f"written {root.get('created_utc', '?')}: {root.get('n_cases', len(cases))} case(s), "
-                f"{root.get('n_ok', '?')} ok, {root.get('n_failed', '?')} failed, "
-                f"{root.get('n_not_run', 0)} not run.")
-    report.heading(2, "Cases")
-    report.table(["case", "scene", "status", "wall s", "message"],
+class BadInput(Exception):
+    """An optional input that cannot be read or contradicts itself."""
+
+
+def read_json(path, option):
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, json.JSONDecodeError) as error:
+        raise BadInput(f"{option} '{path}': {error}") from None
+
+
+def validation(path):
+    """The verdicts of `rollcheck validate`: counts and a table, failed checks first."""
+    where = f"--validation {path}"
+    data = read_json(path, "--validation")
+    checks = require(data, "checks", where)
+    keys = ("case", "kind", "pointer", "criterion", "measured", "reference")
+    rows = []
+    for k, check in enumerate(checks):
+        at = f"{where}: checks/{k}"
+        rows.append((bool(require(check, "passed", at)), [require(check, key, at) for key in keys]))
+    passed = sum(ok for ok, _ in rows)
+    stated = (require(data, "passed", where), require(data, "failed", where))
+    if stated != (passed, len(rows) - passed):
+        raise BadInput(f"{where}: says {stated[0]} passed and {stated[1]} failed, but its checks hold "
+                         f"{passed} passed and {len(rows) - passed} failed")
+    rows.sort(key=lambda r: r[0])
+    return {"passed": passed, "failed": len(rows) - passed,
+            "table": Table(["result", "case", "scene", "value (JSON pointer)", "criterion", "measured", "reference"],
+                           [["PASS" if ok else "FAIL"] + r for ok, r in rows],
+                           ["pass" if ok else "fail" for ok, _ in rows])}
+
+
+def audit_cell(cell_json, at):
+    """One recomputation as `rollcheck audit` prints it (study/audit_table.cpp, cell_text)."""
+    if not require(cell_json, "applicable", at):
+        return "n/a"
+    if not require(cell_json, "built", at):
+        return "not built yet"
+    mark = "" if require(cell_json, "holds", at) else " (✗)"
+    return f"{require(cell_json, 'value', at)}{mark} [{', '.join(require(cell_json, 'commands', at))}]"
+
+
+def audit(path):
+    """The claim table of `rollcheck audit --json` (keys of study::to_json(AuditTable))."""
+    where = f"--audit {path}"
+    data = read_json(path, "--audit")
+    modes = [(require(m, "mode", f"{where}: modes/{k}"), require(m, "meaning", f"{where}: modes/{k}"))
+             for k, m in enumerate(require(data, "modes", where))]
+    rows, classes, rules = [], [], []
+    for k, claim in enumerate(require(data, "claims", where)):
+        at = f"{where}: claims/{k}"
+        cells = require(claim, "recomputations", at)
+        verdict = require(claim, "verdict", at)
+        rows.append([require(claim, "claim", at), verdict, require(claim, "paper_value", at)]
+                    + [audit_cell(cells[m], f"{at}/recomputations/{m}") if m in cells else "n/a" for m, _ in modes])
+        classes.append(VERDICT_CLASS.get(verdict, ""))
+        note = require(claim, "note", at)
+        rules.append(f"{rows[-1][0]}: {require(claim, 'rule', at)}" + (f" {note}" if note else ""))
+    commands = []
+    for k, command in enumerate(require(data, "commands", where)):
+        at = f"{where}: commands/{k}"
+        reads = ", ".join(f"{p} = {cell(v)}" for p, v in require(command, "reads", at).items())
+        commands.append([require(command, "id", at), require(command, "command", at), reads])
+    verdicts = [r[1] for r in rows]
+    tally = ", ".join(f"{v}: {verdicts.count(v)}" for v in VERDICT_CLASS if verdicts.count(v))
+    return {"summary": f"{count(len(rows), 'claim')}: {tally}.", "modes": modes, "rules": rules,
+            "verdict_rules": require(data, "verdict_rules", where),
+            "quick": require(data, "quick", where), "wall_s": require(data, "wall_s", where),
+            "table": Table(["claim", "verdict", "paper"] + [m for m, _ in modes], rows, classes),
+            "commands": Table(["id", "command", "values read"], commands)}
+
+
+def cases_table(cases):
+    return Table(["case", "scene", "status", "wall s", "message"],
                  [[c.name, c.kind or "-", c.attrs.get("status", "?"),
                    f"{c.attrs['wall_s']:.2f}" if is_number(c.attrs.get("wall_s")) else "-",
-                   c.attrs.get("message", "")] for c in cases])
+                   c.attrs.get("message", "")] for c in cases],
+                 ["" if c.ok else "fail" for c in cases])
 
 
-def plots(report, cases, out_dir):
-    report.heading(2, "Plots")
-    for module in PLOTS:
-        try:
-            for png, caption in module.draw(cases, out_dir):
-                report.image(png, caption)
-        except Skip as note:
-            report.text(f"**{module.TITLE}**: not drawn, {note}.")
-        except Exception:
-            traceback.print_exc()
-            report.text(f"**{module.TITLE}**: FAILED to draw: {traceback.format_exc().splitlines()[-1]}")
+def figures(module, cases, out_dir):
+    """A plot module's figures, or the stated reason it drew none."""
+    try:
+        return {"title": module.TITLE, "figures": module.draw(cases, out_dir), "skip": None}
+    except Skip as note:
+        return {"title": module.TITLE, "figures": [], "skip": str(note).rstrip(".") + "."}
 
 
-def table_values(summary):
-    """The summary's top-level scalars, and its lists of strings (flags, notes) joined."""
-    values = scalars(summary)
-    for k, v in summary.items():
-        if isinstance(v, list) and all(isinstance(x, str) for x in v):
-            values[k] = ", ".join(v) if v else "-"
-    return values
-
-
-def results_by_kind(report, cases):
+def raw_results(cases):
+    """Per scene kind: a table of every case's top-level results, and its parameters (common, varying)."""
     kinds = []
     for c in cases:
         if c.ok and c.kind not in kinds:
             kinds.append(c.kind)
+    out = []
     for kind in kinds:
         group = [c for c in cases if c.ok and c.kind == kind]
-        report.heading(2, f"Scene '{kind}': {len(group)} case(s)")
-        values = [table_values(c.summary) for c in group]
-        keys, notes = [], {}
-        for v in values:
-            for k, x in v.items():
-                if isinstance(x, str) and len(x) > TABLE_TEXT:
-                    notes.setdefault((k, x), None)
-                elif k not in keys:
-                    keys.append(k)
-        if len(keys) > WIDE:
-            for start in range(0, len(group), WIDE - 1):
-                part = slice(start, start + WIDE - 1)
-                report.table(["quantity"] + [c.name for c in group[part]],
-                             [[k] + [v.get(k) for v in values[part]] for k in keys])
-        elif keys:
-            report.table(["case"] + keys, [[c.name] + [v.get(k) for k in keys] for c, v in zip(group, values)])
-        for k, x in notes:
-            report.text(f"{k}: {x}")
-        shapes = {p: v.shape for p, v in walk(group[0].summary) if isinstance(v, np.ndarray) and v.ndim > 0}
-        if shapes:
-            report.text("Arrays in each case's summary (in the store): " + ", ".join(
-                f"{p} ({'x'.join(map(str, s))})" for p, s in shapes.items()) + ".")
-        params = [c.parameters for c in group]
-        names = [k for k in params[0] if k != "kind"]
-        varying = [k for k in names if len({cell(p.get(k)) for p in params}) > 1]
-        constant = [k for k in names if k not in varying]
-        report.text("Parameters common to these cases: "
-                    + ", ".join(f"{k} = {cell(params[0][k]) or chr(34) * 2}" for k in constant) + ".")
-        if varying:
-            report.table(["case"] + varying, [[c.name] + [c.parameters.get(k) for k in varying] for c in group])
+        values = [{k: v for k, v in c.summary.items() if not isinstance(v, (dict, list, np.ndarray))}
+                  for c in group]
+        notes = dict.fromkeys((k, v) for r in values for k, v in r.items() if isinstance(v, str) and len(v) > NOTE)
+        keys = list(dict.fromkeys(k for v in values for k, x in v.items() if (k, x) not in notes))
+        tables = [Table(["quantity"] + [c.name for c in group[i:i + WIDE]],
+                        [[k] + [v.get(k) for v in values[i:i + WIDE]] for k in keys])
+                  for i in range(0, len(group), WIDE)]
+        nested = sorted({k for c in group for k, v in c.summary.items() if isinstance(v, (dict, list, np.ndarray))})
+        names = [k for k in group[0].parameters if k != "kind"]
+        varying = [k for k in names if len({cell(c.parameters.get(k)) for c in group}) > 1]
+        out.append({"kind": kind, "title": f"Scene '{kind}': {count(len(group), 'case')}", "tables": tables,
+                    "notes": [f"{k}: {v}" for k, v in notes], "nested": nested,
+                    "common": ", ".join(f"{k} = {cell(group[0].parameters[k])}" for k in names if k not in varying),
+                    "varying": Table(["case"] + varying, [[c.name] + [c.parameters.get(k) for k in varying]
+                                                          for c in group]) if varying else None})
+    return out
 
 
-def files(report, cases):
-    rows = [[c.name, f] for c in cases for f in c.files]
-    if rows:
-        report.heading(2, "Files written by the cases")
-        report.text("Paths relative to the store's folder; XDMF files open in ParaView.")
-        report.table(["case", "file"], rows)
+def context(args, root, cases):
+    """Everything the templates show, computed from the inputs."""
+    ok = sum(c.ok for c in cases)
+    return {
+        "store": args.store, "layout": root.get("layout", "?"), "version": root.get("rollcheck_version", "?"),
+        "created": root.get("created_utc", "?"),
+        "case_summary": f"{count(len(cases), 'case')}: {ok} ok, {len(cases) - ok} not ok",
+        "cases_ok": ok == len(cases), "cases": cases_table(cases),
+        "validation": validation(args.validation) if args.validation else None,
+        "audit": audit(args.audit) if args.audit else None,
+        "plots": [figures(m, cases, args.out) for m in PLOTS],
+        "fem_sds": figures(plot_fem_sds, cases, args.out),
+        "fem_sds_table": Table(*plot_fem_sds.table(cases)),
+        "raw": raw_results(cases),
+        "files": Table(["case", "file"], [[c.name, f] for c in cases for f in c.files]),
+    }
+
+
+def render(values, out_dir):
+    """report.md and report.html from the templates."""
+    env = jinja2.Environment(loader=jinja2.FileSystemLoader(TEMPLATES), undefined=jinja2.StrictUndefined,
+                             trim_blocks=True, lstrip_blocks=True, keep_trailing_newline=True)
+
+    def data_uri(png):
+        with open(os.path.join(out_dir, png), "rb") as f:
+            return "data:image/png;base64," + base64.b64encode(f.read()).decode("ascii")
+    env.filters["data_uri"] = data_uri
+    env.filters["md_cell"] = lambda s: str(s).replace("|", "\\|")
+    env.filters["numeric"] = lambda s: bool(NUMBER.match(s))
+    # Markdown `code` in texts written for Markdown (the audit's), as HTML.
+    env.filters["ticks"] = lambda s: markupsafe.Markup(re.sub(r"`([^`]+)`", r"<code>\1</code>",
+                                                               str(markupsafe.escape(s))))
+    for name, autoescape in (("report.md", False), ("report.html", True)):
+        env.autoescape = autoescape
+        text = env.get_template(name + ".j2").render(**values)
+        with open(os.path.join(out_dir, name), "w") as f:
+            f.write(re.sub(r"\n{3,}", "\n\n", text))  # the blank lines around the templates' blocks
 
 
 def main():
@@ -195,20 +231,18 @@ def main():
     parser.add_argument("--store", required=True, help="results store (results.h5)")
     parser.add_argument("--out", required=True, help="folder for report.md, report.html and the PNGs")
     parser.add_argument("--rollcheck", help="the rollcheck binary, for plots that rebuild a body's surface")
+    parser.add_argument("--validation", help="the checks JSON written by `rollcheck validate` (default: none)")
+    parser.add_argument("--audit", help="the JSON of `rollcheck audit --json PATH` (default: none)")
     args = parser.parse_args()
     if args.rollcheck:
         os.environ["ROLLCHECK_BINARY"] = args.rollcheck
     root, cases = load_cases(args.store)
     os.makedirs(args.out, exist_ok=True)
-    report = Report(args.out)
-    overview(report, args.store, root, cases)
-    plots(report, cases, args.out)
-    results_by_kind(report, cases)
-    files(report, cases)
-    with open(os.path.join(args.out, "report.md"), "w") as f:
-        f.write(report.markdown())
-    with open(os.path.join(args.out, "report.html"), "w") as f:
-        f.write(report.html("rollcheck report"))
+    try:
+        values = context(args, root, cases)
+    except (MissingKey, BadInput) as error:
+        sys.exit(f"make_report.py: {error}")
+    render(values, args.out)
     print(f"report: {os.path.join(args.out, 'report.html')}")
 
 

@@ -1,13 +1,15 @@
 """CDS against samples (convergence).
 
-Draws, log-log, the contact distribution score after each snapshot of the
-samples, for every case whose summary holds convergence snapshots: an array
-with rows [samples, cds] named "convergence" or named with "cds" under such a
-key (convergence/cds; the other scores' snapshots are left out), or an object
-under such a key with a samples array (key containing "sample" or "step")
-and a score array (key containing "cds" or "score"). Without snapshots, it
-draws CDS against n_samples over cases of one body that differ in their
-sample counts. A dashed line of slope -1 marks O(1/T) convergence.
+For every successful case of scene kind "oracle" run with the rigid-body or
+approximate oracle (summary written by study::to_json(BodyScores): "oracle",
+"body", "convergence"), draws, log-log, the contact distribution score after
+each snapshot of the samples: "convergence"/"cds", rows [samples, cds]. A
+case without CDS snapshots (convergence_every = 0, or metrics without cds) is
+named in the caption. The rolling oracle scores with U, not CDS, and is left
+out. A dashed line of slope -1 marks O(1/T): a score that still falls that
+way is dominated by sampling noise; one that levels off has converged to the
+body's own non-uniformity. A key missing from an oracle summary is an error
+naming it and the case.
 
     /usr/bin/python3 postprocess/plot_cds_convergence.py STORE OUT_DIR
 """
@@ -16,58 +18,49 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-from rollcheck_store import Skip, arrays, is_number, label, run_standalone, subtrees
+from rollcheck_store import Figure, Skip, count, label, require, run_standalone
 
 TITLE = "CDS against samples (convergence)"
+KIND = "oracle"
 
 
-def snapshot_series(case):
-    """(samples, cds, name) of every convergence snapshot series in a case."""
-    for path, a in arrays(case.summary, ndim=2):
-        leaf = path.split("/")[-1].lower()
-        if "convergence" in path.lower() and (leaf == "convergence" or "cds" in leaf) and a.shape[1] == 2 \
-                and len(a) > 1:
-            yield a[:, 0], a[:, 1], path
-    for path, node in subtrees(case.summary, "convergence"):
-        one_d = {k: np.asarray(v) for k, v in node.items()
-                 if isinstance(v, np.ndarray) and v.ndim == 1 and len(v) > 1}
-        x = next((v for k, v in one_d.items() if "sample" in k.lower() or "step" in k.lower()), None)
-        y = next((v for k, v in one_d.items() if "cds" in k.lower() or "score" in k.lower()), None)
-        if x is not None and y is not None and len(x) == len(y):
-            yield x, y, path
+def snapshots(case):
+    """(samples, cds) of an oracle case's CDS snapshots; None when it has none."""
+    where = f"case {case.name} ({KIND} summary)"
+    convergence = require(case.summary, "convergence", where)
+    if "cds" not in convergence:
+        return None
+    rows = np.asarray(convergence["cds"], dtype=float)
+    if rows.ndim != 2 or rows.shape[1] != 2 or len(rows) < 2:
+        return None
+    return rows[:, 0], rows[:, 1]
 
 
-def across_cases(cases):
-    """CDS against n_samples over cases of one body: {label: (samples, cds)} with >= 2 points."""
-    groups = {}
-    for c in cases:
-        s = c.summary
-        if is_number(s.get("cds")) and is_number(s.get("n_samples")):
-            key = (c.kind, c.parameters.get("body", ""), c.parameters.get("oracle", ""))
-            groups.setdefault(key, []).append((s["n_samples"], s["cds"]))
-    out = {}
-    for (kind, body, oracle), points in groups.items():
-        if len({p[0] for p in points}) >= 2:
-            points.sort()
-            out[f"{body or kind} {oracle}".strip()] = tuple(np.array(v) for v in zip(*points))
-    return out
+def tail_slope(samples, cds):
+    """Log-log slope of CDS against samples over the last half of the snapshots."""
+    half = slice(len(samples) // 2, None)
+    keep = (samples[half] > 0) & (cds[half] > 0) & np.isfinite(cds[half])
+    if keep.sum() < 2:
+        return float("nan")
+    return np.polyfit(np.log(samples[half][keep]), np.log(cds[half][keep]), 1)[0]
 
 
 def draw(cases, out_dir):
-    curves = [(x, y, f"{label(c)}: {name}") for c in cases if c.ok for x, y, name in snapshot_series(c)]
+    scored = [c for c in cases if c.ok and c.kind == KIND
+              and require(c.summary, "oracle", f"case {c.name} ({KIND} summary)") != "rolling"]
+    curves = [(c, s) for c in scored for s in [snapshots(c)] if s is not None]
+    without = [c.name for c in scored if all(c is not d for d, _ in curves)]
     if not curves:
-        curves = [(x, y, name) for name, (x, y) in across_cases([c for c in cases if c.ok]).items()]
-    curves = [(x, y, n) for x, y, n in curves if np.all(x > 0) and np.all(y > 0)]
-    if not curves:
-        raise Skip("no case holds CDS convergence snapshots (a summary key 'convergence' with rows "
-                   "[samples, cds]), nor several oracle cases of one body at different sample counts")
+        raise Skip("no successful rigid or approximate oracle case with CDS snapshots (an oracle case with "
+                   "metrics including cds and convergence_every > 0)"
+                   + (f"; without snapshots: {', '.join(without)}" if without else ""))
     fig, ax = plt.subplots(figsize=(7.5, 5))
-    for x, y, name in curves:
-        ax.loglog(x, y, "o-", ms=3, label=name)
-    x0, y0 = curves[0][0][0], curves[0][1][0]
-    xs = np.array([min(c[0].min() for c in curves), max(c[0].max() for c in curves)])
+    for case, (samples, cds) in curves:
+        ax.loglog(samples, cds, "o-", ms=3, label=label(case, ("body", "oracle")))
+    x0, y0 = curves[0][1][0][0], curves[0][1][1][0]
+    xs = np.array([min(s.min() for _, (s, _) in curves), max(s.max() for _, (s, _) in curves)])
     ax.loglog(xs, y0 * x0 / xs, "k--", lw=1, label="slope -1: O(1/T)")
-    ax.set_xlabel("samples")
+    ax.set_xlabel("samples T")
     ax.set_ylabel("CDS (contact distribution score)")
     ax.set_title(TITLE)
     ax.grid(True, which="both", alpha=0.3)
@@ -76,7 +69,15 @@ def draw(cases, out_dir):
     png = "cds_convergence.png"
     fig.savefig(f"{out_dir}/{png}", dpi=120)
     plt.close(fig)
-    return [(png, f"{TITLE}: {len(curves)} series.")]
+    shows = (f"The contact distribution score after each snapshot of the samples, log-log, for "
+             f"{count(len(curves), 'oracle case')}, with a line of slope -1 (O(1/T), pure sampling noise).")
+    parts = [f"{c.name}: CDS {cds[-1]:.3g} after {samples[-1]:.0f} samples, slope {tail_slope(samples, cds):.2f} "
+             f"over the last half of the snapshots" for c, (samples, cds) in curves]
+    conclusion = ("; ".join(parts) + ". A slope near -1 means the score is still mostly sampling noise (more "
+                  "samples would lower it); near 0, it has settled at the body's own non-uniformity.")
+    if without:
+        conclusion += f" Not drawn, no CDS snapshots: {', '.join(without)}."
+    return [Figure(png, TITLE, shows, conclusion)]
 
 
 if __name__ == "__main__":

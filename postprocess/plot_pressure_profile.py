@@ -1,13 +1,14 @@
 """Hertz pressure profile: FEM against analytic.
 
-For every case whose summary has a profile (an object under a key
-containing "profile" with a coordinate array ending in "_m" and a pressure
-array ending in "_pa"), draws the FEM contact pressure along the surface
-against Hertz theory, both scaled by the Hertz values: x / c_H and p / p0_H,
-with c_H the contact radius a (point contact) or half-width b (line contact),
-from the summary's a_hertz_m or b_hertz_m, and p0_H from p0_hertz_pa. In
-these units every Hertz profile is the same ellipse, p / p0 = sqrt(1 - (x/c)^2).
-The lower panel shows FEM minus Hertz, in units of p0_H.
+For every successful case of scene kind "hertz" (summary written by
+fem::to_json(HertzResult)), draws the FEM contact pressure along the surface
+("profile": "r_m", or "x_m" for the plane-strain model, and "p_pa") against
+Hertz theory, both scaled by the Hertz values: x / c_H and p / p0_H, with c_H
+the contact radius "a_hertz_m" (or half-width "b_hertz_m" for plane strain)
+and p0_H "p0_hertz_pa". In these units every Hertz profile is the same
+ellipse, p / p0 = sqrt(1 - (x/c)^2). The lower panel shows FEM minus Hertz
+("profile"/"p_hertz_pa"), in units of p0_H. A key missing from a hertz
+summary is an error naming it and the case.
 
     /usr/bin/python3 postprocess/plot_pressure_profile.py STORE OUT_DIR
 """
@@ -16,41 +17,54 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-from rollcheck_store import Skip, is_number, label, run_standalone, subtrees
+from rollcheck_store import Figure, Skip, count, label, percent, require, run_standalone
 
 TITLE = "Hertz pressure profile: FEM against analytic"
+KIND = "hertz"
+INSIDE = 0.9   # the profile's deviation is judged inside this fraction of the contact (the edge is a kink)
 
 
 def profile(case):
-    """(x / c_H, p / p0_H, contact letter) of a case's FEM profile, or None."""
+    """The scaled profile of one hertz case and its errors, by name."""
+    where = f"case {case.name} ({KIND} summary)"
     s = case.summary
-    letter = "a" if is_number(s.get("a_hertz_m")) else "b" if is_number(s.get("b_hertz_m")) else None
-    if letter is None or not is_number(s.get("p0_hertz_pa")):
-        return None
-    for _, node in subtrees(s, "profile"):
-        coords = [v for k, v in node.items() if k.endswith("_m") and isinstance(v, np.ndarray) and v.ndim == 1]
-        fem = [v for k, v in node.items() if k.endswith("_pa") and "hertz" not in k and "analytic" not in k
-               and isinstance(v, np.ndarray) and v.ndim == 1]
-        if coords and fem and len(coords[0]) == len(fem[0]) and len(fem[0]) > 1:
-            order = np.argsort(coords[0])
-            return (coords[0][order] / s[f"{letter}_hertz_m"], fem[0][order] / s["p0_hertz_pa"], letter)
-    return None
+    line = require(s, "model", where) == "plane-strain"
+    letter, coordinate = ("b", "x_m") if line else ("a", "r_m")
+    curve = require(s, "profile", where)
+    inner = f"{where}: profile"
+    x = np.asarray(require(curve, coordinate, inner), dtype=float)
+    p = np.asarray(require(curve, "p_pa", inner), dtype=float)
+    hertz = np.asarray(require(curve, "p_hertz_pa", inner), dtype=float)
+    c, p0 = require(s, f"{letter}_hertz_m", where), require(s, "p0_hertz_pa", where)
+    order = np.argsort(x)
+    return {"x": x[order] / c, "p": p[order] / p0, "hertz": hertz[order] / p0, "letter": letter,
+            "p0_error": require(s, "p0_error", where), "size_error": require(s, f"{letter}_error", where)}
+
+
+def conclusion(case, curve):
+    inside = curve["x"] <= INSIDE
+    worst = np.abs(curve["p"] - curve["hertz"])[inside].max() if inside.any() else float("nan")
+    return (f"{case.name}: FEM peak pressure within {percent(abs(curve['p0_error']))} and contact size "
+            f"{curve['letter']} within {percent(abs(curve['size_error']))} of Hertz; the profile departs from "
+            f"the Hertz ellipse by at most {percent(worst)} of p0 inside {INSIDE} {curve['letter']} "
+            f"({int(inside.sum())} nodes).")
 
 
 def draw(cases, out_dir):
-    curves = [(c, p) for c in cases if c.ok for p in [profile(c)] if p is not None]
+    curves = [(c, profile(c)) for c in cases if c.ok and c.kind == KIND]
     if not curves:
-        raise Skip("no case holds a FEM pressure profile (a summary object 'profile' with r_m or x_m and p_pa, "
-                   "beside a_hertz_m or b_hertz_m and p0_hertz_pa: the hertz scene writes them)")
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7.5, 7), sharex=True, gridspec_kw={"height_ratios": [3, 1.3]})
-    x_max = max(1.5, min(3.0, max(x.max() for _, (x, _, _) in curves)))
+        raise Skip(f"no successful case of kind '{KIND}' (a [scene] kind = \"{KIND}\" case file, e.g. "
+                   f"cases/default/hertz_axisymmetric.toml)")
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7.5, 6), sharex=True, gridspec_kw={"height_ratios": [3, 1.3]})
+    x_max = max(1.5, min(3.0, max(curve["x"].max() for _, curve in curves)))
     xs = np.linspace(0, x_max, 600)
     top.plot(xs, np.sqrt(np.clip(1 - xs ** 2, 0, None)), "k-", lw=2, label="Hertz: sqrt(1 - (x/c)^2)")
-    for case, (x, p, letter) in curves:
-        keep = x <= x_max
-        line, = top.plot(x[keep], p[keep], ".-", ms=3, lw=0.8, label=f"FEM {label(case)}, c = {letter}")
-        hertz = np.sqrt(np.clip(1 - x[keep] ** 2, 0, None))
-        bottom.plot(x[keep], p[keep] - hertz, ".-", ms=3, lw=0.8, color=line.get_color())
+    for case, curve in curves:
+        keep = curve["x"] <= x_max
+        line, = top.plot(curve["x"][keep], curve["p"][keep], ".-", ms=3, lw=0.8,
+                         label=f"FEM {label(case, ('model', 'degree'))}, c = {curve['letter']}")
+        bottom.plot(curve["x"][keep], (curve["p"] - curve["hertz"])[keep], ".-", ms=3, lw=0.8,
+                    color=line.get_color())
     top.set_ylabel("p / p0 (Hertz)")
     top.set_title(TITLE)
     top.grid(True, alpha=0.3)
@@ -63,7 +77,10 @@ def draw(cases, out_dir):
     png = "pressure_profile.png"
     fig.savefig(f"{out_dir}/{png}", dpi=120)
     plt.close(fig)
-    return [(png, f"{TITLE}: {len(curves)} FEM case(s), scaled by the Hertz contact size and peak pressure.")]
+    shows = (f"The FEM contact pressure along the surface against the Hertz ellipse, scaled by the Hertz contact "
+             f"size and peak pressure, for {count(len(curves), KIND + ' case')}; below, FEM minus Hertz in units "
+             f"of p0.")
+    return [Figure(png, TITLE, shows, " ".join(conclusion(c, curve) for c, curve in curves))]
 
 
 if __name__ == "__main__":

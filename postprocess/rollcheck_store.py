@@ -78,35 +78,6 @@ def load_cases(path):
     return root, cases
 
 
-def walk(tree, prefix=""):
-    """(path, value) for every leaf of a summary tree; list elements get their index."""
-    items = tree.items() if isinstance(tree, dict) else enumerate(tree)
-    for key, value in items:
-        path = f"{prefix}/{key}" if prefix else str(key)
-        if isinstance(value, (dict, list)) and not _is_numeric_list(value):
-            yield from walk(value, path)
-        else:
-            yield path, value
-
-
-def _is_numeric_list(value):
-    return isinstance(value, list) and all(isinstance(v, (int, float)) for v in value)
-
-
-def scalars(tree):
-    """The top-level numbers, booleans and strings of a summary, by key."""
-    return {k: v for k, v in tree.items()
-            if v is None or isinstance(v, (bool, int, float, str))}
-
-
-def arrays(tree, ndim=None):
-    """(path, array) of every numeric array in a summary tree, optionally of one dimension."""
-    for path, value in walk(tree):
-        if isinstance(value, np.ndarray) and value.dtype.kind in "biuf" and value.ndim > 0:
-            if ndim is None or value.ndim == ndim:
-                yield path, value
-
-
 def label(case, keys=("body", "model", "degree", "oracle")):
     """A short label: the case name and its distinguishing parameters."""
     parts = [f"{k}={case.parameters[k]}" for k in keys
@@ -118,16 +89,34 @@ class Skip(Exception):
     """A plot that the store holds no data for; the message says which data it needs."""
 
 
-def subtrees(tree, word, prefix=""):
-    """(path, dict) of every object in a summary tree whose key contains `word`."""
-    if not isinstance(tree, dict):
-        return
-    for key, value in tree.items():
-        path = f"{prefix}/{key}" if prefix else key
-        if isinstance(value, dict):
-            if word in key.lower():
-                yield path, value
-            yield from subtrees(value, word, path)
+class MissingKey(LookupError):
+    """A key the output contract promises is not in a record: the store and the scripts disagree."""
+
+
+def require(record, key, where):
+    """record[key]; MissingKey naming the key and `where` it was looked for (a case, a file) when it is missing."""
+    if not isinstance(record, dict) or key not in record:
+        raise MissingKey(f"{where}: no key '{key}'")
+    return record[key]
+
+
+@dataclass
+class Figure:
+    """A drawn plot: its PNG (in the output folder), what it shows, and what to conclude from it."""
+    png: str
+    title: str
+    shows: str
+    conclusion: str
+
+
+def count(n, noun, plural=None):
+    """'1 case', '3 cases', '2 bodies' (with plural='bodies')."""
+    return f"{n} {noun if n == 1 else plural or noun + 's'}"
+
+
+def percent(x):
+    """A relative quantity as a percentage with two significant digits: 0.00123 -> '0.12 %'."""
+    return f"{100 * x:.2g} %"
 
 
 def is_number(x):
@@ -143,7 +132,9 @@ def run_standalone(draw):
     _, cases = load_cases(sys.argv[1])
     os.makedirs(sys.argv[2], exist_ok=True)
     try:
-        for png, caption in draw(cases, sys.argv[2]):
-            print(f"{os.path.join(sys.argv[2], png)}: {caption}")
+        for figure in draw(cases, sys.argv[2]):
+            print(f"{os.path.join(sys.argv[2], figure.png)}: {figure.shows} {figure.conclusion}")
     except Skip as note:
         print(f"skipped: {note}")
+    except MissingKey as error:
+        sys.exit(f"{sys.argv[0]}: {error}")

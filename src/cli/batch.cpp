@@ -4,16 +4,26 @@
 #include "cli/cli.h"
 #include "cli/scenes.h"
 #include "io/batch_progress.h"
-#include "io/batch_run.h"
 
 namespace rollcheck::cli
 {
+io::BatchResult run_scene_batch(const io::BatchOptions& options)
+{
+  const io::BatchResult result = io::run_batch(options, [](const std::string& kind, const std::string& origin)
+                                                   -> const io::Schema& { return *find_scene(kind, origin).schema; });
+  if (result.coordinator)
+    io::print_batch_table(result, stdout);
+  return result;
+}
+
 void add_batch_command(CLI::App& app)
 {
-  CLI::App* sub = app.add_subcommand(
-      "batch", "Run case files on worker processes (and MPI ranks) into one HDF5 results store; resumable");
   static io::BatchOptions options;
-  static std::string json_path;
+  CLI::App* sub = add_command(
+      app, "batch", "Run case files on worker processes (and MPI ranks) into one HDF5 results store; resumable", [] {
+        const io::BatchResult result = run_scene_batch(options);
+        return result.coordinator ? CommandResult{result.to_json(), result.exit_code()} : CommandResult{};
+      });
   sub->add_option("cases", options.cases, "Case files (.toml), folders of them, or quoted globs")->required();
   sub->add_option("-j,--jobs", options.jobs,
                   "Worker processes per MPI rank (default: 0 = one per CPU: the CPUs mpirun bound the rank to, else the "
@@ -23,15 +33,5 @@ void add_batch_command(CLI::App& app)
   sub->add_flag("--force", options.force, "Recompute cases already done (default: reuse their results)");
   sub->add_option("--timeout", options.case_timeout_s,
                   "A case running longer than this fails [s] (default: 0 = no limit)");
-  add_json_option(sub, json_path);
-  on_run(sub, [] {
-    const io::BatchResult result = io::run_batch(options, [](const std::string& kind, const std::string& origin)
-                                                     -> const io::Schema& { return *find_scene(kind, origin).schema; });
-    if (!result.coordinator)
-      return 0;
-    io::print_batch_table(result, stdout);
-    emit_json(json_path, result.to_json());
-    return result.exit_code();
-  });
 }
 } // namespace rollcheck::cli

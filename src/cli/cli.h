@@ -2,6 +2,8 @@
 // Layer: cli. Owns the `rollcheck` executable: one file per subcommand, each
 // exposing add_<name>_command(). Subcommands parse options, call the layers
 // below and write results; they hold no physics of their own.
+#include "io/batch_run.h"
+#include "io/parameters.h"
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -14,12 +16,47 @@ namespace rollcheck::cli
 /// ComputationError (exit 1), which main() reports.
 void on_run(CLI::App* sub, std::function<int()> runner);
 
+/// InputError naming `name` if `app` has no subcommand of that name (none
+/// given is left to the parser), with the closest name when it is a typo away.
+void check_subcommand(const CLI::App& app, const std::string& name);
+
+/// Calls the runner of the subcommand `app` parsed; its exit code.
+int run_parsed(const CLI::App& app);
+
 /// Adds the shared `--json PATH` option ("-" for stdout) to a subcommand.
 CLI::Option* add_json_option(CLI::App* sub, std::string& path);
 
 /// Writes `summary` to `path` when it is non-empty ("-" is stdout), atomically.
 void emit_json(const std::string& path, const nlohmann::json& summary);
 
+/// How a command ends: the summary its --json option writes (null: nothing
+/// to write, as on a rank that holds no outcome) and the exit code.
+struct CommandResult
+{
+  nlohmann::json summary;
+  int exit_code = 0;
+};
+
+/// A subcommand with the shared --json option whose `run` is called after
+/// parsing, its summary written to --json. Returns the subcommand, for the
+/// options of its own.
+CLI::App* add_command(CLI::App& app, const std::string& name, const std::string& description,
+                      std::function<CommandResult()> run);
+
+/// A scene's JSON summary from its resolved parameters.
+using SceneRun = std::function<nlohmann::json(const io::Parameters&)>;
+
+/// A subcommand that runs a scene: one option per parameter of `schema`, the
+/// --json option, and the scene registered for case files (`rollcheck run`,
+/// batch). The subcommand runs `command` if one is given (hertz's --study),
+/// else `run`; case files always run `run`. Returns the subcommand, for the
+/// options of its own.
+CLI::App* add_scene_command(CLI::App& app, const std::string& name, const std::string& description,
+                            const io::Schema& schema, SceneRun run, SceneRun command = {});
+
+/// Runs a batch of case files against the registered scenes (the batch and
+/// validate subcommands); the coordinator prints its table.
+io::BatchResult run_scene_batch(const io::BatchOptions& options);
 
 void add_mesh_command(CLI::App& app);
 void add_oracle_command(CLI::App& app);

@@ -99,16 +99,9 @@ nlohmann::json run_crease(const io::Parameters& p)
 
 void add_crease_command(CLI::App& app)
 {
-  CLI::App* sub = app.add_subcommand(
-      "crease", "FEM pressure at a crease inside the contact (plane strain, several mesh levels) against the "
-                "blunt-wedge solution: the apex peak grows with the mesh, the rest converges");
-  static std::string json_path;
-  add_json_option(sub, json_path);
-  static io::SchemaOptions* options = new io::SchemaOptions(sub, crease_schema().schema());
-  register_scene({&crease_schema().schema(), run_crease});
-  on_run(sub, [] {
-    emit_json(json_path, run_crease(options->apply()));
-    return 0;
-  });
+  add_scene_command(app, "crease",
+                    "FEM pressure at a crease inside the contact (plane strain, several mesh levels) against the "
+                    "blunt-wedge solution: the apex peak grows with the mesh, the rest converges",
+                    crease_schema().schema(), run_crease);
 }
 } // namespace rollcheck::cli

@@ -1,30 +1,26 @@
 // rollcheck: validation of rolling-contact distribution scores and of Hertz
-// contact by penalty FEM. See README.md.
+// contact by penalty FEM. See README.md. main() owns the process: MPI, the
+// log, the command line (rollcheck's options before `--`, PETSc's after it)
+// and the mapping of errors to exit codes.
 #include "cli/cli.h"
 #include "core/error.h"
+#include "fem/petsc_session.h"
 #include "rollcheck_version.h"
-#include <map>
+#include <algorithm>
+#include <cctype>
+#include <dolfinx/common/version.h>
+#include <fmt/format.h>
+#include <gmsh.h>
 #include <mpi.h>
 #include <petscsys.h>
+#include <petscversion.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 namespace
 {
-std::map<const CLI::App*, std::function<int()>>& runners()
-{
-  static std::map<const CLI::App*, std::function<int()>> table;
-  return table;
-}
-} // namespace
+using namespace rollcheck;
 
-namespace rollcheck::cli
-{
-void on_run(CLI::App* sub, std::function<int()> runner) { runners()[sub] = std::move(runner); }
-} // namespace rollcheck::cli
-
-namespace
-{
 /// MPI lives for the whole run (batch spreads cases over ranks, FEM solves
 /// use PETSc); PETSc is started by whoever needs it and ended here.
 struct MpiSession
@@ -43,56 +39,36 @@ struct MpiSession
     MPI_Finalize();
   }
 };
-} // namespace
 
-int main(int argc, char** argv)
+std::string version_text()
 {
-  using namespace rollcheck;
-  MpiSession mpi(argc, argv);
-  spdlog::set_default_logger(spdlog::stderr_color_mt("rollcheck"));
-  spdlog::set_pattern("[%^%l%$] %v");
+  return fmt::format("rollcheck {} (commit {})\nDOLFINx {}, PETSc {}.{}.{}, gmsh {}", ROLLCHECK_VERSION,
+                     ROLLCHECK_GIT_COMMIT, DOLFINX_VERSION_STRING, PETSC_VERSION_MAJOR, PETSC_VERSION_MINOR,
+                     PETSC_VERSION_SUBMINOR, GMSH_API_VERSION);
+}
 
-  CLI::App app{"rollcheck: contact-distribution oracles and penalty-contact FEM checks of Hertz theory"};
-  app.set_version_flag("--version", std::string("rollcheck ") + ROLLCHECK_VERSION);
-  app.require_subcommand(1);
-  int verbosity = 0;
-  bool quiet = false;
-  app.add_flag("-v,--verbose", verbosity, "More log output on stderr (-vv for trace)");
-  app.add_flag("-q,--quiet", quiet, "Only errors on stderr");
+/// The subcommand the arguments name ("" if none): the first argument that is
+/// not an option, since rollcheck's own options take no values.
+std::string subcommand_in(const std::vector<std::string>& args)
+{
+  const auto name = std::ranges::find_if(args, [](const std::string& a) { return !a.starts_with('-'); });
+  return name == args.end() ? "" : *name;
+}
 
-  cli::add_mesh_command(app);
-  cli::add_oracle_command(app);
-  cli::add_search_command(app);
-  cli::add_hertz_command(app);
-  cli::add_fem_sds_command(app);
-  cli::add_crease_command(app);
-  cli::add_run_command(app);
-  cli::add_batch_command(app);
-  cli::add_report_command(app);
-  cli::add_audit_command(app);
-  cli::add_validate_command(app);
+/// A single-dash word with an underscore, `-hertz_ksp_type`: PETSc's form,
+/// which the parser would read as `-h` and more.
+bool looks_like_petsc_option(const std::string& arg)
+{
+  return arg.size() > 2 && arg[0] == '-' && std::isalpha(static_cast<unsigned char>(arg[1]))
+         && arg.find('_') != std::string::npos && arg.find(' ') == std::string::npos;
+}
 
+/// The subcommand's exit code; InputError -> 2, ComputationError -> 1.
+int run_guarded(const std::function<int()>& run)
+{
   try
   {
-    app.parse(argc, argv);
-  }
-  catch (const CLI::ParseError& e)
-  {
-    // --help and --version are "errors" with exit code 0.
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
-  }
-  spdlog::set_level(quiet ? spdlog::level::err
-                          : verbosity >= 2 ? spdlog::level::trace
-                          : verbosity == 1 ? spdlog::level::debug
-                                           : spdlog::level::info);
-  try
-  {
-    for (const CLI::App* sub : app.get_subcommands())
-      if (auto it = runners().find(sub); it != runners().end())
-        return it->second();
-    spdlog::error("no runner for subcommand");
-    return 2;
+    return run();
   }
   catch (const InputError& e)
   {
@@ -109,4 +85,88 @@ int main(int argc, char** argv)
     spdlog::error("internal error: {}", e.what());
     return 1;
   }
+}
+/// The exit code of a failed parse, its message on stderr: a PETSc option
+/// before `--` and an unknown subcommand are named; --help and --version are
+/// "errors" with exit code 0.
+int parse_failure(const CLI::App& app, const CLI::ParseError& e, const std::vector<std::string>& args)
+{
+  if (const auto petsc = std::ranges::find_if(args, looks_like_petsc_option); petsc != args.end())
+  {
+    spdlog::error("'{}' looks like a PETSc option: PETSc options go after `--`, as in `rollcheck {} [options] -- {} "
+                  "...`",
+                  *petsc, subcommand_in(args), *petsc);
+    return 2;
+  }
+  if (app.get_subcommands().empty())
+    if (const int code = run_guarded([&] { cli::check_subcommand(app, subcommand_in(args)); return 0; }); code != 0)
+      return code;
+  return app.exit(e) == 0 ? 0 : 2;
+}
+
+/// Puts the arguments after `--` into PETSc's options database, where every
+/// solver reads them (prefix hertz_), as it reads PETSC_OPTIONS.
+void insert_petsc_options(std::vector<std::string> options)
+{
+  if (options.empty())
+    return;
+  if (!options.front().starts_with('-'))
+    throw InputError(fmt::format("after `--` come PETSc options (-name [value] ...), got '{}'", options.front()));
+  fem::ensure_petsc();
+  std::vector<char*> argv;
+  for (std::string& option : options)
+    argv.push_back(option.data());
+  if (PetscOptionsInsertArgs(nullptr, static_cast<int>(argv.size()), argv.data()) != 0)
+    throw InputError(fmt::format("cannot read the PETSc options after `--`: {}", fmt::join(options, " ")));
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  MpiSession mpi(argc, argv);
+  spdlog::set_default_logger(spdlog::stderr_color_mt("rollcheck"));
+  spdlog::set_pattern("[%^%l%$] %v");
+
+  CLI::App app{"rollcheck: contact-distribution oracles and penalty-contact FEM checks of Hertz theory"};
+  app.name("rollcheck");
+  app.set_version_flag("--version", version_text());
+  app.require_subcommand(1);
+  int verbosity = 0;
+  bool quiet = false;
+  app.add_flag("-v,--verbose", verbosity, "More log output on stderr (-vv for trace)");
+  app.add_flag("-q,--quiet", quiet, "Only errors on stderr");
+  app.footer("PETSc options follow `--`: rollcheck hertz --model 3d -- -hertz_ksp_type cg");
+
+  cli::add_mesh_command(app);
+  cli::add_oracle_command(app);
+  cli::add_search_command(app);
+  cli::add_hertz_command(app);
+  cli::add_fem_sds_command(app);
+  cli::add_crease_command(app);
+  cli::add_run_command(app);
+  cli::add_batch_command(app);
+  cli::add_report_command(app);
+  cli::add_audit_command(app);
+  cli::add_validate_command(app);
+
+  // rollcheck's arguments end at `--`; PETSc's follow.
+  const int ours = static_cast<int>(std::find(argv, argv + argc, std::string_view("--")) - argv);
+  const std::vector<std::string> args(argv + 1, argv + ours);
+  try
+  {
+    app.parse(ours, argv);
+  }
+  catch (const CLI::ParseError& e)
+  {
+    return parse_failure(app, e, args);
+  }
+  spdlog::set_level(quiet ? spdlog::level::err
+                          : verbosity >= 2 ? spdlog::level::trace
+                          : verbosity == 1 ? spdlog::level::debug
+                                           : spdlog::level::info);
+  return run_guarded([&] {
+    insert_petsc_options({argv + std::min(ours + 1, argc), argv + argc});
+    return cli::run_parsed(app);
+  });
 }

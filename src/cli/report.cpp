@@ -8,22 +8,21 @@ namespace rollcheck::cli
 {
 void add_report_command(CLI::App& app)
 {
-  CLI::App* sub = app.add_subcommand("report", "Write the Markdown + HTML report (plots, tables) of a results store");
-  static std::string store, folder, json_path;
+  static std::string store, folder;
   static std::string scripts = io::default_scripts_folder().string();
   static std::string python = "/usr/bin/python3";
+  CLI::App* sub = add_command(
+      app, "report", "Write the Markdown + HTML report (plots, tables) of a results store", [] {
+        const std::filesystem::path target = folder.empty()
+                                                 ? std::filesystem::absolute(store).parent_path() / "report"
+                                                 : std::filesystem::path(folder);
+        const io::ReportFiles report = io::write_report(store, target, scripts, python);
+        fmt::print("report: {}\nmarkdown: {}\n", report.html.string(), report.markdown.string());
+        return CommandResult{{{"html", report.html.string()}, {"markdown", report.markdown.string()}}};
+      });
   sub->add_option("--from", store, "Results store written by `rollcheck batch` (DIR/results.h5)")->required();
   sub->add_option("--out", folder, "Report folder, replaced whole (default: 'report' beside the store)");
   sub->add_option("--scripts", scripts, "Folder of the plotting scripts (default: the source tree's postprocess/)");
   sub->add_option("--python", python, "Python with matplotlib and h5py (default: Debian's /usr/bin/python3)");
-  add_json_option(sub, json_path);
-  on_run(sub, [] {
-    const std::filesystem::path target =
-        folder.empty() ? std::filesystem::absolute(store).parent_path() / "report" : std::filesystem::path(folder);
-    const io::ReportFiles report = io::write_report(store, target, scripts, python);
-    fmt::print("report: {}\nmarkdown: {}\n", report.html.string(), report.markdown.string());
-    emit_json(json_path, {{"html", report.html.string()}, {"markdown", report.markdown.string()}});
-    return 0;
-  });
 }
 } // namespace rollcheck::cli

@@ -5,8 +5,13 @@
 // - penalty: penalty_c from 0.1 to 1000 on each model's default mesh, for
 //   the choice of HertzSetup::default_penalty_c.
 // A study is a list of setups derived from a base setup (its body, load and
-// solver options); running them is the caller's business.
+// solver options), run one after the other into a table of errors and costs.
 #include "fem/hertz_setup.h"
+#include "fem/hertz_solve.h"
+#include <mpi.h>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace rollcheck::fem
@@ -17,4 +22,30 @@ std::vector<HertzSetup> convergence_study(const HertzSetup& base, const std::vec
 
 /// penalty_c in {0.1, 0.3, 1, 3, 10, 30, 100, 300, 1000}, P1, default mesh.
 std::vector<HertzSetup> penalty_study(const HertzSetup& base, const std::vector<Model>& models);
+
+/// One run of a study: its result, or the message of the ComputationError
+/// that ended it (e.g. a diverged solve at an extreme penalty).
+struct HertzStudyRun
+{
+  HertzSetup setup;
+  std::optional<HertzResult> result;
+  std::string failure;
+};
+
+struct HertzStudy
+{
+  std::string name; ///< "convergence" or "penalty"
+  std::vector<HertzStudyRun> runs;
+};
+
+/// Solves the setups one after the other on `comm`; a failed solve becomes a
+/// run with its message instead of ending the study.
+HertzStudy run_study(MPI_Comm comm, const std::string& name, const std::vector<HertzSetup>& setups);
+
+/// The study's table, a header and one line per run: setup, cost, relative
+/// errors, flags and status ("ok" or "failed: ..."). postprocess/hertz_study_plot.py reads it.
+std::string to_csv(const HertzStudy& study);
+
+/// {"study": name, "runs": [to_json(result), or the setup and "failed"]}.
+nlohmann::json to_json(const HertzStudy& study);
 } // namespace rollcheck::fem

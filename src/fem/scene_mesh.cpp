@@ -123,6 +123,27 @@ int add_extruded_quarter_disc(double length, const std::vector<double>& layer_fr
   return pole;
 }
 
+/// gmsh compares lengths with its geometric tolerance, 1e-8 of the model's
+/// size (Geometry.Tolerance); an element size near it makes the 2D mesher
+/// throw from inside an OpenMP region, which aborts the process. Measured on
+/// the plane-strain Hertz scene: h_c = 1.35e-8 of the model (1e-5 N) meshes
+/// and solves (b within 0.05 % of Hertz), 1.35e-9 (1e-7 N) aborts. Sizes below
+/// 1e-8 of the model are refused before meshing, as bad input.
+void require_meshable(const MeshGrading& grading)
+{
+  constexpr double smallest_relative_size = 1e-8;
+  double x0, y0, z0, x1, y1, z1;
+  gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+  const double model_size = std::max({x1 - x0, y1 - y0, z1 - z0});
+  if (!(grading.contact_size_m >= smallest_relative_size * model_size))
+    throw InputError(fmt::format(
+        "the contact element size {:.3g} is {:.3g} of the modelled body ({:.3g}), below the {:g} gmsh can mesh "
+        "reliably: the load is too small (or the body too large) for the contact to be resolved; the smallest "
+        "representable load gives a contact about {:g} times larger",
+        grading.contact_size_m, grading.contact_size_m / model_size, model_size, smallest_relative_size,
+        smallest_relative_size * model_size / grading.contact_size_m));
+}
+
 /// Runs gmsh on the geometry `add_geometry` builds (it returns the tag of the
 /// point of contact) with the grading about that point; nodes with `dim`
 /// coordinates, cells of the simplex of dimension `dim`.
@@ -135,7 +156,9 @@ RawMesh mesh_with_gmsh(int dim, const std::function<int()>& add_geometry, const 
     gmsh::option::setNumber("General.Terminal", 0);
     gmsh::option::setNumber("General.NumThreads", 1);
     gmsh::model::add("scene");
-    set_graded_size_field(add_geometry(), grading);
+    const int pole = add_geometry();
+    require_meshable(grading);
+    set_graded_size_field(pole, grading);
     gmsh::option::setNumber("Mesh.Algorithm", 6);   // Frontal-Delaunay: near-equilateral triangles
     gmsh::option::setNumber("Mesh.Algorithm3D", 1); // Delaunay
     gmsh::option::setNumber("Mesh.Optimize", 1);
@@ -159,6 +182,11 @@ RawMesh mesh_with_gmsh(int dim, const std::function<int()>& add_geometry, const 
     raw.cells.reserve(element_nodes.size());
     for (std::size_t tag : element_nodes)
       raw.cells.push_back(index.at(tag));
+  }
+  catch (const InputError&)
+  {
+    gmsh::finalize();
+    throw;
   }
   catch (const std::exception& e)
   {
@@ -207,15 +235,29 @@ SceneMesh distribute(MPI_Comm comm, int gdim, const std::function<RawMesh()>& ma
     {
       raw = make_raw();
     }
+    catch (const InputError& e)
+    {
+      failed = 2;
+      message = e.what();
+    }
     catch (const std::exception& e)
     {
       failed = 1;
       message = e.what();
     }
   }
+  // Every rank raises rank 0's error, of its kind and with its message.
   MPI_Bcast(&failed, 1, MPI_INT, 0, comm);
   if (failed)
-    throw ComputationError(rank == 0 ? message : "gmsh failed on rank 0");
+  {
+    int length = static_cast<int>(message.size());
+    MPI_Bcast(&length, 1, MPI_INT, 0, comm);
+    message.resize(length);
+    MPI_Bcast(message.data(), length, MPI_CHAR, 0, comm);
+    if (failed == 2)
+      throw InputError(message);
+    throw ComputationError(message);
+  }
 
   const std::size_t num_cells = raw.cells.size() / nodes_per_cell;
   const std::vector<std::uint8_t> perm = dolfinx::io::cells::perm_gmsh(cell_type, nodes_per_cell);

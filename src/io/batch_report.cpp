@@ -12,9 +12,8 @@ namespace fs = std::filesystem;
 
 fs::path default_scripts_folder() { return fs::path(ROLLCHECK_SOURCE_DIR) / "postprocess"; }
 
-void draw_folder(const fs::path& folder, const fs::path& python, const fs::path& script,
-                 const std::vector<std::string>& args, const std::string& log_name,
-                 const std::function<void(const fs::path&)>& prepare)
+void run_script(const fs::path& python, const fs::path& script, const std::vector<std::string>& args,
+                const fs::path& cwd, const fs::path& log)
 {
   if (!fs::is_regular_file(script))
     throw InputError(fmt::format("plotting script '{}': no such file", script.string()));
@@ -22,6 +21,23 @@ void draw_folder(const fs::path& folder, const fs::path& python, const fs::path&
     throw InputError(fmt::format("--python '{}': not an executable (Debian's python3 with matplotlib and h5py is "
                                  "needed: apt-get install python3-matplotlib python3-h5py)",
                                  python.string()));
+  std::vector<std::string> argv{python.string(), script.string()};
+  argv.insert(argv.end(), args.begin(), args.end());
+  ChildProcess process(argv, cwd, log);
+  const ExitStatus status = process.wait();
+  if (status.success())
+    return;
+  std::ifstream file(log);
+  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  if (text.size() > 2000)
+    text = "..." + text.substr(text.size() - 2000);
+  throw ComputationError(fmt::format("{} failed ({}):\n{}", script.string(), status.describe(), text));
+}
+
+void draw_folder(const fs::path& folder, const fs::path& python, const fs::path& script,
+                 const std::vector<std::string>& args, const std::string& log_name,
+                 const std::function<void(const fs::path&)>& prepare)
+{
   const fs::path target = fs::absolute(folder).lexically_normal();
   const fs::path parent = target.parent_path();
   fs::create_directories(parent);
@@ -33,25 +49,14 @@ void draw_folder(const fs::path& folder, const fs::path& python, const fs::path&
   try
   {
     prepare(drawing);
+    std::vector<std::string> script_args = args;
+    script_args.insert(script_args.end(), {"--out", drawing.string()});
+    run_script(python, script, script_args, drawing, drawing / log_name);
   }
   catch (...)
   {
     fs::remove_all(drawing);
     throw;
-  }
-  std::vector<std::string> argv{python.string(), script.string()};
-  argv.insert(argv.end(), args.begin(), args.end());
-  argv.insert(argv.end(), {"--out", drawing.string()});
-  ChildProcess process(argv, drawing, drawing / log_name);
-  const ExitStatus status = process.wait();
-  if (!status.success())
-  {
-    std::ifstream log(drawing / log_name);
-    std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
-    fs::remove_all(drawing);
-    if (text.size() > 2000)
-      text = "..." + text.substr(text.size() - 2000);
-    throw ComputationError(fmt::format("{} failed ({}):\n{}", script.string(), status.describe(), text));
   }
   if (fs::exists(target))
     fs::rename(target, replaced);

@@ -18,11 +18,17 @@ struct ReportFiles
 /// The postprocess/ folder of the source tree the binary was built from.
 std::filesystem::path default_scripts_folder();
 
+/// Runs `python script args...` in folder `cwd`, its output in `log`: the one
+/// way a plotting script is run. InputError for a missing script or
+/// interpreter; ComputationError (with the script's last output) if it fails.
+void run_script(const std::filesystem::path& python, const std::filesystem::path& script,
+                const std::vector<std::string>& args, const std::filesystem::path& cwd,
+                const std::filesystem::path& log);
+
 /// Fills `folder` whole or not at all: `prepare` writes into a temporary
 /// folder beside it, then `python script args... --out TMP` runs there (its
 /// output in TMP/<log_name>), and the temporary folder replaces `folder` only
-/// when both succeeded. InputError for a missing script or interpreter;
-/// ComputationError (with the script's last output) if the script fails.
+/// when both succeeded. Errors as run_script's.
 void draw_folder(const std::filesystem::path& folder, const std::filesystem::path& python,
                  const std::filesystem::path& script, const std::vector<std::string>& args,
                  const std::string& log_name, const std::function<void(const std::filesystem::path&)>& prepare);

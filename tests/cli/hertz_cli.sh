@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `rollcheck hertz`: bad input exits 2 naming the input and writes nothing; a
 # good run writes the issue's JSON keys; the case files run through
-# `rollcheck run` with overrides.
+# `rollcheck run` with overrides. Also the command line around it: usage
+# lines, an unknown subcommand, PETSc options after `--`, --version.
 set -u
 bin=$1; tmp=$3
 here=$(cd "$(dirname "$0")/../.." && pwd)
@@ -14,16 +15,25 @@ expect() { # expect CODE PATTERN -- command...
   if ! grep -qiE "$pattern" <<<"$err"; then echo "FAIL (message lacks '$pattern'): $*"; echo "$err"; fail=1; fi
 }
 expect 2 "radius.*-0.01" -- "$bin" hertz --radius -0.01 --json "$tmp/bad1.json"
-expect 2 "poisson.*0.5" -- "$bin" hertz --nu 0.5 --json "$tmp/bad2.json"
+expect 2 "poisson.*0.5" -- "$bin" hertz --poisson 0.5 --json "$tmp/bad2.json"
 expect 2 "degree.*3" -- "$bin" hertz --degree 3 --json "$tmp/bad3.json"
 expect 2 "model" -- "$bin" hertz --model 4d --json "$tmp/bad4.json"
 expect 2 "load.*nan|force_n.*nan|finite" -- "$bin" hertz --load nan --json "$tmp/bad5.json"
 expect 2 "xdmf" -- "$bin" hertz --xdmf "$tmp/fields.vtk" --json "$tmp/bad6.json"
 expect 2 "unknown key 'wibble'" -- "$bin" run "$here/cases/hertz_cylinder.toml" --set wibble=1
+expect 2 "refine.*13" -- "$bin" hertz --refine 13 --json "$tmp/bad7.json"
+expect 2 "force_rtol.*0.5" -- "$bin" hertz --force-rtol 0.5 --json "$tmp/bad8.json"
+# One spelling per quantity: the old --E and --nu are gone.
+expect 2 "not expected.*[-]-nu" -- "$bin" hertz --nu 0.3 --json "$tmp/bad9.json"
+expect 2 "not expected.*[-]-E" -- "$bin" hertz --E 200e9 --json "$tmp/bad10.json"
+expect 2 "unknown subcommand 'hertx'.*did you mean 'hertz'" -- "$bin" hertx --json "$tmp/bad11.json"
+# A PETSc option before `--` is named, not read as -h (help, exit 0).
+expect 2 "[-]hertz_ksp_type.*PETSc.*--" -- "$bin" hertz -hertz_ksp_type cg --json "$tmp/bad12.json"
+expect 2 "PETSc options" -- "$bin" hertz --json "$tmp/bad13.json" -- cg
 if ls -A "$tmp" | grep -q .; then echo "FAIL: output written on error:"; ls -A "$tmp"; fail=1; fi
 
 # A good axisymmetric run: the issue's keys, with units, and no NaN.
-"$bin" -q hertz --model axi --radius 0.01 --E 200e9 --nu 0.3 --load 100 --degree 1 --refine 2 --penalty-c 100 \
+"$bin" -q hertz --model axi --radius 0.01 --youngs-modulus 200e9 --poisson 0.3 --load 100 --degree 1 --refine 2 --penalty-c 100 \
   --json "$tmp/axi.json" || { echo "FAIL: axi run"; fail=1; }
 /usr/bin/python3 - "$tmp/axi.json" <<'PY' || fail=1
 import json, math, sys
@@ -39,6 +49,29 @@ assert j["model"] == "axi" and j["refine"] == 2
 assert abs(j["force_n"] - 100) < 1e-2, j["force_n"]
 assert len(j["profile"]["r_m"]) == len(j["profile"]["p_pa"]) > 10
 PY
+
+# PETSc options after `--` reach the solver: CG with Jacobi instead of the 2D
+# default (one LU solve per Newton iteration) takes many Krylov iterations to
+# the same answer.
+"$bin" -q hertz --model axi --refine 0 --json "$tmp/lu.json" || { echo "FAIL: axi LU run"; fail=1; }
+"$bin" -q hertz --model axi --refine 0 --json "$tmp/cg.json" -- -hertz_ksp_type cg -hertz_pc_type jacobi \
+  -hertz_ksp_rtol 1e-12 -hertz_ksp_max_it 100000 || { echo "FAIL: axi run with PETSc options"; fail=1; }
+/usr/bin/python3 - "$tmp/lu.json" "$tmp/cg.json" <<'PY' || fail=1
+import json, sys
+lu, cg = (json.load(open(p)) for p in sys.argv[1:])
+assert lu["krylov_its"] <= lu["newton_its"], (lu["krylov_its"], lu["newton_its"])
+assert cg["krylov_its"] > 10 * cg["newton_its"], (cg["krylov_its"], cg["newton_its"])
+assert abs(cg["a_m"] / lu["a_m"] - 1) < 1e-6, (cg["a_m"], lu["a_m"])
+PY
+
+# Usage lines name the program, not the build path; --version names the
+# libraries rollcheck was built on.
+"$bin" hertz --help | grep -q "^Usage: rollcheck hertz" || { echo "FAIL: usage line"; "$bin" hertz --help | head -2; fail=1; }
+version=$("$bin" --version)
+for pattern in "^rollcheck [0-9]+\.[0-9]+\.[0-9]+ \(commit ([0-9a-f]{7,}(-dirty)?|unknown)\)" "DOLFINx 0\.5\.2" \
+  "PETSc [0-9]+\.[0-9]+\.[0-9]+" "gmsh [0-9]+\.[0-9]+\.[0-9]+"; do
+  grep -qE "$pattern" <<<"$version" || { echo "FAIL: --version lacks '$pattern':"; echo "$version"; fail=1; }
+done
 
 # The case files, through `rollcheck run`, coarse for speed.
 for case in hertz_hemisphere_axisymmetric hertz_cylinder hertz_hemisphere; do
