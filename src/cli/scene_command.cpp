@@ -4,6 +4,7 @@
 // subcommand exists.
 #include "cli/cli.h"
 #include "cli/scenes.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include <algorithm>
 #include <fmt/format.h>
@@ -76,6 +77,9 @@ CLI::App* add_command(CLI::App& app, const std::string& name, const std::string&
   auto json_path = std::make_shared<std::string>();
   add_json_option(sub, *json_path);
   on_run(sub, [json_path, run = std::move(run)] {
+    // Refused before any computation, not after it.
+    if (!json_path->empty() && *json_path != "-")
+      check_output_file(*json_path, "option --json");
     const CommandResult result = run();
     if (!result.summary.is_null())
       emit_json(*json_path, result.summary);

@@ -1,7 +1,13 @@
 // `rollcheck validate`: the main job. Runs the default batch (cases/default/,
-// two workers) into results/ and writes the report; prints where it is.
+// two workers) into results/, checks every case against the tolerances and
+// references its case file states ([[check]]), prints the verdict table,
+// writes validation.json and the report (verdicts first), and exits 1 when a
+// check fails.
 #include "cli/cli.h"
+#include "core/atomic_file.h"
 #include "io/batch_report.h"
+#include "io/batch_validation.h"
+#include <fstream>
 #include "rollcheck_version.h"
 #include <fmt/format.h>
 
@@ -26,14 +32,23 @@ void add_validate_command(CLI::App& app)
           return CommandResult{};
         nlohmann::json summary = batch.to_json();
         summary["rollcheck_version"] = ROLLCHECK_VERSION;
+        const std::vector<io::CaseVerdict> verdicts = io::check_batch(batch, options.out);
+        const nlohmann::json validation = io::to_json(verdicts);
+        summary["validation"] = validation;
+        const std::filesystem::path validation_file = options.out / "validation.json";
+        write_atomically(validation_file, [&](const std::filesystem::path& tmp) { std::ofstream(tmp) << validation.dump(2); });
+        fmt::print("\n{}\n{} checks passed, {} failed\n", io::verdict_table(verdicts), validation["passed"].get<int>(),
+                   validation["failed"].get<int>());
         if (!batch.interrupted)
         {
           const io::ReportFiles report = io::write_report(batch.store, options.out / "report",
-                                                          io::default_scripts_folder(), "/usr/bin/python3");
+                                                          io::default_scripts_folder(), "/usr/bin/python3",
+                                                          validation_file);
           summary["report"] = {{"html", report.html.string()}, {"markdown", report.markdown.string()}};
           fmt::print("report: {}\nmarkdown: {}\n", report.html.string(), report.markdown.string());
         }
-        return CommandResult{summary, batch.exit_code()};
+        const int failed_checks = validation["failed"].get<int>();
+        return CommandResult{summary, batch.exit_code() != 0 ? batch.exit_code() : failed_checks > 0 ? 1 : 0};
       });
   sub->add_option("--cases", options.cases[0], "Folder of case files (default: the source tree's cases/default)");
   sub->add_option("--out", options.out, "Results folder (default: the source tree's results/)");

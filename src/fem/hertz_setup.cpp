@@ -1,5 +1,6 @@
 #include "fem/hertz_setup.h"
 #include "contact/hertz.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include <cmath>
 #include <fmt/format.h>
@@ -45,13 +46,13 @@ void validate(const HertzSetup& s)
       throw InputError(fmt::format("hertz: {} must be positive and finite, got {}", what, value));
   };
   positive(s.radius_m, "radius_m (--radius)");
-  positive(s.youngs_modulus_pa, "youngs_modulus_pa (--E)");
+  positive(s.youngs_modulus_pa, "youngs_modulus_pa (--youngs-modulus)");
   positive(s.force_n, "force_n (--load)");
   positive(s.length_m, "length_m (--length)");
   positive(s.penalty_c, "penalty_c (--penalty-c)");
   positive(s.force_rtol, "force_rtol (--force-rtol)");
   if (!std::isfinite(s.poisson_ratio) || s.poisson_ratio <= -1.0 || s.poisson_ratio >= 0.5)
-    throw InputError(fmt::format("hertz: poisson_ratio (--nu) must lie in (-1, 0.5), got {}", s.poisson_ratio));
+    throw InputError(fmt::format("hertz: poisson_ratio (--poisson) must lie in (-1, 0.5), got {}", s.poisson_ratio));
   if (s.degree != 1 && s.degree != 2)
     throw InputError(fmt::format("hertz: degree (--degree) must be 1 or 2, got {}", s.degree));
   if (s.refine > 12)
@@ -64,6 +65,12 @@ void validate(const HertzSetup& s)
                                  s.contact_element_size_m, s.radius_m));
   if (s.force_rtol >= 0.01)
     throw InputError(fmt::format("hertz: force_rtol must be below 0.01, got {}", s.force_rtol));
+  if (!s.xdmf_path.empty())
+  {
+    if (s.xdmf_path.extension() != ".xdmf")
+      throw InputError(fmt::format("hertz: the field output '{}' (--xdmf) must end in .xdmf", s.xdmf_path.string()));
+    check_output_file(s.xdmf_path, "hertz: the field output (--xdmf)");
+  }
 }
 
 HertzReference hertz_reference(const HertzSetup& s)

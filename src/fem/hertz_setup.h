@@ -52,7 +52,7 @@ struct HertzSetup
   double force_rtol = 1e-6;           ///< load control: |F_h - F| / F at the end
   /// Extra PETSc options, e.g. "-hertz_ksp_type gmres"; the solver's prefix is "hertz_".
   std::string petsc_options;
-  /// If set, the fields are written there (XDMF + HDF5).
+  /// If set, the fields are written there: one self-contained XDMF file.
   std::filesystem::path xdmf_path;
 
   static constexpr double default_penalty_c = 100.0;

@@ -28,7 +28,8 @@ void run_script(const std::filesystem::path& python, const std::filesystem::path
 /// Fills `folder` whole or not at all: `prepare` writes into a temporary
 /// folder beside it, then `python script args... --out TMP` runs there (its
 /// output in TMP/<log_name>), and the temporary folder replaces `folder` only
-/// when both succeeded. Errors as run_script's.
+/// when both succeeded (core write_folder_atomically: a folder holding files
+/// rollcheck did not write is refused, never replaced). Errors as run_script's.
 void draw_folder(const std::filesystem::path& folder, const std::filesystem::path& python,
                  const std::filesystem::path& script, const std::vector<std::string>& args,
                  const std::string& log_name, const std::function<void(const std::filesystem::path&)>& prepare);
@@ -38,6 +39,9 @@ void draw_folder(const std::filesystem::path& folder, const std::filesystem::pat
 /// when the script succeeded. InputError for a missing store, scripts folder
 /// or interpreter; ComputationError (with the script's last output) if the
 /// script fails.
+/// `validation` (the checks JSON of `rollcheck validate`) and `audit` (the JSON
+/// of `rollcheck audit`) are shown first when given.
 ReportFiles write_report(const std::filesystem::path& store, const std::filesystem::path& folder,
-                         const std::filesystem::path& scripts, const std::filesystem::path& python);
+                         const std::filesystem::path& scripts, const std::filesystem::path& python,
+                         const std::filesystem::path& validation = {}, const std::filesystem::path& audit = {});
 } // namespace rollcheck::io

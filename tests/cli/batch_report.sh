@@ -19,7 +19,7 @@ check 'grep -q "report: $tmp/out/report/report.html" "$tmp/report.out"' "report:
 md=$tmp/out/report/report.md
 check '[[ -s $md && -s $tmp/out/report/report.html ]]' "report files"
 check 'grep -q "^| oloid | mesh | ok |" "$md"' "cases table"
-check 'grep -q "^## Scene .mesh.: 2 case(s)" "$md"' "results table"
+check 'grep -q "^### Scene .mesh.: 2 cases$" "$md"' "results table"
 check '[[ $(grep -c "not drawn" "$md") -eq 5 ]]' "the five plots are not all named as not drawn"
 check 'grep -q "</html>" "$tmp/out/report/report.html"' "html"
 "$bin" report --from "$tmp/out/results.h5" > /dev/null 2>&1

@@ -1,0 +1,404 @@
+// FEM-SDS (study/fem_sds.h): the orientation sources, the per-orientation
+// FEM against line Hertz, and the scores over the orientations.
+#include "study/fem_sds.h"
+#include "contact/face_curvature.h"
+#include "contact/face_pressure.h"
+#include "contact/hertz.h"
+#include "contact/rim_overhang.h"
+#include "core/error.h"
+#include "fem/all_gather.h"
+#include "fem/petsc_session.h"
+#include "oracle/distribution_score.h"
+#include "oracle/rigid_body_oracle.h"
+#include "oracle/rolling_body.h"
+#include "oracle/rolling_study.h"
+#include "oracle/stratified_samples.h"
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <map>
+#include <numbers>
+#include <spdlog/spdlog.h>
+
+namespace rollcheck::study
+{
+namespace
+{
+/// The library settings the method's settings stand for.
+struct Models
+{
+  contact::HertzParameters hertz;
+  oracle::PaperCompat compat;
+  contact::LocusOptions locus;
+  fem::SliceSettings slice;
+  fem::SlabSettings slab;
+  double effective_modulus_pa = 0; ///< of the FEM and the line-Hertz slices
+};
+
+Models models_of(const FemSdsSettings& s)
+{
+  Models m;
+  m.hertz.youngs_modulus_pa = s.youngs_modulus_pa;
+  m.hertz.poisson_ratio = s.poisson_ratio;
+  m.hertz.normal_load_n = s.normal_load_n;
+  m.compat = s.paper_compat ? oracle::PaperCompat::reference() : oracle::PaperCompat::corrected();
+  m.locus.contact_threshold_m = s.contact_threshold_m;
+  m.locus.ground_at_lowest_centroid = m.compat.ground_at_lowest_centroid;
+  m.slice.youngs_modulus_pa = s.youngs_modulus_pa;
+  m.slice.poisson_ratio = s.poisson_ratio;
+  m.slice.refine = s.refine;
+  m.slice.penalty_c = s.penalty_c;
+  m.slice.elastic_plane = s.elastic_plane;
+  m.slab.youngs_modulus_pa = s.youngs_modulus_pa;
+  m.slab.poisson_ratio = s.poisson_ratio;
+  m.slab.penalty_c = s.penalty_c;
+  m.slab.elastic_plane = s.elastic_plane;
+  m.slab.refine = s.slab_refine;
+  m.effective_modulus_pa = contact::effective_modulus(s.youngs_modulus_pa, s.poisson_ratio, s.elastic_plane);
+  return m;
+}
+
+/// The contact locus needs the body's exact circles: only hulls of circles.
+void require_hull_of_circles(const geometry::BodySpec& body)
+{
+  if (!body.mesh_file.empty())
+    throw InputError(fmt::format("mesh_file '{}': fem-sds needs the exact body (its circles), give --body "
+                                 "oloid|paper-oloid|roller|cylinder",
+                                 body.mesh_file));
+  if (body.body != "oloid" && body.body != "paper-oloid" && body.body != "roller" && body.body != "cylinder")
+    throw InputError(fmt::format("body '{}': fem-sds covers the hulls of circles (oloid, paper-oloid, roller, "
+                                 "cylinder), whose contact is a ruling; a sphere's point contact is `rollcheck hertz`",
+                                 body.body));
+}
+
+/// The sampled orientations of an oracle run, with the body's circles and centre of mass.
+struct OrientationSource
+{
+  std::vector<oracle::Circle> circles;
+  Eigen::Vector3d centre_of_mass_m;
+  std::vector<Eigen::Matrix3d> rotations;
+  std::vector<double> times_s;
+  std::vector<std::vector<int>> oracle_faces; ///< rigid oracle: its own counts; rolling: empty
+  std::string description;
+};
+
+OrientationSource rolling_source(const FemSdsSettings& s)
+{
+  oracle::RollingStudyParameters rp;
+  rp.barrier_energy_excess = s.barrier_energy_excess;
+  const oracle::RealRolling run = oracle::real_rolling(s.body, rp);
+  OrientationSource source{run.circles, run.mass.centre_of_mass_m, {}, {}, {}, ""};
+  for (const oracle::RollingSample& sample : run.trajectory.samples)
+    if (sample.time_s <= run.scored_end_s)
+    {
+      source.rotations.push_back(sample.rotation);
+      source.times_s.push_back(sample.time_s);
+    }
+  source.description = fmt::format("real rolling, one loop of {:.4g} s, {} samples{}", run.scored_end_s,
+                                   source.rotations.size(), run.trajectory.contact_held ? "" : " (a rim lifted)");
+  return source;
+}
+
+OrientationSource rigid_source(const FemSdsSettings& s, const Models& m, const oracle::RollingBody& body)
+{
+  oracle::RigidBodyOptions options;
+  options.contact_threshold_m = m.locus.contact_threshold_m;
+  const auto runs = static_cast<std::size_t>(s.runs);
+  const auto& spins = oracle::reference_initial_spins();
+  options.initial_spins.assign(spins.begin(), spins.begin() + static_cast<long>(runs));
+  const oracle::Trajectory t = oracle::rigid_body_oracle(body, options, m.compat);
+  OrientationSource source{oracle::line_contact_circles(s.body), body.mass.centre_of_mass, {}, {}, {}, ""};
+  const double sample_dt = options.time_step_s * static_cast<double>(options.sample_every);
+  std::vector<int> per_run(runs, 0);
+  for (std::size_t k = 0; k < t.size(); ++k)
+  {
+    source.rotations.push_back(t.samples[k].rotation);
+    source.times_s.push_back(sample_dt * per_run[static_cast<std::size_t>(t.samples[k].run)]++);
+    source.oracle_faces.emplace_back(t.contacts_begin(k), t.contacts_end(k));
+  }
+  source.description = fmt::format("the preprint's rigid-body oracle, {} runs, {} samples", runs, t.size());
+  return source;
+}
+
+/// Linear interpolation of `values` given at increasing `at`, held constant
+/// beyond the first and last.
+double interpolate(std::span<const double> at, std::span<const double> values, double x)
+{
+  if (x <= at.front())
+    return values.front();
+  if (x >= at.back())
+    return values.back();
+  const auto upper = std::upper_bound(at.begin(), at.end(), x) - at.begin();
+  const double t = (x - at[upper - 1]) / (at[upper] - at[upper - 1]);
+  return (1 - t) * values[upper - 1] + t * values[upper];
+}
+
+/// The slices' FEM along the loaded ruling and their peaks, and the line
+/// Hertz at its loaded ends.
+void solve_slices_along(MPI_Comm comm, FemSdsOrientation& r, const FemSdsSettings& s, const Models& m,
+                        std::span<const double> fractions)
+{
+  const oracle::Ruling& ruling = *r.locus.ruling;
+  const double c = r.locus.centre_of_pressure, L = ruling.length_m;
+  std::vector<fem::SliceLoad> loads;
+  for (const double f : fractions)
+    loads.push_back({f * L, (1 - f) * ruling.start_radius_m + f * ruling.end_radius_m,
+                     oracle::line_load(s.normal_load_n, c, L, f)});
+  const auto start = std::chrono::steady_clock::now();
+  r.slices = fem::solve_slices(comm, loads, m.slice);
+  r.wall_s = fem::wall_seconds_since(comm, start);
+  for (const fem::SliceFem& slice : r.slices)
+  {
+    r.fem_peak_pa = std::max(r.fem_peak_pa, slice.peak_pressure_pa);
+    r.fem_peak_refined_pa = std::max(r.fem_peak_refined_pa, slice.refined_peak_pressure_pa);
+    r.line_hertz_peak_pa = std::max(r.line_hertz_peak_pa, slice.hertz_peak_pressure_pa);
+    r.contact_width_m = std::max(r.contact_width_m, 2 * slice.half_width_m);
+    r.dofs += slice.dofs;
+    r.newton_iterations += slice.newton_iterations;
+    r.krylov_iterations += slice.krylov_iterations;
+  }
+  for (const double end : {r.locus.loaded_from, r.locus.loaded_to})
+    r.line_hertz_end_peak_pa
+        = std::max(r.line_hertz_end_peak_pa, line_hertz_peak(s.normal_load_n, c, ruling, m.effective_modulus_pa, end));
+  r.contact_length_m = (r.locus.loaded_to - r.locus.loaded_from) * L;
+}
+
+FemSdsOrientation evaluate_orientation(MPI_Comm comm, const OrientationSource& source, std::size_t pick,
+                                       const FemSdsSettings& s, const Models& m, const oracle::RollingBody& body,
+                                       const contact::FacePressure& pressure, const oracle::FaceCones& cones)
+{
+  FemSdsOrientation r;
+  const std::vector<int>* counted = source.oracle_faces.empty() ? nullptr : &source.oracle_faces[pick];
+  r.locus = contact::contact_locus(source.circles, source.centre_of_mass_m, body, source.rotations[pick], m.locus,
+                                   counted);
+  r.locus.sample = pick;
+  r.locus.time_s = source.times_s[pick];
+  for (const int f : r.locus.oracle_faces)
+    r.point_hertz_peak_pa = std::max(r.point_hertz_peak_pa, pressure.peak_pressure_pa[f]);
+  if (!r.locus.ruling || !r.locus.in_equilibrium)
+    return r;
+  r.solved = true;
+  r.rim_overhang_rad = contact::rim_overhang(source.circles, r.locus.support.circles[0], r.locus.support.circles[1],
+                                             *r.locus.ruling);
+  const std::vector<double> fractions
+      = slice_fractions(r.locus.loaded_from, r.locus.loaded_to, s.crease_margin, s.fem_slices);
+  solve_slices_along(comm, r, s, m, fractions);
+
+  // Onto the faces: the peak pressure at points along the loaded ruling, held
+  // at the outermost slices' values over the crease margins.
+  const std::vector<double> along = mapping_fractions(r.locus.loaded_from, r.locus.loaded_to, s.map_points);
+  const std::vector<int> faces = contact::faces_along_ruling(cones, r.locus, along);
+  std::vector<double> fem_values, line_values;
+  for (const fem::SliceFem& slice : r.slices)
+  {
+    fem_values.push_back(slice.peak_pressure_pa);
+    line_values.push_back(slice.hertz_peak_pressure_pa);
+  }
+  r.fem_faces = peaks_per_face(faces, along, fractions, fem_values);
+  r.line_faces = peaks_per_face(faces, along, fractions, line_values);
+  return r;
+}
+
+/// The fuller model of a solved orientation: its whole ruling as one 3D slab
+/// under the slices' approaches, at the slab level and one finer. Its end
+/// faces are square: leaning them as the rims do (SlabBody::end_overhang_rad)
+/// shears the whole slab, and that moved the oloid's peak by +3.7 % against
+/// the slices (README "Creases"), so the rims' lean is reported, not modelled.
+void check_with_slab(MPI_Comm comm, FemSdsOrientation& r, const FemSdsSettings& s, const Models& m)
+{
+  const oracle::Ruling& ruling = *r.locus.ruling;
+  for (const int level : {m.slab.refine, m.slab.refine + 1})
+  {
+    fem::SlabSettings settings = m.slab;
+    settings.refine = level;
+    r.slab.push_back(fem::solve_slab(
+        comm, {ruling.length_m, ruling.start_radius_m, ruling.end_radius_m, s.normal_load_n, {0.0, 0.0}}, r.slices,
+        settings));
+  }
+}
+
+/// Rank 0's line for an orientation just evaluated.
+void log_orientation(const FemSdsOrientation& r)
+{
+  if (!r.solved)
+  {
+    spdlog::warn("orientation {} (t = {:.4g} s): {} - no FEM (a point of an edge or no equilibrium has no "
+                 "finite converged peak pressure)",
+                 r.index, r.locus.time_s,
+                 r.locus.creases.empty() ? std::string("ruling out of equilibrium") : r.locus.creases.front());
+    return;
+  }
+  spdlog::info("orientation {} (t = {:.4g} s, c = {:.3f}): FEM p0 {:.4g} MPa (finer {:+.2f} %), line-Hertz "
+               "{:.4g} MPa, point-Hertz {:.4g} MPa; {} DOFs, {:.1f} s",
+               r.index, r.locus.time_s, r.locus.centre_of_pressure, r.fem_peak_pa / 1e6,
+               100 * (r.fem_peak_refined_pa / r.fem_peak_pa - 1), r.line_hertz_peak_pa / 1e6,
+               r.point_hertz_peak_pa / 1e6, r.dofs, r.wall_s);
+}
+
+/// The slab check of a solved orientation while fewer than
+/// slab_orientations were checked, if one slab can resolve its slices.
+void slab_check_if_due(MPI_Comm comm, FemSdsResult& result, FemSdsOrientation& r, const FemSdsSettings& s,
+                       const Models& m, bool log)
+{
+  if (result.slab_checked >= s.slab_orientations)
+    return;
+  if (!fem::slab_feasible(r.slices))
+  {
+    ++result.slab_skipped;
+    if (log)
+      spdlog::info("orientation {}: no slab check (b / R varies more than 2-fold along the ruling)", r.index);
+    return;
+  }
+  check_with_slab(comm, r, s, m);
+  for (const fem::SlabFem& slab : r.slab)
+    result.slab_worst_peak_difference
+        = std::max(result.slab_worst_peak_difference, std::abs(r.slab_peak_difference(slab)));
+  ++result.slab_checked;
+}
+} // namespace
+
+int FemSdsOrientation::obtuse_loaded_rims() const
+{
+  return (locus.loaded_from == 0 && rim_overhang_rad[0] > 0) + (locus.loaded_to == 1 && rim_overhang_rad[1] > 0);
+}
+
+double FemSdsOrientation::slab_peak_difference(const fem::SlabFem& level) const
+{
+  const auto& p = level.slice_peak_pressure_pa;
+  return *std::max_element(p.begin(), p.end()) / fem_peak_pa - 1;
+}
+
+double FemSdsOrientation::slab_slice_difference(const fem::SlabFem& level) const
+{
+  double worst = 0;
+  for (std::size_t i = 0; i < slices.size(); ++i)
+    if (slices[i].peak_pressure_pa > 0)
+      worst = std::max(worst, std::abs(level.slice_peak_pressure_pa[i] / slices[i].peak_pressure_pa - 1));
+  return worst;
+}
+
+const char* oracle_name(OrientationOracle oracle)
+{
+  return oracle == OrientationOracle::rolling ? "rolling" : "rigid";
+}
+
+const char* support_name(oracle::CircleSupportKind kind)
+{
+  static const char* names[] = {"point", "segment", "polygon", "disc"};
+  return names[static_cast<int>(kind)];
+}
+
+std::vector<double> slice_fractions(double loaded_from, double loaded_to, double crease_margin, int slices)
+{
+  const double lo = loaded_from + crease_margin, hi = loaded_to - crease_margin;
+  std::vector<double> fractions;
+  for (int k = 0; k < slices; ++k)
+    fractions.push_back(lo + (hi - lo) * k / (slices - 1));
+  return fractions;
+}
+
+std::vector<double> mapping_fractions(double loaded_from, double loaded_to, int points)
+{
+  std::vector<double> along;
+  for (int k = 0; k < points; ++k)
+    along.push_back(loaded_from + (loaded_to - loaded_from) * (k + 0.5) / points);
+  return along;
+}
+
+double line_hertz_peak(double force_n, double centre_of_pressure, const oracle::Ruling& ruling,
+                       double effective_modulus_pa, double f)
+{
+  const double q = oracle::line_load(force_n, centre_of_pressure, ruling.length_m, f);
+  const double radius = (1 - f) * ruling.start_radius_m + f * ruling.end_radius_m;
+  return q > 0 ? std::sqrt(q * effective_modulus_pa / (std::numbers::pi * radius)) : 0.0;
+}
+
+std::vector<std::pair<int, double>> peaks_per_face(std::span<const int> faces, std::span<const double> along,
+                                                   std::span<const double> slice_fractions,
+                                                   std::span<const double> slice_peaks)
+{
+  std::map<int, double> peak;
+  for (std::size_t k = 0; k < along.size(); ++k)
+    peak[faces[k]] = std::max(peak[faces[k]], interpolate(slice_fractions, slice_peaks, along[k]));
+  return {peak.begin(), peak.end()};
+}
+
+FemSdsScores fem_sds_scores(std::span<const FemSdsOrientation> orientations,
+                            const Eigen::VectorXd& face_peak_pressure_pa, const Eigen::VectorXd& face_areas)
+{
+  Eigen::VectorXd analytic_all = Eigen::VectorXd::Zero(face_areas.size()), analytic = analytic_all,
+                  line = analytic_all, fem = analytic_all;
+  std::size_t solved = 0;
+  for (const FemSdsOrientation& r : orientations)
+  {
+    for (const int f : r.locus.oracle_faces)
+    {
+      analytic_all[f] += face_peak_pressure_pa[f];
+      if (r.solved)
+        analytic[f] += face_peak_pressure_pa[f];
+    }
+    solved += r.solved;
+    for (const auto& [f, p] : r.fem_faces)
+      fem[f] += p;
+    for (const auto& [f, p] : r.line_faces)
+      line[f] += p;
+  }
+  auto score = [&](const Eigen::VectorXd& accumulator) -> std::optional<double> {
+    if (solved > 0 || accumulator.sum() > 0)
+      return oracle::distribution_score(accumulator, face_areas);
+    return std::nullopt;
+  };
+  return {score(analytic), score(analytic_all), score(line), score(fem)};
+}
+
+FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s)
+{
+  const auto start = std::chrono::steady_clock::now();
+  require_hull_of_circles(s.body);
+  fem::ensure_petsc();
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  const Models m = models_of(s);
+  FemSdsResult result;
+  result.body = geometry::body_label(s.body);
+  result.oracle = s.oracle;
+  const geometry::SurfaceMesh mesh = geometry::make_body(s.body);
+  const oracle::RollingBody body = oracle::make_rolling_body(mesh, m.compat);
+  const contact::FaceCurvature curvature = contact::face_curvature(mesh, m.hertz, m.compat);
+  const contact::FacePressure pressure = contact::face_pressure(curvature.effective_radius_m, m.hertz, m.compat);
+  const oracle::FaceCones cones = oracle::face_cones(mesh);
+  const OrientationSource source
+      = s.oracle == OrientationOracle::rolling ? rolling_source(s) : rigid_source(s, m, body);
+  result.source = source.description;
+  const std::vector<std::size_t> picks = oracle::stratified_samples(source.rotations.size(), s.orientations, s.seed);
+  if (rank == 0)
+    spdlog::info("fem-sds {}: {}; {} orientations (seed {})", result.body, source.description, picks.size(), s.seed);
+
+  for (const std::size_t pick : picks)
+  {
+    FemSdsOrientation& r
+        = result.orientations.emplace_back(evaluate_orientation(comm, source, pick, s, m, body, pressure, cones));
+    r.index = result.orientations.size() - 1;
+    result.reaching_crease += !r.locus.creases.empty();
+    result.standing_on_crease += !r.solved && !r.locus.ruling;
+    if (r.solved)
+    {
+      ++result.fem_solved;
+      result.reaching_obtuse_rim += r.obtuse_loaded_rims() > 0;
+      slab_check_if_due(comm, result, r, s, m, rank == 0);
+      result.worst_refinement_change
+          = std::max(result.worst_refinement_change, std::abs(r.fem_peak_refined_pa / r.fem_peak_pa - 1));
+      result.max_orientation_wall_s = std::max(result.max_orientation_wall_s, r.wall_s);
+    }
+    if (rank == 0)
+      log_orientation(r);
+  }
+  result.sds = fem_sds_scores(result.orientations, pressure.peak_pressure_pa, body.face_areas);
+  result.effective_modulus_pa = m.effective_modulus_pa;
+  result.analytic_effective_modulus_pa = pressure.effective_modulus_pa;
+  result.n_faces = static_cast<std::int64_t>(mesh.faces.rows());
+  result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+} // namespace rollcheck::study

@@ -1,0 +1,169 @@
+#pragma once
+// FEM-SDS: FEM contact stress at orientations sampled from an oracle run,
+// against the preprint's analytic SDS (README "FEM contact stress at sampled
+// orientations").
+//
+// Per orientation: the contact locus (contact/contact_locus.h), the
+// preprint's point-Hertz peak over the faces its oracle counts, the
+// line-contact Hertz slices, and the plane-strain FEM of the slices at two
+// refinement levels (fem/slice_contact.h), away from the creases the contact
+// reaches; optionally the whole ruling as one 3D slab (fem/slab_contact.h).
+// Over the orientations: the SDS template (oracle/distribution_score.h)
+// applied to the preprint's face pressures, to the line-Hertz and to the FEM
+// peak pressures mapped back onto the faces along each ruling.
+#include "contact/contact_locus.h"
+#include "contact/contact_parameters.h"
+#include "fem/slab_contact.h"
+#include "fem/slice_contact.h"
+#include "geometry/body.h"
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <mpi.h>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rollcheck::study
+{
+/// Where the orientations come from.
+enum class OrientationOracle
+{
+  rolling, ///< real rolling without slipping: the body on a ruling at every instant
+  rigid    ///< the preprint's rigid-body oracle, whose orientations mostly stand on a rim point
+};
+
+struct FemSdsSettings
+{
+  /// A hull of circles (oloid, paper-oloid, roller, cylinder), built from its
+  /// spec: the contact locus needs its exact circles, not a mesh file.
+  geometry::BodySpec body;
+  OrientationOracle oracle = OrientationOracle::rolling;
+  std::size_t orientations = 12;   ///< K, one per equal stratum of the oracle run
+  std::uint64_t seed = 1;          ///< of the stratified sampling
+  double barrier_energy_excess = 0.1; ///< rolling oracle: kinetic energy / potential barrier - 1
+  int runs = 3;                    ///< rigid oracle: runs with the reference's first initial spins
+  /// eps: the faces the preprint's SDS counts at an orientation.
+  double contact_threshold_m = contact::LocusOptions{}.contact_threshold_m;
+  /// The preprint's face pressures (PaperCompat::reference()) for the analytic
+  /// SDS; otherwise every quirk corrected.
+  bool paper_compat = false;
+  double youngs_modulus_pa = contact::HertzParameters{}.youngs_modulus_pa;
+  double poisson_ratio = contact::HertzParameters{}.poisson_ratio;
+  /// F, through the centre of mass onto the rigid plane.
+  double normal_load_n = contact::HertzParameters{}.normal_load_n;
+  int fem_slices = 9;              ///< plane-strain slices per orientation, over the loaded ruling
+  /// Fraction of the ruling kept clear at each end of the loaded contact: the
+  /// FEM peaks are taken away from the creases.
+  double crease_margin = 0.05;
+  int map_points = 64;             ///< points along each ruling mapped onto the faces
+  int refine = fem::SliceSettings{}.refine;       ///< the slices' level; the error estimate runs one finer
+  double penalty_c = fem::SliceSettings{}.penalty_c;
+  /// The first N solved orientations that slab_feasible() admits are also
+  /// solved as one 3D slab of the whole ruling; 0: none.
+  std::size_t slab_orientations = 0;
+  int slab_refine = 0;             ///< the slab's section level; the second solve is one finer
+  bool elastic_plane = false;      ///< the E* of two identical bodies instead of a rigid plane
+};
+
+struct FemSdsOrientation
+{
+  std::size_t index = 0;                   ///< among the sampled orientations
+  contact::ContactLocus locus;
+  double point_hertz_peak_pa = 0;          ///< the preprint's: largest p_f over its faces
+  bool solved = false;                     ///< a ruling in equilibrium: slices solved
+  std::vector<fem::SliceFem> slices;
+  double fem_peak_pa = 0, fem_peak_refined_pa = 0, line_hertz_peak_pa = 0;
+  double line_hertz_end_peak_pa = 0;       ///< slice formula at the loaded ends (the crease's nominal value)
+  double contact_length_m = 0, contact_width_m = 0;
+  std::int64_t dofs = 0;
+  int newton_iterations = 0, krylov_iterations = 0;
+  double wall_s = 0;
+  std::vector<std::pair<int, double>> fem_faces, line_faces; ///< (face, peak) along the ruling
+  std::vector<fem::SlabFem> slab;          ///< the 3D check at two section levels, if run
+  /// Lean of the body's rims at the ruling's start and end (contact/rim_overhang.h):
+  /// > 0 an obtuse edge, singular against the rigid plane where loaded.
+  std::array<double, 2> rim_overhang_rad{};
+
+  int obtuse_loaded_rims() const;
+  /// The slab's peak over the slices' positions against the slices' peak,
+  /// minus 1: the orientation's peak under the fuller model.
+  double slab_peak_difference(const fem::SlabFem& level) const;
+  /// Largest |slab / slice - 1| over the loaded slices: the outermost show
+  /// the free end's compliance that plane strain leaves out.
+  double slab_slice_difference(const fem::SlabFem& level) const;
+};
+
+/// The SDS of each accumulator; none when no orientation was solved and the
+/// accumulator is empty (+infinity when solved ones left it empty).
+struct FemSdsScores
+{
+  std::optional<double> analytic;                  ///< preprint's face pressures, solved orientations
+  std::optional<double> analytic_all_orientations; ///< the same over every orientation
+  std::optional<double> line_hertz;                ///< line-Hertz peaks mapped onto the faces
+  std::optional<double> fem;                       ///< FEM peaks mapped onto the faces
+};
+
+struct FemSdsResult
+{
+  std::string body;                        ///< geometry::body_label
+  OrientationOracle oracle = OrientationOracle::rolling;
+  std::string source;                      ///< the oracle run, in words
+  std::vector<FemSdsOrientation> orientations;
+  std::size_t fem_solved = 0, reaching_crease = 0, standing_on_crease = 0, reaching_obtuse_rim = 0;
+  FemSdsScores sds;
+  double worst_refinement_change = 0;      ///< largest |FEM finer / FEM - 1| over solved orientations
+  double max_orientation_wall_s = 0;
+  std::size_t slab_checked = 0, slab_skipped = 0;
+  double slab_worst_peak_difference = 0;
+  double effective_modulus_pa = 0;          ///< of the FEM and the line-Hertz slices
+  double analytic_effective_modulus_pa = 0; ///< of the preprint's face pressures
+  std::int64_t n_faces = 0;
+  double wall_s = 0;
+};
+
+/// Runs the method on the ranks of `comm` (every rank gets the whole result;
+/// rank 0 logs each orientation). InputError naming the setting for a mesh
+/// file or a body that is not a hull of circles; ComputationError from the FEM.
+FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& settings);
+
+nlohmann::json to_json(const FemSdsOrientation& orientation);
+nlohmann::json to_json(const FemSdsResult& result);
+
+// The steps of the method, exposed for tests.
+
+/// "rolling" or "rigid".
+const char* oracle_name(OrientationOracle oracle);
+/// "point", "segment", "polygon" or "disc".
+const char* support_name(oracle::CircleSupportKind kind);
+
+/// Fractions of the ruling where the slices go: `slices` evenly from
+/// loaded_from + margin to loaded_to - margin, both included.
+std::vector<double> slice_fractions(double loaded_from, double loaded_to, double crease_margin, int slices);
+
+/// Fractions of the ruling mapped onto the faces: the midpoints of `points`
+/// equal parts of [loaded_from, loaded_to].
+std::vector<double> mapping_fractions(double loaded_from, double loaded_to, int points);
+
+/// Line-contact Hertz peak sqrt(q E* / (pi R)) at fraction `f` of a ruling of
+/// length L, radius R(f) linear from its start to its end radius, carrying
+/// `force_n` with centre of pressure c (oracle::line_load); 0 where unloaded.
+double line_hertz_peak(double force_n, double centre_of_pressure, const oracle::Ruling& ruling,
+                       double effective_modulus_pa, double f);
+
+/// (face, largest peak) over the mapping points: the peak at each point
+/// interpolated linearly from the slices' (held at the outermost slices'
+/// values beyond them), `faces[k]` the face holding point `along[k]`.
+std::vector<std::pair<int, double>> peaks_per_face(std::span<const int> faces, std::span<const double> along,
+                                                   std::span<const double> slice_fractions,
+                                                   std::span<const double> slice_peaks);
+
+/// The four SDS of the orientations: the preprint's per-face pressures
+/// `face_peak_pressure_pa` summed over each orientation's oracle faces, and
+/// its fem_faces / line_faces, each through the score template with `face_areas`.
+FemSdsScores fem_sds_scores(std::span<const FemSdsOrientation> orientations,
+                            const Eigen::VectorXd& face_peak_pressure_pa, const Eigen::VectorXd& face_areas);
+} // namespace rollcheck::study

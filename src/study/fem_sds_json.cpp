@@ -1,0 +1,162 @@
+// FEM-SDS results as JSON (study/fem_sds.h): the keys the CLI writes, the
+// audit's pointers and postprocess/plot_fem_*.py read.
+#include "core/error.h"
+#include "study/fem_sds.h"
+#include <cmath>
+#include <numbers>
+
+namespace rollcheck::study
+{
+namespace
+{
+/// A finite number as itself, +-infinity as "inf" / "-inf" (JSON has no
+/// infinity); NaN is refused. The same rule as io::json_number, which the
+/// study layer cannot include.
+nlohmann::json number(double v)
+{
+  if (std::isnan(v))
+    throw ComputationError("a score came out NaN; refusing to write it");
+  if (std::isinf(v))
+    return v > 0 ? "inf" : "-inf";
+  return v;
+}
+
+nlohmann::json score_json(const std::optional<double>& score)
+{
+  return score ? number(*score) : nlohmann::json(nullptr);
+}
+
+nlohmann::json slice_json(const fem::SliceFem& s)
+{
+  return {{"position_m", number(s.load.position_m)},
+          {"radius_m", number(s.load.radius_m)},
+          {"load_n_per_m", number(s.load.load_n_per_m)},
+          {"fem_peak_pa", number(s.peak_pressure_pa)},
+          {"fem_peak_refined_pa", number(s.refined_peak_pressure_pa)},
+          {"fem_half_width_m", number(s.half_width_m)},
+          {"line_hertz_peak_pa", number(s.hertz_peak_pressure_pa)},
+          {"line_hertz_half_width_m", number(s.hertz_half_width_m)},
+          {"dofs", s.dofs},
+          {"refined_dofs", s.refined_dofs}};
+}
+
+nlohmann::json slab_json(const FemSdsOrientation& r, const fem::SlabFem& slab)
+{
+  nlohmann::json peaks = nlohmann::json::array(), planes = nlohmann::json::array();
+  for (double p : slab.slice_peak_pressure_pa)
+    peaks.push_back(number(p));
+  for (std::size_t k = 0; k < slab.plane_position_m.size(); ++k)
+    planes.push_back({number(slab.plane_position_m[k]), number(slab.plane_peak_pressure_pa[k])});
+  return {{"refine", slab.refine},
+          {"dofs", slab.dofs},
+          {"layers", slab.layers},
+          {"end_layer_m", number(slab.end_layer_m)},
+          {"newton_iterations", slab.newton_iterations},
+          {"krylov_iterations", slab.krylov_iterations},
+          {"wall_s", number(slab.wall_s)},
+          {"approach_factor", number(slab.approach_factor)},
+          {"force_n", number(slab.force_n)},
+          {"centre_of_pressure", number(slab.centre_of_pressure)},
+          {"slice_peak_pa", peaks},
+          {"peak_difference_vs_slices", number(r.slab_peak_difference(slab))},
+          {"max_slice_difference", number(r.slab_slice_difference(slab))},
+          {"end_peak_pa", {number(slab.end_peak_pressure_pa[0]), number(slab.end_peak_pressure_pa[1])}},
+          {"plane_peaks", planes}};
+}
+
+/// The FEM of a solved orientation: its peaks, slices, faces and slab check.
+void add_fem_json(nlohmann::json& j, const FemSdsOrientation& r)
+{
+  const contact::ContactLocus& l = r.locus;
+  j["loaded_from"] = number(l.loaded_from);
+  j["loaded_to"] = number(l.loaded_to);
+  j["rim_overhang_deg"] = {number(r.rim_overhang_rad[0] * 180 / std::numbers::pi),
+                           number(r.rim_overhang_rad[1] * 180 / std::numbers::pi)};
+  j["obtuse_loaded_rims"] = r.obtuse_loaded_rims();
+  j["fem_peak_pa"] = number(r.fem_peak_pa);
+  j["fem_peak_refined_pa"] = number(r.fem_peak_refined_pa);
+  j["fem_peak_refinement_change"] = number(r.fem_peak_refined_pa / r.fem_peak_pa - 1);
+  j["line_hertz_peak_pa"] = number(r.line_hertz_peak_pa);
+  j["fem_vs_line_hertz"] = number(r.fem_peak_pa / r.line_hertz_peak_pa - 1);
+  j["line_hertz_end_peak_pa"] = number(r.line_hertz_end_peak_pa);
+  j["contact_length_m"] = number(r.contact_length_m);
+  j["contact_width_m"] = number(r.contact_width_m);
+  j["dofs"] = r.dofs;
+  j["newton_iterations"] = r.newton_iterations;
+  j["krylov_iterations"] = r.krylov_iterations;
+  j["wall_s"] = number(r.wall_s);
+  j["slices"] = nlohmann::json::array();
+  for (const fem::SliceFem& s : r.slices)
+    j["slices"].push_back(slice_json(s));
+  j["fem_faces"] = nlohmann::json::array();
+  for (const auto& [f, p] : r.fem_faces)
+    j["fem_faces"].push_back({f, number(p)});
+  if (r.slab.empty())
+    return;
+  j["slab"] = nlohmann::json::array();
+  for (const fem::SlabFem& slab : r.slab)
+    j["slab"].push_back(slab_json(r, slab));
+  j["slab_end_faces"] = "square";
+}
+} // namespace
+
+nlohmann::json to_json(const FemSdsOrientation& r)
+{
+  const contact::ContactLocus& l = r.locus;
+  nlohmann::json j = {{"index", r.index},
+                      {"sample", l.sample},
+                      {"time_s", number(l.time_s)},
+                      {"support", support_name(l.support.kind)},
+                      {"creases", l.creases},
+                      {"reaches_crease", !l.creases.empty()},
+                      {"oracle_faces", l.oracle_faces.size()},
+                      {"point_hertz_peak_pa", number(r.point_hertz_peak_pa)},
+                      {"fem_solved", r.solved}};
+  if (l.ruling)
+  {
+    j["ruling_length_m"] = number(l.ruling->length_m);
+    j["start_radius_m"] = number(l.ruling->start_radius_m);
+    j["end_radius_m"] = number(l.ruling->end_radius_m);
+    j["centre_of_pressure"] = number(l.centre_of_pressure);
+    j["in_equilibrium"] = l.in_equilibrium;
+  }
+  if (r.solved)
+    add_fem_json(j, r);
+  return j;
+}
+
+nlohmann::json to_json(const FemSdsResult& result)
+{
+  nlohmann::json per_orientation = nlohmann::json::array();
+  for (const FemSdsOrientation& r : result.orientations)
+    per_orientation.push_back(to_json(r));
+  return {
+      {"body", result.body},
+      {"oracle", oracle_name(result.oracle)},
+      {"source", result.source},
+      {"orientations", result.orientations.size()},
+      {"fem_solved_orientations", result.fem_solved},
+      {"orientations_reaching_crease", result.reaching_crease},
+      {"orientations_standing_on_crease", result.standing_on_crease},
+      {"orientations_reaching_obtuse_rim", result.reaching_obtuse_rim},
+      {"analytic_sds", score_json(result.sds.analytic)},
+      {"analytic_sds_all_orientations", score_json(result.sds.analytic_all_orientations)},
+      {"line_hertz_sds", score_json(result.sds.line_hertz)},
+      {"fem_sds", score_json(result.sds.fem)},
+      {"fem_peak_worst_refinement_change", number(result.worst_refinement_change)},
+      {"max_orientation_wall_s", number(result.max_orientation_wall_s)},
+      {"slab_checked_orientations", result.slab_checked},
+      {"slab_skipped_orientations", result.slab_skipped},
+      {"slab_worst_peak_difference", number(result.slab_worst_peak_difference)},
+      {"effective_modulus_pa", result.effective_modulus_pa},
+      {"analytic_effective_modulus_pa", result.analytic_effective_modulus_pa},
+      {"n_faces", result.n_faces},
+      {"wall_s", number(result.wall_s)},
+      {"per_orientation", per_orientation},
+      {"contact_model",
+       "developable bodies touch the plane along a ruling: the preprint's point-contact Hertz with R = 1/sqrt(k1 k2) "
+       "does not apply there (k1 k2 = 0 on the exact surface); the FEM and line-Hertz columns treat the ruling as "
+       "plane-strain slices; peaks are taken away from the ruling's ends, where it meets the body's rims (creases: "
+       "singular between two elastic bodies, not plane strain in any case; the 3D slab check shows the end)"}};
+}
+} // namespace rollcheck::study
