@@ -1,9 +1,9 @@
 // `rollcheck mesh`: build or read a body, check it, report its mass
 // properties, and write it as a surface mesh or a gmsh tetrahedral mesh.
-#include "cli/body_from_parameters.h"
+// Also the scene "mesh" of case files.
 #include "cli/cli.h"
 #include "cli/scenes.h"
-#include "core/error.h"
+#include "geometry/body.h"
 #include "geometry/mass_properties.h"
 #include "geometry/mesh_checks.h"
 #include "geometry/tetrahedralize.h"
@@ -14,13 +14,22 @@ namespace rollcheck::cli
 {
 namespace
 {
-const io::Schema& mesh_schema()
+struct MeshScene
 {
-  static const io::Schema schema = [] {
-    io::Schema s{"mesh", body_parameters()};
-    s.parameters.push_back({"out", "--out", std::string(), "",
-                            "Write the mesh here: .obj/.stl/.ply/.off (surface) or .msh (gmsh tetrahedra)"});
-    s.parameters.push_back({"volume_mesh_size_m", "--size", 0.1, "m", "Tetrahedron size of a .msh volume mesh"});
+  geometry::BodySpec body;
+  std::string out;                  ///< "" writes nothing
+  double volume_mesh_size_m = 0.1;  ///< tetrahedron size of a .msh volume mesh
+};
+
+const io::BoundSchema<MeshScene>& mesh_schema()
+{
+  static const io::BoundSchema<MeshScene> schema = [] {
+    io::BoundSchema<MeshScene> s("mesh");
+    s.include(body_schema(), &MeshScene::body)
+        .text("out", "--out", &MeshScene::out,
+              "Write the mesh here: .obj/.stl/.ply/.off (surface) or .msh (gmsh tetrahedra)")
+        .real("volume_mesh_size_m", "--size", &MeshScene::volume_mesh_size_m, "m",
+              "Tetrahedron size of a .msh volume mesh", io::positive);
     return s;
   }();
   return schema;
@@ -28,8 +37,9 @@ const io::Schema& mesh_schema()
 
 nlohmann::json run_mesh(const io::Parameters& params)
 {
-  std::string label;
-  const geometry::SurfaceMesh mesh = body_from_parameters(params, &label);
+  const MeshScene scene = mesh_schema().bind(params);
+  const std::string label = geometry::body_label(scene.body);
+  const geometry::SurfaceMesh mesh = geometry::make_body(scene.body);
   const geometry::MeshChecks checks = geometry::check_mesh(mesh);
   const geometry::MassProperties mp = geometry::mass_properties(mesh);
   auto vec = [](const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); };
@@ -47,17 +57,17 @@ nlohmann::json run_mesh(const io::Parameters& params)
                             {"watertight", checks.watertight},
                             {"outward", checks.outward},
                             {"convex", checks.convex}};
-  if (const std::string& out = params.text("out"); !out.empty())
+  if (!scene.out.empty())
   {
-    const std::filesystem::path path(out);
+    const std::filesystem::path path(scene.out);
     if (path.extension() == ".msh")
     {
-      const auto info = geometry::write_tetrahedral_mesh(mesh, params.real("volume_mesh_size_m"), path);
+      const auto info = geometry::write_tetrahedral_mesh(mesh, scene.volume_mesh_size_m, path);
       summary["volume_mesh"] = {{"nodes", info.nodes}, {"tetrahedra", info.tetrahedra}};
     }
     else
       geometry::write_mesh(mesh, path);
-    summary["out"] = out;
+    summary["out"] = scene.out;
   }
   spdlog::info("{}: {} faces, area {:.9g} m^2, volume {:.9g} m^3, watertight {}, convex {}", label,
                mesh.faces.rows(), mp.area_m2, mp.volume_m3, checks.watertight, checks.convex);
@@ -70,11 +80,10 @@ void add_mesh_command(CLI::App& app)
   CLI::App* sub = app.add_subcommand("mesh", "Build or read a body, check it and write its mesh");
   static std::string json_path;
   add_json_option(sub, json_path);
-  static io::SchemaOptions* options = new io::SchemaOptions(sub, mesh_schema());
-  register_scene({&mesh_schema(), run_mesh});
+  static io::SchemaOptions* options = new io::SchemaOptions(sub, mesh_schema().schema());
+  register_scene({&mesh_schema().schema(), run_mesh});
   on_run(sub, [] {
-    const nlohmann::json summary = run_mesh(options->apply());
-    emit_json(json_path, summary);
+    emit_json(json_path, run_mesh(options->apply()));
     return 0;
   });
 }

@@ -1,15 +1,13 @@
 // `rollcheck search`: the preprint's two-layer parametric search over the
 // paper family of rollers (README "rollcheck search"): approximate screening
-// of a grid, rigid-body revalidation of the best K (or all), a ranked table,
-// JSON and HDF5. Also the scene "search" of case files.
+// of a grid, rigid-body revalidation of the best K (or all) scored by
+// study::revalidation_scores, a ranked table, JSON and HDF5. Also the scene
+// "search" of case files.
 #include "cli/cli.h"
 #include "cli/scenes.h"
-#include "contact/face_curvature.h"
-#include "contact/face_pressure.h"
-#include "contact/trajectory_scores.h"
-#include "core/error.h"
 #include "io/search_store.h"
 #include "oracle/parametric_search.h"
+#include "study/score_body.h"
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -21,37 +19,53 @@ namespace rollcheck::cli
 {
 namespace
 {
-const io::Schema& search_schema()
+/// The search's options and the options that resolve into them (run_search).
+struct SearchScene : oracle::SearchOptions
 {
-  static const io::Schema schema = [] {
-    const oracle::SearchOptions d;
-    io::Schema s{"search", {}};
-    s.parameters = {
-        {"grid", "--grid", std::string("quick"), "",
-         "Grid of the reference code: quick (45 genomes, the preprint's), standard (616) or deep (1430)",
-         {"quick", "standard", "deep"}},
-        {"validate_top", "--validate-top", std::int64_t{5}, "",
-         "Revalidate the best K genomes by approximate CDS with the rigid-body oracle (the preprint's 5)"},
-        {"validate_all", "--validate-all", false, "", "Revalidate every valid genome"},
-        {"matched_resolution", "--matched-resolution", false, "",
-         "Mesh every body, the anchor oloid included, with --points samples per circle (else the anchor uses "
-         "--anchor-points, as the preprint compares a 400-point oloid with 300-point candidates)"},
-        {"points", "--points", std::int64_t{d.points}, "", "Samples per generating circle of the candidates (the reference's search)"},
-        {"anchor_points", "--anchor-points", std::int64_t{d.anchor_points}, "",
-         "Samples per circle of the anchor oloid without --matched-resolution (the reference's generate_oloid)"},
-        {"steps", "--steps", std::int64_t{0}, "",
-         "Approximate oracle steps; 0 = the reference's (200 for quick, 300 for standard and deep)"},
-        {"radius_m", "--radius", d.radius_m, "m", "r1 of every roller (the preprint's)"},
-        {"threads", "--threads", std::int64_t{0}, "", "Worker threads; 0 = one per core"},
-        {"paper_compat", "--paper-compat", false, "",
-         "Reproduce the reference code's quirks (see `rollcheck oracle --help`); without it every quirk is corrected"},
-        {"quirks", "--quirks", std::string(), "", "Set single paper-compat switches: name=paper|corrected,..."},
-        {"metrics", "--metrics", std::string("all"), "",
-         "Scores of revalidated genomes besides CDS, from sds,tds,wds,fds, or all (contact parameters at the "
-         "preprint's values)"},
-        {"hdf5", "--hdf5", std::string(), "", "Also write the results to this HDF5 file (README: search store)"},
-        {"table_rows", "--rows", std::int64_t{20}, "", "Rows of the ranked table printed"},
-    };
+  std::string metric_list = "all", quirks, hdf5;
+  bool paper_compat = false;
+  long table_rows = 20;
+};
+
+const io::BoundSchema<SearchScene>& search_schema()
+{
+  using S = SearchScene;
+  static const io::BoundSchema<S> schema = [] {
+    // As the body's --points: 100k points per circle is far beyond any converged score.
+    const io::Bounds points{3, 100000};
+    io::BoundSchema<S> s("search");
+    s.choice("grid", "--grid", &S::grid,
+             "Grid of the reference code: quick (45 genomes, the preprint's), standard (616) or deep (1430)",
+             {{"quick", oracle::SearchGrid::quick}, {"standard", oracle::SearchGrid::standard},
+              {"deep", oracle::SearchGrid::deep}})
+        .integer("validate_top", "--validate-top", &S::validate_top, "",
+                 "Revalidate the best K genomes by approximate CDS with the rigid-body oracle (the preprint's 5)",
+                 io::Bounds{0, 100000})
+        .flag("validate_all", "--validate-all", &S::validate_all, "Revalidate every valid genome")
+        .flag("matched_resolution", "--matched-resolution", &S::matched_resolution,
+              "Mesh every body, the anchor oloid included, with --points samples per circle (else the anchor uses "
+              "--anchor-points, as the preprint compares a 400-point oloid with 300-point candidates)")
+        .integer("points", "--points", &S::points, "",
+                 "Samples per generating circle of the candidates (the reference's search)", points)
+        .integer("anchor_points", "--anchor-points", &S::anchor_points, "",
+                 "Samples per circle of the anchor oloid without --matched-resolution (the reference's generate_oloid)",
+                 points)
+        .integer("steps", "--steps", &S::approximate_steps, "",
+                 fmt::format("Approximate oracle steps; 0 = the reference's (200 quick, 300 standard and deep); at "
+                             "most {}, a resource guard", study::max_oracle_samples),
+                 io::Bounds{0, static_cast<double>(study::max_oracle_samples)})
+        .real("radius_m", "--radius", &S::radius_m, "m", "r1 of every roller (the preprint's)", io::positive)
+        .integer("threads", "--threads", &S::threads, "", "Worker threads; 0 = one per core", io::Bounds{0, 1024})
+        .flag("paper_compat", "--paper-compat", &S::paper_compat,
+              "Reproduce the reference code's quirks (see `rollcheck oracle --help`); without it every quirk is "
+              "corrected")
+        .text("quirks", "--quirks", &S::quirks, "Set single paper-compat switches: name=paper|corrected,...")
+        .text("metrics", "--metrics", &S::metric_list,
+              "Scores of revalidated genomes besides CDS, from sds,tds,wds,fds, or all (contact parameters at the "
+              "preprint's values)")
+        .text("hdf5", "--hdf5", &S::hdf5, "Also write the results to this HDF5 file (README: search store)")
+        .integer("table_rows", "--rows", &S::table_rows, "", "Rows of the ranked table printed",
+                 io::Bounds{0, 100000});
     return s;
   }();
   return schema;
@@ -81,8 +95,9 @@ public:
     const double eta = p.done > 0 ? elapsed / static_cast<double>(p.done) * static_cast<double>(p.total - p.done) : 0.0;
     constexpr int width = 30;
     const int filled = p.total > 0 ? static_cast<int>(width * p.done / p.total) : width;
-    std::fprintf(stderr, "\r%-11s [%s%s] %zu/%zu  %5.1f s  ETA %5.1f s", p.phase.c_str(), std::string(filled, '#').c_str(),
-                 std::string(width - filled, '.').c_str(), p.done, p.total, elapsed, eta);
+    std::fprintf(stderr, "\r%-11s [%s%s] %zu/%zu  %5.1f s  ETA %5.1f s", p.phase.c_str(),
+                 std::string(filled, '#').c_str(), std::string(width - filled, '.').c_str(), p.done, p.total, elapsed,
+                 eta);
     if (p.done == p.total)
       std::fputc('\n', stderr), phase_.clear();
     std::fflush(stderr);
@@ -93,32 +108,6 @@ private:
   std::string phase_;
   std::chrono::steady_clock::time_point start_{}, last_{};
 };
-
-oracle::RevalidationMetrics contact_metrics(const contact::MetricSet& metrics, const oracle::PaperCompat& compat)
-{
-  return [metrics, compat](const geometry::SurfaceMesh& mesh, const oracle::RollingBody& body,
-                           const oracle::Trajectory& trajectory) {
-    const contact::ContactParameters parameters;
-    const contact::FaceCurvature curvature = contact::face_curvature(mesh, parameters.hertz, compat);
-    const contact::FacePressure pressure = contact::face_pressure(curvature.effective_radius_m, parameters.hertz, compat);
-    const contact::ScoreVector v
-        = contact::score_trajectory({body, curvature, pressure}, trajectory, metrics, parameters, compat, 0);
-    oracle::NamedScores out;
-    if (v.sds)
-    {
-      out.emplace_back("sds", *v.sds);
-      out.emplace_back("mean_peak_pressure_pa", v.peak_pressure_pa.mean);
-      out.emplace_back("stress_cv", v.peak_pressure_pa.cv);
-    }
-    if (v.tds)
-      out.emplace_back("tds", *v.tds);
-    if (v.wds_vol)
-      out.emplace_back("wds_vol", *v.wds_vol), out.emplace_back("wds_depth", *v.wds_depth);
-    if (v.fds)
-      out.emplace_back("fds", *v.fds);
-    return out;
-  };
-}
 
 std::string score_text(double v) { return std::isinf(v) ? "inf" : fmt::format("{:.4g}", v); }
 
@@ -166,37 +155,26 @@ void print_table(const oracle::SearchResult& result, std::size_t rows)
              result.anchor_points);
 }
 
-nlohmann::json run_search(const io::Parameters& p)
+nlohmann::json run_search(const io::Parameters& params)
 {
-  oracle::SearchOptions o;
-  o.grid = oracle::parse_search_grid(p.text("grid"), "option --grid");
-  if (p.integer("validate_top") < 0)
-    throw InputError(fmt::format("option --validate-top: must be >= 0, got {}", p.integer("validate_top")));
-  o.validate_top = static_cast<std::size_t>(p.integer("validate_top"));
-  o.validate_all = p.flag("validate_all");
-  o.matched_resolution = p.flag("matched_resolution");
-  o.points = static_cast<int>(p.integer("points"));
-  o.anchor_points = static_cast<int>(p.integer("anchor_points"));
-  if (p.integer("steps") < 0)
-    throw InputError(fmt::format("option --steps: must be >= 0 (0: the reference's), got {}", p.integer("steps")));
-  o.approximate_steps = p.integer("steps");
-  o.radius_m = p.real("radius_m");
-  if (p.integer("threads") < 0)
-    throw InputError(fmt::format("option --threads: must be >= 0, got {}", p.integer("threads")));
-  o.threads = static_cast<unsigned>(p.integer("threads"));
-  o.compat = p.flag("paper_compat") ? oracle::PaperCompat::reference() : oracle::PaperCompat::corrected();
-  oracle::apply_quirk_settings(o.compat, p.text("quirks"), "option --quirks");
-  contact::MetricSet metrics = contact::MetricSet::parse(p.text("metrics"), "option --metrics");
-  metrics.cds = false; // the search computes CDS itself
-  o.revalidation_metrics = contact_metrics(metrics, o.compat);
+  const SearchScene scene = search_schema().bind(params);
+  oracle::SearchOptions o = scene;
+  o.compat = scene.paper_compat ? oracle::PaperCompat::reference() : oracle::PaperCompat::corrected();
+  oracle::apply_quirk_settings(o.compat, scene.quirks, "option --quirks");
+  study::ScoreBodySettings scoring; // the preprint's contact parameters
+  scoring.compat = o.compat;
+  scoring.metrics = contact::MetricSet::parse(scene.metric_list, "option --metrics");
+  scoring.metrics.cds = false; // the search computes CDS itself
+  scoring.convergence_every = 0;
+  o.revalidation_metrics = study::revalidation_scores(scoring);
   ProgressBar bar;
   o.progress = [&](const oracle::SearchProgress& progress) { bar(progress); };
   const oracle::SearchResult result = oracle::parametric_search(o);
-  print_table(result, static_cast<std::size_t>(std::max<std::int64_t>(p.integer("table_rows"), 0)));
-  if (const std::string& path = p.text("hdf5"); !path.empty())
+  print_table(result, static_cast<std::size_t>(scene.table_rows));
+  if (!scene.hdf5.empty())
   {
-    io::write_search_hdf5(result, path);
-    spdlog::info("search results written to {}", path);
+    io::write_search_hdf5(result, scene.hdf5);
+    spdlog::info("search results written to {}", scene.hdf5);
   }
   return io::search_summary(result);
 }
@@ -209,8 +187,8 @@ void add_search_command(CLI::App& app)
                 "revalidation");
   static std::string json_path;
   add_json_option(sub, json_path);
-  static io::SchemaOptions* options = new io::SchemaOptions(sub, search_schema());
-  register_scene({&search_schema(), run_search});
+  static io::SchemaOptions* options = new io::SchemaOptions(sub, search_schema().schema());
+  register_scene({&search_schema().schema(), run_search});
   on_run(sub, [] {
     emit_json(json_path, run_search(options->apply()));
     return 0;

@@ -79,6 +79,16 @@ public:
     return *this;
   }
 
+  /// A file path (a string member): relative in a case file, it is taken from
+  /// the case file's folder; on the command line, from the working folder.
+  template <class Access>
+  BoundSchema& path(std::string key, std::string flag, Access access, std::string help)
+  {
+    text(std::move(key), std::move(flag), access, std::move(help));
+    schema_.parameters.back().is_path = true;
+    return *this;
+  }
+
   /// A member of any type chosen by name (an enum): `names` maps each name to its value.
   template <class Access, class T = std::remove_cvref_t<std::invoke_result_t<Access, Settings&>>>
   BoundSchema& choice(std::string key, std::string flag, Access access, std::string help,

@@ -293,6 +293,7 @@ CaseFile read_case_file(const std::filesystem::path& path)
   if (file.kind.empty())
     throw InputError(fmt::format("case file '{}': [scene] has no 'kind'", name));
   file.checks = read_checks(table, name);
+  file.folder = std::filesystem::absolute(path).parent_path();
   return file;
 }
 
@@ -301,7 +302,13 @@ Parameters resolve_case(const CaseFile& file, const Schema& schema, const std::v
 {
   Parameters params(schema);
   for (const auto& [key, value] : file.values)
-    params.set(key, value, origin);
+  {
+    const std::string* text = std::get_if<std::string>(&value);
+    if (text && schema.find(key, origin).is_path && !text->empty() && std::filesystem::path(*text).is_relative())
+      params.set(key, (file.folder / *text).lexically_normal().string(), origin);
+    else
+      params.set(key, value, origin);
+  }
   for (const std::string& assignment : overrides)
   {
     const auto eq = assignment.find('=');

@@ -42,6 +42,8 @@ struct Parameter
   std::string help;    ///< what it is and where the default comes from
   std::vector<std::string> choices = {}; ///< allowed strings, if restricted
   Bounds bounds = {};                    ///< valid range of a number
+  /// A file path: relative in a case file, it is taken from the case file's folder.
+  bool is_path = false;
 };
 
 struct Schema
@@ -95,6 +97,7 @@ struct CaseFile
   std::string kind;
   std::map<std::string, Value> values;
   std::vector<CaseCheck> checks; ///< the [[check]] tables (io/case_checks.h)
+  std::filesystem::path folder;  ///< where the file is: relative paths in it start there
 };
 CaseFile read_case_file(const std::filesystem::path& path);
 Parameters resolve_case(const CaseFile& file, const Schema& schema, const std::vector<std::string>& overrides,

@@ -55,6 +55,9 @@
 // |E(t) + W(t) - E(0)| / E(0) is evaluated at every sample and must stay below
 // `energy_tolerance`, else ComputationError: this is the bound on the energy
 // error the local error control (relative_tolerance per step) is checked against.
+//
+// The integrator and the mass models are in rolling_dynamics.cpp, the line
+// contact in rolling_line_contact.cpp, the point contact in rolling_point_contact.cpp.
 #include "geometry/surface_mesh.h"
 #include "oracle/support_set.h"
 #include <Eigen/Core>

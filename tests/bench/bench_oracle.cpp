@@ -3,15 +3,13 @@
 // README.md) and the speed-up: counters reference_s and speedup (reference
 // time / our mean time per iteration).
 //   rollcheck_bench --benchmark_filter='oracle|search'
-#include "contact/face_curvature.h"
-#include "contact/face_pressure.h"
-#include "contact/trajectory_scores.h"
 #include "geometry/read_mesh.h"
 #include "oracle/approximate_oracle.h"
 #include "oracle/contact_distribution.h"
 #include "oracle/parametric_search.h"
 #include "oracle/rigid_body_oracle.h"
 #include "oracle/rolling_body.h"
+#include "study/score_body.h"
 #include <benchmark/benchmark.h>
 #include <chrono>
 
@@ -79,36 +77,30 @@ void BM_oracle_rigid_body_oloid(benchmark::State& state)
 }
 BENCHMARK(BM_oracle_rigid_body_oloid)->Unit(benchmark::kMillisecond);
 
-/// Rigid-body oracle with every score (CDS, SDS, TDS, WDS, FDS) from one
-/// trajectory, curvatures included; the reference runs one simulation per
-/// oracle: rigid 2.03 + Hertz 2.37 + fatigue 2.33 + thermal 3.22 + wear 3.12
-/// = 13.07 s (wall_s of reference_outputs.json, oloid).
+/// study::score_body: the rigid-body oracle with every score (CDS, SDS, TDS,
+/// WDS, FDS) from one trajectory, the mesh read and its curvatures included;
+/// the reference runs one simulation per oracle: rigid 2.03 + Hertz 2.37 +
+/// fatigue 2.33 + thermal 3.22 + wear 3.12 = 13.07 s (wall_s of
+/// reference_outputs.json, oloid).
 void BM_oracle_rigid_body_all_scores_oloid(benchmark::State& state)
 {
-  const contact::ContactParameters parameters;
-  timed(state, 13.07, [&] {
-    const oracle::RollingBody body = oracle::make_rolling_body(reference_oloid(), paper);
-    const oracle::Trajectory t = oracle::rigid_body_oracle(body, {}, paper);
-    const contact::FaceCurvature c = contact::face_curvature(reference_oloid(), parameters.hertz, paper);
-    const contact::FacePressure p = contact::face_pressure(c.effective_radius_m, parameters.hertz, paper);
-    benchmark::DoNotOptimize(contact::score_trajectory({body, c, p}, t, {}, parameters, paper, 50));
-  });
+  study::ScoreBodySettings settings;
+  settings.body.mesh_file = std::string(ROLLCHECK_REFERENCE_MESH_DIR) + "/oloid_reference.obj";
+  settings.compat = paper;
+  timed(state, 13.07, [&] { benchmark::DoNotOptimize(study::score_body(settings)); });
 }
 BENCHMARK(BM_oracle_rigid_body_all_scores_oloid)->Unit(benchmark::kMillisecond);
 
+/// The search with the revalidated genomes scored as `rollcheck search` does.
 oracle::SearchOptions search_options(oracle::SearchGrid grid)
 {
   oracle::SearchOptions o;
   o.grid = grid;
   o.compat = paper;
-  o.revalidation_metrics = [](const geometry::SurfaceMesh& mesh, const oracle::RollingBody& body,
-                              const oracle::Trajectory& t) {
-    const contact::ContactParameters parameters;
-    const contact::FaceCurvature c = contact::face_curvature(mesh, parameters.hertz, paper);
-    const contact::FacePressure p = contact::face_pressure(c.effective_radius_m, parameters.hertz, paper);
-    const contact::ScoreVector v = contact::score_trajectory({body, c, p}, t, {}, parameters, paper, 0);
-    return oracle::NamedScores{{"sds", *v.sds}, {"tds", *v.tds}, {"fds", *v.fds}};
-  };
+  study::ScoreBodySettings scoring;
+  scoring.compat = paper;
+  scoring.convergence_every = 0;
+  o.revalidation_metrics = study::revalidation_scores(scoring);
   return o;
 }
 

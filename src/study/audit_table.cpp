@@ -1,8 +1,8 @@
-#include "io/audit_table.h"
-#include "io/search_store.h"
+#include "study/audit_table.h"
+#include <cmath>
 #include <fmt/format.h>
 
-namespace rollcheck::io
+namespace rollcheck::study
 {
 std::string verdict_text(Verdict v)
 {
@@ -49,9 +49,18 @@ std::string cell_text(const AuditCell& cell)
     refs += (refs.empty() ? "" : ",") + id;
   return fmt::format("{}{} [{}]", cell.value, cell.holds ? "" : " (✗)", refs);
 }
+
+/// A value read, as the commands print it: infinity as "inf" (a read is
+/// never NaN: the reader accepts only numbers and "inf").
+nlohmann::json read_json(double value)
+{
+  if (std::isinf(value))
+    return value > 0 ? "inf" : "-inf";
+  return value;
+}
 } // namespace
 
-std::string audit_markdown(const AuditTable& table)
+std::string to_markdown(const AuditTable& table)
 {
   std::string md = "| claim | paper |";
   std::string rule = "|---|---|";
@@ -93,7 +102,7 @@ std::string audit_markdown(const AuditTable& table)
   return md;
 }
 
-nlohmann::json audit_json(const AuditTable& table)
+nlohmann::json to_json(const AuditTable& table)
 {
   nlohmann::json modes = nlohmann::json::array();
   for (const auto& [mode, meaning] : table.modes)
@@ -113,10 +122,10 @@ nlohmann::json audit_json(const AuditTable& table)
   {
     nlohmann::json reads = nlohmann::json::object();
     for (const auto& [pointer, value] : c.reads)
-      reads[pointer] = json_number(value);
+      reads[pointer] = read_json(value);
     commands.push_back({{"id", c.id}, {"command", c.command}, {"reads", reads}});
   }
   return {{"modes", modes},       {"verdict_rules", table.verdict_rules}, {"claims", claims},
           {"commands", commands}, {"wall_s", table.wall_s},               {"quick", table.quick}};
 }
-} // namespace rollcheck::io
+} // namespace rollcheck::study

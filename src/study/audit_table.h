@@ -1,15 +1,17 @@
 #pragma once
-// The claim table of `rollcheck audit`: each quantitative claim of the
-// preprint, its paper value, its recomputations (one per mode: paper-compatible,
-// matched mesh resolution, true oloid, corrected physics, ...) with the exact
-// commands that print the numbers used, and a verdict. Rendered as Markdown
-// (for the README) and as JSON (for tests and scripts).
+// The claim table of `rollcheck audit`, its result: each quantitative claim of
+// the preprint, its paper value, its recomputations (one per mode:
+// paper-compatible, matched mesh resolution, true oloid, corrected physics,
+// real rolling) with the exact commands that print the numbers used, and a
+// verdict. Rendered as Markdown (for the README) and as JSON (for tests and
+// scripts). The claims themselves are in audit_claims.h, their runner in
+// audit_runner.h.
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-namespace rollcheck::io
+namespace rollcheck::study
 {
 /// One `rollcheck ...` command line and the values read from its JSON output,
 /// keyed by JSON pointer (e.g. "/cds", "/convergence/cds/0/1").
@@ -44,8 +46,8 @@ struct AuditClaim
 {
   std::string claim;
   std::string paper_value;
-  std::string rule; ///< the verdict rule applied to each cell
-  std::map<std::string, AuditCell> cells; ///< by mode name
+  std::string rule;                       ///< the verdict rule applied to each cell
+  std::map<std::string, AuditCell> cells; ///< by mode name; a mode not listed is n/a
   Verdict verdict = Verdict::not_built;
   std::string note;
 };
@@ -70,6 +72,6 @@ inline const std::string paper_compatible_mode = "paper-compatible";
 /// its other cells (e.g. the FEM item, which has no paper-compatible code).
 Verdict judge(const AuditClaim& claim);
 
-std::string audit_markdown(const AuditTable& table);
-nlohmann::json audit_json(const AuditTable& table);
-} // namespace rollcheck::io
+std::string to_markdown(const AuditTable& table);
+nlohmann::json to_json(const AuditTable& table);
+} // namespace rollcheck::study
