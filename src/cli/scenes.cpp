@@ -34,9 +34,6 @@ std::vector<std::string> scene_kinds()
 const io::BoundSchema<geometry::BodySpec>& body_schema()
 {
   using geometry::BodySpec;
-  // Resource guard: 100k points per circle is a 200k-vertex hull, far beyond
-  // any converged score (README: mesh convergence) and about 0.1 GB.
-  static const io::Bounds points_range{3, 100000};
   static const io::BoundSchema<BodySpec> schema = [] {
     io::BoundSchema<BodySpec> s("body");
     s.text("body", "--body", &BodySpec::body,
@@ -56,7 +53,7 @@ const io::BoundSchema<geometry::BodySpec>& body_schema()
         .integer("circles", "--circles", [](BodySpec& b) -> int& { return b.genome.n_circles; }, "",
                  "Roller: number of generating circles (the reference's n >= 3 variant)", io::Bounds{2, 16})
         .integer("points", "--points", &BodySpec::points, "",
-                 "Samples per generating circle (the reference: 400 for the oloid, 300 in its search)", points_range)
+                 "Samples per generating circle (the reference: 400 for the oloid, 300 in its search)", body_points_range)
         .real("radius_m", "--radius", &BodySpec::radius_m, "m",
               "r1 of rollers, radius of the other bodies (the preprint: 1)", io::positive)
         .real("height_m", "--height", &BodySpec::height_m, "m", "Cylinder height (the reference: 2)", io::positive)
@@ -64,35 +61,11 @@ const io::BoundSchema<geometry::BodySpec>& body_schema()
                  "Cylinder sides, UV-sphere sectors (the reference: 60)", io::Bounds{4, 100000})
         .integer("subdivisions", "--subdivisions", &BodySpec::subdivisions, "",
                  "Icosphere subdivisions (the reference: 3)", io::Bounds{0, 8})
-        .text("mesh_file", "--mesh", &BodySpec::mesh_file,
+        .path("mesh_file", "--mesh", &BodySpec::mesh_file,
               "Read the body from a surface mesh file (OBJ/STL/PLY/OFF) instead");
     return s;
   }();
   return schema;
 }
 
-std::vector<io::Parameter> body_parameters()
-{
-  return {
-      {"body", "--body", std::string("oloid"), "",
-       "Body: oloid (true oloid), paper-oloid (the preprint's (90,1,1) roller, not an oloid), roller, cylinder, "
-       "sphere (icosphere), uv-sphere, hemisphere",
-       {"oloid", "paper-oloid", "roller", "cylinder", "sphere", "uv-sphere", "hemisphere"}},
-      {"family", "--family", std::string("paper"), "",
-       "Roller family: paper (C2's plane turned about z, the preprint's) or centre-line (turned about the line of "
-       "centres; its (90,1,1) is the true oloid)",
-       {"paper", "centre-line"}},
-      {"theta_deg", "--theta", 90.0, "deg", "Roller: angle between the circle planes"},
-      {"offset", "--offset", 1.0, "", "Roller: centre distance d in units of r1"},
-      {"ratio", "--ratio", 1.0, "", "Roller: radius ratio rho = r2 / r1"},
-      {"circles", "--circles", std::int64_t{2}, "", "Roller: number of generating circles (the reference's n >= 3 variant)"},
-      {"points", "--points", std::int64_t{400}, "",
-       "Samples per generating circle (the reference: 400 for the oloid, 300 in its search)"},
-      {"radius_m", "--radius", 1.0, "m", "r1 of rollers, radius of the other bodies (the preprint: 1)"},
-      {"height_m", "--height", 2.0, "m", "Cylinder height (the reference: 2)"},
-      {"sections", "--sections", std::int64_t{60}, "", "Cylinder sides, UV-sphere sectors (the reference: 60)"},
-      {"subdivisions", "--subdivisions", std::int64_t{3}, "", "Icosphere subdivisions (the reference: 3)"},
-      {"mesh_file", "--mesh", std::string(), "", "Read the body from a surface mesh file (OBJ/STL/PLY/OFF) instead"},
-  };
-}
 } // namespace rollcheck::cli

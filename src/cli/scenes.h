@@ -21,9 +21,9 @@ void register_scene(const Scene& scene);
 const Scene& find_scene(const std::string& kind, const std::string& origin);
 std::vector<std::string> scene_kinds();
 
-/// Parameters shared by every scene that starts from a body (old form; being
-/// replaced by body_schema()).
-std::vector<io::Parameter> body_parameters();
+/// Samples per generating circle: resource guard. 100k points per circle is a
+/// 200k-vertex hull, far beyond any converged score and about 0.1 GB.
+inline constexpr io::Bounds body_points_range{3, 100000};
 
 /// The body's parameters, bound to geometry::BodySpec: include them with
 /// `schema.include(body_schema(), &Settings::body)`.

@@ -31,8 +31,6 @@ const io::BoundSchema<SearchScene>& search_schema()
 {
   using S = SearchScene;
   static const io::BoundSchema<S> schema = [] {
-    // As the body's --points: 100k points per circle is far beyond any converged score.
-    const io::Bounds points{3, 100000};
     io::BoundSchema<S> s("search");
     s.choice("grid", "--grid", &S::grid,
              "Grid of the reference code: quick (45 genomes, the preprint's), standard (616) or deep (1430)",
@@ -46,10 +44,10 @@ const io::BoundSchema<SearchScene>& search_schema()
               "Mesh every body, the anchor oloid included, with --points samples per circle (else the anchor uses "
               "--anchor-points, as the preprint compares a 400-point oloid with 300-point candidates)")
         .integer("points", "--points", &S::points, "",
-                 "Samples per generating circle of the candidates (the reference's search)", points)
+                 "Samples per generating circle of the candidates (the reference's search)", body_points_range)
         .integer("anchor_points", "--anchor-points", &S::anchor_points, "",
                  "Samples per circle of the anchor oloid without --matched-resolution (the reference's generate_oloid)",
-                 points)
+                 body_points_range)
         .integer("steps", "--steps", &S::approximate_steps, "",
                  fmt::format("Approximate oracle steps; 0 = the reference's (200 quick, 300 standard and deep); at "
                              "most {}, a resource guard", study::max_oracle_samples),
@@ -119,16 +117,18 @@ double metric(const oracle::GenomeResult& r, const std::string& name)
   return std::numeric_limits<double>::quiet_NaN();
 }
 
+/// The ranked table, to the log (stderr) as every scene's table, so that
+/// `--json -` prints JSON alone.
 void print_table(const oracle::SearchResult& result, std::size_t rows)
 {
   const oracle::GenomeResult& anchor = result.anchor;
-  fmt::print("{} grid: {} genomes, {} valid, {} revalidated; {} threads, {:.2f} s (approximate {:.2f} s, rigid-body "
+  fmt::print(stderr, "{} grid: {} genomes, {} valid, {} revalidated; {} threads, {:.2f} s (approximate {:.2f} s, rigid-body "
              "{:.2f} s)\n",
              oracle::name_of(result.options.grid), result.genomes.size(),
              std::count_if(result.genomes.begin(), result.genomes.end(), [](const auto& r) { return r.valid; }),
              std::count_if(result.genomes.begin(), result.genomes.end(), [](const auto& r) { return r.validated; }),
              result.threads, result.wall_s, result.approximate_wall_s, result.rigid_wall_s);
-  fmt::print("{:>4} {:>6} {:>5} {:>5} {:>2} {:>5} {:>7} {:>11} {:>7} {:>11} {:>7} {:>5} {:>11} {:>11} {:>11}\n", "rank",
+  fmt::print(stderr, "{:>4} {:>6} {:>5} {:>5} {:>2} {:>5} {:>7} {:>11} {:>7} {:>11} {:>7} {:>5} {:>11} {:>11} {:>11}\n", "rank",
              "theta", "d", "rho", "n", "faces", "area", "approx CDS", "/anchor", "rigid CDS", "/anchor", "rank",
              "SDS", "TDS", "FDS");
   auto row = [&](const std::string& rank, const oracle::GenomeResult& r) {
@@ -138,7 +138,7 @@ void print_table(const oracle::SearchResult& result, std::size_t rows)
                                                   score_text(metric(r, "sds")), score_text(metric(r, "tds")),
                                                   score_text(metric(r, "fds")))
                                     : "";
-    fmt::print("{:>4} {:>6.1f} {:>5.2f} {:>5.2f} {:>2} {:>5} {:>7.3f} {:>11} {:>7.3f} {}\n", rank, r.genome.theta_deg,
+    fmt::print(stderr, "{:>4} {:>6.1f} {:>5.2f} {:>5.2f} {:>2} {:>5} {:>7.3f} {:>11} {:>7.3f} {}\n", rank, r.genome.theta_deg,
                r.genome.offset, r.genome.ratio, r.genome.n_circles, r.n_faces, r.area_m2, score_text(r.approximate_cds),
                r.approximate_cds / anchor.approximate_cds, rigid);
   };
@@ -150,7 +150,7 @@ void print_table(const oracle::SearchResult& result, std::size_t rows)
   std::sort(ranked.begin(), ranked.end(), [](auto a, auto b) { return a->approximate_rank < b->approximate_rank; });
   for (std::size_t k = 0; k < std::min(rows, ranked.size()); ++k)
     row(std::to_string(ranked[k]->approximate_rank) + (ranked[k]->is_anchor_genome ? "*" : ""), *ranked[k]);
-  fmt::print("(first row: the anchor oloid at {} points per circle; * the grid's own (90, 1, 1) genome; ratios "
+  fmt::print(stderr, "(first row: the anchor oloid at {} points per circle; * the grid's own (90, 1, 1) genome; ratios "
              "against the anchor)\n",
              result.anchor_points);
 }

@@ -1,6 +1,8 @@
 #pragma once
 // Layer: core. Owns what every layer shares and nothing else: the error types
-// (error.h) and the atomic writer (atomic_file.h). Depends on the standard library only.
+// (error.h), the atomic writer and output-path checks (atomic_file.h), the JSON
+// number convention (json_number.h) and the child-process runner
+// (child_process.h). Depends on the standard library, fmt, spdlog and nlohmann_json.
 // The two failure kinds every layer raises; the CLI maps them to exit codes
 // (InputError -> 2, ComputationError -> 1).
 #include <stdexcept>

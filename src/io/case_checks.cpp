@@ -7,7 +7,7 @@ namespace rollcheck::io
 std::string CaseCheck::criterion() const
 {
   if (max_abs)
-    return fmt::format("|x| <= {:g}", *max_abs);
+    return fmt::format("abs(x) <= {:g}", *max_abs);
   if (value)
     return fmt::format("within {:g} % of {:g}", 100 * rel_tol, *value);
   return fmt::format("is {}", expect.value_or(false));

@@ -27,7 +27,7 @@ struct CaseCheck
   std::optional<double> value;
   double rel_tol = 0;
   std::optional<bool> expect;
-  /// The criterion as text: "|x| <= 0.003", "within 1 % of 12.566", "is true".
+  /// The criterion as text: "abs(x) <= 0.003", "within 1 % of 12.566", "is true".
   std::string criterion() const;
 };
 

@@ -9,15 +9,6 @@
 
 namespace rollcheck::io
 {
-nlohmann::json json_number(double value)
-{
-  if (std::isnan(value))
-    throw ComputationError("a score came out NaN; refusing to write it");
-  if (std::isinf(value))
-    return value > 0 ? "inf" : "-inf";
-  return value;
-}
-
 namespace
 {
 nlohmann::json genome_json(const oracle::GenomeResult& r)

@@ -19,13 +19,13 @@
 //              and error (string). Values not computed (invalid genome, not
 //              revalidated) are NaN, ranks 0; +inf is an infinite score.
 //   /anchor/   the anchor oloid: the same columns, one entry each.
+#include "core/json_number.h"
 #include "oracle/parametric_search.h"
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
 namespace rollcheck::io
 {
-nlohmann::json json_number(double value);
 
 /// The search as JSON: settings, timings, the anchor, genomes in grid order.
 nlohmann::json search_summary(const oracle::SearchResult& result);

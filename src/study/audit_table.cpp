@@ -1,4 +1,5 @@
 #include "study/audit_table.h"
+#include "core/json_number.h"
 #include <cmath>
 #include <fmt/format.h>
 
@@ -52,12 +53,6 @@ std::string cell_text(const AuditCell& cell)
 
 /// A value read, as the commands print it: infinity as "inf" (a read is
 /// never NaN: the reader accepts only numbers and "inf").
-nlohmann::json read_json(double value)
-{
-  if (std::isinf(value))
-    return value > 0 ? "inf" : "-inf";
-  return value;
-}
 } // namespace
 
 std::string to_markdown(const AuditTable& table)
@@ -122,7 +117,7 @@ nlohmann::json to_json(const AuditTable& table)
   {
     nlohmann::json reads = nlohmann::json::object();
     for (const auto& [pointer, value] : c.reads)
-      reads[pointer] = read_json(value);
+      reads[pointer] = json_number(value);
     commands.push_back({{"id", c.id}, {"command", c.command}, {"reads", reads}});
   }
   return {{"modes", modes},       {"verdict_rules", table.verdict_rules}, {"claims", claims},

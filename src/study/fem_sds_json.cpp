@@ -1,6 +1,7 @@
 // FEM-SDS results as JSON (study/fem_sds.h): the keys the CLI writes, the
 // audit's pointers and postprocess/plot_fem_*.py read.
 #include "core/error.h"
+#include "core/json_number.h"
 #include "study/fem_sds.h"
 #include <cmath>
 #include <numbers>
@@ -9,33 +10,22 @@ namespace rollcheck::study
 {
 namespace
 {
-/// A finite number as itself, +-infinity as "inf" / "-inf" (JSON has no
-/// infinity); NaN is refused. The same rule as io::json_number, which the
-/// study layer cannot include.
-nlohmann::json number(double v)
-{
-  if (std::isnan(v))
-    throw ComputationError("a score came out NaN; refusing to write it");
-  if (std::isinf(v))
-    return v > 0 ? "inf" : "-inf";
-  return v;
-}
 
 nlohmann::json score_json(const std::optional<double>& score)
 {
-  return score ? number(*score) : nlohmann::json(nullptr);
+  return score ? json_number(*score) : nlohmann::json(nullptr);
 }
 
 nlohmann::json slice_json(const fem::SliceFem& s)
 {
-  return {{"position_m", number(s.load.position_m)},
-          {"radius_m", number(s.load.radius_m)},
-          {"load_n_per_m", number(s.load.load_n_per_m)},
-          {"fem_peak_pa", number(s.peak_pressure_pa)},
-          {"fem_peak_refined_pa", number(s.refined_peak_pressure_pa)},
-          {"fem_half_width_m", number(s.half_width_m)},
-          {"line_hertz_peak_pa", number(s.hertz_peak_pressure_pa)},
-          {"line_hertz_half_width_m", number(s.hertz_half_width_m)},
+  return {{"position_m", json_number(s.load.position_m)},
+          {"radius_m", json_number(s.load.radius_m)},
+          {"load_n_per_m", json_number(s.load.load_n_per_m)},
+          {"fem_peak_pa", json_number(s.peak_pressure_pa)},
+          {"fem_peak_refined_pa", json_number(s.refined_peak_pressure_pa)},
+          {"fem_half_width_m", json_number(s.half_width_m)},
+          {"line_hertz_peak_pa", json_number(s.hertz_peak_pressure_pa)},
+          {"line_hertz_half_width_m", json_number(s.hertz_half_width_m)},
           {"dofs", s.dofs},
           {"refined_dofs", s.refined_dofs}};
 }
@@ -44,23 +34,23 @@ nlohmann::json slab_json(const FemSdsOrientation& r, const fem::SlabFem& slab)
 {
   nlohmann::json peaks = nlohmann::json::array(), planes = nlohmann::json::array();
   for (double p : slab.slice_peak_pressure_pa)
-    peaks.push_back(number(p));
+    peaks.push_back(json_number(p));
   for (std::size_t k = 0; k < slab.plane_position_m.size(); ++k)
-    planes.push_back({number(slab.plane_position_m[k]), number(slab.plane_peak_pressure_pa[k])});
+    planes.push_back({json_number(slab.plane_position_m[k]), json_number(slab.plane_peak_pressure_pa[k])});
   return {{"refine", slab.refine},
           {"dofs", slab.dofs},
           {"layers", slab.layers},
-          {"end_layer_m", number(slab.end_layer_m)},
+          {"end_layer_m", json_number(slab.end_layer_m)},
           {"newton_iterations", slab.newton_iterations},
           {"krylov_iterations", slab.krylov_iterations},
-          {"wall_s", number(slab.wall_s)},
-          {"approach_factor", number(slab.approach_factor)},
-          {"force_n", number(slab.force_n)},
-          {"centre_of_pressure", number(slab.centre_of_pressure)},
+          {"wall_s", json_number(slab.wall_s)},
+          {"approach_factor", json_number(slab.approach_factor)},
+          {"force_n", json_number(slab.force_n)},
+          {"centre_of_pressure", json_number(slab.centre_of_pressure)},
           {"slice_peak_pa", peaks},
-          {"peak_difference_vs_slices", number(r.slab_peak_difference(slab))},
-          {"max_slice_difference", number(r.slab_slice_difference(slab))},
-          {"end_peak_pa", {number(slab.end_peak_pressure_pa[0]), number(slab.end_peak_pressure_pa[1])}},
+          {"peak_difference_vs_slices", json_number(r.slab_peak_difference(slab))},
+          {"max_slice_difference", json_number(r.slab_slice_difference(slab))},
+          {"end_peak_pa", {json_number(slab.end_peak_pressure_pa[0]), json_number(slab.end_peak_pressure_pa[1])}},
           {"plane_peaks", planes}};
 }
 
@@ -68,29 +58,29 @@ nlohmann::json slab_json(const FemSdsOrientation& r, const fem::SlabFem& slab)
 void add_fem_json(nlohmann::json& j, const FemSdsOrientation& r)
 {
   const contact::ContactLocus& l = r.locus;
-  j["loaded_from"] = number(l.loaded_from);
-  j["loaded_to"] = number(l.loaded_to);
-  j["rim_overhang_deg"] = {number(r.rim_overhang_rad[0] * 180 / std::numbers::pi),
-                           number(r.rim_overhang_rad[1] * 180 / std::numbers::pi)};
+  j["loaded_from"] = json_number(l.loaded_from);
+  j["loaded_to"] = json_number(l.loaded_to);
+  j["rim_overhang_deg"] = {json_number(r.rim_overhang_rad[0] * 180 / std::numbers::pi),
+                           json_number(r.rim_overhang_rad[1] * 180 / std::numbers::pi)};
   j["obtuse_loaded_rims"] = r.obtuse_loaded_rims();
-  j["fem_peak_pa"] = number(r.fem_peak_pa);
-  j["fem_peak_refined_pa"] = number(r.fem_peak_refined_pa);
-  j["fem_peak_refinement_change"] = number(r.fem_peak_refined_pa / r.fem_peak_pa - 1);
-  j["line_hertz_peak_pa"] = number(r.line_hertz_peak_pa);
-  j["fem_vs_line_hertz"] = number(r.fem_peak_pa / r.line_hertz_peak_pa - 1);
-  j["line_hertz_end_peak_pa"] = number(r.line_hertz_end_peak_pa);
-  j["contact_length_m"] = number(r.contact_length_m);
-  j["contact_width_m"] = number(r.contact_width_m);
+  j["fem_peak_pa"] = json_number(r.fem_peak_pa);
+  j["fem_peak_refined_pa"] = json_number(r.fem_peak_refined_pa);
+  j["fem_peak_refinement_change"] = json_number(r.fem_peak_refined_pa / r.fem_peak_pa - 1);
+  j["line_hertz_peak_pa"] = json_number(r.line_hertz_peak_pa);
+  j["fem_vs_line_hertz"] = json_number(r.fem_peak_pa / r.line_hertz_peak_pa - 1);
+  j["line_hertz_end_peak_pa"] = json_number(r.line_hertz_end_peak_pa);
+  j["contact_length_m"] = json_number(r.contact_length_m);
+  j["contact_width_m"] = json_number(r.contact_width_m);
   j["dofs"] = r.dofs;
   j["newton_iterations"] = r.newton_iterations;
   j["krylov_iterations"] = r.krylov_iterations;
-  j["wall_s"] = number(r.wall_s);
+  j["wall_s"] = json_number(r.wall_s);
   j["slices"] = nlohmann::json::array();
   for (const fem::SliceFem& s : r.slices)
     j["slices"].push_back(slice_json(s));
   j["fem_faces"] = nlohmann::json::array();
   for (const auto& [f, p] : r.fem_faces)
-    j["fem_faces"].push_back({f, number(p)});
+    j["fem_faces"].push_back({f, json_number(p)});
   if (r.slab.empty())
     return;
   j["slab"] = nlohmann::json::array();
@@ -105,19 +95,19 @@ nlohmann::json to_json(const FemSdsOrientation& r)
   const contact::ContactLocus& l = r.locus;
   nlohmann::json j = {{"index", r.index},
                       {"sample", l.sample},
-                      {"time_s", number(l.time_s)},
+                      {"time_s", json_number(l.time_s)},
                       {"support", support_name(l.support.kind)},
                       {"creases", l.creases},
                       {"reaches_crease", !l.creases.empty()},
                       {"oracle_faces", l.oracle_faces.size()},
-                      {"point_hertz_peak_pa", number(r.point_hertz_peak_pa)},
+                      {"point_hertz_peak_pa", json_number(r.point_hertz_peak_pa)},
                       {"fem_solved", r.solved}};
   if (l.ruling)
   {
-    j["ruling_length_m"] = number(l.ruling->length_m);
-    j["start_radius_m"] = number(l.ruling->start_radius_m);
-    j["end_radius_m"] = number(l.ruling->end_radius_m);
-    j["centre_of_pressure"] = number(l.centre_of_pressure);
+    j["ruling_length_m"] = json_number(l.ruling->length_m);
+    j["start_radius_m"] = json_number(l.ruling->start_radius_m);
+    j["end_radius_m"] = json_number(l.ruling->end_radius_m);
+    j["centre_of_pressure"] = json_number(l.centre_of_pressure);
     j["in_equilibrium"] = l.in_equilibrium;
   }
   if (r.solved)
@@ -128,9 +118,17 @@ nlohmann::json to_json(const FemSdsOrientation& r)
 nlohmann::json to_json(const FemSdsResult& result)
 {
   nlohmann::json per_orientation = nlohmann::json::array();
+  double worst_fem_vs_line_hertz = 0;
   for (const FemSdsOrientation& r : result.orientations)
+  {
     per_orientation.push_back(to_json(r));
+    if (r.solved)
+      worst_fem_vs_line_hertz = std::max(worst_fem_vs_line_hertz, std::abs(r.fem_peak_pa / r.line_hertz_peak_pa - 1));
+  }
+  const bool both = result.sds.fem && result.sds.line_hertz && *result.sds.line_hertz > 0;
   return {
+      {"fem_vs_line_hertz_worst", json_number(worst_fem_vs_line_hertz)},
+      {"fem_sds_over_line_hertz_sds", both ? json_number(*result.sds.fem / *result.sds.line_hertz) : nullptr},
       {"body", result.body},
       {"oracle", oracle_name(result.oracle)},
       {"source", result.source},
@@ -143,15 +141,15 @@ nlohmann::json to_json(const FemSdsResult& result)
       {"analytic_sds_all_orientations", score_json(result.sds.analytic_all_orientations)},
       {"line_hertz_sds", score_json(result.sds.line_hertz)},
       {"fem_sds", score_json(result.sds.fem)},
-      {"fem_peak_worst_refinement_change", number(result.worst_refinement_change)},
-      {"max_orientation_wall_s", number(result.max_orientation_wall_s)},
+      {"fem_peak_worst_refinement_change", json_number(result.worst_refinement_change)},
+      {"max_orientation_wall_s", json_number(result.max_orientation_wall_s)},
       {"slab_checked_orientations", result.slab_checked},
       {"slab_skipped_orientations", result.slab_skipped},
-      {"slab_worst_peak_difference", number(result.slab_worst_peak_difference)},
+      {"slab_worst_peak_difference", json_number(result.slab_worst_peak_difference)},
       {"effective_modulus_pa", result.effective_modulus_pa},
       {"analytic_effective_modulus_pa", result.analytic_effective_modulus_pa},
       {"n_faces", result.n_faces},
-      {"wall_s", number(result.wall_s)},
+      {"wall_s", json_number(result.wall_s)},
       {"per_orientation", per_orientation},
       {"contact_model",
        "developable bodies touch the plane along a ruling: the preprint's point-contact Hertz with R = 1/sqrt(k1 k2) "

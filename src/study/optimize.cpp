@@ -1,4 +1,5 @@
 #include "study/optimize.h"
+#include "core/json_number.h"
 #include "core/error.h"
 #include "study/score_body.h"
 #include <Eigen/Eigenvalues>

@@ -202,15 +202,6 @@ nlohmann::json rolling_json(const BodyScores& s)
 }
 } // namespace
 
-nlohmann::json json_number(double value)
-{
-  if (std::isnan(value))
-    throw ComputationError("a score came out NaN; refusing to write it");
-  if (std::isinf(value))
-    return value > 0 ? "inf" : "-inf";
-  return value;
-}
-
 contact::ScoreVector score_trajectory(const geometry::SurfaceMesh& mesh, const oracle::RollingBody& body,
                                       const oracle::Trajectory& trajectory, const ScoreBodySettings& s)
 {

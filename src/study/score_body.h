@@ -7,6 +7,7 @@
 // entry point of `rollcheck oracle`, the search's revalidation, the tests and
 // the benchmark (tests/bench/bench_oracle.cpp).
 #include "contact/contact_parameters.h"
+#include "core/json_number.h"
 #include "contact/face_curvature.h"
 #include "contact/face_pressure.h"
 #include "contact/trajectory_scores.h"
@@ -96,7 +97,4 @@ nlohmann::json to_json(const BodyScores& scores, bool per_face);
 /// One line for the log: the body, the oracle and its scores.
 std::string summary_line(const BodyScores& scores);
 
-/// A number as JSON: "inf" / "-inf" when infinite (JSON has no infinity);
-/// ComputationError for NaN, which would hide a bug.
-nlohmann::json json_number(double value);
 } // namespace rollcheck::study

@@ -47,12 +47,14 @@ check 'grep -q "0 computed, 3 skipped (done earlier), 1 failed" "$tmp/second.out
 check '[[ $? -eq 0 ]] && grep -q "2 computed, 0 skipped" "$tmp/force.out"' "--force did not recompute"
 check '! ls -A "$tmp/out/cases" | grep -qE "\.part$|\.old$|^\."' "work folders left behind"
 
-# A case whose process fails: its own error message, exit code 1.
-printf '[scene]\nkind = "mesh"\nbody = "oloid"\nradius_m = -1.0\n' > "$tmp/negative.toml"
+# A case whose process fails (valid keys, a malformed mesh file beside it):
+# its own error message, exit code 1.
+printf 'v 0 0 0\nf 1 2 3\n' > "$tmp/broken.obj"
+printf '[scene]\nkind = "mesh"\nmesh_file = "broken.obj"\n' > "$tmp/negative.toml"
 "$bin" batch "$tmp/negative.toml" --out "$tmp/out2" > "$tmp/negative.out" 2>&1
 rc=$?
 check '[[ $rc -eq 1 ]]' "failing process: exit code $rc"
-check 'grep -qE "negative +mesh +FAILED .*radius" "$tmp/negative.out"' "failing process: message lacks the scene's error"
+check 'grep -qE "negative +mesh +FAILED .*broken.obj" "$tmp/negative.out"' "failing process: message lacks the scene's error"
 check '[[ -s $(ls -d "$tmp"/out2/cases/*/)log.txt ]]' "failing process: log not kept"
 
 # Bad arguments: exit 2 before anything runs.
