@@ -5,6 +5,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 bash "$here/scripts/setup.sh"
 export OPENBLAS_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-mkdir -p "$here/results"
-"$here/build/src/cli/rollcheck" validate --json "$here/results/validate.json" "$@"
+cd "$here"
+mkdir -p results
+build/src/cli/rollcheck validate --out results --json results/validate.json "$@"
 echo "summary: $here/results/validate.json"

@@ -17,8 +17,10 @@ void emit_json(const std::string& path, const nlohmann::json& summary)
   if (path.empty())
     return;
   // Under mpirun every rank holds the same summary; one writes it.
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  int initialized = 0, rank = 0;
+  MPI_Initialized(&initialized); // MPI starts only for the scenes that need it
+  if (initialized)
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank != 0)
     return;
   // NaN has no JSON form; nlohmann writes it as null, which would hide a bug.

@@ -22,7 +22,7 @@ void add_report_command(CLI::App& app)
       });
   sub->add_option("--from", store, "Results store written by `rollcheck batch` (DIR/results.h5)")->required();
   sub->add_option("--out", folder, "Report folder, replaced whole (default: 'report' beside the store)");
-  sub->add_option("--scripts", scripts, "Folder of the plotting scripts (default: the source tree's postprocess/)");
+  sub->add_option("--scripts", scripts, "Folder of the plotting scripts (default: postprocess/ of the installed or source tree)");
   sub->add_option("--validation", validation,
                   "Checks JSON written by `rollcheck validate` (results/validation.json), shown first (default: none)");
   sub->add_option("--audit", audit, "JSON of `rollcheck audit --json PATH`, shown as the claim table (default: none)");

@@ -5,6 +5,7 @@
 // check fails.
 #include "cli/cli.h"
 #include "core/atomic_file.h"
+#include "core/data_folder.h"
 #include "io/batch_report.h"
 #include "io/batch_validation.h"
 #include <fstream>
@@ -17,8 +18,8 @@ void add_validate_command(CLI::App& app)
 {
   static io::BatchOptions options = [] {
     io::BatchOptions o;
-    o.cases = {std::string(ROLLCHECK_SOURCE_DIR) + "/cases/default"};
-    o.out = std::string(ROLLCHECK_SOURCE_DIR) + "/results";
+    o.cases = {(data_folder() / "cases" / "default").string()};
+    o.out = "results";
     o.jobs = 2;
     // Each default case is sized to finish in well under this; one that hangs
     // must not keep the main job from its report.
@@ -50,8 +51,8 @@ void add_validate_command(CLI::App& app)
         const int failed_checks = validation["failed"].get<int>();
         return CommandResult{summary, batch.exit_code() != 0 ? batch.exit_code() : failed_checks > 0 ? 1 : 0};
       });
-  sub->add_option("--cases", options.cases[0], "Folder of case files (default: the source tree's cases/default)");
-  sub->add_option("--out", options.out, "Results folder (default: the source tree's results/)");
+  sub->add_option("--cases", options.cases[0], "Folder of case files (default: cases/default of the installed or source tree)");
+  sub->add_option("--out", options.out, "Results folder, results.h5, validation.json and report/ (default: results/ in the working folder)");
   sub->add_option("-j,--jobs", options.jobs, "Worker processes per MPI rank (default: 2)");
   sub->add_flag("--force", options.force, "Recompute cases already done (default: reuse their results)");
   sub->add_option("--timeout", options.case_timeout_s, "A case running longer than this fails [s] (default: 600)");

@@ -1,5 +1,6 @@
 #include "io/batch_report.h"
 #include "core/atomic_file.h"
+#include "core/data_folder.h"
 #include "core/error.h"
 #include "io/batch_process.h"
 #include "rollcheck_version.h"
@@ -11,7 +12,7 @@ namespace rollcheck::io
 {
 namespace fs = std::filesystem;
 
-fs::path default_scripts_folder() { return fs::path(ROLLCHECK_SOURCE_DIR) / "postprocess"; }
+fs::path default_scripts_folder() { return data_folder() / "postprocess"; }
 
 void run_script(const fs::path& python, const fs::path& script, const std::vector<std::string>& args,
                 const fs::path& cwd, const fs::path& log)
