@@ -150,16 +150,9 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
 
 void add_fem_sds_command(CLI::App& app)
 {
-  CLI::App* sub = app.add_subcommand(
-      "fem-sds", "FEM contact stress at orientations sampled from an oracle run (plane-strain slices along the "
-                 "contact ruling, two mesh levels) against the preprint's analytic SDS and line-contact Hertz");
-  static std::string json_path;
-  add_json_option(sub, json_path);
-  static io::SchemaOptions* options = new io::SchemaOptions(sub, fem_sds_schema().schema());
-  register_scene({&fem_sds_schema().schema(), run_fem_sds});
-  on_run(sub, [] {
-    emit_json(json_path, run_fem_sds(options->apply()));
-    return 0;
-  });
+  add_scene_command(app, "fem-sds",
+                    "FEM contact stress at orientations sampled from an oracle run (plane-strain slices along the "
+                    "contact ruling, two mesh levels) against the preprint's analytic SDS and line-contact Hertz",
+                    fem_sds_schema().schema(), run_fem_sds);
 }
 } // namespace rollcheck::cli

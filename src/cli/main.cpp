@@ -144,6 +144,7 @@ int main(int argc, char** argv)
   cli::add_hertz_command(app);
   cli::add_fem_sds_command(app);
   cli::add_crease_command(app);
+  cli::add_optimize_command(app);
   cli::add_run_command(app);
   cli::add_batch_command(app);
   cli::add_report_command(app);

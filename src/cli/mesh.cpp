@@ -77,14 +77,8 @@ nlohmann::json run_mesh(const io::Parameters& params)
 
 void add_mesh_command(CLI::App& app)
 {
-  CLI::App* sub = app.add_subcommand("mesh", "Build or read a body, check it and write its mesh");
-  static std::string json_path;
-  add_json_option(sub, json_path);
-  static io::SchemaOptions* options = new io::SchemaOptions(sub, mesh_schema().schema());
-  register_scene({&mesh_schema().schema(), run_mesh});
-  on_run(sub, [] {
-    emit_json(json_path, run_mesh(options->apply()));
-    return 0;
-  });
+  add_scene_command(app, "mesh",
+                    "Build or read a body, check it and write its mesh",
+                    mesh_schema().schema(), run_mesh);
 }
 } // namespace rollcheck::cli

@@ -182,17 +182,10 @@ nlohmann::json run_oracle(const io::Parameters& params)
 
 void add_oracle_command(CLI::App& app)
 {
-  CLI::App* sub = app.add_subcommand(
-      "oracle", "Roll a body with the approximate or rigid-body oracle and score its contact, stress, heat, wear "
-                "and fatigue distributions, or roll it for real (--oracle rolling) and score its contact with U. "
-                "Defaults: the preprint's values, else the reference code's");
-  static std::string json_path;
-  add_json_option(sub, json_path);
-  static io::SchemaOptions* options = new io::SchemaOptions(sub, oracle_schema().schema());
-  register_scene({&oracle_schema().schema(), run_oracle});
-  on_run(sub, [] {
-    emit_json(json_path, run_oracle(options->apply()));
-    return 0;
-  });
+  add_scene_command(app, "oracle",
+                    "Roll a body with the approximate or rigid-body oracle and score its contact, stress, heat, wear "
+                    "and fatigue distributions, or roll it for real (--oracle rolling) and score its contact with U. "
+                    "Defaults: the preprint's values, else the reference code's",
+                    oracle_schema().schema(), run_oracle);
 }
 } // namespace rollcheck::cli

@@ -182,16 +182,9 @@ nlohmann::json run_search(const io::Parameters& params)
 
 void add_search_command(CLI::App& app)
 {
-  CLI::App* sub = app.add_subcommand(
-      "search", "Two-layer parametric search over the preprint's roller family: approximate screening, rigid-body "
-                "revalidation");
-  static std::string json_path;
-  add_json_option(sub, json_path);
-  static io::SchemaOptions* options = new io::SchemaOptions(sub, search_schema().schema());
-  register_scene({&search_schema().schema(), run_search});
-  on_run(sub, [] {
-    emit_json(json_path, run_search(options->apply()));
-    return 0;
-  });
+  add_scene_command(app, "search",
+                    "Two-layer parametric search over the preprint's roller family: approximate screening, rigid-body "
+                    "revalidation",
+                    search_schema().schema(), run_search);
 }
 } // namespace rollcheck::cli

@@ -1,0 +1,132 @@
+// `rollcheck optimize`: where a two-circle roller family's optimum lies, and
+// what its (90, 1, 1) member is (gradient, Hessian, verdict), by a continuous
+// search with NLopt (docs/optimize.md). Also the scene "optimize" of case
+// files. The method is study/optimize_family.h; here its parameters, a line
+// in the log, the optimum's mesh, the JSON and the sweeps' plot.
+#include "cli/cli.h"
+#include "cli/scenes.h"
+#include "geometry/write_mesh.h"
+#include "io/batch_report.h"
+#include "study/optimize_family.h"
+#include <fstream>
+#include <spdlog/spdlog.h>
+
+namespace rollcheck::cli
+{
+namespace
+{
+using study::FamilyAxis;
+using study::FamilySearchSettings;
+using Schema = io::BoundSchema<FamilySearchSettings>;
+
+/// theta_min_deg (--theta-min), theta_max_deg, theta_start_deg for name "theta", unit "deg".
+void add_axis(Schema& s, FamilyAxis FamilySearchSettings::*axis, const std::string& name, const std::string& unit,
+              const std::string& what, io::Bounds range)
+{
+  const std::string suffix = unit.empty() ? "" : "_" + unit;
+  s.real(name + "_min" + suffix, "--" + name + "-min",
+         [axis](FamilySearchSettings& f) -> double& { return (f.*axis).min; }, unit, "Search box: least " + what, range)
+      .real(name + "_max" + suffix, "--" + name + "-max",
+            [axis](FamilySearchSettings& f) -> double& { return (f.*axis).max; }, unit, "Search box: largest " + what,
+            range)
+      .real(name + "_start" + suffix, "--" + name + "-start",
+            [axis](FamilySearchSettings& f) -> double& { return (f.*axis).start; }, unit,
+            "Start of the search, and the point whose derivatives are judged: " + what, range);
+}
+
+void add_method_parameters(Schema& s)
+{
+  using S = FamilySearchSettings;
+  s.choice("score", "--score", &S::score,
+           "Score minimised: cds, sds (oracle approx or rigid) or uniformity (U of real rolling, oracle rolling)",
+           study::family_score_names())
+      .choice("oracle", "--oracle", &S::oracle,
+              "approx: the approximate oracle (deterministic); rigid: the rigid-body oracle (chaotic: each score the "
+              "mean of --replicates runs with nudged spins); rolling: real rolling (for --score uniformity)",
+              {{"approx", study::Oracle::approximate},
+               {"rigid", study::Oracle::rigid},
+               {"rolling", study::Oracle::rolling}})
+      .flag("paper_compat", "--paper-compat", &S::paper_compat,
+            "Reproduce the reference code, quirks included; else every quirk corrected")
+      .choice("family", "--family", &S::family,
+              "Roller family: paper (the preprint's) or centre-line (its (90,1,1) is the true oloid)",
+              {{"paper", geometry::RollerFamily::paper}, {"centre-line", geometry::RollerFamily::centre_line}})
+      .integer("points", "--points", &S::points, "",
+               "Samples per generating circle, the same for every body (matched resolution)", body_points_range)
+      .choice("method", "--method", &S::method, "NLopt method (docs/optimize.md)", study::method_names())
+      .integer("max_evaluations", "--max-evaluations", &S::max_evaluations, "",
+               "Distinct genomes the search scores, the start included", io::Bounds{1, 100000})
+      .integer("replicates", "--replicates", &S::replicates, "",
+               "Noise replicates at the start (rigid: also runs averaged per score)", io::Bounds{2, 1000})
+      .real("resolution", "--resolution", &S::resolution, "",
+            "Fraction of each box width the search resolves (xtol); approx and rolling: the noise replicates' move",
+            io::Bounds{0, 0.5, true, true})
+      .real("pilot_step", "--pilot-step", &S::pilot_step, "",
+            "Pilot steps of the derivatives' step choice, fraction of each box width", io::Bounds{0, 0.25, true})
+      .integer("sweep_points", "--sweep-points", &S::sweep_points, "",
+               "Points per axis of the sweeps through the start", io::Bounds{2, 1000})
+      .integer("threads", "--threads", &S::threads, "", "Evaluations in parallel (0: one per core)",
+               io::Bounds{0, 1024});
+}
+
+void add_oracle_parameters(Schema& s)
+{
+  s.integer("steps", "--steps", [](FamilySearchSettings& f) -> auto& { return f.scoring.approximate.steps; }, "",
+            "Approximate oracle: rotation steps T", io::Bounds{1, double(study::max_oracle_samples)})
+      .real("duration_s", "--duration", [](FamilySearchSettings& f) -> auto& { return f.scoring.rigid.duration_s; },
+            "s", "Rigid-body oracle: time per run", io::positive)
+      .integer("loops", "--loops", [](FamilySearchSettings& f) -> auto& { return f.scoring.rolling.loops; }, "",
+               "Rolling oracle: loops of the contact curve scored", io::Bounds{1, 1000})
+      .unbound({"out", "--out", std::string(), "",
+                "Folder for optimize.json, the optimum's mesh optimum.obj and sweeps.png (written whole or not at "
+                "all); empty: none"})
+      .unbound({"python", "--python", std::string("/usr/bin/python3"), "",
+                "Python with matplotlib for the plot (Debian's)"});
+}
+
+const Schema& optimize_schema()
+{
+  static const Schema schema = [] {
+    Schema s("optimize");
+    add_method_parameters(s);
+    add_axis(s, &FamilySearchSettings::theta_deg, "theta", "deg", "angle between the circle planes",
+             io::Bounds{0, 180, true, true});
+    add_axis(s, &FamilySearchSettings::offset, "offset", "", "centre distance d in units of r1", io::non_negative);
+    add_axis(s, &FamilySearchSettings::ratio, "ratio", "", "radius ratio rho = r2 / r1", io::positive);
+    add_oracle_parameters(s);
+    return s;
+  }();
+  return schema;
+}
+
+nlohmann::json run_optimize(const io::Parameters& params)
+{
+  const FamilySearchSettings settings = optimize_schema().bind(params);
+  const study::FamilySearchResult result = study::optimize_family(settings);
+  const nlohmann::json j = study::to_json(result);
+  const nlohmann::json& best = j["optimum"];
+  spdlog::info("optimize {} ({}): start {} -> {}, optimum {} -> {} ({} the start beyond the noise {}); at the start: "
+               "{}; {} genomes, {} oracle runs, {:.1f} s",
+               j["score"].get<std::string>(), j["oracle"].get<std::string>(), j["start"].dump(),
+               j["start_value"].dump(), best["x"].dump(), best["value"].dump(),
+               best["beats_start"].get<bool>() ? "beats" : "does not beat", j["noise"]["sigma"].dump(),
+               j["verdict_at_start"].dump(), result.score_evaluations, result.oracle_runs, result.wall_s);
+  if (const std::string& out = params.text("out"); !out.empty())
+    io::draw_folder(out, params.text("python"), io::default_scripts_folder() / "plot_optimize.py", {}, "plot.log",
+                    [&](const std::filesystem::path& folder) {
+                      std::ofstream(folder / "optimize.json") << j.dump(1) << "\n";
+                      geometry::write_mesh(geometry::make_body(study::family_body(settings, result.search.best_x)),
+                                           folder / "optimum.obj");
+                    });
+  return j;
+}
+} // namespace
+
+void add_optimize_command(CLI::App& app)
+{
+  add_scene_command(app, "optimize",
+                    "Search a two-circle roller family for the genome (theta, d, rho) minimising a score with NLopt, "
+                    "judged against the noise, with the gradient and Hessian at the start and at the optimum",
+                    optimize_schema().schema(), run_optimize);
+}
+} // namespace rollcheck::cli

@@ -1,0 +1,108 @@
+#pragma once
+// Where a two-circle roller family's optimum lies, and what the family's
+// (90, 1, 1) member is: the method of `rollcheck optimize` (docs/optimize.md).
+// A genome x = (theta_deg, offset d, ratio rho) is meshed (r1 = 1, the same
+// points per circle for every body: matched resolution) and scored by
+// score_body (CDS or SDS under the approximate or rigid-body oracle, U under
+// real rolling). The flow is optimize.h's: the noise measured at the start,
+// a search in the box, central-difference gradient and Hessian with their
+// verdicts at the start and at the optimum, and sweeps along each axis
+// through the start. The distinct points of one phase are evaluated in
+// parallel (noise replicates, step pilots, stencils, sweeps); the search
+// itself is sequential.
+#include "study/optimize.h"
+#include "study/score_body.h"
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rollcheck::study
+{
+enum class FamilyScore
+{
+  cds,       ///< the preprint's contact distribution score (approximate or rigid oracle)
+  sds,       ///< the preprint's stress distribution score (approximate or rigid oracle)
+  uniformity ///< U of real rolling (oracle rolling)
+};
+
+/// cds, sds, uniformity (for io::BoundSchema::choice).
+const std::vector<std::pair<std::string, FamilyScore>>& family_score_names();
+
+/// One parameter of the genome: its search interval and its start.
+struct FamilyAxis
+{
+  double min, max, start;
+};
+
+struct FamilySearchSettings
+{
+  FamilyScore score = FamilyScore::cds;
+  /// approximate (deterministic) or rigid (chaotic: each score the mean of
+  /// `replicates` runs with nudged initial spins) for cds and sds; rolling for uniformity.
+  Oracle oracle = Oracle::approximate;
+  bool paper_compat = false; ///< every switch of oracle/paper_compat.h as the reference code; else corrected
+  geometry::RollerFamily family = geometry::RollerFamily::paper;
+  int points = 100; ///< samples per generating circle, the same for every body (matched resolution)
+  /// Wider than the preprint's grid {60..120} x {0.7..1.3} x {0.8..1.2}; start at the family's (90, 1, 1).
+  FamilyAxis theta_deg{40, 140, 90}, offset{0.5, 1.5, 1}, ratio{0.6, 1.4, 1};
+  Method method = Method::bobyqa;
+  int max_evaluations = 60; ///< distinct genomes the search scores, the start included
+  /// Noise replicates at the start (>= 2). Rigid oracle: spins nudged by
+  /// replicate (study/paper_quirks.h's band for replicates 1 .. 6), and every
+  /// score is the mean of this many replicates. Approximate and rolling
+  /// oracles (deterministic): the genome moved by `resolution` of each box
+  /// width in a replicate-dependent direction.
+  int replicates = 4;
+  /// Fraction of each box width the search resolves (its xtol); the
+  /// deterministic oracles' noise is the score's spread over such moves.
+  double resolution = 1e-3;
+  double pilot_step = 0.05; ///< balanced_steps' pilots, fraction of each box width
+  int sweep_points = 9; ///< per axis, from min to max through the start
+  unsigned threads = 0; ///< evaluations in parallel (0: one per core)
+  /// The oracles' options (steps, duration, rolling loops, contact parameters);
+  /// its body, oracle, compat and metrics are set per genome.
+  ScoreBodySettings scoring;
+};
+
+/// InputError naming the setting (theta_min_deg, ..., the start outside its interval, ...).
+void validate(const FamilySearchSettings& settings);
+
+/// The body of genome x (theta_deg, offset, ratio) of the settings' family.
+geometry::BodySpec family_body(const FamilySearchSettings& settings, std::span<const double> x);
+
+/// One evaluation of the score at x under the nuisance inputs of `replicate`
+/// (0: none): a spin nudge for the rigid oracle, a jitter of x otherwise.
+double replicate_score(const FamilySearchSettings& settings, std::span<const double> x, int replicate);
+
+/// The score the search minimises: replicate 0 (approximate, rolling), or the
+/// mean of replicates 0 .. replicates-1 (rigid).
+double family_score(const FamilySearchSettings& settings, std::span<const double> x);
+
+struct FamilySearchResult
+{
+  FamilySearchSettings settings;
+  NoiseEstimate noise_replicates; ///< at the start
+  double noise_sigma = 0;         ///< of family_score: the replicates' sd, or their mean's standard error (rigid)
+  OptimizeResult search;
+  Box box;
+  /// Derivatives at the start and at the best point, or why there are none
+  /// (the point lies on a bound: central differences need room).
+  std::optional<StepChoice> start_steps, best_steps;
+  std::optional<Derivatives> at_start, at_best;
+  std::string start_derivatives_note, best_derivatives_note;
+  std::vector<AxisSweep> sweeps;     ///< through the start
+  long score_evaluations = 0;        ///< distinct genomes scored in all phases
+  long oracle_runs = 0;              ///< score_body calls
+  double wall_s = 0;
+};
+
+/// The whole flow. InputError for bad settings; ComputationError naming the
+/// genome where scoring fails.
+FamilySearchResult optimize_family(const FamilySearchSettings& settings);
+
+/// Named keys (docs/optimize.md "rollcheck optimize").
+nlohmann::json to_json(const FamilySearchResult& result);
+} // namespace rollcheck::study

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# rollcheck optimize: a tiny search (approximate oracle, CDS, 60 points per
+# circle) writes the JSON with its keys, the optimum's mesh and the sweeps'
+# plot; a bad box (min > max, a start outside it) exits 2 naming the key.
+set -u
+bin=$1; tmp=$3
+rm -rf "$tmp"; mkdir -p "$tmp"
+export OPENBLAS_NUM_THREADS=1
+fail=0
+"$bin" -q optimize --points 60 --max-evaluations 12 --sweep-points 3 --threads 1 --json "$tmp/optimize.json" \
+  --out "$tmp/out" > "$tmp/run.log" 2>&1 || { echo "FAIL: tiny optimize run"; cat "$tmp/run.log"; exit 1; }
+/usr/bin/python3 - "$tmp/optimize.json" "$tmp/out" <<'PY' || fail=1
+import json, os, sys
+r = json.load(open(sys.argv[1]))
+for key in ["score", "oracle", "family", "mesh", "box", "start", "start_value", "noise", "optimum",
+            "verdict_at_start", "derivatives_at_start", "derivatives_at_optimum", "sweeps", "search",
+            "score_evaluations", "oracle_runs", "wall_s"]:
+    assert key in r, key
+assert r["start"] == [90, 1, 1] and r["score"] == "cds" and r["oracle"] == "approx"
+assert r["mesh"]["points_per_circle"] == 60 and r["mesh"]["matched_resolution"] is True
+best = r["optimum"]
+for key in ["x", "value", "displacement_from_start", "distance_from_start_box_units", "beats_start",
+            "significance_threshold", "theta_deg", "offset", "ratio"]:
+    assert key in best, key
+assert best["value"] <= r["start_value"]
+assert r["search"]["evaluations"] <= 12
+assert [s["parameter"] for s in r["sweeps"]] == ["theta_deg", "offset", "ratio"]
+assert r["verdict_at_start"] in ["not stationary", "local minimum", "local maximum", "saddle", "undetermined"]
+assert json.load(open(os.path.join(sys.argv[2], "optimize.json"))) == r
+for name in ["optimum.obj", "sweeps.png"]:
+    assert os.path.getsize(os.path.join(sys.argv[2], name)) > 0, name
+print("optimum", best["x"], best["value"], "from", r["start_value"])
+PY
+for args in "--theta-min 150:theta_min_deg" "--offset-max 0.6:offset_start" "--ratio-start 2:ratio_start" \
+            "--theta-min 0:theta_min_deg" "--replicates 1:replicates" "--score uniformity:uniformity"; do
+  "$bin" -q optimize ${args%%:*} > "$tmp/bad.log" 2>&1; rc=$?
+  if [[ $rc -ne 2 ]] || ! grep -q -- "${args#*:}" "$tmp/bad.log"; then
+    echo "FAIL: optimize ${args%%:*} gave exit $rc without '${args#*:}':"; cat "$tmp/bad.log"; fail=1
+  fi
+done
+exit $fail
