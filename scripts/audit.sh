@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Regenerates the README's audit table: `rollcheck audit` recomputes every
-# quantitative claim of the preprint (paper-compatible, matched resolution,
-# true oloid, corrected physics, real rolling), prints the Markdown table and
-# writes it with its JSON. Pass --quick (or other audit options) after the output folder.
+# Regenerates the audit of the preprint's claims: `rollcheck audit` recomputes
+# every quantitative claim (paper-compatible, matched resolution, true oloid,
+# corrected physics, real rolling), writes the Markdown table and its JSON, and
+# scripts/readme_findings.py rewrites the README's findings block from the JSON.
+# Pass --quick (or other audit options) after the output folder.
 # Usage: scripts/audit.sh [ROLLCHECK_BINARY] [OUT_DIR] [audit options...]
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -10,3 +11,4 @@ bin=${1:-$here/build/src/cli/rollcheck}
 out=${2:-$here/results/audit}
 mkdir -p "$out"
 "$bin" audit --json "$out/audit.json" --markdown "$out/audit.md" "${@:3}"
+/usr/bin/python3 "$here/scripts/readme_findings.py" "$out/audit.json" "$here/README.md"

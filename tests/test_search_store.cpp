@@ -65,8 +65,8 @@ TEST(SearchStore, HdfFileAndJsonCarryTheSameNumbers)
 
 TEST(SearchStore, JsonNumbersAreFiniteOrTheStringInf)
 {
-  EXPECT_EQ(io::json_number(1.5), nlohmann::json(1.5));
-  EXPECT_EQ(io::json_number(std::numeric_limits<double>::infinity()), nlohmann::json("inf"));
-  EXPECT_THROW(io::json_number(std::nan("")), ComputationError);
+  EXPECT_EQ(json_number(1.5), nlohmann::json(1.5));
+  EXPECT_EQ(json_number(std::numeric_limits<double>::infinity()), nlohmann::json("inf"));
+  EXPECT_THROW(json_number(std::nan("")), ComputationError);
 }
 } // namespace

@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "study/audit_claims.h"
 #include "study/audit_runner.h"
+#include <array>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <set>
@@ -145,6 +146,130 @@ TEST(Audit, ClaimVerdictsFromTheirCells)
   EXPECT_EQ(judge(c), Verdict::holds); // no paper-compatible code: the others decide
   c.cells["corrected physics"].built = false;
   EXPECT_EQ(judge(c), Verdict::not_built);
+  c.cells["real rolling"] = {true, false, "", {}, false, "no command prints it"};
+  EXPECT_EQ(judge(c), Verdict::cannot_be_tested); // only untestable and unbuilt cells
+  c.cells["corrected physics"].built = true;
+  EXPECT_EQ(judge(c), Verdict::holds); // an untestable cell does not decide a testable claim
+}
+
+namespace
+{
+/// A quick-grid search output: genome (theta, d, rho, approximate CDS, rigid
+/// CDS or 0 when not revalidated); the first is the grid's oloid.
+CommandOutput search(const std::vector<std::array<double, 5>>& genomes)
+{
+  json list = json::array();
+  for (std::size_t i = 0; i < genomes.size(); ++i)
+  {
+    const auto& [theta, d, rho, approximate, rigid] = genomes[i];
+    json g = {{"theta_deg", theta}, {"offset", d},           {"ratio", rho}, {"approximate", {{"cds", approximate}}},
+              {"validated", rigid > 0}, {"is_anchor_genome", i == 0}};
+    if (rigid > 0)
+      g["rigid"] = {{"cds", rigid}};
+    list.push_back(g);
+  }
+  return CommandOutput(command_line({"search", "--grid", "quick"}), json{{"genomes", list}});
+}
+} // namespace
+
+TEST(Audit, SearchRulesReadTheGrid)
+{
+  // Oloid genome 2e-6; two genomes below it, the best (120, 0.70, 0.80) 1.24e-6 (38 % better).
+  CommandOutput grid = search({{90, 1.0, 1.0, 2e-6, 0},
+                               {120, 0.7, 0.8, 1.24e-6, 1.9e-6},
+                               {120, 1.3, 0.8, 1.5e-6, 8.7e-7},
+                               {90, 0.7, 0.8, 1.6e-6, 1.1e-6},
+                               {105, 1.0, 1.0, 2.3e-6, 0}});
+  const CellResult screen = rules::approximate_screen(3, 2e-6, {120, 0.7, 0.8}, 1.24e-6, 0.2)({&grid});
+  EXPECT_EQ(screen.value, "3 of 5 below the oloid genome's 2e-06; top (120, 0.70, 0.80) 1.24e-06, 38 % better");
+  EXPECT_TRUE(screen.holds);
+  EXPECT_FALSE(rules::approximate_screen(22, 2e-6, {120, 0.7, 0.8}, 1.24e-6, 0.2)({&grid}).holds); // 3, not 22
+  EXPECT_FALSE(rules::approximate_screen(3, 2e-6, {90, 0.7, 0.8}, 1.24e-6, 0.2)({&grid}).holds);  // other top
+
+  // Rigid best three: (120, 1.30, 0.80), (90, 0.70, 0.80), (120, 0.70, 0.80): rho < 1 in all, d < 1 in two.
+  const CellResult direction = rules::improvement_direction()({&grid});
+  EXPECT_EQ(direction.value, "rigid-body best 3: (120, 1.30, 0.80), (90, 0.70, 0.80), (120, 0.70, 0.80); ρ < 1 in "
+                             "3, d < 1 in 2");
+  EXPECT_FALSE(direction.holds);
+
+  CommandOutput oloid = oracle("oloid", 8.2e-7);
+  const Rule table = rules::revalidated({{{120, 1.3, 0.8}, {8.7e-7, 1.06}}, {{90, 0.7, 0.8}, {1.09e-6, 1.33}}}, 0.2);
+  const CellResult revalidated = table({&grid, &oloid});
+  EXPECT_TRUE(revalidated.holds);
+  EXPECT_EQ(revalidated.value, "(120, 1.30, 0.80) 8.7e-07 (1.06x), (90, 0.70, 0.80) 1.1e-06 (1.34x); also "
+                               "revalidated, not in the table: (120, 0.70, 0.80) 1.9e-06 (2.32x)");
+  // A genome listed but not revalidated fails the rule, and one not on the grid names itself.
+  EXPECT_FALSE(rules::revalidated({{{105, 1.0, 1.0}, {2e-6, 2.4}}}, 0.2)({&grid, &oloid}).holds);
+  const std::string missing =
+      message_of([&] { rules::revalidated({{{115, 1.2, 0.65}, {9e-7, 1.1}}}, 0.2)({&grid, &oloid}); });
+  EXPECT_NE(missing.find("(115, 1.20, 0.65)"), std::string::npos) << missing;
+
+  // 1.6e-6 is 1.60e-6 to three digits; 2.3e-6 within 20 % of 2.42e-6 but not to its digits.
+  const CellResult scores =
+      rules::approximate_scores({{{90, 0.7, 0.8}, 1.6e-6}, {{105, 1.0, 1.0}, 2.42e-6}}, 0.2)({&grid});
+  EXPECT_EQ(scores.value, "(90, 0.70, 0.80) 1.6e-06, (105, 1.00, 1.00) 2.3e-06 (1 of 2 to the printed digits)");
+  EXPECT_TRUE(scores.holds);
+  EXPECT_FALSE(rules::approximate_scores({{{105, 1.0, 1.0}, 3e-6}}, 0.2)({&grid}).holds); // -23 %
+}
+
+TEST(Audit, ValueListRulesCountPrintedDigits)
+{
+  // 68.37 MPa is the preprint's 68.3 truncated, 0.0845 its 0.085 rounded; 52 MPa is 5 % off 49.7.
+  CommandOutput oloid("o", json{{"mean_peak_pressure_pa", 68.37e6}, {"stress_cv", 0.0845}, {"sds", 8.0e-7}});
+  CommandOutput other("y", json{{"mean_peak_pressure_pa", 52e6}, {"stress_cv", 0.06}, {"sds", 8.9e-7}});
+  const Rule values = rules::each_within({{0, "/mean_peak_pressure_pa", 68.3, 3, "oloid MPa", 1e-6},
+                                          {0, "/stress_cv", 0.085, 2, "CV"},
+                                          {1, "/mean_peak_pressure_pa", 49.7, 3, "cylinder MPa", 1e-6}},
+                                         0.2);
+  const CellResult cell = values({&oloid, &other});
+  EXPECT_EQ(cell.value, "oloid MPa 68.37, CV 0.0845, cylinder MPa 52 (2 of 3 to the printed digits)");
+  EXPECT_TRUE(cell.holds);
+  EXPECT_FALSE(rules::each_within({{1, "/stress_cv", 0.045, 2, "CV"}}, 0.2)({&oloid, &other}).holds); // +33 %
+  // SDS 8.9e-7 over 8.0e-7 is 11 % apart: not within 10 %.
+  const CellResult gap = rules::ratio_within("SDS ratio", {1, "/sds"}, {0, "/sds"}, 1, 0.10)({&oloid, &other});
+  EXPECT_EQ(gap.value, "SDS ratio 1.11x");
+  EXPECT_FALSE(gap.holds);
+  const CellResult both = rules::all_of({values, rules::below("CV", 0, "/stress_cv", 0.1)})({&oloid, &other});
+  EXPECT_TRUE(both.holds);
+  EXPECT_EQ(both.value.substr(both.value.rfind("; ")), "; CV 0.0845");
+  EXPECT_FALSE(rules::all_of({values, rules::below("CV", 0, "/stress_cv", 0.05)})({&oloid, &other}).holds);
+}
+
+TEST(Audit, VectorCoverageAndFemRules)
+{
+  CommandOutput lowest("o", json{{"cds", 8.2e-7}, {"sds", 8.1e-7}, {"tds", 7.7e-7}, {"wds_vol", 7.7e-7},
+                                 {"wds_depth", 1.2e-6}, {"fds", 2.4e-6}});
+  const CellResult tds = rules::tds_lowest()({&lowest});
+  EXPECT_EQ(tds.value, "TDS 7.7e-07, CDS 8.2e-07; below TDS: none"); // a tie with WDS_vol is not below
+  EXPECT_TRUE(tds.holds);
+  CommandOutput not_lowest("c", json{{"cds", 1.1e-6}, {"sds", 1.5e-6}, {"tds", 1.6e-6}, {"wds_vol", 1.2e-6},
+                                     {"wds_depth", 1.6e-6}, {"fds", "inf"}});
+  EXPECT_EQ(rules::tds_lowest()({&not_lowest}).value, "TDS 1.6e-06, CDS 1.1e-06; below TDS: cds, sds, wds_vol");
+  EXPECT_FALSE(rules::tds_lowest()({&not_lowest}).holds);
+
+  CommandOutput touched("o", json{{"n_faces", 1198}, {"contact", {{"faces_without_contact", 0}}}});
+  CommandOutput gaps("o", json{{"n_faces", 1198}, {"contact", {{"faces_without_contact", 257}}}});
+  EXPECT_TRUE(rules::every_face_touched()({&touched}).holds);
+  EXPECT_EQ(rules::every_face_touched()({&gaps}).value, "257 of 1198 faces untouched");
+  EXPECT_FALSE(rules::every_face_touched()({&gaps}).holds);
+  CommandOutput full("r", json{{"coverage", 1.0}}), partial("r", json{{"coverage", 0.948}});
+  EXPECT_TRUE(rules::coverage_at_least(0.999)({&full}).holds);
+  EXPECT_FALSE(rules::coverage_at_least(0.999)({&partial}).holds);
+
+  // Point Hertz 114 MPa against FEM 2.2 MPa (52x) and 5.6 MPa (20x); the unsolved orientation is skipped.
+  auto orientation = [](bool solved, double point, double fem) {
+    return json{{"fem_solved", solved}, {"point_hertz_peak_pa", point}, {"fem_peak_pa", fem}};
+  };
+  CommandOutput fem("fem-sds", json{{"per_orientation", {orientation(true, 114.4e6, 2.2e6),
+                                                          orientation(false, 1e6, 1e6),
+                                                          orientation(true, 112e6, 5.6e6)}},
+                                    {"fem_vs_line_hertz_worst", 0.0028}});
+  const CellResult pressures = rules::point_hertz_is_contact_pressure(0.2)({&fem});
+  EXPECT_EQ(pressures.value, "point Hertz / FEM peak 20.0x ... 52.0x; FEM vs line Hertz worst 0.28 %");
+  EXPECT_FALSE(pressures.holds);
+  CommandOutput agrees("fem-sds", json{{"per_orientation", {orientation(true, 2.3e6, 2.2e6)}},
+                                       {"fem_vs_line_hertz_worst", 0.0028}});
+  EXPECT_TRUE(rules::point_hertz_is_contact_pressure(0.2)({&agrees}).holds);
 }
 
 TEST(Audit, AMissingKeyInAClaimNamesTheClaimKeyAndCommand)
@@ -163,7 +288,7 @@ TEST(Audit, AMissingKeyInAClaimNamesTheClaimKeyAndCommand)
 TEST(Audit, TheClaimTableIsWellFormed)
 {
   const std::vector<Claim> claims = audit_claims(ROLLCHECK_REFERENCE_MESH_DIR, true);
-  EXPECT_EQ(claims.size(), 11u);
+  EXPECT_EQ(claims.size(), 28u);
   std::set<std::string> modes, ids;
   for (const auto& [mode, meaning] : audit_modes())
     modes.insert(mode);

@@ -7,6 +7,7 @@
 #include "cli/cli.h"
 #include "core/atomic_file.h"
 #include "core/child_process.h"
+#include "core/data_folder.h"
 #include "core/error.h"
 #include "rollcheck_version.h"
 #include "study/audit_runner.h"
@@ -53,7 +54,7 @@ void add_audit_command(CLI::App& app)
                "and commands");
   static std::string json_path, markdown_path;
   static study::AuditSettings settings;
-  static std::string meshes = (fs::path(ROLLCHECK_SOURCE_DIR) / "meshes" / "reference").string();
+  static std::string meshes = (data_folder() / "meshes" / "reference").string();
   add_json_option(sub, json_path);
   sub->add_option("--markdown", markdown_path,
                   "Also write the table as Markdown to PATH ('-' for stdout) (default: none)");

@@ -1,6 +1,8 @@
 #include "study/audit_claims.h"
 #include "core/error.h"
 #include "study/audit_table.h"
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -27,8 +29,68 @@ const std::string matched = "matched resolution", true_oloid = "true oloid", cor
 /// The modes that score a body with the rigid-body oracle.
 const std::vector<std::string> oracle_modes = {paper, matched, true_oloid, corrected};
 
+/// The nearest revalidated competitor of the oloid, the preprint's "nearest neighbour".
+constexpr Genome neighbour{120, 1.30, 0.80};
+/// Speed claim: the approximate oracle scores a body in under 0.01 s, the rigid-body oracle in about 2 s.
+constexpr double approximate_seconds = 0.01, rigid_seconds = 2.0;
+/// Real rolling: every point touched, up to the rounding of the sub-face areas.
+constexpr double full_coverage = 0.999;
+
+/// Why no command can show O(1/T) convergence under real rolling.
+const std::string rolling_convergence_reason =
+    "real rolling prints no CDS and no convergence snapshots (`rollcheck oracle --oracle rolling` JSON has neither); "
+    "its roll is periodic, so its contact measure is exact after one loop, not converging like 1/T";
+
 std::string sci(double v) { return std::isinf(v) ? "∞" : fmt::format("{:.3g}", v); }
-std::string times(double v) { return std::isinf(v) ? "∞" : fmt::format("{:.1f}x", v); }
+std::string times(double v)
+{
+  return std::isnan(v) ? "∞/∞" : std::isinf(v) ? "∞" : fmt::format("{:.1f}x", v);
+}
+std::string genome_text(const Genome& g)
+{
+  return fmt::format("({:g}, {:.2f}, {:.2f})", g.theta_deg, g.offset, g.ratio);
+}
+
+/// `value` printed to `digits` significant digits, rounded or truncated, is `paper`.
+bool to_printed_digits(double value, double paper, int digits)
+{
+  if (paper == 0 || !std::isfinite(value))
+    return false;
+  const double unit = std::pow(10.0, std::floor(std::log10(std::abs(paper))) - digits + 1);
+  return std::abs(value - paper) < unit * (1 - 1e-9);
+}
+
+/// The search output's pointer to genome `g`; ComputationError when the grid has none.
+std::string genome_pointer(const CommandOutput& search, const Genome& g)
+{
+  const nlohmann::json& genomes = search.at("/genomes");
+  for (std::size_t i = 0; i < genomes.size(); ++i)
+    if (std::abs(genomes[i]["theta_deg"].get<double>() - g.theta_deg) < 1e-9 &&
+        std::abs(genomes[i]["offset"].get<double>() - g.offset) < 1e-9 &&
+        std::abs(genomes[i]["ratio"].get<double>() - g.ratio) < 1e-9)
+      return fmt::format("/genomes/{}", i);
+  throw ComputationError(fmt::format("`{}` has no genome {}", search.command(), genome_text(g)));
+}
+
+Genome genome_at(const CommandOutput& search, const std::string& pointer)
+{
+  return {search.at(pointer + "/theta_deg").get<double>(), search.at(pointer + "/offset").get<double>(),
+          search.at(pointer + "/ratio").get<double>()};
+}
+
+/// The revalidated genomes other than the anchor, as (rigid CDS, pointer), best first.
+std::vector<std::pair<double, std::string>> revalidated_by_cds(CommandOutput& search)
+{
+  std::vector<std::pair<double, std::string>> ranked;
+  for (std::size_t g = 0; g < search.at("/genomes").size(); ++g)
+  {
+    const std::string genome = fmt::format("/genomes/{}", g);
+    if (search.at(genome + "/validated").get<bool>() && !search.at(genome + "/is_anchor_genome").get<bool>())
+      ranked.emplace_back(search.number(genome + "/rigid/cds"), genome);
+  }
+  std::sort(ranked.begin(), ranked.end());
+  return ranked;
+}
 bool within(double value, double paper, double tolerance) { return std::abs(value / paper - 1) <= tolerance; }
 
 CommandArgs with(CommandArgs args, const CommandArgs& more)
@@ -153,7 +215,7 @@ Claim convergence(const Bodies& b)
           {}};
   for (const std::string& mode : {paper, true_oloid, corrected})
     c.cells.push_back({mode, {b.pair.at(mode).first}, rules::convergence_ratio(12, claim_tolerance)});
-  c.cells.push_back(not_built(rolling));
+  c.cells.push_back({rolling, {}, {}, rolling_convergence_reason});
   return c;
 }
 
@@ -256,15 +318,319 @@ Claim oloid_area(const Bodies& b)
 Claim fem_hertz()
 {
   return {"fem_hertz",
-          "Hertz analytics valid; FEM check of Hertz (future work: the preprint's Dirichlet FEM failed)",
+          "Hertz analytics valid for a sphere and a cylinder; FEM check of Hertz (future work: the preprint's "
+          "Dirichlet FEM failed)",
           "no agreement (not done)",
           fmt::format("holds when the penalty-contact FEM's contact size and peak pressure are within {:.0f} % of "
                       "Hertz.",
                       100 * fem_tolerance),
-          "There is no paper-compatible FEM to rerun (the preprint's Dirichlet model is not published).",
+          "There is no paper-compatible FEM to rerun (the preprint's Dirichlet model is not published). This "
+          "verifies the Hertz formulas on a sphere and a cylinder only, not the pressures the scores use: the "
+          "rolling bodies touch along a ruling, where the SDS's point Hertz is 10-50x above line contact (row "
+          "sds_point_hertz).",
           {{corrected,
             {{"hertz", "--model", "axi"}, {"hertz", "--model", "plane-strain"}},
             rules::fem_agrees_with_hertz(fem_tolerance)}}};
+}
+
+CommandArgs roller(const Genome& g)
+{
+  return {"oracle",   "--body", "roller", "--theta", fmt::format("{:g}", g.theta_deg), "--offset",
+          fmt::format("{:g}", g.offset), "--ratio", fmt::format("{:g}", g.ratio), "--points", "300",
+          "--paper-compat"};
+}
+
+const CommandArgs paper_search = {"search", "--grid", "quick", "--paper-compat"};
+const CommandArgs corrected_search = {"search", "--grid", "quick"};
+
+/// A claim's cells on the quick-grid search, paper-compatible and corrected.
+std::vector<ClaimCell> search_cells(const Rule& rule)
+{
+  return {{paper, {paper_search}, rule}, {corrected, {corrected_search}, rule}};
+}
+
+Claim approximate_search()
+{
+  return {"approximate_search",
+          "Approximate search: 22 of 45 genomes beat the oloid; top (120, 0.70, 0.80) 38 % better",
+          "22 of 45; 1.24e-6 vs 2.00e-6",
+          fmt::format("holds when the count of genomes below the grid's oloid genome, the oloid's and the top "
+                      "genome's approximate CDS are within {:.0f} % of the paper's and the top genome is (120, "
+                      "0.70, 0.80).",
+                      100 * claim_tolerance),
+          "The preprint's 2.00e-6 is the grid's 300-point (90, 1, 1) genome, not the 400-point anchor the "
+          "revalidation compares with.",
+          search_cells(rules::approximate_screen(22, 2.00e-6, {120, 0.70, 0.80}, 1.24e-6, claim_tolerance))};
+}
+
+Claim revalidation(const Bodies& b)
+{
+  return {"revalidation",
+          "Rigid-body revalidation: (120, 1.30, 0.80), (90, 0.70, 0.80), (120, 0.70, 0.80)",
+          "8.7e-7 (1.06x), 1.09e-6 (1.33x), 1.93e-6 (2.35x)",
+          fmt::format("holds when each genome was revalidated and its rigid-body CDS and its CDS over the reference "
+                      "oloid's are within {:.0f} % of the paper's.",
+                      100 * claim_tolerance),
+          "The preprint's table lists three of the five revalidated genomes; the value names the others.",
+          {{paper,
+            {paper_search, b.paper_oloid},
+            rules::revalidated({{{120, 1.30, 0.80}, {8.7e-7, 1.06}},
+                                {{90, 0.70, 0.80}, {1.09e-6, 1.33}},
+                                {{120, 0.70, 0.80}, {1.93e-6, 2.35}}},
+                               claim_tolerance)}}};
+}
+
+Claim improvement_direction()
+{
+  return {"improvement_direction",
+          "ρ = 0.80 in all three non-oloid positions; the approximate layer finds the direction (ρ < 1, d < 1)",
+          "ρ < 1, d < 1",
+          "holds when the three revalidated genomes of lowest rigid-body CDS all have ρ < 1 and d < 1.", "",
+          search_cells(rules::improvement_direction())};
+}
+
+Claim sensitivity()
+{
+  return {"sensitivity",
+          "One-at-a-time sensitivity (approximate oracle, others at the oloid's values)",
+          "ρ 0.80: 1.84e-6, 1.20: 2.42e-6; d 0.70: 1.85e-6, 1.30: 2.01e-6; θ 75: 1.85e-6, 120: 1.86e-6, 105: 2.30e-6",
+          fmt::format("holds when each genome's approximate CDS (quick grid, 300 points, 200 steps) is within "
+                      "{:.0f} % of the paper's.",
+                      100 * claim_tolerance),
+          "",
+          search_cells(rules::approximate_scores({{{90, 1.00, 0.80}, 1.84e-6},
+                                                  {{90, 1.00, 1.20}, 2.42e-6},
+                                                  {{90, 0.70, 1.00}, 1.85e-6},
+                                                  {{90, 1.30, 1.00}, 2.01e-6},
+                                                  {{75, 1.00, 1.00}, 1.85e-6},
+                                                  {{120, 1.00, 1.00}, 1.86e-6},
+                                                  {{105, 1.00, 1.00}, 2.30e-6}},
+                                                 claim_tolerance))};
+}
+
+Claim discrimination(const Bodies& b)
+{
+  Claim c{"discrimination", "Cylinder / oloid CDS rises from the approximate to the rigid-body oracle", "28x → 58x",
+          fmt::format("holds when the approximate and the rigid-body ratios are within {:.0f} % of 28 and 58.",
+                      100 * claim_tolerance),
+          "",
+          {}};
+  const Rule rule =
+      rules::all_of({rules::ratio_within("approximate", {1, "/cds"}, {0, "/cds"}, 28, claim_tolerance),
+                     rules::ratio_within("rigid", {3, "/cds"}, {2, "/cds"}, 58, claim_tolerance)});
+  for (const std::string& mode : oracle_modes)
+  {
+    std::vector<CommandArgs> commands = pair_commands(b, mode, {"--oracle", "approx", "--metrics", "cds"});
+    for (CommandArgs& args : pair_commands(b, mode))
+      commands.push_back(std::move(args));
+    c.cells.push_back({mode, commands, rule});
+  }
+  return c;
+}
+
+/// The Hertz table's candidates that are not on the quick grid or the reference meshes.
+const std::vector<Genome> hertz_candidates = {neighbour, {115, 1.20, 0.65}, {115, 1.30, 0.65}, {115, 0.70, 0.65}};
+
+Claim hertz_table(const Bodies& b)
+{
+  const std::vector<std::string> names = {"oloid", "(120,1.30,0.80)", "(115,1.20,0.65)", "(115,1.30,0.65)",
+                                          "(115,0.70,0.65)", "cylinder"};
+  const std::vector<std::array<double, 3>> paper_rows = {{8.2e-7, 8.1e-7, 68.3},  {8.7e-7, 8.9e-7, 68.3},
+                                                         {9.3e-7, 9.8e-7, 76.0},  {8.6e-7, 9.8e-7, 76.6},
+                                                         {1.8e-6, 1.8e-6, 79.2},  {4.75e-5, 4.68e-5, 49.7}};
+  std::vector<Expected> expected;
+  for (std::size_t i = 0; i < names.size(); ++i)
+  {
+    const int digits = i == 5 ? 3 : 2; // the cylinder's CDS and SDS have three
+    expected.push_back({i, "/cds", paper_rows[i][0], digits, names[i] + " CDS"});
+    expected.push_back({i, "/sds", paper_rows[i][1], digits, "SDS"});
+    expected.push_back({i, "/mean_peak_pressure_pa", paper_rows[i][2], 3, "p̄ MPa", 1e-6});
+  }
+  std::vector<CommandArgs> commands = {b.paper_oloid};
+  for (const Genome& g : hertz_candidates)
+    commands.push_back(roller(g));
+  commands.push_back(b.paper_cylinder);
+  return {"hertz_table",
+          "Hertz-oracle table: CDS, SDS, mean peak pressure",
+          "oloid 8.2e-7, 8.1e-7, 68.3 MPa; (120,1.30,0.80) 8.7e-7, 8.9e-7, 68.3; (115,1.20,0.65) 9.3e-7, 9.8e-7, "
+          "76.0; (115,1.30,0.65) 8.6e-7, 9.8e-7, 76.6; (115,0.70,0.65) 1.8e-6, 1.8e-6, 79.2; cylinder 4.75e-5, "
+          "4.68e-5, 49.7",
+          fmt::format("holds when each number is within {:.0f} % of the paper's; the value counts those equal to "
+                      "the printed digits (2-3 significant).",
+                      100 * claim_tolerance),
+          "Rollers meshed as the search's candidates (300 points per circle). The oloid and the cylinder reproduce "
+          "the published code's own outputs (tests/data/reference/reference_outputs.json: SDS 8.04e-7, 68.37 MPa, "
+          "4.68e-5, 49.68 MPa), so the preprint's 8.1e-7 and 68.3 are not what its code prints (68.37 truncated; "
+          "8.1e-7 is inside the rigid runs' 5-10 % spin-nudge band); the (115, ...) genomes are not in the "
+          "reference data (not on its grid).",
+          {{paper, commands, rules::each_within(expected, claim_tolerance)}}};
+}
+
+Claim pressure_uniformity(const Bodies& b)
+{
+  return {"pressure_uniformity",
+          "Mean peak pressure and its CV; the nearest neighbour (120, 1.30, 0.80): CV 0.084, SDS within 10 %",
+          "oloid 68.3 MPa, CV 0.085; cylinder 49.7 MPa, CV 0.045; neighbour CV 0.084, SDS +10 %",
+          fmt::format("holds when each pressure and CV is within {:.0f} % of the paper's and the neighbour's SDS "
+                      "is within 10 % of the oloid's.",
+                      100 * claim_tolerance),
+          "The published code prints 68.37 MPa, CV 0.0845, 49.68 MPa, CV 0.0446 (reference_outputs.json), which "
+          "the paper-compatible run reproduces; the preprint's 68.3 is truncated. Its neighbour SDS gap (8.9e-7 vs "
+          "8.1e-7) uses the oloid SDS 8.1e-7, not the code's 8.04e-7.",
+          {{paper,
+            {b.paper_oloid, b.paper_cylinder, roller(neighbour)},
+            rules::all_of({rules::each_within({{0, "/mean_peak_pressure_pa", 68.3, 3, "oloid MPa", 1e-6},
+                                               {0, "/stress_cv", 0.085, 2, "CV"},
+                                               {1, "/mean_peak_pressure_pa", 49.7, 3, "cylinder MPa", 1e-6},
+                                               {1, "/stress_cv", 0.045, 2, "CV"},
+                                               {2, "/stress_cv", 0.084, 2, "neighbour CV"}},
+                                              claim_tolerance),
+                           rules::ratio_within("neighbour SDS / oloid SDS", {2, "/sds"}, {0, "/sds"}, 1, 0.10)})}}};
+}
+
+Claim discrete_gaussian(const Bodies& b)
+{
+  Claim c{"discrete_gaussian", "The discrete Gaussian curvature is about 1.07 on the oloid, where K = 0",
+          "|K| ≈ 1.07",
+          fmt::format("holds when the mean face Gaussian curvature is within {:.0f} % of 1.07.",
+                      100 * claim_tolerance),
+          "The preprint's \"affecting SDS by 17 %\" names no computation to rerun.",
+          {}};
+  for (const std::string& mode : {paper, true_oloid, corrected})
+    c.cells.push_back({mode,
+                       {b.pair.at(mode).first},
+                       rules::each_within({{0, "/curvature/face_gaussian_curvature_mean_per_m2", 1.07, 3, "K"}},
+                                          claim_tolerance)});
+  return c;
+}
+
+Claim geometry_only_sds()
+{
+  return {"geometry_only_sds",
+          "Geometry-only SDS under uniform contact, curvature-driven stress CV, \"about 6 %\"",
+          "4.8e-8, CV 0.30, ~6 %",
+          "cannot be tested: see the cell.",
+          "4.8e-8 / 8.07e-7 = 5.9 % is the preprint's own arithmetic; the discrete per-face peak pressures "
+          "(`--per-face`, peak_pressure_pa) are not the preprint's corrected curvatures.",
+          {{paper, {}, {}, "the method (\"analytically corrected curvatures, K = 0\", Couey 2026, in preparation) is "
+                           "unpublished, and with K = 0 the preprint's R_eff = 1/√(κ1κ2) is infinite, so its point "
+                           "Hertz pressure is undefined; no command computes it"}}};
+}
+
+Claim mean_curvature_spread(const Bodies& b)
+{
+  Claim c{"mean_curvature_spread", "σ_H of the discrete mean curvature: oloid above cylinder", "0.90 vs 0.28",
+          fmt::format("holds when both are within {:.0f} % of the paper's.", 100 * claim_tolerance),
+          "The paper-compatible values reproduce reference_outputs.json (H_face_std 0.899, 0.279); corrected "
+          "physics halves the reference code's doubled mean curvature.",
+          {}};
+  const Rule rule = rules::each_within({{0, "/curvature/face_mean_curvature_std_per_m", 0.90, 2, "oloid"},
+                                        {1, "/curvature/face_mean_curvature_std_per_m", 0.28, 2, "cylinder"}},
+                                       claim_tolerance);
+  for (const std::string& mode : {paper, true_oloid, corrected})
+    c.cells.push_back({mode, pair_commands(b, mode), rule});
+  return c;
+}
+
+Claim tds_lowest(const Bodies& b)
+{
+  Claim c{"tds_lowest", "The oloid's TDS is the lowest score of its invariant vector", "TDS 7.77e-7 lowest",
+          "holds when no score of the vector (CDS, SDS, WDS_vol, WDS_depth, FDS) is below TDS and TDS is below CDS.",
+          "The reference code computes WDS_vol from the same sum as TDS: the two are equal (the preprint's table "
+          "prints 7.77e-7 for both).",
+          {}};
+  for (const std::string& mode : oracle_modes)
+    c.cells.push_back({mode, {b.pair.at(mode).first}, rules::tds_lowest()});
+  return c;
+}
+
+Claim fatigue_values(const Bodies& b)
+{
+  return {"fatigue_values",
+          "FDS of the oloid, its damage ratio, and 6.8x over the nearest competitor",
+          "2.42e-6; 23x; 6.8x",
+          fmt::format("holds when FDS and the damage ratio are within {:.0f} % of the paper's and the nearest "
+                      "competitor's (120, 1.30, 0.80) FDS over the oloid's is within {:.0f} % of 6.8.",
+                      100 * claim_tolerance, 100 * claim_tolerance),
+          "The published code prints FDS 2.35e-6 and damage ratio 24.2 (reference_outputs.json), which the "
+          "paper-compatible run reproduces: the preprint's 2.42e-6 and 23x are not its code's output. No pair of "
+          "the published outputs gives 6.8x.",
+          {{paper,
+            {b.paper_oloid, roller(neighbour)},
+            rules::all_of({rules::each_within({{0, "/fds", 2.42e-6, 3, "FDS"},
+                                               {0, "/fatigue/damage_ratio", 23, 2, "damage ratio"}},
+                                              claim_tolerance),
+                           rules::ratio_within("competitor FDS / oloid FDS", {1, "/fds"}, {0, "/fds"}, 6.8,
+                                               claim_tolerance)})}}};
+}
+
+Claim rolling_convergence()
+{
+  return {"rolling_convergence", "CDS converges as O(1/T) under real rolling", "O(1/T)",
+          "cannot be tested: see the cell.", "", {{rolling, {}, {}, rolling_convergence_reason}}};
+}
+
+Claim surface_coverage(const Bodies& b)
+{
+  return {"surface_coverage",
+          "Every point of the oloid's surface touches the plane during one complete roll",
+          "every point",
+          fmt::format("the preprint's oracles: holds when no face goes untouched; real rolling (geometric contact "
+                      "width, `--contact-width rigid`: which points touch, not how long): holds when the touched "
+                      "area fraction is at least {:g}.",
+                      full_coverage),
+          "With the Hertz contact width the strip (about 4e-5 m) is narrower than the spacing of the time samples "
+          "on the cut faces, so its coverage (0.93-0.95) measures the sampling, not the geometry.",
+          {{paper, {b.paper_oloid}, rules::every_face_touched()},
+           {true_oloid, {b.pair.at(true_oloid).first}, rules::every_face_touched()},
+           {corrected, {b.pair.at(corrected).first}, rules::every_face_touched()},
+           {rolling,
+            {{"oracle", "--oracle", "rolling", "--body", "oloid", "--contact-width", "rigid"}},
+            rules::coverage_at_least(full_coverage)}}};
+}
+
+Claim speed(const Bodies& b)
+{
+  return {"speed",
+          "Speed: the approximate oracle scores a body in under 0.01 s, the rigid-body oracle in about 2 s",
+          "< 0.01 s; ~2 s",
+          fmt::format("holds when rollcheck's approximate oracle takes under {:g} s and its rigid-body oracle at "
+                      "most {:g} s on the reference oloid (wall_s: the scoring, without process start-up).",
+                      approximate_seconds, rigid_seconds),
+          "rollcheck is C++, not the published Python: its times bound the method's cost, not the preprint's code. "
+          "The published code on this machine kind takes 8-14 ms (approximate) and 0.9-1.5 s (rigid-body) per body "
+          "(tests/data/reference/README.md): its approximate oracle is not under 0.01 s.",
+          {{paper,
+            {with(b.paper_oloid, {"--oracle", "approx", "--metrics", "cds"}), b.paper_oloid},
+            rules::all_of({rules::below("approximate s", 0, "/wall_s", approximate_seconds),
+                           rules::below("rigid-body s", 1, "/wall_s", rigid_seconds)})}}};
+}
+
+Claim all_metrics(const Bodies& b)
+{
+  const std::vector<std::pair<std::string, double>> all = {{"/cds", 58},     {"/sds", 58},       {"/tds", 58},
+                                                             {"/wds_vol", 58}, {"/wds_depth", 58}, {"/fds", 58}};
+  return {"all_metrics", "The cylinder is 58x worse on all metrics", "58x",
+          fmt::format("holds when each cylinder / oloid ratio (CDS, SDS, TDS, WDS_vol, WDS_depth, FDS) is within "
+                      "{:.0f} % of 58.",
+                      100 * claim_tolerance),
+          "The preprint's own table gives 46-68x and an infinite FDS ratio.",
+          ratio_cells(b, all)};
+}
+
+Claim sds_point_hertz()
+{
+  return {"sds_point_hertz",
+          "The SDS's point-Hertz pressures are the contact pressures of the rolling bodies",
+          "point Hertz, R_eff = 1/√(κ1κ2)",
+          fmt::format("holds when, at each FEM-solved orientation of real rolling, the point-Hertz peak pressure "
+                      "the SDS uses is within {:.0f} % of the FEM contact peak.",
+                      100 * claim_tolerance),
+          "The rolling bodies touch the plane along a ruling (line contact); the FEM slices agree with line-contact "
+          "Hertz (value: worst FEM vs line Hertz).",
+          {{corrected,
+            {{"fem-sds", "--body", "paper-oloid", "--orientations", "3", "--fem-slices", "3"}},
+            rules::point_hertz_is_contact_pressure(claim_tolerance)}}};
 }
 } // namespace
 
@@ -323,15 +689,41 @@ std::vector<std::string> audit_verdict_rules()
           "does not hold: the paper-compatible recomputation (the preprint's own method and meshes) fails it.",
           "real rolling: U is not CDS, so its cell holds when U discriminates the bodies the way the claim does "
           "(the oloid's U below the cylinder's); the numbers are not compared with the paper's.",
+          "cannot be tested: no applicable recomputation can decide the claim (each such cell says why).",
           "n/a: the mode does not change this claim; not built yet: the code for that mode has no command yet."};
 }
 
 std::vector<Claim> audit_claims(const fs::path& reference_meshes, bool quick)
 {
   const Bodies b = audit_bodies(reference_meshes, quick);
-  return {oloid_cds(b),     cds_ratio(b),     search_optimum(), convergence(b),
-          face_scaling(b),  threshold_independence(b),          sds_ratio(b),
-          damage_ratios(b), fatigue(b),       oloid_area(b),    fem_hertz()};
+  return {oloid_cds(b),
+          cds_ratio(b),
+          search_optimum(),
+          convergence(b),
+          face_scaling(b),
+          threshold_independence(b),
+          sds_ratio(b),
+          damage_ratios(b),
+          fatigue(b),
+          oloid_area(b),
+          fem_hertz(),
+          approximate_search(),
+          revalidation(b),
+          improvement_direction(),
+          sensitivity(),
+          discrimination(b),
+          hertz_table(b),
+          pressure_uniformity(b),
+          discrete_gaussian(b),
+          geometry_only_sds(),
+          mean_curvature_spread(b),
+          tds_lowest(b),
+          fatigue_values(b),
+          rolling_convergence(),
+          surface_coverage(b),
+          speed(b),
+          all_metrics(b),
+          sds_point_hertz()};
 }
 
 namespace rules
@@ -379,26 +771,11 @@ Rule no_candidate_beats_anchor()
   return [](const std::vector<CommandOutput*>& out) {
     CommandOutput& search = *out[0];
     const double anchor = search.number("/anchor/rigid/cds");
-    int better = 0, validated = 0;
-    double best = std::numeric_limits<double>::infinity();
-    std::string best_name;
-    for (std::size_t g = 0; g < search.at("/genomes").size(); ++g)
-    {
-      const std::string genome = fmt::format("/genomes/{}", g);
-      if (!search.at(genome + "/validated").get<bool>() || search.at(genome + "/is_anchor_genome").get<bool>())
-        continue;
-      ++validated;
-      const double v = search.number(genome + "/rigid/cds");
-      better += v < anchor;
-      if (v < best)
-      {
-        best = v;
-        best_name = fmt::format("({:g}, {:.2f}, {:.2f})", search.at(genome + "/theta_deg").get<double>(),
-                                search.at(genome + "/offset").get<double>(),
-                                search.at(genome + "/ratio").get<double>());
-      }
-    }
-    return CellResult{fmt::format("anchor {}; {} of {} better, best {} {:.3f}x", sci(anchor), better, validated,
+    const auto ranked = revalidated_by_cds(search);
+    const auto better = std::count_if(ranked.begin(), ranked.end(), [&](const auto& r) { return r.first < anchor; });
+    const double best = ranked.empty() ? std::numeric_limits<double>::infinity() : ranked.front().first;
+    const std::string best_name = ranked.empty() ? "-" : genome_text(genome_at(search, ranked.front().second));
+    return CellResult{fmt::format("anchor {}; {} of {} better, best {} {:.3f}x", sci(anchor), better, ranked.size(),
                                   best_name, best / anchor),
                       better == 0};
   };
@@ -487,6 +864,213 @@ Rule fem_agrees_with_hertz(double tolerance)
                                   "p0 {:+.2f} %",
                                   100 * a, 100 * p_axi, 100 * b, 100 * p_line),
                       holds};
+  };
+}
+Rule all_of(std::vector<Rule> parts)
+{
+  return [=](const std::vector<CommandOutput*>& out) {
+    CellResult cell{"", true};
+    for (const Rule& part : parts)
+    {
+      const CellResult r = part(out);
+      cell.holds = cell.holds && r.holds;
+      cell.value += (cell.value.empty() ? "" : "; ") + r.value;
+    }
+    return cell;
+  };
+}
+
+Rule each_within(std::vector<Expected> expected, double tolerance)
+{
+  return [=](const std::vector<CommandOutput*>& out) {
+    CellResult cell{"", true};
+    int printed = 0;
+    for (const Expected& e : expected)
+    {
+      const double v = out[e.output]->number(e.pointer) * e.scale;
+      const bool ok = within(v, e.paper, tolerance);
+      printed += to_printed_digits(v, e.paper, e.digits);
+      cell.holds = cell.holds && ok;
+      cell.value += fmt::format("{}{} {}{}", cell.value.empty() ? "" : ", ", e.label, fmt::format("{:.4g}", v),
+                                ok ? "" : " (✗)");
+    }
+    cell.value += fmt::format(" ({} of {} to the printed digits)", printed, expected.size());
+    return cell;
+  };
+}
+
+Rule ratio_within(std::string label, std::pair<std::size_t, std::string> numerator,
+                  std::pair<std::size_t, std::string> denominator, double paper, double tolerance)
+{
+  return [=](const std::vector<CommandOutput*>& out) {
+    const double r = out[numerator.first]->number(numerator.second) /
+                     out[denominator.first]->number(denominator.second);
+    return CellResult{fmt::format("{} {:#.3g}x", label, r), within(r, paper, tolerance)};
+  };
+}
+
+Rule below(std::string label, std::size_t output, std::string pointer, double limit)
+{
+  return [=](const std::vector<CommandOutput*>& out) {
+    const double v = out[output]->number(pointer);
+    return CellResult{fmt::format("{} {:.3g}", label, v), v < limit};
+  };
+}
+
+Rule approximate_screen(int beaten, double oloid_cds, Genome top, double top_cds, double tolerance)
+{
+  return [=](const std::vector<CommandOutput*>& out) {
+    CommandOutput& search = *out[0];
+    const std::size_t n = search.at("/genomes").size();
+    std::string oloid_genome;
+    for (std::size_t g = 0; g < n; ++g)
+      if (search.at(fmt::format("/genomes/{}/is_anchor_genome", g)).get<bool>())
+        oloid_genome = fmt::format("/genomes/{}", g);
+    if (oloid_genome.empty())
+      throw ComputationError(fmt::format("`{}` has no genome with is_anchor_genome", search.command()));
+    const double oloid = search.number(oloid_genome + "/approximate/cds");
+    int below_oloid = 0;
+    double best = std::numeric_limits<double>::infinity();
+    std::string best_genome;
+    for (std::size_t g = 0; g < n; ++g)
+    {
+      const std::string genome = fmt::format("/genomes/{}", g);
+      const double v = search.number(genome + "/approximate/cds");
+      below_oloid += v < oloid;
+      if (v < best)
+        best = v, best_genome = genome;
+    }
+    const Genome found = genome_at(search, best_genome);
+    const bool holds = within(below_oloid, beaten, tolerance) && within(oloid, oloid_cds, tolerance) &&
+                       within(best, top_cds, tolerance) && genome_text(found) == genome_text(top);
+    return CellResult{fmt::format("{} of {} below the oloid genome's {}; top {} {}, {:.0f} % better", below_oloid, n,
+                                  sci(oloid), genome_text(found), sci(best), 100 * (1 - best / oloid)),
+                      holds};
+  };
+}
+
+Rule revalidated(std::vector<std::pair<Genome, std::pair<double, double>>> paper, double tolerance)
+{
+  return [=](const std::vector<CommandOutput*>& out) {
+    CommandOutput& search = *out[0];
+    const double oloid = out[1]->number("/cds");
+    CellResult cell{"", true};
+    std::vector<std::string> listed;
+    for (const auto& [genome, cds_ratio] : paper)
+    {
+      const std::string g = genome_pointer(search, genome);
+      listed.push_back(g);
+      if (!search.at(g + "/validated").get<bool>())
+      {
+        cell.holds = false;
+        cell.value += fmt::format("{}{} not revalidated", cell.value.empty() ? "" : ", ", genome_text(genome));
+        continue;
+      }
+      const double cds = search.number(g + "/rigid/cds");
+      cell.holds = cell.holds && within(cds, cds_ratio.first, tolerance) &&
+                   within(cds / oloid, cds_ratio.second, tolerance);
+      cell.value += fmt::format("{}{} {} ({:.2f}x)", cell.value.empty() ? "" : ", ", genome_text(genome), sci(cds),
+                                cds / oloid);
+    }
+    std::string others;
+    for (const auto& [cds, g] : revalidated_by_cds(search))
+      if (std::find(listed.begin(), listed.end(), g) == listed.end())
+        others += fmt::format("{}{} {} ({:.2f}x)", others.empty() ? "" : ", ", genome_text(genome_at(search, g)),
+                              sci(cds), cds / oloid);
+    cell.value += fmt::format("; also revalidated, not in the table: {}", others.empty() ? "none" : others);
+    return cell;
+  };
+}
+
+Rule improvement_direction()
+{
+  return [](const std::vector<CommandOutput*>& out) {
+    CommandOutput& search = *out[0];
+    const auto ranked = revalidated_by_cds(search);
+    std::string top;
+    int small_ratio = 0, small_offset = 0, n = 0;
+    for (std::size_t i = 0; i < std::min<std::size_t>(3, ranked.size()); ++i, ++n)
+    {
+      const Genome g = genome_at(search, ranked[i].second);
+      small_ratio += g.ratio < 1;
+      small_offset += g.offset < 1;
+      top += (top.empty() ? "" : ", ") + genome_text(g);
+    }
+    return CellResult{fmt::format("rigid-body best {}: {}; ρ < 1 in {}, d < 1 in {}", n, top, small_ratio,
+                                  small_offset),
+                      n == 3 && small_ratio == 3 && small_offset == 3};
+  };
+}
+
+Rule approximate_scores(std::vector<std::pair<Genome, double>> paper, double tolerance)
+{
+  return [=](const std::vector<CommandOutput*>& out) {
+    CommandOutput& search = *out[0];
+    CellResult cell{"", true};
+    int printed = 0;
+    for (const auto& [genome, value] : paper)
+    {
+      const double v = search.number(genome_pointer(search, genome) + "/approximate/cds");
+      const bool ok = within(v, value, tolerance);
+      printed += to_printed_digits(v, value, 3);
+      cell.holds = cell.holds && ok;
+      cell.value += fmt::format("{}{} {}{}", cell.value.empty() ? "" : ", ", genome_text(genome), sci(v),
+                                ok ? "" : " (✗)");
+    }
+    cell.value += fmt::format(" ({} of {} to the printed digits)", printed, paper.size());
+    return cell;
+  };
+}
+
+Rule tds_lowest()
+{
+  return [](const std::vector<CommandOutput*>& out) {
+    const double tds = out[0]->number("/tds"), cds = out[0]->number("/cds");
+    std::string lower;
+    for (const char* key : {"cds", "sds", "wds_vol", "wds_depth", "fds"})
+      if (out[0]->number(std::string("/") + key) < tds * (1 - 1e-9))
+        lower += fmt::format("{}{}", lower.empty() ? "" : ", ", key);
+    return CellResult{fmt::format("TDS {}, CDS {}; below TDS: {}", sci(tds), sci(cds), lower.empty() ? "none" : lower),
+                      lower.empty() && tds < cds};
+  };
+}
+
+Rule every_face_touched()
+{
+  return [](const std::vector<CommandOutput*>& out) {
+    const double untouched = out[0]->number("/contact/faces_without_contact");
+    const double faces = out[0]->number("/n_faces");
+    return CellResult{fmt::format("{:g} of {:g} faces untouched", untouched, faces), untouched == 0};
+  };
+}
+
+Rule coverage_at_least(double fraction)
+{
+  return [=](const std::vector<CommandOutput*>& out) {
+    const double coverage = out[0]->number("/coverage");
+    return CellResult{fmt::format("coverage {:.4f}", coverage), coverage >= fraction};
+  };
+}
+
+Rule point_hertz_is_contact_pressure(double tolerance)
+{
+  return [=](const std::vector<CommandOutput*>& out) {
+    CommandOutput& fem = *out[0];
+    double lo = std::numeric_limits<double>::infinity(), hi = 0;
+    for (std::size_t i = 0; i < fem.at("/per_orientation").size(); ++i)
+    {
+      const std::string o = fmt::format("/per_orientation/{}", i);
+      if (!fem.at(o + "/fem_solved").get<bool>())
+        continue;
+      const double r = fem.number(o + "/point_hertz_peak_pa") / fem.number(o + "/fem_peak_pa");
+      lo = std::min(lo, r), hi = std::max(hi, r);
+    }
+    if (hi == 0)
+      throw ComputationError(fmt::format("`{}` solved no orientation", fem.command()));
+    const double line = fem.number("/fem_vs_line_hertz_worst");
+    return CellResult{fmt::format("point Hertz / FEM peak {:.1f}x ... {:.1f}x; FEM vs line Hertz worst {:.2f} %", lo,
+                                  hi, 100 * line),
+                      within(lo, 1, tolerance) && within(hi, 1, tolerance)};
   };
 }
 } // namespace rules

@@ -58,12 +58,33 @@ struct CellResult
 using Rule = std::function<CellResult(const std::vector<CommandOutput*>& outputs)>;
 
 /// One mode's recomputation of a claim. Without a rule the cell is "not built
-/// yet": the code for that mode has no command yet.
+/// yet" (the code for that mode has no command yet), or, when `untestable`
+/// gives a reason, "cannot be tested" (no computation can decide it).
 struct ClaimCell
 {
   std::string mode;
   std::vector<CommandArgs> commands;
   Rule rule;
+  std::string untestable = {};
+};
+
+/// A genome (theta, d, rho) of the paper family, as the search prints it.
+struct Genome
+{
+  double theta_deg, offset, ratio;
+};
+
+/// A number a rule expects: `pointer` in output `output` against the paper's
+/// value printed with `digits` significant digits, labelled `label` (values
+/// multiplied by `scale`: 1e-6 for MPa).
+struct Expected
+{
+  std::size_t output;
+  std::string pointer;
+  double paper;
+  int digits;
+  std::string label;
+  double scale = 1;
 };
 
 struct Claim
@@ -118,5 +139,40 @@ Rule areas_within(double area, double tolerance, std::vector<std::string> labels
 /// (hertz axi, hertz plane strain): contact size and peak pressure errors
 /// against Hertz are at most `tolerance`.
 Rule fem_agrees_with_hertz(double tolerance);
+/// Every rule holds; their values joined by "; ".
+Rule all_of(std::vector<Rule> parts);
+/// Each expected number is within `tolerance` of its paper value; the value
+/// also counts those that agree to the paper's printed digits (rounded or
+/// truncated).
+Rule each_within(std::vector<Expected> expected, double tolerance);
+/// outputs[numerator] / outputs[denominator] (at their pointers) is within
+/// `tolerance` of `paper`.
+Rule ratio_within(std::string label, std::pair<std::size_t, std::string> numerator,
+                  std::pair<std::size_t, std::string> denominator, double paper, double tolerance);
+/// outputs[output]'s number at `pointer` is below `limit`.
+Rule below(std::string label, std::size_t output, std::string pointer, double limit);
+/// (search): the approximate layer: `beaten` genomes (within `tolerance`)
+/// score below the grid's oloid genome (within `tolerance` of `oloid_cds`),
+/// and the best is `top` (its CDS within `tolerance` of `top_cds`).
+Rule approximate_screen(int beaten, double oloid_cds, Genome top, double top_cds, double tolerance);
+/// (search, oracle on the reference oloid): each genome was revalidated and
+/// its rigid-body CDS and CDS over the oloid's are within `tolerance` of the
+/// paper's (cds, ratio); the value also names revalidated genomes not listed.
+Rule revalidated(std::vector<std::pair<Genome, std::pair<double, double>>> paper, double tolerance);
+/// (search): the three revalidated genomes of lowest rigid-body CDS all have
+/// rho < 1 and d < 1, the direction the approximate layer found.
+Rule improvement_direction();
+/// (search): each genome's approximate CDS is within `tolerance` of its paper
+/// value (counting those to the printed 3 digits).
+Rule approximate_scores(std::vector<std::pair<Genome, double>> paper, double tolerance);
+/// (oracle): no score of the vector is below TDS, and TDS is below CDS.
+Rule tds_lowest();
+/// (preprint's oracles): no face goes untouched.
+Rule every_face_touched();
+/// (real rolling): the touched area fraction is at least `fraction`.
+Rule coverage_at_least(double fraction);
+/// (fem-sds): each solved orientation's point-Hertz peak is within
+/// `tolerance` of the FEM peak.
+Rule point_hertz_is_contact_pressure(double tolerance);
 } // namespace rules
 } // namespace rollcheck::study

@@ -109,11 +109,11 @@ AuditTable decide_claims(const std::vector<Claim>& claims, std::vector<CommandOu
   AuditTable table;
   for (const Claim& claim : claims)
   {
-    AuditClaim decided{claim.claim, claim.paper_value, claim.rule, {}, Verdict::not_built, claim.note};
+    AuditClaim decided{claim.id, claim.claim, claim.paper_value, claim.rule, {}, Verdict::not_built, claim.note};
     for (const ClaimCell& cell : claim.cells)
     {
       AuditCell& out = decided.cells[cell.mode];
-      out = {true, static_cast<bool>(cell.rule), "", {}, false};
+      out = {true, static_cast<bool>(cell.rule), "", {}, false, cell.untestable};
       if (!cell.rule)
         continue;
       std::vector<CommandOutput*> inputs;

@@ -12,6 +12,7 @@ std::string verdict_text(Verdict v)
   case Verdict::holds: return "holds";
   case Verdict::holds_only_paper_compatible: return "holds only in paper-compatible mode";
   case Verdict::does_not_hold: return "does not hold";
+  case Verdict::cannot_be_tested: return "cannot be tested";
   case Verdict::not_built: return "not built yet";
   }
   return "";
@@ -21,15 +22,18 @@ Verdict judge(const AuditClaim& claim)
 {
   const auto paper = claim.cells.find(paper_compatible_mode);
   const bool has_paper = paper != claim.cells.end() && paper->second.applicable && paper->second.built;
-  bool any = has_paper, others_hold = true;
+  bool any = has_paper, others_hold = true, untestable = false;
   for (const auto& [mode, cell] : claim.cells)
+  {
+    untestable = untestable || (cell.applicable && !cell.untestable.empty());
     if (mode != paper_compatible_mode && cell.applicable && cell.built)
     {
       any = true;
       others_hold = others_hold && cell.holds;
     }
+  }
   if (!any)
-    return Verdict::not_built;
+    return untestable ? Verdict::cannot_be_tested : Verdict::not_built;
   if (!has_paper)
     return others_hold ? Verdict::holds : Verdict::does_not_hold;
   if (!paper->second.holds)
@@ -43,6 +47,8 @@ std::string cell_text(const AuditCell& cell)
 {
   if (!cell.applicable)
     return "n/a";
+  if (!cell.untestable.empty())
+    return "cannot be tested: " + cell.untestable;
   if (!cell.built)
     return "not built yet";
   std::string refs;
@@ -50,9 +56,6 @@ std::string cell_text(const AuditCell& cell)
     refs += (refs.empty() ? "" : ",") + id;
   return fmt::format("{}{} [{}]", cell.value, cell.holds ? "" : " (✗)", refs);
 }
-
-/// A value read, as the commands print it: infinity as "inf" (a read is
-/// never NaN: the reader accepts only numbers and "inf").
 } // namespace
 
 std::string to_markdown(const AuditTable& table)
@@ -108,8 +111,8 @@ nlohmann::json to_json(const AuditTable& table)
     nlohmann::json cells = nlohmann::json::object();
     for (const auto& [mode, cell] : c.cells)
       cells[mode] = {{"applicable", cell.applicable}, {"built", cell.built}, {"value", cell.value},
-                     {"commands", cell.commands}, {"holds", cell.holds}};
-    claims.push_back({{"claim", c.claim}, {"paper_value", c.paper_value}, {"rule", c.rule},
+                     {"commands", cell.commands}, {"holds", cell.holds}, {"untestable", cell.untestable}};
+    claims.push_back({{"id", c.id}, {"claim", c.claim}, {"paper_value", c.paper_value}, {"rule", c.rule},
                       {"recomputations", cells}, {"verdict", verdict_text(c.verdict)}, {"note", c.note}});
   }
   nlohmann::json commands = nlohmann::json::array();

@@ -27,12 +27,14 @@ enum class Verdict
   holds,
   holds_only_paper_compatible,
   does_not_hold,
+  cannot_be_tested,
   not_built
 };
 std::string verdict_text(Verdict v);
 
 /// One recomputation of a claim in one mode. `applicable` false: the mode does
-/// not apply to this claim ("n/a"); `built` false: the code is not built yet.
+/// not apply to this claim ("n/a"); `built` false: the code is not built yet,
+/// or, with an `untestable` reason, no computation can decide it.
 struct AuditCell
 {
   bool applicable = false;
@@ -40,10 +42,12 @@ struct AuditCell
   std::string value;                 ///< the recomputed value, as printed
   std::vector<std::string> commands; ///< ids of the commands it comes from
   bool holds = false;                ///< the verdict rule applied to this cell
+  std::string untestable = {};       ///< why it cannot be tested; empty: it can
 };
 
 struct AuditClaim
 {
+  std::string id; ///< the claim's short name: "oloid_cds", ...
   std::string claim;
   std::string paper_value;
   std::string rule;                       ///< the verdict rule applied to each cell
@@ -70,6 +74,8 @@ inline const std::string paper_compatible_mode = "paper-compatible";
 /// holds and another does not; does not hold if the paper-compatible cell
 /// does not. A claim with no built paper-compatible cell takes the verdict of
 /// its other cells (e.g. the FEM item, which has no paper-compatible code).
+/// Cells that cannot be tested are left out; a claim with only such cells
+/// (and cells not built) cannot be tested.
 Verdict judge(const AuditClaim& claim);
 
 std::string to_markdown(const AuditTable& table);
