@@ -27,11 +27,13 @@ void add_batch_command(CLI::App& app)
   sub->add_option("cases", options.cases, "Case files (.toml), folders of them, or quoted globs")->required();
   sub->add_option("-j,--jobs", options.jobs,
                   "Worker processes per MPI rank (default: 0 = one per CPU: the CPUs mpirun bound the rank to, else the "
-                  "node's CPUs shared among its ranks)");
+                  "node's CPUs shared among its ranks)")
+      ->check(CLI::NonNegativeNumber);
   sub->add_option("--out", options.out,
                   "Results folder: cases/<hash>/ per case, results.h5 for all (default: results)");
   sub->add_flag("--force", options.force, "Recompute cases already done (default: reuse their results)");
   sub->add_option("--timeout", options.case_timeout_s,
-                  "A case running longer than this fails [s] (default: 0 = no limit)");
+                  "A case running longer than this fails [s] (default: 0 = no limit)")
+      ->check(CLI::NonNegativeNumber);
 }
 } // namespace rollcheck::cli

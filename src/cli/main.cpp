@@ -7,6 +7,8 @@
 #include "fem/petsc_session.h"
 #include "rollcheck_version.h"
 #include <algorithm>
+#include <cstdlib>
+#include <set>
 #include <cctype>
 #include <dolfinx/common/version.h>
 #include <fmt/format.h>
@@ -21,17 +23,25 @@ namespace
 {
 using namespace rollcheck;
 
-/// MPI lives for the whole run (batch spreads cases over ranks, FEM solves
-/// use PETSc); PETSc is started by whoever needs it and ended here.
+/// MPI is started for the scenes that need it (FEM solves, batches spread
+/// over ranks, case files of any scene) or when a launcher started this
+/// process; the others (and --help, --version) start in milliseconds without
+/// it. PETSc is started by whoever needs it and ended here.
 struct MpiSession
 {
-  MpiSession(int& argc, char**& argv)
+  MpiSession(int& argc, char**& argv, bool needed)
   {
+    if (!needed)
+      return;
     int provided;
     MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
   }
   ~MpiSession()
   {
+    int initialized = 0;
+    MPI_Initialized(&initialized);
+    if (!initialized)
+      return;
     PetscBool petsc_running = PETSC_FALSE;
     PetscInitialized(&petsc_running);
     if (petsc_running)
@@ -39,6 +49,15 @@ struct MpiSession
     MPI_Finalize();
   }
 };
+
+/// Whether the subcommand named in `args` needs MPI: every one but those that
+/// compute on one process with threads, unless a launcher (mpirun) started us.
+bool needs_mpi(const std::string& subcommand)
+{
+  static const std::set<std::string> without_mpi = {"", "mesh", "oracle", "search", "report", "audit", "optimize"};
+  const bool launched = std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK") || std::getenv("PMI_RANK");
+  return launched || !without_mpi.contains(subcommand);
+}
 
 std::string version_text()
 {
@@ -124,7 +143,10 @@ void insert_petsc_options(std::vector<std::string> options)
 
 int main(int argc, char** argv)
 {
-  MpiSession mpi(argc, argv);
+  // rollcheck's arguments end at `--`; PETSc's follow.
+  const int ours = static_cast<int>(std::find(argv, argv + argc, std::string_view("--")) - argv);
+  const std::vector<std::string> args(argv + 1, argv + ours);
+  MpiSession mpi(argc, argv, needs_mpi(subcommand_in(args)));
   spdlog::set_default_logger(spdlog::stderr_color_mt("rollcheck"));
   spdlog::set_pattern("[%^%l%$] %v");
 
@@ -151,9 +173,6 @@ int main(int argc, char** argv)
   cli::add_audit_command(app);
   cli::add_validate_command(app);
 
-  // rollcheck's arguments end at `--`; PETSc's follow.
-  const int ours = static_cast<int>(std::find(argv, argv + argc, std::string_view("--")) - argv);
-  const std::vector<std::string> args(argv + 1, argv + ours);
   try
   {
     app.parse(ours, argv);

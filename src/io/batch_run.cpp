@@ -565,10 +565,12 @@ BatchResult run_batch(const BatchOptions& options, const FindSchema& find_schema
     {
       if (fs::exists(out) && !fs::is_directory(out))
         throw InputError(fmt::format("batch --out '{}': exists and is not a folder", out.string()));
+      // The cases are read and checked before the folder is touched: a batch
+      // refused for bad input leaves nothing behind, no folder, no lock.
+      plan = make_plan(options, out, find_schema);
       fs::create_directories(out / "cases");
       lock.emplace(out);
       remove_stale_work(out);
-      plan = make_plan(options, out, find_schema);
     }
     catch (const std::filesystem::filesystem_error& e)
     {

@@ -9,8 +9,10 @@ bin=$1; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp/cases"
 fail=0
 check() { if ! eval "$1"; then echo "FAIL: $2"; fail=1; fi; }
-printf '[scene]\nkind = "mesh"\nbody = "oloid"\npoints = 100\n' > "$tmp/cases/oloid.toml"
-printf '[scene]\nkind = "mesh"\nbody = "cylinder"\n' > "$tmp/cases/cylinder.toml"
+# Each case states a check, as validate requires (the cylinder r = 1, h = 2:
+# area 2 pi r h + 2 pi r^2 of the inscribed 60-gon prism, within 0.5 %).
+printf '[scene]\nkind = "mesh"\nbody = "oloid"\npoints = 100\n[[check]]\npointer = "/area_m2"\nvalue = 12.566370614359172\nrel_tol = 0.005\nreference = "4 pi r^2"\n' > "$tmp/cases/oloid.toml"
+printf '[scene]\nkind = "mesh"\nbody = "cylinder"\n[[check]]\npointer = "/area_m2"\nvalue = 18.84955592153876\nrel_tol = 0.005\nreference = "6 pi r^2"\n' > "$tmp/cases/cylinder.toml"
 "$bin" -q batch "$tmp/cases" --out "$tmp/out" > /dev/null 2>&1 || { echo "FAIL: batch"; fail=1; }
 
 "$bin" report --from "$tmp/out/results.h5" > "$tmp/report.out" 2>&1
