@@ -277,7 +277,7 @@ TEST(ResultsStore, ReportDrawsTheReferenceCodesOwnConvergenceAndPerFaceContacts)
                           {"cds", rigid.at("cds")},
                           {"n_samples", rigid.at("n_samples")},
                           {"n_faces", per_face.at("face_areas").size()},
-                          {"convergence", rigid.at("convergence")},
+                          {"convergence", {{"cds", rigid.at("convergence")}}},
                           {"per_face",
                            {{"face_areas_m2", per_face.at("face_areas")},
                             {"face_centroids_m", per_face.at("face_centroids")},

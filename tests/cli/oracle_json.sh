@@ -30,10 +30,13 @@ check "approximate CDS as the reference" "((.cds - $approx_ref) | fabs) < 1e-9 *
   --set metrics=cds --json "$tmp/case.json" || { echo "FAIL: case file"; fail=1; }
 check "case file gives the same CDS" "((.cds - $approx_ref) | fabs) < 1e-9 * $approx_ref" "$tmp/case.json"
 # Search: JSON and HDF5, ranks 1..n among valid genomes.
-"$bin" -q search --grid quick --paper-compat --validate-top 2 --json "$tmp/search.json" --hdf5 "$tmp/search.h5" > "$tmp/table.txt" \
+"$bin" -q search --grid quick --paper-compat --validate-top 2 --json "$tmp/search.json" --hdf5 "$tmp/search.h5" > "$tmp/table.txt" 2>&1 \
   || { echo "FAIL: search"; fail=1; }
 check "search genomes" '(.genomes | length) == 45 and .n_validated == 2' "$tmp/search.json"
 check "approximate ranks" '[.genomes[].approximate.rank] | sort == [range(1; 46)]' "$tmp/search.json"
 [[ -s "$tmp/search.h5" ]] || { echo "FAIL: no HDF5 file"; fail=1; }
 grep -q "approx CDS" "$tmp/table.txt" || { echo "FAIL: no ranked table"; fail=1; }
+# The table goes to the log: with --json - stdout is JSON alone (the audit reads it).
+"$bin" -q search --grid quick --paper-compat --validate-top 2 --json - 2> /dev/null | jq -e '.genomes | length == 45' > /dev/null \
+  || { echo "FAIL: search --json - is not JSON alone"; fail=1; }
 exit $fail
