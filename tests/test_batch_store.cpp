@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <cmath>
 #include <gtest/gtest.h>
 #include <hdf5.h>
 #include <nlohmann/json.hpp>
@@ -205,6 +206,29 @@ TEST(ResultsStore, MapsSummaryJsonToDatasetsAndGroupsAsDocumented)
   // Objects: groups; '/' in a key becomes '_'.
   EXPECT_EQ(r.numbers<double>(s + "profile/p_pa", H5T_NATIVE_DOUBLE), (std::vector<double>{2.1e9, 2.0e9}));
   EXPECT_TRUE(r.exists(s + "a_b"));
+}
+
+TEST(ResultsStore, NumbersCarryUnitsAndInfinitiesAreFloats)
+{
+  nlohmann::json record = sample_record();
+  record["summary"]["tds"] = "inf";
+  record["summary"]["bounds_pa"] = {"-inf", 1.0, "inf"};
+  record["case_text"] = "[scene]\nkind = \"mesh\"\n";
+  const fs::path store = fresh_folder("units") / "results.h5";
+  io::write_results_store(store, {{"oloid", record}}, {{"n_cases", 1}});
+  const Reader r(store);
+  const std::string s = "/cases/oloid/summary/";
+  // Units from the key's suffix, "1" for a pure number, on every numeric dataset.
+  EXPECT_EQ(r.string_attribute(s + "profile/p_pa", "units"), "Pa");
+  EXPECT_EQ(r.string_attribute(s + "profile/r_m", "units"), "m");
+  EXPECT_EQ(r.string_attribute(s + "cds", "units"), "1");
+  EXPECT_EQ(r.string_attribute(s + "n_faces", "units"), "1");
+  // The JSON "inf" is a float in the store, alone and in arrays.
+  EXPECT_EQ(r.type_class(s + "tds"), H5T_FLOAT);
+  EXPECT_EQ(r.numbers<double>(s + "tds", H5T_NATIVE_DOUBLE), std::vector<double>{INFINITY});
+  EXPECT_EQ(r.numbers<double>(s + "bounds_pa", H5T_NATIVE_DOUBLE), (std::vector<double>{-INFINITY, 1.0, INFINITY}));
+  // The case file's text is stored with its result.
+  EXPECT_EQ(r.string_attribute("/cases/oloid", "case_text"), "[scene]\nkind = \"mesh\"\n");
 }
 
 TEST(ResultsStore, RecordFieldsAndParametersAreTypedAttributes)

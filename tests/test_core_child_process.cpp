@@ -91,7 +91,7 @@ TEST(ChildProcess, CapturesOutputLargerThanAPipe)
 TEST(ChildProcess, AppendsBothStreamsToTheLogInItsFolder)
 {
   const fs::path dir = fresh_folder("log");
-  const process::ChildOptions options{dir, dir / "log.txt", process::Sink::log, process::Sink::log};
+  const process::ChildSettings options{dir, dir / "log.txt", process::Sink::log, process::Sink::log};
   for (const char* word : {"first", "second"})
   {
     process::ChildProcess child({"/bin/sh", "-c", std::string("pwd; echo ") + word + " >&2"}, options);

@@ -40,7 +40,7 @@ TEST(CreaseContact, ApexPeakGrowsAsTheLogarithmWhileTheContactConverges)
 
 TEST(CreaseContact, BadSetupIsRejected)
 {
-  fem::CreaseSetup setup;
+  fem::CreaseSettings setup;
   setup.face_angle_rad = 1.0;
   EXPECT_THROW(fem::solve_crease(MPI_COMM_WORLD, setup), InputError);
   setup = {};

@@ -37,9 +37,9 @@ void expect_verified(const fem::HertzResult& r, double size_tolerance)
   EXPECT_GT(r.newton_iterations, 0);
 }
 
-fem::HertzSetup axisymmetric()
+fem::HertzSettings axisymmetric()
 {
-  fem::HertzSetup s;
+  fem::HertzSettings s;
   s.model = fem::Model::axisymmetric;
   return s;
 }
@@ -57,7 +57,7 @@ TEST(HertzAxisymmetric, SteelBallDefaultP1)
 
 TEST(HertzAxisymmetric, SteelBallDefaultP2)
 {
-  fem::HertzSetup s = axisymmetric();
+  fem::HertzSettings s = axisymmetric();
   s.degree = 2;
   expect_verified(fem::solve_hertz(MPI_COMM_WORLD, s), 0.003);
 }
@@ -67,7 +67,7 @@ TEST(HertzAxisymmetric, OtherBodiesAndLoadsWithTheSameDefaults)
   // Aluminium ball, 25 mm, 2 kN; glass-like small ball, 2 mm, 0.5 N, nu 0.22.
   for (const auto& [R, E, nu, F] : {std::tuple{0.025, 70e9, 0.33, 2000.0}, std::tuple{0.002, 63e9, 0.22, 0.5}})
   {
-    fem::HertzSetup s = axisymmetric();
+    fem::HertzSettings s = axisymmetric();
     s.radius_m = R;
     s.youngs_modulus_pa = E;
     s.poisson_ratio = nu;
@@ -79,7 +79,7 @@ TEST(HertzAxisymmetric, OtherBodiesAndLoadsWithTheSameDefaults)
 
 TEST(HertzAxisymmetric, ElasticPlaneUsesTheIdenticalBodiesModulusAndIsFlagged)
 {
-  fem::HertzSetup s = axisymmetric();
+  fem::HertzSettings s = axisymmetric();
   s.elastic_plane = true;
   const fem::HertzResult r = fem::solve_hertz(MPI_COMM_WORLD, s);
   EXPECT_DOUBLE_EQ(r.hertz.effective_modulus_pa, contact::effective_modulus_identical_bodies(200e9, 0.3));
@@ -93,7 +93,7 @@ TEST(HertzAxisymmetric, PenaltySweepWarnsWhenThePenaltyErrorDominates)
 {
   for (double c : {0.1, 1.0, 10.0, 100.0, 1000.0})
   {
-    fem::HertzSetup s = axisymmetric();
+    fem::HertzSettings s = axisymmetric();
     s.penalty_c = c;
     const fem::HertzResult r = fem::solve_hertz(MPI_COMM_WORLD, s);
     SCOPED_TRACE(testing::Message() << "c = " << c);
@@ -118,7 +118,7 @@ TEST(HertzAxisymmetric, PenaltySweepWarnsWhenThePenaltyErrorDominates)
 // elements) while the Hertz radius shrinks to about 2.4 um.
 TEST(HertzAxisymmetric, OneTouchingNodeIsAnUnresolvedContact)
 {
-  fem::HertzSetup s = axisymmetric();
+  fem::HertzSettings s = axisymmetric();
   s.contact_element_size_m = 10e-6;
   s.force_n = 4e-4;
   try
@@ -138,7 +138,7 @@ TEST(HertzAxisymmetric, OneTouchingNodeIsAnUnresolvedContact)
 // and the solve ends as an unresolved contact (one touching node).
 TEST(HertzAxisymmetric, MeshCoarserThanTheContactIsFlagged)
 {
-  fem::HertzSetup s = axisymmetric();
+  fem::HertzSettings s = axisymmetric();
   const double a = contact::point_contact(100, 0.01, contact::effective_modulus_rigid_plane(200e9, 0.3), 0.3)
                        .contact_radius_m;
   s.contact_element_size_m = 0.4 * a;
@@ -154,7 +154,7 @@ TEST(HertzAxisymmetric, MeshCoarserThanTheContactIsFlagged)
 // Hard case: a load beyond the small-strain range (a / R about 0.12).
 TEST(HertzAxisymmetric, LargeContactIsFlagged)
 {
-  fem::HertzSetup s = axisymmetric();
+  fem::HertzSettings s = axisymmetric();
   s.force_n = 5e4;
   const fem::HertzResult r = fem::solve_hertz(MPI_COMM_WORLD, s);
   EXPECT_GT(r.hertz.contact_size_m / s.radius_m, 0.1);
@@ -165,7 +165,7 @@ TEST(HertzAxisymmetric, LargeContactIsFlagged)
 // within the tolerances.
 TEST(HertzAxisymmetric, NearlyIncompressibleLocksP1AndP2HandlesIt)
 {
-  fem::HertzSetup s = axisymmetric();
+  fem::HertzSettings s = axisymmetric();
   s.poisson_ratio = 0.49;
   const fem::HertzResult p1 = fem::solve_hertz(MPI_COMM_WORLD, s);
   EXPECT_TRUE(has_flag(p1, "volumetric_locking"));
@@ -177,7 +177,7 @@ TEST(HertzAxisymmetric, NearlyIncompressibleLocksP1AndP2HandlesIt)
 
 TEST(HertzAxisymmetric, BadInputIsAnInputError)
 {
-  fem::HertzSetup s = axisymmetric();
+  fem::HertzSettings s = axisymmetric();
   s.radius_m = -1;
   EXPECT_THROW(fem::solve_hertz(MPI_COMM_WORLD, s), InputError);
   s = axisymmetric();

@@ -30,9 +30,9 @@ void expect_verified(const fem::HertzResult& r)
   EXPECT_TRUE(r.flags.empty());
 }
 
-fem::HertzSetup cylinder()
+fem::HertzSettings cylinder()
 {
-  fem::HertzSetup s;
+  fem::HertzSettings s;
   s.model = fem::Model::plane_strain;
   return s;
 }
@@ -42,14 +42,14 @@ TEST(HertzPlaneStrain, SteelRollerDefaultP1) { expect_verified(fem::solve_hertz(
 
 TEST(HertzPlaneStrain, SteelRollerDefaultP2)
 {
-  fem::HertzSetup s = cylinder();
+  fem::HertzSettings s = cylinder();
   s.degree = 2;
   expect_verified(fem::solve_hertz(MPI_COMM_WORLD, s));
 }
 
 TEST(HertzPlaneStrain, AnotherRollerAndLoadWithTheSameDefaults)
 {
-  fem::HertzSetup s = cylinder();
+  fem::HertzSettings s = cylinder();
   s.radius_m = 0.04;
   s.youngs_modulus_pa = 110e9; // bronze-like
   s.poisson_ratio = 0.34;

@@ -15,7 +15,7 @@ double error(double fem_value, double reference) { return std::abs(fem::relative
 
 TEST(HertzSolid, SteelHemisphereDefault)
 {
-  fem::HertzSetup s;
+  fem::HertzSettings s;
   s.model = fem::Model::solid;
   const fem::HertzResult r = fem::solve_hertz(MPI_COMM_WORLD, s);
   const fem::HertzReference& h = r.hertz;

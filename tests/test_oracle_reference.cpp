@@ -72,7 +72,7 @@ TEST_P(ReferenceBody, RigidBodyRotationsOfRunOneMatchReference)
   const nlohmann::json& checkpoints = reference()["geometries"][name]["rigid"]["run1_R_checkpoints"];
   const auto compat = oracle::PaperCompat::reference();
   const oracle::RollingBody body = oracle::make_rolling_body(reference_mesh(name), compat);
-  const oracle::RigidBodyOptions options;
+  const oracle::RigidBodySettings options;
   const auto rotations = oracle::rigid_body_rotations(body, options.initial_spins[0], 1001, options, compat);
   for (const int step : {0, 1, 10, 100, 1000})
   {

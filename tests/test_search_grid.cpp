@@ -35,9 +35,9 @@ TEST(SearchGrid, SizesOrderAndAnchorAsTheReference)
   EXPECT_THROW(parse_search_grid("huge", "--grid"), rollcheck::InputError);
 }
 
-SearchOptions quick_options(unsigned threads)
+SearchSettings quick_options(unsigned threads)
 {
-  SearchOptions o;
+  SearchSettings o;
   o.grid = SearchGrid::quick;
   o.compat = PaperCompat::reference();
   o.threads = threads;
@@ -85,7 +85,7 @@ TEST(ParametricSearch, QuickGridReproducesThePreprintsNumbers)
 
 TEST(ParametricSearch, MatchedResolutionMeshesTheAnchorLikeTheCandidates)
 {
-  SearchOptions o = quick_options(0);
+  SearchSettings o = quick_options(0);
   o.matched_resolution = true;
   o.validate_top = 0;
   const SearchResult r = parametric_search(o);
@@ -101,7 +101,7 @@ TEST(ParametricSearch, FlatThreeCircleHullsAreInvalidNotScored)
 {
   // Three circles tilted by 90 degrees all lie in the xy-plane: the reference
   // scores their flat "hull"; here they are reported invalid.
-  SearchOptions o;
+  SearchSettings o;
   o.grid = SearchGrid::standard;
   o.validate_top = 0;
   const SearchResult r = parametric_search(o);
@@ -120,7 +120,7 @@ TEST(ParametricSearch, FlatThreeCircleHullsAreInvalidNotScored)
 
 TEST(ParametricSearch, BadOptionsAreInputErrors)
 {
-  SearchOptions o = quick_options(1);
+  SearchSettings o = quick_options(1);
   o.points = 2;
   EXPECT_THROW(parametric_search(o), rollcheck::InputError);
   o = quick_options(1);

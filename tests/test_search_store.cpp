@@ -23,7 +23,7 @@ std::vector<double> read_doubles(hid_t file, const char* name)
 
 TEST(SearchStore, HdfFileAndJsonCarryTheSameNumbers)
 {
-  oracle::SearchOptions o;
+  oracle::SearchSettings o;
   o.validate_top = 2;
   o.revalidation_metrics = [](const auto&, const auto&, const oracle::Trajectory& t) {
     return oracle::NamedScores{{"samples", static_cast<double>(t.size())}};

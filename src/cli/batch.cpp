@@ -7,7 +7,7 @@
 
 namespace rollcheck::cli
 {
-io::BatchResult run_scene_batch(const io::BatchOptions& options)
+io::BatchResult run_scene_batch(const io::BatchSettings& options)
 {
   const io::BatchResult result = io::run_batch(options, [](const std::string& kind, const std::string& origin)
                                                    -> const io::Schema& { return *find_scene(kind, origin).schema; });
@@ -18,7 +18,7 @@ io::BatchResult run_scene_batch(const io::BatchOptions& options)
 
 void add_batch_command(CLI::App& app)
 {
-  static io::BatchOptions options;
+  static io::BatchSettings options;
   CLI::App* sub = add_command(
       app, "batch", "Run case files on worker processes (and MPI ranks) into one HDF5 results store; resumable", [] {
         const io::BatchResult result = run_scene_batch(options);
@@ -28,12 +28,12 @@ void add_batch_command(CLI::App& app)
   sub->add_option("-j,--jobs", options.jobs,
                   "Worker processes per MPI rank (default: 0 = one per CPU: the CPUs mpirun bound the rank to, else the "
                   "node's CPUs shared among its ranks)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, 1024));
   sub->add_option("--out", options.out,
                   "Results folder: cases/<hash>/ per case, results.h5 for all (default: results)");
   sub->add_flag("--force", options.force, "Recompute cases already done (default: reuse their results)");
   sub->add_option("--timeout", options.case_timeout_s,
                   "A case running longer than this fails [s] (default: 0 = no limit)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0.0, 1e7));
 }
 } // namespace rollcheck::cli

@@ -56,7 +56,7 @@ CLI::App* add_scene_command(CLI::App& app, const std::string& name, const std::s
 
 /// Runs a batch of case files against the registered scenes (the batch and
 /// validate subcommands); the coordinator prints its table.
-io::BatchResult run_scene_batch(const io::BatchOptions& options);
+io::BatchResult run_scene_batch(const io::BatchSettings& options);
 
 void add_mesh_command(CLI::App& app);
 void add_oracle_command(CLI::App& app);

@@ -16,25 +16,25 @@ namespace rollcheck::cli
 {
 namespace
 {
-const io::BoundSchema<fem::CreaseSetup>& crease_schema()
+const io::BoundSchema<fem::CreaseSettings>& crease_schema()
 {
-  using fem::CreaseSetup;
-  static const io::BoundSchema<CreaseSetup> schema = [] {
-    io::BoundSchema<CreaseSetup> s("crease");
-    s.real("face_angle_deg", "--face-angle", &CreaseSetup::face_angle_rad, "deg",
+  using fem::CreaseSettings;
+  static const io::BoundSchema<CreaseSettings> schema = [] {
+    io::BoundSchema<CreaseSettings> s("crease");
+    s.real("face_angle_deg", "--face-angle", &CreaseSettings::face_angle_rad, "deg",
            "beta, between each face of the crease and the plane: the crease's angle is 180 - 2 beta (half-space "
            "theory needs tan beta << 1)",
            io::Bounds{0, 45, true, false}, std::numbers::pi / 180)
-        .real("load_n_per_m", "--load-per-length", &CreaseSetup::load_n_per_m, "N/m",
+        .real("load_n_per_m", "--load-per-length", &CreaseSettings::load_n_per_m, "N/m",
               "Load per unit length of crease (the preprint's F = 100 N over 10 mm)", io::positive)
-        .real("width_m", "--width", &CreaseSetup::width_m, "m", "Width and height of the modelled half of the body",
+        .real("width_m", "--width", &CreaseSettings::width_m, "m", "Width and height of the modelled half of the body",
               io::positive);
-    add_material(s, &CreaseSetup::youngs_modulus_pa, &CreaseSetup::poisson_ratio);
-    s.real("penalty_c", "--penalty-c", &CreaseSetup::penalty_c, "", "Penalty kappa = c E / h_c (README: penalty study)",
+    add_material(s, &CreaseSettings::youngs_modulus_pa, &CreaseSettings::poisson_ratio);
+    s.real("penalty_c", "--penalty-c", &CreaseSettings::penalty_c, "", "Penalty kappa = c E / h_c (README: penalty study)",
            io::positive)
-        .integer("refine", "--refine", &CreaseSetup::refine, "", "First mesh level: h_c = a / (10 2^(level / 2))",
+        .integer("refine", "--refine", &CreaseSettings::refine, "", "First mesh level: h_c = a / (10 2^(level / 2))",
                  io::Bounds{0, 10})
-        .integer("levels", "--levels", &CreaseSetup::levels, "", "Mesh levels, each h_c / sqrt 2 of the previous",
+        .integer("levels", "--levels", &CreaseSettings::levels, "", "Mesh levels, each h_c / sqrt 2 of the previous",
                  io::Bounds{2, 6});
     return s;
   }();
@@ -43,7 +43,7 @@ const io::BoundSchema<fem::CreaseSetup>& crease_schema()
 
 nlohmann::json run_crease(const io::Parameters& p)
 {
-  const fem::CreaseSetup setup = crease_schema().bind(p);
+  const fem::CreaseSettings setup = crease_schema().bind(p);
   const fem::CreaseStudy study = fem::solve_crease(MPI_COMM_WORLD, setup);
 
   nlohmann::json levels = nlohmann::json::array();

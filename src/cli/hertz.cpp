@@ -17,48 +17,48 @@ namespace rollcheck::cli
 {
 namespace
 {
-const io::BoundSchema<fem::HertzSetup>& hertz_schema()
+const io::BoundSchema<fem::HertzSettings>& hertz_schema()
 {
-  using fem::HertzSetup;
+  using fem::HertzSettings;
   using fem::Model;
   // Resource guard: refine 12 puts 640 elements across the contact, far
   // beyond the convergence study's finest level (6).
   static const io::Bounds refine_range{-1, 12};
-  static const io::BoundSchema<HertzSetup> schema = [] {
-    io::BoundSchema<HertzSetup> s("hertz");
+  static const io::BoundSchema<HertzSettings> schema = [] {
+    io::BoundSchema<HertzSettings> s("hertz");
     std::vector<std::pair<std::string, Model>> models;
     for (Model m : {Model::axisymmetric, Model::plane_strain, Model::solid})
       models.emplace_back(fem::model_name(m), m);
-    s.choice("model", "--model", &HertzSetup::model,
+    s.choice("model", "--model", &HertzSettings::model,
              "axi: sphere on plane, axisymmetric (r, z); plane-strain: cylinder on plane, per unit length; 3d: "
              "hemisphere (a quarter by symmetry)",
              models)
-        .real("radius_m", "--radius", &HertzSetup::radius_m, "m", "Radius R of the sphere or cylinder (10 mm)",
+        .real("radius_m", "--radius", &HertzSettings::radius_m, "m", "Radius R of the sphere or cylinder (10 mm)",
               io::positive);
-    add_material(s, &HertzSetup::youngs_modulus_pa, &HertzSetup::poisson_ratio);
-    s.real("force_n", "--load", &HertzSetup::force_n, "N", "Total force pressing the body onto the plane",
+    add_material(s, &HertzSettings::youngs_modulus_pa, &HertzSettings::poisson_ratio);
+    s.real("force_n", "--load", &HertzSettings::force_n, "N", "Total force pressing the body onto the plane",
            io::positive)
-        .real("length_m", "--length", &HertzSetup::length_m, "m",
+        .real("length_m", "--length", &HertzSettings::length_m, "m",
               "plane-strain: cylinder length carrying the load, force per length = load / length (2R)", io::positive)
-        .integer("degree", "--degree", &HertzSetup::degree, "", "Lagrange degree of the displacement: 1 or 2",
+        .integer("degree", "--degree", &HertzSettings::degree, "", "Lagrange degree of the displacement: 1 or 2",
                  io::Bounds{1, 2})
-        .integer("refine", "--refine", &HertzSetup::refine, "",
+        .integer("refine", "--refine", &HertzSettings::refine, "",
                  "Mesh level: 10 * 2^(refine/2) elements across the Hertz contact radius; -1 = the model's default "
                  "(axi/plane-strain P1: 4, P2: 2; 3d P1: 2, P2: 0)",
                  refine_range)
-        .real("penalty_c", "--penalty-c", &HertzSetup::penalty_c, "", "Penalty kappa = c E / h_c (README: penalty study)",
+        .real("penalty_c", "--penalty-c", &HertzSettings::penalty_c, "", "Penalty kappa = c E / h_c (README: penalty study)",
               io::positive)
-        .flag("elastic_plane", "--elastic-plane", &HertzSetup::elastic_plane,
+        .flag("elastic_plane", "--elastic-plane", &HertzSettings::elastic_plane,
               "Compare with two identical elastic bodies, E* = E / (2 (1 - nu^2)), as the preprint did (flagged)")
-        .real("contact_element_size_m", "--contact-element-size", &HertzSetup::contact_element_size_m, "m",
+        .real("contact_element_size_m", "--contact-element-size", &HertzSettings::contact_element_size_m, "m",
               "Fixed contact-zone element size instead of --refine (0 = from --refine)", io::non_negative)
         // The load control's end point must be tighter than any error it verifies (fem::validate).
-        .real("force_rtol", "--force-rtol", &HertzSetup::force_rtol, "",
+        .real("force_rtol", "--force-rtol", &HertzSettings::force_rtol, "",
               "Relative tolerance of the load control on the force", io::Bounds{0, 0.01, true, true})
-        .text("petsc_options", "--petsc-options", &HertzSetup::petsc_options,
+        .text("petsc_options", "--petsc-options", &HertzSettings::petsc_options,
               "PETSc options for the solver (prefix hertz_), e.g. '-hertz_ksp_type gmres'; on the command line "
               "they may also follow `--`")
-        .text("xdmf", "--xdmf", &HertzSetup::xdmf_path,
+        .text("xdmf", "--xdmf", &HertzSettings::xdmf_path,
               "Write displacement, stress, von Mises, max shear and contact pressure to this self-contained .xdmf");
     return s;
   }();
@@ -93,7 +93,7 @@ struct StudyChoice
 /// out/hertz_<name>.csv and its plot, by postprocess/hertz_study_plot.py, beside it.
 nlohmann::json run_hertz_study(const StudyChoice& choice, const io::Parameters& params)
 {
-  const fem::HertzSetup base = hertz_schema().bind(params);
+  const fem::HertzSettings base = hertz_schema().bind(params);
   std::vector<fem::Model> models;
   for (const std::string& name : choice.models)
     models.push_back(fem::parse_model(name, "option --study-models"));

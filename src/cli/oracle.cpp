@@ -21,7 +21,7 @@ struct OracleScene : study::ScoreBodySettings
 {
   std::string metric_list = "all", quirks;
   bool paper_compat = false, per_face = false, quirk_table = false;
-  int runs = static_cast<int>(oracle::RigidBodyOptions{}.initial_spins.size());
+  int runs = static_cast<int>(oracle::RigidBodySettings{}.initial_spins.size());
 };
 using Schema = io::BoundSchema<OracleScene>;
 
@@ -50,8 +50,8 @@ void add_scene_parameters(Schema& s)
 
 void add_oracle_parameters(Schema& s)
 {
-  using A = oracle::ApproximateOptions;
-  using R = oracle::RigidBodyOptions;
+  using A = oracle::ApproximateSettings;
+  using R = oracle::RigidBodySettings;
   const std::string guard = fmt::format("at most {} samples, a resource guard", study::max_oracle_samples);
   s.include(io::BoundSchema<A>("approximate")
                 .integer("steps", "--steps", &A::steps, "", "Approximate oracle: rotation steps T (" + guard + ")",

@@ -20,7 +20,7 @@ namespace rollcheck::cli
 namespace
 {
 /// The search's options and the options that resolve into them (run_search).
-struct SearchScene : oracle::SearchOptions
+struct SearchScene : oracle::SearchSettings
 {
   std::string metric_list = "all", quirks, hdf5;
   bool paper_compat = false;
@@ -158,7 +158,7 @@ void print_table(const oracle::SearchResult& result, std::size_t rows)
 nlohmann::json run_search(const io::Parameters& params)
 {
   const SearchScene scene = search_schema().bind(params);
-  oracle::SearchOptions o = scene;
+  oracle::SearchSettings o = scene;
   o.compat = scene.paper_compat ? oracle::PaperCompat::reference() : oracle::PaperCompat::corrected();
   oracle::apply_quirk_settings(o.compat, scene.quirks, "option --quirks");
   study::ScoreBodySettings scoring; // the preprint's contact parameters

@@ -16,8 +16,8 @@ namespace rollcheck::cli
 {
 void add_validate_command(CLI::App& app)
 {
-  static io::BatchOptions options = [] {
-    io::BatchOptions o;
+  static io::BatchSettings options = [] {
+    io::BatchSettings o;
     o.cases = {(data_folder() / "cases" / "default").string()};
     o.out = "results";
     o.jobs = 2;
@@ -54,9 +54,9 @@ void add_validate_command(CLI::App& app)
   sub->add_option("--cases", options.cases[0], "Folder of case files (default: cases/default of the installed or source tree)");
   sub->add_option("--out", options.out, "Results folder, results.h5, validation.json and report/ (default: results/ in the working folder)");
   sub->add_option("-j,--jobs", options.jobs, "Worker processes per MPI rank (default: 2)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, 1024));
   sub->add_flag("--force", options.force, "Recompute cases already done (default: reuse their results)");
   sub->add_option("--timeout", options.case_timeout_s, "A case running longer than this fails [s] (default: 600)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0.0, 1e7));
 }
 } // namespace rollcheck::cli

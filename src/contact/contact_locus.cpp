@@ -24,7 +24,7 @@ int lowest_vertex(const oracle::RollingBody& body, const Eigen::Vector3d& row)
 
 ContactLocus contact_locus(std::span<const oracle::Circle> circles, const Eigen::Vector3d& centre_of_mass_m,
                            const oracle::RollingBody& body, const Eigen::Matrix3d& rotation,
-                           const LocusOptions& options, const std::vector<int>* oracle_faces)
+                           const LocusSettings& options, const std::vector<int>* oracle_faces)
 {
   if (circles.size() < 2)
     throw InputError(fmt::format("contact locus: the body must be the hull of two or more circles, got {}",

@@ -57,7 +57,7 @@ struct ContactLocus
   std::vector<int> oracle_faces;    ///< faces within the preprint's threshold
 };
 
-struct LocusOptions
+struct LocusSettings
 {
   double contact_threshold_m = 0.04;     ///< eps (the preprint's)
   bool ground_at_lowest_centroid = true; ///< the reference's ground (PaperCompat)
@@ -73,7 +73,7 @@ struct LocusOptions
 /// oracle's own counts). InputError for fewer than two circles.
 ContactLocus contact_locus(std::span<const oracle::Circle> circles, const Eigen::Vector3d& centre_of_mass_m,
                            const oracle::RollingBody& body, const Eigen::Matrix3d& rotation,
-                           const LocusOptions& options, const std::vector<int>* oracle_faces = nullptr);
+                           const LocusSettings& options, const std::vector<int>* oracle_faces = nullptr);
 
 /// Faces of `cones` that hold the points of the locus's ruling at the given
 /// fractions (body frame); requires a ruling.

@@ -82,7 +82,7 @@ struct ChildStart
   int target[2] = {-1, -1};                 ///< the child's stdout, stderr
   pid_t parent = getpid();
 
-  ChildStart(const std::vector<std::string>& argv, const ChildOptions& options)
+  ChildStart(const std::vector<std::string>& argv, const ChildSettings& options)
       : args(argv), cwd(options.cwd.string())
   {
     if (options.out == Sink::log || options.err == Sink::log)
@@ -172,7 +172,7 @@ std::string ExitStatus::describe() const
 
 std::filesystem::path own_executable() { return std::filesystem::read_symlink("/proc/self/exe"); }
 
-ChildProcess::ChildProcess(const std::vector<std::string>& argv, const ChildOptions& options)
+ChildProcess::ChildProcess(const std::vector<std::string>& argv, const ChildSettings& options)
 {
   if (argv.empty())
     throw ComputationError("cannot start a process without a program");

@@ -28,10 +28,10 @@ struct ExitStatus
 enum class Sink
 {
   capture, ///< into a string of the parent (ChildProcess::captured_stdout/stderr)
-  log      ///< appended to ChildOptions::log
+  log      ///< appended to ChildSettings::log
 };
 
-struct ChildOptions
+struct ChildSettings
 {
   std::filesystem::path cwd; ///< the child's working folder; empty: this process's
   std::filesystem::path log; ///< the file of the streams sent to Sink::log
@@ -59,7 +59,7 @@ std::filesystem::path own_executable();
 class ChildProcess
 {
 public:
-  ChildProcess(const std::vector<std::string>& argv, const ChildOptions& options);
+  ChildProcess(const std::vector<std::string>& argv, const ChildSettings& options);
   ChildProcess(ChildProcess&& other) noexcept;
   ChildProcess(const ChildProcess&) = delete;
   ChildProcess& operator=(const ChildProcess&) = delete;

@@ -18,7 +18,7 @@ namespace rollcheck::fem
 {
 namespace
 {
-void validate(const CreaseSetup& s)
+void validate(const CreaseSettings& s)
 {
   for (const auto& [value, name] : {std::pair{s.load_n_per_m, "load_n_per_m"}, std::pair{s.width_m, "width_m"},
                                     std::pair{s.youngs_modulus_pa, "youngs_modulus_pa"},
@@ -37,7 +37,7 @@ void validate(const CreaseSetup& s)
 CreaseLevel solve_level(MPI_Comm comm, const CreaseStudy& study, int refine)
 {
   const auto start = std::chrono::steady_clock::now();
-  const CreaseSetup& s = study.setup;
+  const CreaseSettings& s = study.setup;
   const double a = study.half_width_m, slope = std::tan(s.face_angle_rad);
   CreaseLevel level;
   level.refine = refine;
@@ -80,7 +80,7 @@ CreaseLevel solve_level(MPI_Comm comm, const CreaseStudy& study, int refine)
 }
 } // namespace
 
-CreaseStudy solve_crease(MPI_Comm comm, const CreaseSetup& setup)
+CreaseStudy solve_crease(MPI_Comm comm, const CreaseSettings& setup)
 {
   validate(setup);
   ensure_petsc();

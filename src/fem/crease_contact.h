@@ -21,7 +21,7 @@
 
 namespace rollcheck::fem
 {
-struct CreaseSetup
+struct CreaseSettings
 {
   /// beta: a blunt crease, where half-space theory holds (tan beta << 1).
   double face_angle_rad = 5 * std::numbers::pi / 180;
@@ -51,7 +51,7 @@ struct CreaseLevel
 
 struct CreaseStudy
 {
-  CreaseSetup setup;
+  CreaseSettings setup;
   double effective_modulus_pa = 0;   ///< E / (1 - nu^2)
   double half_width_m = 0;           ///< a
   double half_contact_pressure_pa = 0; ///< p(a / 2) = (E* tan beta / pi) arccosh 2
@@ -62,5 +62,5 @@ struct CreaseStudy
 
 /// Every rank gets the study. InputError for a bad setup, ComputationError
 /// for a failed solve.
-CreaseStudy solve_crease(MPI_Comm comm, const CreaseSetup& setup);
+CreaseStudy solve_crease(MPI_Comm comm, const CreaseSettings& setup);
 } // namespace rollcheck::fem

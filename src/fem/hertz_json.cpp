@@ -15,7 +15,7 @@ void compared(nlohmann::json& j, const std::string& name, const std::string& uni
 
 void add_setup(nlohmann::json& j, const HertzResult& r)
 {
-  const HertzSetup& s = r.setup;
+  const HertzSettings& s = r.setup;
   j["model"] = model_name(s.model);
   j["degree"] = s.degree;
   j["refine"] = s.refine >= 0 ? s.refine : default_refine(s.model, s.degree);
@@ -36,7 +36,7 @@ void add_setup(nlohmann::json& j, const HertzResult& r)
 /// The measured contact against Hertz: force, size, pressure, approach, stress, profile.
 void add_contact(nlohmann::json& j, const HertzResult& r)
 {
-  const HertzSetup& s = r.setup;
+  const HertzSettings& s = r.setup;
   const bool line = s.model == Model::plane_strain;
   const std::string c = line ? "b" : "a";
   const double length = line ? s.length_m : 1.0;

@@ -39,7 +39,7 @@ int default_refine(Model model, int degree)
   return 0;
 }
 
-void validate(const HertzSetup& s)
+void validate(const HertzSettings& s)
 {
   auto positive = [](double value, const char* what) {
     if (!std::isfinite(value) || value <= 0)
@@ -73,7 +73,7 @@ void validate(const HertzSetup& s)
   }
 }
 
-HertzReference hertz_reference(const HertzSetup& s)
+HertzReference hertz_reference(const HertzSettings& s)
 {
   const double E = s.youngs_modulus_pa, nu = s.poisson_ratio;
   HertzReference r{};
@@ -106,7 +106,7 @@ HertzReference hertz_reference(const HertzSetup& s)
   return r;
 }
 
-MeshGrading mesh_grading(const HertzSetup& s, const HertzReference& ref)
+MeshGrading mesh_grading(const HertzSettings& s, const HertzReference& ref)
 {
   const int refine = s.refine >= 0 ? s.refine : default_refine(s.model, s.degree);
   return contact_grading(ref.contact_size_m,

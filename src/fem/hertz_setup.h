@@ -23,7 +23,7 @@ std::string model_name(Model model);
 /// Inverse of model_name; InputError naming `origin` for anything else.
 Model parse_model(const std::string& name, const std::string& origin);
 
-struct HertzSetup
+struct HertzSettings
 {
   Model model = Model::axisymmetric;
   double radius_m = 0.01;             ///< sphere or cylinder radius R
@@ -64,7 +64,7 @@ struct HertzSetup
 int default_refine(Model model, int degree);
 
 /// InputError naming the bad field; called by solve_hertz.
-void validate(const HertzSetup& setup);
+void validate(const HertzSettings& setup);
 
 /// Hertz theory for the setup, in the model's terms.
 struct HertzReference
@@ -80,7 +80,7 @@ struct HertzReference
   double max_von_mises_pa;
   double max_von_mises_depth_m;
 };
-HertzReference hertz_reference(const HertzSetup& setup);
+HertzReference hertz_reference(const HertzSettings& setup);
 
 /// Element sizes of the scene mesh: h_c in the contact zone (a ball of radius
 /// fine_radius_m about the first point of contact), growing linearly with
@@ -92,7 +92,7 @@ struct MeshGrading
   double growth;
   double far_size_m;
 };
-MeshGrading mesh_grading(const HertzSetup& setup, const HertzReference& reference);
+MeshGrading mesh_grading(const HertzSettings& setup, const HertzReference& reference);
 
 /// h_c = contact_size / (10 * 2^(refine / 2)): refine 0 puts 10 elements
 /// across the contact size, each step a factor sqrt(2) more.

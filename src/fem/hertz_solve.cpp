@@ -29,7 +29,7 @@ void flag(HertzResult& result, const std::string& name, const std::string& warni
 }
 } // namespace
 
-HertzResult solve_hertz(MPI_Comm comm, const HertzSetup& setup)
+HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
 {
   const auto start = Clock::now();
   validate(setup);

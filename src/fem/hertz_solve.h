@@ -12,7 +12,7 @@ namespace rollcheck::fem
 {
 struct HertzResult
 {
-  HertzSetup setup;
+  HertzSettings setup;
   HertzReference hertz;
   MeshGrading grading;
 
@@ -51,7 +51,7 @@ struct HertzResult
 /// Runs the setup on `comm` (every rank calls it and gets the same result).
 /// InputError for a bad setup, ComputationError for a failed solve or a
 /// contact that the mesh does not resolve (fewer than two touching nodes).
-HertzResult solve_hertz(MPI_Comm comm, const HertzSetup& setup);
+HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup);
 
 /// Relative error (fem - reference) / reference.
 inline double relative_error(double fem, double reference) { return (fem - reference) / reference; }

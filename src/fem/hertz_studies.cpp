@@ -9,12 +9,12 @@ namespace rollcheck::fem
 {
 namespace
 {
-int resolved_refine(const HertzSetup& s) { return s.refine >= 0 ? s.refine : default_refine(s.model, s.degree); }
+int resolved_refine(const HertzSettings& s) { return s.refine >= 0 ? s.refine : default_refine(s.model, s.degree); }
 } // namespace
 
-std::vector<HertzSetup> convergence_study(const HertzSetup& base, const std::vector<Model>& models)
+std::vector<HertzSettings> convergence_study(const HertzSettings& base, const std::vector<Model>& models)
 {
-  std::vector<HertzSetup> setups;
+  std::vector<HertzSettings> setups;
   for (Model model : models)
     for (int degree : {1, 2})
     {
@@ -22,7 +22,7 @@ std::vector<HertzSetup> convergence_study(const HertzSetup& base, const std::vec
       const int finest = solid ? (degree == 1 ? 2 : 0) : (degree == 1 ? 6 : 4);
       for (int refine = 0; refine <= finest; ++refine)
       {
-        HertzSetup s = base;
+        HertzSettings s = base;
         s.model = model;
         s.degree = degree;
         s.refine = refine;
@@ -34,13 +34,13 @@ std::vector<HertzSetup> convergence_study(const HertzSetup& base, const std::vec
   return setups;
 }
 
-std::vector<HertzSetup> penalty_study(const HertzSetup& base, const std::vector<Model>& models)
+std::vector<HertzSettings> penalty_study(const HertzSettings& base, const std::vector<Model>& models)
 {
-  std::vector<HertzSetup> setups;
+  std::vector<HertzSettings> setups;
   for (Model model : models)
     for (double c : {0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0})
     {
-      HertzSetup s = base;
+      HertzSettings s = base;
       s.model = model;
       s.degree = 1;
       s.refine = -1;
@@ -52,14 +52,14 @@ std::vector<HertzSetup> penalty_study(const HertzSetup& base, const std::vector<
   return setups;
 }
 
-HertzStudy run_study(MPI_Comm comm, const std::string& name, const std::vector<HertzSetup>& setups)
+HertzStudy run_study(MPI_Comm comm, const std::string& name, const std::vector<HertzSettings>& setups)
 {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   HertzStudy study{name, {}};
   for (std::size_t i = 0; i < setups.size(); ++i)
   {
-    const HertzSetup& s = setups[i];
+    const HertzSettings& s = setups[i];
     if (rank == 0)
       spdlog::info("study {} [{}/{}]: {} P{} refine {} c {}", name, i + 1, setups.size(), model_name(s.model),
                    s.degree, resolved_refine(s), s.penalty_c);
@@ -85,7 +85,7 @@ std::string to_csv(const HertzStudy& study)
                     "penalty_error_estimate,discretisation_error_estimate,flags,status\n";
   for (const HertzStudyRun& run : study.runs)
   {
-    const HertzSetup& s = run.setup;
+    const HertzSettings& s = run.setup;
     csv += fmt::format("{},{},{},{},", model_name(s.model), s.degree, resolved_refine(s), s.penalty_c);
     if (!run.result)
     {
@@ -118,7 +118,7 @@ nlohmann::json to_json(const HertzStudy& study)
   nlohmann::json runs = nlohmann::json::array();
   for (const HertzStudyRun& run : study.runs)
   {
-    const HertzSetup& s = run.setup;
+    const HertzSettings& s = run.setup;
     runs.push_back(run.result ? to_json(*run.result)
                               : nlohmann::json{{"model", model_name(s.model)},
                                                {"degree", s.degree},

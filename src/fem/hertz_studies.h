@@ -3,7 +3,7 @@
 // - convergence: each model and degree over its refine levels, for the
 //   speed-against-error plot and the choice of default_refine();
 // - penalty: penalty_c from 0.1 to 1000 on each model's default mesh, for
-//   the choice of HertzSetup::default_penalty_c.
+//   the choice of HertzSettings::default_penalty_c.
 // A study is a list of setups derived from a base setup (its body, load and
 // solver options), run one after the other into a table of errors and costs.
 #include "fem/hertz_setup.h"
@@ -18,16 +18,16 @@ namespace rollcheck::fem
 {
 /// Refine levels of the convergence study per model and degree: 2D P1
 /// 0..6, 2D P2 0..4, 3D P1 0..2, 3D P2 0.
-std::vector<HertzSetup> convergence_study(const HertzSetup& base, const std::vector<Model>& models);
+std::vector<HertzSettings> convergence_study(const HertzSettings& base, const std::vector<Model>& models);
 
 /// penalty_c in {0.1, 0.3, 1, 3, 10, 30, 100, 300, 1000}, P1, default mesh.
-std::vector<HertzSetup> penalty_study(const HertzSetup& base, const std::vector<Model>& models);
+std::vector<HertzSettings> penalty_study(const HertzSettings& base, const std::vector<Model>& models);
 
 /// One run of a study: its result, or the message of the ComputationError
 /// that ended it (e.g. a diverged solve at an extreme penalty).
 struct HertzStudyRun
 {
-  HertzSetup setup;
+  HertzSettings setup;
   std::optional<HertzResult> result;
   std::string failure;
 };
@@ -40,7 +40,7 @@ struct HertzStudy
 
 /// Solves the setups one after the other on `comm`; a failed solve becomes a
 /// run with its message instead of ending the study.
-HertzStudy run_study(MPI_Comm comm, const std::string& name, const std::vector<HertzSetup>& setups);
+HertzStudy run_study(MPI_Comm comm, const std::string& name, const std::vector<HertzSettings>& setups);
 
 /// The study's table, a header and one line per run: setup, cost, relative
 /// errors, flags and status ("ok" or "failed: ..."). postprocess/hertz_study_plot.py reads it.

@@ -11,7 +11,7 @@
 // is checked: a diverged solve raises ComputationError, never a result.
 //
 // Linear solver: KSP with options prefix "hertz_". Defaults, overridable by
-// PETSC_OPTIONS or HertzSetup::petsc_options: 2D MUMPS LU; 3D GMRES (rtol
+// PETSC_OPTIONS or HertzSettings::petsc_options: 2D MUMPS LU; 3D GMRES (rtol
 // 1e-10) with GAMG on an aij matrix with the rigid-body near-nullspace.
 #include "fem/contact_forms.h"
 #include "fem/scene_mesh.h"

@@ -48,10 +48,10 @@ struct SlabSettings
 {
   double youngs_modulus_pa = 200e9; ///< steel (the preprint's)
   double poisson_ratio = 0.3;       ///< steel (the preprint's)
-  /// Section level, as HertzSetup::refine; -1: the 3D P1 default (default_refine).
+  /// Section level, as HertzSettings::refine; -1: the 3D P1 default (default_refine).
   int refine = -1;
-  double penalty_c = 100.0;         ///< HertzSetup::penalty_c, with h = the smallest h_c
-  bool elastic_plane = false;       ///< HertzSetup::elastic_plane (the preprint's E*)
+  double penalty_c = 100.0;         ///< HertzSettings::penalty_c, with h = the smallest h_c
+  bool elastic_plane = false;       ///< HertzSettings::elastic_plane (the preprint's E*)
   /// Prefix "hertz_". Default MUMPS LU: the layers are up to 10^4 times
   /// longer than the contact elements are wide, and GMRES + GAMG (the 3D
   /// default) broke down on them (DIVERGED_BREAKDOWN, cylinder test).

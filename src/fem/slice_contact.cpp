@@ -46,7 +46,7 @@ SliceFem solve_slice(const SliceLoad& load, const SliceSettings& settings)
 {
   SliceFem r;
   r.load = load;
-  HertzSetup setup;
+  HertzSettings setup;
   setup.model = Model::plane_strain;
   setup.radius_m = load.radius_m;
   setup.youngs_modulus_pa = settings.youngs_modulus_pa;

@@ -27,9 +27,9 @@ struct SliceSettings
 {
   double youngs_modulus_pa = 200e9; ///< steel (the preprint's)
   double poisson_ratio = 0.3;       ///< steel (the preprint's)
-  int refine = -1;                  ///< HertzSetup::refine; -1: the plane-strain default
-  double penalty_c = 100.0;         ///< HertzSetup::penalty_c
-  bool elastic_plane = false;       ///< HertzSetup::elastic_plane (the preprint's E*)
+  int refine = -1;                  ///< HertzSettings::refine; -1: the plane-strain default
+  double penalty_c = 100.0;         ///< HertzSettings::penalty_c
+  bool elastic_plane = false;       ///< HertzSettings::elastic_plane (the preprint's E*)
   std::string petsc_options;
 };
 

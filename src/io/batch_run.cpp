@@ -229,6 +229,9 @@ CaseOutcome finish_job(RunningJob& running, const ExitStatus& status, const fs::
   char host[256] = {};
   gethostname(host, sizeof host - 1);
   record["host"] = host;
+  // The case file's text as it was run, so the store says what was computed.
+  std::ifstream case_text(job.file);
+  record["case_text"] = std::string(std::istreambuf_iterator<char>(case_text), std::istreambuf_iterator<char>());
   if (failure.empty() && status.success())
   {
     std::ifstream in(work / "summary.json");
@@ -356,7 +359,7 @@ struct Plan
   std::map<std::string, std::vector<std::size_t>> cases_of_hash;
 };
 
-Plan make_plan(const BatchOptions& options, const fs::path& out, const FindSchema& find_schema)
+Plan make_plan(const BatchSettings& options, const fs::path& out, const FindSchema& find_schema)
 {
   const std::vector<BatchCase> cases = resolve_batch_cases(expand_case_arguments(options.cases), find_schema);
   Plan plan;
@@ -404,7 +407,7 @@ std::vector<StoreEntry> store_entries(const std::vector<CaseOutcome>& outcomes, 
 }
 
 /// Rank 0: hands out the jobs, runs its own share, collects the outcomes.
-void coordinate(Plan& plan, const std::vector<int>& slots, const BatchOptions& options, const fs::path& out,
+void coordinate(Plan& plan, const std::vector<int>& slots, const BatchSettings& options, const fs::path& out,
                 BatchProgress& progress)
 {
   const int ranks = static_cast<int>(slots.size());
@@ -540,7 +543,7 @@ nlohmann::json BatchResult::to_json() const
           {"workers_per_rank", jobs}};
 }
 
-BatchResult run_batch(const BatchOptions& options, const FindSchema& find_schema)
+BatchResult run_batch(const BatchSettings& options, const FindSchema& find_schema)
 {
   const auto start = std::chrono::steady_clock::now();
   const StopSignals signals;

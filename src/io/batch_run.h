@@ -19,7 +19,7 @@
 
 namespace rollcheck::io
 {
-struct BatchOptions
+struct BatchSettings
 {
   std::vector<std::string> cases;     ///< files, folders, globs
   int jobs = 0;                       ///< worker processes per rank; 0: the rank's share of the CPUs
@@ -69,5 +69,5 @@ struct BatchResult
 /// for bad arguments (nothing to run, an unusable --out); a failing case is
 /// an outcome, not an exception. SIGINT or SIGTERM stop it cleanly: running
 /// cases are terminated and dropped, finished ones kept, the store written.
-BatchResult run_batch(const BatchOptions& options, const FindSchema& find_schema);
+BatchResult run_batch(const BatchSettings& options, const FindSchema& find_schema);
 } // namespace rollcheck::io

@@ -6,9 +6,9 @@
 // default is written. bind() turns resolved Parameters into a Settings with no
 // hand copying, after every range was checked in Parameters::set.
 //
-//   BoundSchema<fem::CreaseSetup> s("crease");
-//   s.real("load_n", "--load", &fem::CreaseSetup::load_n, "N", "Force on the crease", positive);
-//   fem::CreaseSetup setup = s.bind(params);
+//   BoundSchema<fem::CreaseSettings> s("crease");
+//   s.real("load_n", "--load", &fem::CreaseSettings::load_n, "N", "Force on the crease", positive);
+//   fem::CreaseSettings setup = s.bind(params);
 #include "io/parameters.h"
 #include <algorithm>
 #include <functional>

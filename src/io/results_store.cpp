@@ -4,6 +4,7 @@
 #include "core/error.h"
 #include "rollcheck_version.h"
 #include <fmt/format.h>
+#include <limits>
 #include <hdf5.h>
 #include <optional>
 
@@ -105,6 +106,36 @@ void flatten(const nlohmann::json& node, std::vector<const nlohmann::json*>& lea
     leaves.push_back(&node);
 }
 
+void write_attribute(hid_t object, const std::string& name, const nlohmann::json& value);
+
+/// The unit a key's suffix names (README "Conventions": keys carry their
+/// unit), "1" for a pure number or a count.
+std::string unit_of(const std::string& key)
+{
+  static const std::vector<std::pair<std::string, std::string>> suffixes = {
+      {"_n_per_m", "N/m"}, {"_rad_s", "rad/s"}, {"_m2", "m^2"}, {"_m3", "m^3"}, {"_pa", "Pa"}, {"_mpa", "MPa"},
+      {"_kg", "kg"},       {"_deg", "deg"},     {"_rad", "rad"}, {"_mb", "MB"},  {"_m", "m"},   {"_s", "s"},
+      {"_n", "N"}};
+  for (const auto& [suffix, unit] : suffixes)
+    if (key.size() > suffix.size() && key.ends_with(suffix))
+      return unit;
+  return "1";
+}
+
+/// "inf" / "-inf" (the JSON form of an infinite result, core/json_number.h)
+/// back to floats, so the store holds numbers as numbers.
+nlohmann::json restore_infinities(const nlohmann::json& value)
+{
+  if (value.is_string() && (value == "inf" || value == "-inf"))
+    return value == "inf" ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
+  if (!value.is_structured())
+    return value;
+  nlohmann::json copy = value;
+  for (auto& item : copy.items())
+    item.value() = restore_infinities(item.value());
+  return copy;
+}
+
 void write_numeric(hid_t parent, const std::string& name, const nlohmann::json& value, const NumericArray& array)
 {
   std::vector<const nlohmann::json*> leaves;
@@ -118,6 +149,7 @@ void write_numeric(hid_t parent, const std::string& name, const nlohmann::json& 
                H5Dclose, "create dataset " + name);
     if (!leaves.empty())
       check(H5Dwrite(set, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "write dataset " + name);
+    write_attribute(set, "units", unit_of(name));
   };
   switch (array.element)
   {
@@ -268,7 +300,7 @@ void write_case(hid_t cases, const StoreEntry& entry)
     else if (key == "summary")
     {
       const Handle summary = create_group(group, "summary");
-      write_json_tree(summary, value);
+      write_json_tree(summary, restore_infinities(value));
     }
     else if (key == "files")
       write_strings(group, "files", value.get<std::vector<std::string>>(), false);

@@ -8,7 +8,8 @@
 //                                 and the batch attributes given (n_cases, ...)
 //   /cases/<name>/         one group per case, <name> the case file's stem;
 //                          attrs: the record's scalar fields (status, message,
-//                                 case_file, hash, kind, wall_s, ...)
+//                                 case_file, case_text (the case file as run),
+//                                 hash, kind, wall_s, ...)
 //   /cases/<name>/parameters   attrs: the resolved parameters, one per key, typed
 //   /cases/<name>/summary/     the scene's JSON summary, mapped by
 //   /cases/<name>/files        the output files of the case (paths relative to
@@ -16,7 +17,10 @@
 //
 // JSON -> HDF5 mapping of a summary (write_json_tree):
 //   object                     -> group
-//   number                     -> scalar dataset, int64 or float64
+//   number                     -> scalar dataset, int64 or float64; every numeric
+//                                 dataset has an attribute "units" (from the
+//                                 key's suffix: _m -> m, _pa -> Pa, ...; "1" else)
+//   "inf" / "-inf"             -> float64 +-infinity (numbers stay numbers)
 //   true/false                 -> scalar dataset of the enum {FALSE, TRUE} (numpy bool)
 //   string                     -> scalar dataset, variable-length UTF-8
 //   null                       -> dataset with an empty (H5S_NULL) dataspace

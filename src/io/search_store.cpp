@@ -45,7 +45,7 @@ nlohmann::json genome_json(const oracle::GenomeResult& r)
 
 nlohmann::json search_summary(const oracle::SearchResult& result)
 {
-  const oracle::SearchOptions& o = result.options;
+  const oracle::SearchSettings& o = result.options;
   nlohmann::json genomes = nlohmann::json::array();
   long valid = 0, validated = 0;
   for (const oracle::GenomeResult& r : result.genomes)
@@ -187,7 +187,7 @@ void write_search_hdf5(const oracle::SearchResult& result, const std::filesystem
   std::vector<const oracle::GenomeResult*> rows;
   for (const oracle::GenomeResult& r : result.genomes)
     rows.push_back(&r);
-  const oracle::SearchOptions& o = result.options;
+  const oracle::SearchSettings& o = result.options;
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   write_atomically(path, [&](const std::filesystem::path& tmp) {
     Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,

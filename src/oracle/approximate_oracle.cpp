@@ -8,7 +8,7 @@
 
 namespace rollcheck::oracle
 {
-void validate(const ApproximateOptions& o)
+void validate(const ApproximateSettings& o)
 {
   if (o.steps < 1)
     throw InputError(fmt::format("approximate oracle: steps must be at least 1, got {}", o.steps));
@@ -19,7 +19,7 @@ void validate(const ApproximateOptions& o)
     throw InputError("approximate oracle: roll cycles and wobble amplitude must be finite");
 }
 
-Eigen::Matrix3d approximate_rotation(long step, const ApproximateOptions& o)
+Eigen::Matrix3d approximate_rotation(long step, const ApproximateSettings& o)
 {
   constexpr double pi = std::numbers::pi;
   const auto t = static_cast<double>(step), n = static_cast<double>(o.steps);
@@ -34,7 +34,7 @@ Eigen::Matrix3d approximate_rotation(long step, const ApproximateOptions& o)
   return r;
 }
 
-Trajectory approximate_oracle(const RollingBody& body, const ApproximateOptions& options, const PaperCompat& compat)
+Trajectory approximate_oracle(const RollingBody& body, const ApproximateSettings& options, const PaperCompat& compat)
 {
   validate(options);
   Trajectory out;

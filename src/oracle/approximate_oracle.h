@@ -13,7 +13,7 @@
 
 namespace rollcheck::oracle
 {
-struct ApproximateOptions
+struct ApproximateSettings
 {
   long steps = 600;                   ///< T (the reference's run_oracle default; its search uses 200 or 300)
   double contact_threshold_m = 0.04;  ///< eps (the preprint's)
@@ -22,10 +22,10 @@ struct ApproximateOptions
 };
 
 /// InputError for steps < 1, a negative or non-finite threshold, non-finite angles.
-void validate(const ApproximateOptions& options);
+void validate(const ApproximateSettings& options);
 
 /// R_x(alpha_t) R_y(beta_t).
-Eigen::Matrix3d approximate_rotation(long step, const ApproximateOptions& options);
+Eigen::Matrix3d approximate_rotation(long step, const ApproximateSettings& options);
 
-Trajectory approximate_oracle(const RollingBody& body, const ApproximateOptions& options, const PaperCompat& compat);
+Trajectory approximate_oracle(const RollingBody& body, const ApproximateSettings& options, const PaperCompat& compat);
 } // namespace rollcheck::oracle

@@ -21,7 +21,7 @@ double seconds_since(std::chrono::steady_clock::time_point start)
 class ProgressReporter
 {
 public:
-  ProgressReporter(const SearchOptions& o, std::string phase, std::size_t total)
+  ProgressReporter(const SearchSettings& o, std::string phase, std::size_t total)
       : callback_(o.progress), state_{std::move(phase), 0, total}
   {
     report();
@@ -44,14 +44,14 @@ private:
   std::mutex mutex_;
 };
 
-geometry::SurfaceMesh roller_mesh(const geometry::RollerGenome& g, const SearchOptions& o, int points)
+geometry::SurfaceMesh roller_mesh(const geometry::RollerGenome& g, const SearchSettings& o, int points)
 {
   return geometry::two_circle_roller(g, geometry::RollerFamily::paper, o.radius_m, points);
 }
 
 /// Layer 1 for one genome; an InputError from meshing marks it invalid. The
 /// mesh is kept for layer 2 (a few tens of kB each).
-void screen(GenomeResult& r, geometry::SurfaceMesh& mesh, const SearchOptions& o, const ApproximateOptions& approx,
+void screen(GenomeResult& r, geometry::SurfaceMesh& mesh, const SearchSettings& o, const ApproximateSettings& approx,
             int points)
 {
   try
@@ -75,7 +75,7 @@ void screen(GenomeResult& r, geometry::SurfaceMesh& mesh, const SearchOptions& o
 }
 
 /// Layer 2 for one valid genome.
-void revalidate(GenomeResult& r, const geometry::SurfaceMesh& mesh, const SearchOptions& o)
+void revalidate(GenomeResult& r, const geometry::SurfaceMesh& mesh, const SearchSettings& o)
 {
   const RollingBody body = make_rolling_body(mesh, o.compat);
   const Trajectory trajectory = rigid_body_oracle(body, o.rigid, o.compat);
@@ -100,12 +100,12 @@ void rank(std::vector<GenomeResult>& genomes, const std::vector<std::size_t>& me
 }
 } // namespace
 
-SearchResult parametric_search(const SearchOptions& options)
+SearchResult parametric_search(const SearchSettings& options)
 {
   const auto start = std::chrono::steady_clock::now();
   SearchResult result;
   result.options = options;
-  SearchOptions& o = result.options;
+  SearchSettings& o = result.options;
   if (o.approximate_steps == 0)
     o.approximate_steps = reference_search_steps(o.grid);
   if (o.points < 3 || o.anchor_points < 3)
@@ -113,7 +113,7 @@ SearchResult parametric_search(const SearchOptions& options)
                                  o.anchor_points));
   if (!std::isfinite(o.radius_m) || o.radius_m <= 0)
     throw InputError(fmt::format("search: radius must be positive, got {} m", o.radius_m));
-  ApproximateOptions approx = o.approximate;
+  ApproximateSettings approx = o.approximate;
   approx.steps = o.approximate_steps;
   validate(approx);
   validate(o.rigid);

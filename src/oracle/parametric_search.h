@@ -36,7 +36,7 @@ struct SearchProgress
   std::size_t done = 0, total = 0;
 };
 
-struct SearchOptions
+struct SearchSettings
 {
   SearchGrid grid = SearchGrid::quick;
   long approximate_steps = 0;     ///< 0: the reference's (200 quick, 300 standard and deep)
@@ -47,8 +47,8 @@ struct SearchOptions
   int anchor_points = 400;        ///< the anchor oloid's (the reference's generate_oloid)
   double radius_m = 1.0;          ///< r1 (the preprint's)
   unsigned threads = 0;           ///< 0: one per core
-  ApproximateOptions approximate; ///< its steps are replaced by approximate_steps
-  RigidBodyOptions rigid;
+  ApproximateSettings approximate; ///< its steps are replaced by approximate_steps
+  RigidBodySettings rigid;
   PaperCompat compat;
   RevalidationMetrics revalidation_metrics;           ///< optional
   std::function<void(const SearchProgress&)> progress; ///< optional, called from worker threads under a lock
@@ -72,7 +72,7 @@ struct GenomeResult
 
 struct SearchResult
 {
-  SearchOptions options;              ///< as run (approximate_steps resolved)
+  SearchSettings options;              ///< as run (approximate_steps resolved)
   std::vector<GenomeResult> genomes;  ///< in grid order
   GenomeResult anchor;                ///< the anchor oloid, scored by both layers
   int anchor_points = 0;
@@ -81,5 +81,5 @@ struct SearchResult
 };
 
 /// InputError for invalid options (points < 3, radius, oracle options).
-SearchResult parametric_search(const SearchOptions& options);
+SearchResult parametric_search(const SearchSettings& options);
 } // namespace rollcheck::oracle

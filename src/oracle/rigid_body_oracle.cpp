@@ -57,7 +57,7 @@ Eigen::Vector4d hamilton_product(const Eigen::Vector4d& a, const Eigen::Vector4d
 class RollingSimulation
 {
 public:
-  RollingSimulation(const RollingBody& body, const RigidBodyOptions& o, const PaperCompat& c,
+  RollingSimulation(const RollingBody& body, const RigidBodySettings& o, const PaperCompat& c,
                     const Eigen::Vector3d& spin)
       : body_(body), o_(o), c_(c), support_(body), omega_(spin)
   {
@@ -139,7 +139,7 @@ private:
   }
 
   const RollingBody& body_;
-  const RigidBodyOptions& o_;
+  const RigidBodySettings& o_;
   const PaperCompat& c_;
   SupportSearch support_;
   Eigen::Vector4d q_{1.0, 0.0, 0.0, 0.0};
@@ -156,7 +156,7 @@ const std::vector<Eigen::Vector3d>& reference_initial_spins()
   return spins;
 }
 
-void validate(const RigidBodyOptions& o)
+void validate(const RigidBodySettings& o)
 {
   auto positive = [](double x) { return std::isfinite(x) && x > 0; };
   auto non_negative = [](double x) { return std::isfinite(x) && x >= 0; };
@@ -189,13 +189,13 @@ void validate(const RigidBodyOptions& o)
       throw InputError("rigid-body oracle: initial spins must be finite");
 }
 
-long steps_per_run(const RigidBodyOptions& o)
+long steps_per_run(const RigidBodySettings& o)
 {
   const double steps = o.duration_s / o.time_step_s;
   return std::isfinite(steps) && steps < 1e12 ? static_cast<long>(steps) : 0;
 }
 
-Trajectory rigid_body_oracle(const RollingBody& body, const RigidBodyOptions& options, const PaperCompat& compat)
+Trajectory rigid_body_oracle(const RollingBody& body, const RigidBodySettings& options, const PaperCompat& compat)
 {
   validate(options);
   const long n_steps = steps_per_run(options);
@@ -225,7 +225,7 @@ Trajectory rigid_body_oracle(const RollingBody& body, const RigidBodyOptions& op
 }
 
 std::vector<Eigen::Matrix3d> rigid_body_rotations(const RollingBody& body, const Eigen::Vector3d& initial_spin,
-                                                  long n_steps, const RigidBodyOptions& options,
+                                                  long n_steps, const RigidBodySettings& options,
                                                   const PaperCompat& compat)
 {
   validate(options);

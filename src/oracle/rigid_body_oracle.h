@@ -23,7 +23,7 @@ namespace rollcheck::oracle
 /// The reference code's five initial spins (rad/s); runs use the first n.
 const std::vector<Eigen::Vector3d>& reference_initial_spins();
 
-struct RigidBodyOptions
+struct RigidBodySettings
 {
   double duration_s = 10.0;            ///< T per run (the preprint's parameter table)
   double time_step_s = 0.002;          ///< dt (the preprint's)
@@ -41,16 +41,16 @@ struct RigidBodyOptions
 /// InputError for a non-positive or non-finite dt or duration, fewer steps
 /// than one, sample_every < 1, a negative threshold, damping, mass or gravity,
 /// no runs, or a non-finite spin.
-void validate(const RigidBodyOptions& options);
+void validate(const RigidBodySettings& options);
 
 /// Integration steps per run, floor(T / dt) as the reference's int(T / dt).
-long steps_per_run(const RigidBodyOptions& options);
+long steps_per_run(const RigidBodySettings& options);
 
-Trajectory rigid_body_oracle(const RollingBody& body, const RigidBodyOptions& options, const PaperCompat& compat);
+Trajectory rigid_body_oracle(const RollingBody& body, const RigidBodySettings& options, const PaperCompat& compat);
 
 /// Orientation before steps 0 .. n_steps-1 of one run from `initial_spin`
 /// (element 0 is the identity): the reference's `simulate_rolling` list.
 std::vector<Eigen::Matrix3d> rigid_body_rotations(const RollingBody& body, const Eigen::Vector3d& initial_spin,
-                                                  long n_steps, const RigidBodyOptions& options,
+                                                  long n_steps, const RigidBodySettings& options,
                                                   const PaperCompat& compat);
 } // namespace rollcheck::oracle

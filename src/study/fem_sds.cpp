@@ -30,7 +30,7 @@ struct Models
 {
   contact::HertzParameters hertz;
   oracle::PaperCompat compat;
-  contact::LocusOptions locus;
+  contact::LocusSettings locus;
   fem::SliceSettings slice;
   fem::SlabSettings slab;
   double effective_modulus_pa = 0; ///< of the FEM and the line-Hertz slices
@@ -102,7 +102,7 @@ OrientationSource rolling_source(const FemSdsSettings& s)
 
 OrientationSource rigid_source(const FemSdsSettings& s, const Models& m, const oracle::RollingBody& body)
 {
-  oracle::RigidBodyOptions options;
+  oracle::RigidBodySettings options;
   options.contact_threshold_m = m.locus.contact_threshold_m;
   const auto runs = static_cast<std::size_t>(s.runs);
   const auto& spins = oracle::reference_initial_spins();

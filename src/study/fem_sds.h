@@ -47,7 +47,7 @@ struct FemSdsSettings
   double barrier_energy_excess = 0.1; ///< rolling oracle: kinetic energy / potential barrier - 1
   int runs = 3;                    ///< rigid oracle: runs with the reference's first initial spins
   /// eps: the faces the preprint's SDS counts at an orientation.
-  double contact_threshold_m = contact::LocusOptions{}.contact_threshold_m;
+  double contact_threshold_m = contact::LocusSettings{}.contact_threshold_m;
   /// The preprint's face pressures (PaperCompat::reference()) for the analytic
   /// SDS; otherwise every quirk corrected.
   bool paper_compat = false;

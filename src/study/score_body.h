@@ -41,8 +41,8 @@ struct ScoreBodySettings
 {
   geometry::BodySpec body;
   Oracle oracle = Oracle::rigid;
-  oracle::ApproximateOptions approximate;
-  oracle::RigidBodyOptions rigid;
+  oracle::ApproximateSettings approximate;
+  oracle::RigidBodySettings rigid;
   /// Real rolling; the scoring mesh's faces cut 8 x 8 (the README's real-rolling table).
   oracle::RollingStudyParameters rolling = [] {
     oracle::RollingStudyParameters p;

@@ -92,9 +92,9 @@ void BM_oracle_rigid_body_all_scores_oloid(benchmark::State& state)
 BENCHMARK(BM_oracle_rigid_body_all_scores_oloid)->Unit(benchmark::kMillisecond);
 
 /// The search with the revalidated genomes scored as `rollcheck search` does.
-oracle::SearchOptions search_options(oracle::SearchGrid grid)
+oracle::SearchSettings search_options(oracle::SearchGrid grid)
 {
-  oracle::SearchOptions o;
+  oracle::SearchSettings o;
   o.grid = grid;
   o.compat = paper;
   study::ScoreBodySettings scoring;
@@ -109,7 +109,7 @@ oracle::SearchOptions search_options(oracle::SearchGrid grid)
 /// The reference: 1.0 s for the screening alone.
 void BM_search_quick_validate_top5(benchmark::State& state)
 {
-  const oracle::SearchOptions o = search_options(oracle::SearchGrid::quick);
+  const oracle::SearchSettings o = search_options(oracle::SearchGrid::quick);
   timed(state, 1.0, [&] { benchmark::DoNotOptimize(oracle::parametric_search(o)); });
 }
 BENCHMARK(BM_search_quick_validate_top5)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
@@ -119,7 +119,7 @@ BENCHMARK(BM_search_quick_validate_top5)->Unit(benchmark::kMillisecond)->UseReal
 /// 616 x 1.4 s ~ 860 s if it revalidated every genome).
 void BM_search_standard_validate_all(benchmark::State& state)
 {
-  oracle::SearchOptions o = search_options(oracle::SearchGrid::standard);
+  oracle::SearchSettings o = search_options(oracle::SearchGrid::standard);
   o.validate_all = true;
   timed(state, 10.7, [&] { benchmark::DoNotOptimize(oracle::parametric_search(o)); });
 }

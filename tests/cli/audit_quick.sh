@@ -8,27 +8,24 @@
 # the digits the preprint prints. Bad input (a folder without the reference
 # meshes) exits 2 and writes nothing.
 set -u
+source "$(dirname "$0")/lib.sh"
 bin=$1; source=$2; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp"
-fail=0
-check() { # check DESCRIPTION JQ-EXPRESSION FILE: the expression must print true
-  [[ $(jq -r "$2" "$3") == true ]] || { echo "FAIL: $1 ($2)"; fail=1; }
-}
 meshes=$source/meshes/reference
 "$bin" -q audit --quick --reference-meshes "$meshes" --json "$tmp/audit.json" --markdown "$tmp/audit.md" \
   > "$tmp/stdout.md" || { echo "FAIL: audit run"; exit 1; }
 j=$tmp/audit.json
-check "28 claims" '.claims | length == 28' "$j"
-check "five modes, paper-compatible first" '(.modes | length) == 5 and .modes[0].mode == "paper-compatible"' "$j"
-check "verdicts from the stated set" \
+check_json "28 claims" '.claims | length == 28' "$j"
+check_json "five modes, paper-compatible first" '(.modes | length) == 5 and .modes[0].mode == "paper-compatible"' "$j"
+check_json "verdicts from the stated set" \
   '[.claims[].verdict] | all(. == "holds" or . == "holds only in paper-compatible mode" or . == "does not hold" or . == "cannot be tested" or . == "not built yet")' "$j"
-check "verdict rules stated" '(.verdict_rules | length) >= 4 and ([.claims[].rule] | all(length > 0))' "$j"
-check "every built cell cites known commands" \
+check_json "verdict rules stated" '(.verdict_rules | length) >= 4 and ([.claims[].rule] | all(length > 0))' "$j"
+check_json "every built cell cites known commands" \
   '([.commands[].id]) as $ids | [.claims[].recomputations[] | select(.applicable and .built) | (.commands | length > 0) and all(.commands[]; . as $c | $ids | index($c) != null)] | all' "$j"
-check "every command is a rollcheck command printing JSON" \
+check_json "every command is a rollcheck command printing JSON" \
   '[.commands[].command] | all(startswith("rollcheck ") and endswith(" --json -"))' "$j"
-check "quick mode recorded" '.quick == true' "$j"
-check "claims that cannot be tested say why" \
+check_json "quick mode recorded" '.quick == true' "$j"
+check_json "claims that cannot be tested say why" \
   '[.claims[] | select(.verdict == "cannot be tested") | .recomputations[] | select(.applicable and (.built | not)) | .untestable | length > 0] | (length > 0 and all)' "$j"
 cmp -s "$tmp/audit.md" "$tmp/stdout.md" || { echo "FAIL: --markdown file differs from stdout"; fail=1; }
 grep -q '^| claim | paper | paper-compatible | matched resolution | true oloid | corrected physics | real rolling | verdict |$' \

@@ -5,11 +5,10 @@
 # cases, --force recomputes them; a case whose process fails is reported with
 # the process's own error; bad arguments exit 2.
 set -u
+source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
 py=/usr/bin/python3
 rm -rf "$tmp"; mkdir -p "$tmp/cases"
-fail=0
-check() { if ! eval "$1"; then echo "FAIL: $2"; fail=1; fi; }
 
 printf '[scene]\nkind = "mesh"\nbody = "oloid"\npoints = 100\n' > "$tmp/cases/oloid.toml"
 printf '[scene]\nkind = "mesh"\nbody = "cylinder"\n' > "$tmp/cases/cylinder.toml"
@@ -61,5 +60,5 @@ check '[[ -s $(ls -d "$tmp"/out2/cases/*/)log.txt ]]' "failing process: log not 
 "$bin" batch "$tmp/nothing_here.toml" --out "$tmp/out3" > "$tmp/badarg.out" 2>&1
 check '[[ $? -eq 2 ]] && grep -q "nothing_here.toml" "$tmp/badarg.out"' "missing argument not an input error"
 "$bin" batch "$tmp/cases" -j -1 --out "$tmp/out3" > "$tmp/badj.out" 2>&1
-check '[[ $? -eq 2 ]] && grep -q "at least 1" "$tmp/badj.out"' "-j -1 not an input error"
+check '[[ $? -eq 2 ]] && grep -q "jobs: Value -1 not in range 0 to 1024" "$tmp/badj.out"' "-j -1 not an input error"
 exit $fail

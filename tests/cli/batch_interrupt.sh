@@ -7,11 +7,10 @@
 # The signals are sent when a result appears on disk, not after a fixed
 # time, so the test holds on a loaded machine.
 set -u
+source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
 py=/usr/bin/python3
 rm -rf "$tmp"; mkdir -p "$tmp/cases"
-fail=0
-check() { if ! eval "$1"; then echo "FAIL: $2"; fail=1; fi; }
 finished() { ls "$tmp"/out/cases/*/result.json 2>/dev/null | wc -l; }
 wait_for_results() { # wait_for_results N PID: until N results exist (or the batch ended)
   for _ in $(seq 1 1200); do

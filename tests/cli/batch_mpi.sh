@@ -3,11 +3,10 @@
 # each runs its share in its own processes, rank 0 alone reports and writes
 # the store; a failed case still sets the exit code.
 set -u
+source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
 py=/usr/bin/python3
 rm -rf "$tmp"; mkdir -p "$tmp/cases"
-fail=0
-check() { if ! eval "$1"; then echo "FAIL: $2"; fail=1; fi; }
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 for i in 1 2 3 4; do
   printf '[scene]\nkind = "mesh"\nbody = "sphere"\nsubdivisions = 3\nradius_m = %s\n' "1.$i" > "$tmp/cases/sphere_$i.toml"

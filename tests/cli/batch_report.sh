@@ -5,10 +5,9 @@
 # and writes nothing; validate runs a folder of cases as a batch and prints
 # where its report is.
 set -u
+source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp/cases"
-fail=0
-check() { if ! eval "$1"; then echo "FAIL: $2"; fail=1; fi; }
 # Each case states a check, as validate requires (the cylinder r = 1, h = 2:
 # area 2 pi r h + 2 pi r^2 of the inscribed 60-gon prism, within 0.5 %).
 printf '[scene]\nkind = "mesh"\nbody = "oloid"\npoints = 100\n[[check]]\npointer = "/area_m2"\nvalue = 12.566370614359172\nrel_tol = 0.005\nreference = "4 pi r^2"\n' > "$tmp/cases/oloid.toml"

@@ -2,11 +2,11 @@
 # rollcheck crease and the crease case: apex pressure growing level by level,
 # p(a/2) within 2 % of the blunt-wedge solution; bad input exits 2 naming it.
 set -u
+source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp"
 export OPENBLAS_NUM_THREADS=1
 here=$(cd "$(dirname "$0")/../.." && pwd)
-fail=0
 "$bin" -q run "$here/cases/crease_kink.toml" --set levels=3 --json "$tmp/crease.json" > "$tmp/crease.log" 2>&1 \
   || { echo "FAIL: crease case"; cat "$tmp/crease.log"; exit 1; }
 /usr/bin/python3 - "$tmp/crease.json" <<'PY' || fail=1

@@ -7,12 +7,12 @@
 # within 2 % of the slices, with its square ends below the middle; bad input
 # exits 2 naming the input.
 set -u
+source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
 here=$(cd "$(dirname "$0")/../.." && pwd)
 mpi="mpirun -n 2 --oversubscribe"
-fail=0
 $mpi "$bin" -q run "$here/cases/fem_sds_cylinder.toml" --set orientations=2 --set fem_slices=3 --set slab_orientations=0 \
   --set "out=$tmp/cylinder" --json "$tmp/cylinder.json" > "$tmp/cylinder.log" 2>&1 || { echo "FAIL: cylinder run"; cat "$tmp/cylinder.log"; fail=1; }
 "$bin" -q fem-sds --body oloid --oracle rigid --orientations 3 --fem-slices 3 --json "$tmp/rigid.json" \

@@ -4,16 +4,10 @@
 # `rollcheck run` with overrides. Also the command line around it: usage
 # lines, an unknown subcommand, PETSc options after `--`, --version.
 set -u
+source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
 here=$(cd "$(dirname "$0")/../.." && pwd)
 rm -rf "$tmp"; mkdir -p "$tmp"
-fail=0
-expect() { # expect CODE PATTERN -- command...
-  local code=$1 pattern=$2; shift 3
-  local err; err=$("$@" 2>&1 >/dev/null); local rc=$?
-  if [[ $rc -ne $code ]]; then echo "FAIL ($rc != $code): $*"; echo "$err"; fail=1; return; fi
-  if ! grep -qiE "$pattern" <<<"$err"; then echo "FAIL (message lacks '$pattern'): $*"; echo "$err"; fail=1; fi
-}
 expect 2 "radius.*-0.01" -- "$bin" hertz --radius -0.01 --json "$tmp/bad1.json"
 expect 2 "poisson.*0.5" -- "$bin" hertz --poisson 0.5 --json "$tmp/bad2.json"
 expect 2 "degree.*3" -- "$bin" hertz --degree 3 --json "$tmp/bad3.json"

@@ -3,11 +3,11 @@
 # 3D with GMRES + GAMG), and the default 3D hemisphere on 2 ranks meets the
 # issue's tolerances: a within 1 %, p0 within 2 %, force within 1e-4.
 set -u
+source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
 mpi="mpirun -n 2 --oversubscribe"
-fail=0
 "$bin" -q hertz --model axi --json "$tmp/axi1.json" || fail=1
 $mpi "$bin" -q hertz --model axi --json "$tmp/axi2.json" || fail=1
 "$bin" -q hertz --model 3d --refine 0 --json "$tmp/solid1.json" || fail=1

@@ -7,10 +7,10 @@
 # whose folder is missing is refused before any computation; no scratch is
 # left behind.
 set -u
+source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
-fail=0
 for model in axi 3d; do
   launch=(); [[ $model == 3d ]] && launch=(mpirun -n 2)
   "${launch[@]}" "$bin" -q hertz --model $model --refine 0 --xdmf "$tmp/$model.xdmf" --json "$tmp/$model.json" \

@@ -4,12 +4,11 @@
 # scripts and reference meshes (not the source tree's), and its checks pass.
 #   install_prefix.sh ROLLCHECK SOURCE_DIR TMP_DIR
 set -u
+source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
 build=$(cd "$(dirname "$bin")/../.." && pwd)
 rm -rf "$tmp"; mkdir -p "$tmp/work"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
-fail=0
-check() { if ! eval "$1"; then echo "FAIL: $2"; fail=1; fi; }
 cmake --install "$build" --prefix "$tmp/prefix" > "$tmp/install.log" 2>&1 || { cat "$tmp/install.log"; exit 1; }
 check '[[ -x $tmp/prefix/bin/rollcheck && -d $tmp/prefix/share/rollcheck/cases/default ]]' "installed layout"
 check '[[ -f $tmp/prefix/share/rollcheck/meshes/reference/oloid_reference.obj ]]' "reference meshes installed"

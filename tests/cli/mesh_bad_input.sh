@@ -2,15 +2,9 @@
 # Bad input to `rollcheck mesh` and `rollcheck run`: exit 2, a message naming
 # the input, and nothing written.
 set -u
+source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp/in"; in=$tmp/in
-fail=0
-expect() { # expect CODE PATTERN -- command...
-  local code=$1 pattern=$2; shift 3
-  local err; err=$("$@" 2>&1 >/dev/null); local rc=$?
-  if [[ $rc -ne $code ]]; then echo "FAIL ($rc != $code): $*"; echo "$err"; fail=1; return; fi
-  if ! grep -qiE "$pattern" <<<"$err"; then echo "FAIL (message lacks '$pattern'): $*"; echo "$err"; fail=1; fi
-}
 expect 2 "radius.*nan" -- "$bin" mesh --body oloid --radius nan --out "$tmp/a.obj"
 expect 2 "radius.*-1" -- "$bin" mesh --body oloid --radius -1 --out "$tmp/b.obj"
 expect 2 "option --ratio.*> 0, got 0" -- "$bin" mesh --body roller --ratio 0 --out "$tmp/c.obj"

@@ -3,10 +3,10 @@
 # circle) writes the JSON with its keys, the optimum's mesh and the sweeps'
 # plot; a bad box (min > max, a start outside it) exits 2 naming the key.
 set -u
+source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp"
 export OPENBLAS_NUM_THREADS=1
-fail=0
 "$bin" -q optimize --points 60 --max-evaluations 12 --sweep-points 3 --threads 1 --json "$tmp/optimize.json" \
   --out "$tmp/out" > "$tmp/run.log" 2>&1 || { echo "FAIL: tiny optimize run"; cat "$tmp/run.log"; exit 1; }
 /usr/bin/python3 - "$tmp/optimize.json" "$tmp/out" <<'PY' || fail=1

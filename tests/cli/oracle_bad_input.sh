@@ -4,16 +4,10 @@
 # resource guards stop a multi-GB trajectory before it is run; a body that
 # never touches gives the documented "inf" scores, never NaN.
 set -u
+source "$(dirname "$0")/lib.sh"
 bin=$1; source=$2; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp"
-fail=0
 oloid=$source/meshes/reference/oloid_reference.obj
-expect() { # expect CODE PATTERN -- command...
-  local code=$1 pattern=$2; shift 3
-  local err; err=$("$@" 2>&1 >/dev/null); local rc=$?
-  if [[ $rc -ne $code ]]; then echo "FAIL ($rc != $code): $*"; echo "$err"; fail=1; return; fi
-  if ! grep -qiE "$pattern" <<<"$err"; then echo "FAIL (message lacks '$pattern'): $*"; echo "$err"; fail=1; fi
-}
 expect 2 "option --steps.*integer in \[1, 1e\+06\], got 0" -- "$bin" oracle --mesh "$oloid" --oracle approx --steps 0 --json "$tmp/a.json"
 expect 2 "option --steps.*integer in \[1, 1e\+06\], got 0" -- "$bin" oracle --mesh "$oloid" --oracle rigid --steps 0 --json "$tmp/a.json"
 expect 2 "option --steps.*got 2000000" -- "$bin" oracle --mesh "$oloid" --oracle approx --steps 2000000 --json "$tmp/a.json"

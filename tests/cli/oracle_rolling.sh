@@ -12,12 +12,9 @@
 # - the JSON states that cds ... fds are not computed (null);
 # - a mesh file or a three-circle roller exits 2 with a clear message, nothing written.
 set -u
+source "$(dirname "$0")/lib.sh"
 bin=$1; source=$2; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp"
-fail=0
-check() { # check DESCRIPTION JQ-EXPRESSION FILE: the expression must print true
-  [[ $(jq -r "$2" "$3") == true ]] || { echo "FAIL: $1 ($2)"; jq -c . "$3" | head -c 2000; echo; fail=1; }
-}
 run() { # run NAME ARGS...: the JSON goes to $tmp/NAME.json
   local name=$1; shift
   "$bin" -q oracle --oracle rolling "$@" --json "$tmp/$name.json" 2> "$tmp/$name.err" \
@@ -27,8 +24,8 @@ run() { # run NAME ARGS...: the JSON goes to $tmp/NAME.json
 run cylinder --body cylinder --face-subdivisions 2 --mass-points 16384
 run cylinder_fast --body cylinder --face-subdivisions 2 --mass-points 16384 --energy-excess 1
 for name in cylinder cylinder_fast; do
-  check "$name: continuum U = r/h = 0.5" '(.uniformity_score_continuum - 0.5 | fabs) <= 1e-6' "$tmp/$name.json"
-  check "$name: contact held over one loop" '.contact_held == true and (.loops_completed - 1 | fabs) < 1e-6' "$tmp/$name.json"
+  check_json "$name: continuum U = r/h = 0.5" '(.uniformity_score_continuum - 0.5 | fabs) <= 1e-6' "$tmp/$name.json"
+  check_json "$name: contact held over one loop" '.contact_held == true and (.loops_completed - 1 | fabs) < 1e-6' "$tmp/$name.json"
 done
 
 run oloid2 --body oloid --points 100 --face-subdivisions 2
@@ -37,13 +34,13 @@ run oloid4 --body oloid --points 100 --face-subdivisions 4
 faces=$(jq -r '.n_faces' "$tmp/mesh.json")
 for k in 2 4; do
   j=$tmp/oloid$k.json
-  check "oloid x$k: every key, the others null and said so" \
+  check_json "oloid x$k: every key, the others null and said so" \
     '. as $j | (["uniformity_score","uniformity_score_continuum","coverage","contact_held","loops_completed","initial_rate_rad_s","n_faces","wall_s"] | all(. as $k | $j | has($k)))
      and ([.cds, .sds, .tds, .wds_vol, .wds_depth, .fds] | all(. == null)) and (.not_computed | test("not computed"))' "$j"
-  check "oloid x$k: n_faces = mesh faces x $k^2" ".n_faces == $faces * $k * $k" "$j"
-  check "oloid x$k: holds its ruling for one loop" '.contact_held == true and (.loops_completed - 1 | fabs) < 1e-6 and .initial_rate_rad_s > 0' "$j"
+  check_json "oloid x$k: n_faces = mesh faces x $k^2" ".n_faces == $faces * $k * $k" "$j"
+  check_json "oloid x$k: holds its ruling for one loop" '.contact_held == true and (.loops_completed - 1 | fabs) < 1e-6 and .initial_rate_rad_s > 0' "$j"
   # coverage is a ratio of area sums: 1 up to their round-off (1e-12)
-  check "oloid x$k: 0 < coverage <= 1, U on the mesh at most U_inf" \
+  check_json "oloid x$k: 0 < coverage <= 1, U on the mesh at most U_inf" \
     '.coverage > 0 and .coverage <= 1 + 1e-12 and .uniformity_score > 0 and .uniformity_score <= .uniformity_score_continuum' "$j"
 done
 jq -n --slurpfile a "$tmp/oloid2.json" --slurpfile b "$tmp/oloid4.json" \
@@ -56,12 +53,6 @@ for option in --energy-excess --loops --face-subdivisions --contact-width; do
   grep -A3 -- "$option" "$tmp/help.txt" | grep -q "default" || { echo "FAIL: --help lacks $option with its default"; fail=1; }
 done
 
-expect() { # expect CODE PATTERN -- command...
-  local code=$1 pattern=$2; shift 3
-  local err; err=$("$@" 2>&1 >/dev/null); local rc=$?
-  if [[ $rc -ne $code ]]; then echo "FAIL ($rc != $code): $*"; echo "$err"; fail=1; return; fi
-  if ! grep -qiE "$pattern" <<<"$err"; then echo "FAIL (message lacks '$pattern'): $*"; echo "$err"; fail=1; fi
-}
 expect 2 "mesh.*named body" -- "$bin" oracle --oracle rolling --mesh "$source/meshes/reference/oloid_reference.obj" --json "$tmp/bad1.json"
 expect 2 "rolling.*3 circles" -- "$bin" oracle --oracle rolling --body roller --circles 3 --theta 120 --json "$tmp/bad2.json"
 expect 2 "loops" -- "$bin" oracle --oracle rolling --body oloid --loops 0 --json "$tmp/bad3.json"

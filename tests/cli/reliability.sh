@@ -4,19 +4,11 @@
 # intact, no hang (every command runs under a time limit; two-rank cases too).
 #   reliability.sh ROLLCHECK SOURCE_DIR TMP_DIR
 set -u
+source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp"
 cd "$tmp" || exit 1
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
-fail=0
-expect() { # expect CODE PATTERN -- COMMAND...
-  local code=$1 pattern=$2; shift 3
-  timeout 120 "$@" > out.log 2>&1
-  local rc=$?
-  if [[ $rc -ne $code ]] || ! grep -qiE -- "$pattern" out.log || grep -q "internal error" out.log; then
-    echo "FAIL: $* -> exit $rc (want $code, /$pattern/):"; head -c 600 out.log; echo; fail=1
-  fi
-}
 # Loads the model cannot represent: refused up front, on every rank.
 expect 2 "too small" -- "$bin" crease --load-per-length 3
 expect 2 "too small" -- "$bin" hertz --model plane-strain --load 1e-7

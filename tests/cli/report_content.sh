@@ -6,11 +6,10 @@
 # optional input says how to get it, and a key missing from a plot's input or
 # from the validation file is an error naming it. Needs python3-jinja2.
 set -u
+source "$(dirname "$0")/lib.sh"
 bin=$1; source=$2; tmp=$3
 python=/usr/bin/python3
 rm -rf "$tmp"; mkdir -p "$tmp/cases"
-fail=0
-check() { if ! eval "$1"; then echo "FAIL: $2"; fail=1; fi; }
 printf '[scene]\nkind = "mesh"\nbody = "oloid"\npoints = 100\n' > "$tmp/cases/oloid.toml"
 cp "$source/cases/default/hertz_axisymmetric.toml" "$tmp/cases/hertz_axi.toml"
 "$bin" -q batch "$tmp/cases" --out "$tmp/out" > /dev/null 2>&1 || { echo "FAIL: batch"; exit 1; }

@@ -5,11 +5,10 @@
 # tolerance passes (exit 0). A case stating no check fails too.
 #   validate_checks.sh ROLLCHECK SOURCE_DIR TMP_DIR
 set -u
+source "$(dirname "$0")/lib.sh"
 bin=$1; source=$2; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp/strict" "$tmp/stated" "$tmp/unchecked"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
-fail=0
-check() { if ! eval "$1"; then echo "FAIL: $2"; fail=1; fi; }
 cp "$source/cases/default/hertz_axisymmetric.toml" "$tmp/stated/"
 # The same case with p0 required within 1e-9 of Hertz: the FEM's 0.09 % breaks it.
 sed 's/^max_abs = 0.003$/max_abs = 1e-9/' "$source/cases/default/hertz_axisymmetric.toml" > "$tmp/strict/hertz_axisymmetric.toml"

@@ -1,0 +1,21 @@
+# Shared helpers of the CLI tests (sourced). Each records a failure in $fail
+# and prints what failed; the script ends with `exit $fail`.
+fail=0
+
+# check CONDITION DESCRIPTION: CONDITION (evaluated) must hold.
+check() { if ! eval "$1"; then echo "FAIL: $2"; fail=1; fi; }
+
+# check_json DESCRIPTION JQ-EXPRESSION FILE: the expression must print true.
+check_json() {
+  [[ $(jq -r "$2" "$3") == true ]] || { echo "FAIL: $1 ($2)"; jq -c . "$3" 2>/dev/null | head -c 2000; echo; fail=1; }
+}
+
+# expect CODE PATTERN -- COMMAND...: the command exits CODE, its output
+# matches PATTERN (extended, case-insensitive), and it reports no internal error.
+expect() {
+  local code=$1 pattern=$2; shift 3
+  local out; out=$(timeout 300 "$@" 2>&1); local rc=$?
+  if [[ $rc -ne $code ]]; then echo "FAIL ($rc != $code): $*"; echo "$out" | head -c 2000; fail=1; return; fi
+  if ! grep -qiE -- "$pattern" <<<"$out"; then echo "FAIL (output lacks '$pattern'): $*"; echo "$out" | head -c 2000; fail=1; return; fi
+  if grep -q "internal error" <<<"$out"; then echo "FAIL (internal error): $*"; echo "$out" | head -c 2000; fail=1; fi
+}
