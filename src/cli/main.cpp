@@ -23,6 +23,23 @@ namespace
 {
 using namespace rollcheck;
 
+/// A PETSc option given (after `--` or in --petsc-options) that no solver
+/// read is named, on rank 0: a misspelt option must not pass silently.
+void warn_unused_petsc_options()
+{
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  PetscInt count = 0;
+  char** names = nullptr;
+  char** values = nullptr;
+  if (PetscOptionsLeftGet(nullptr, &count, &names, &values) != 0)
+    return;
+  for (PetscInt i = 0; rank == 0 && i < count; ++i)
+    spdlog::warn("PETSc option -{}{}{} was not used by any solver", names[i], values[i] ? " " : "",
+                 values[i] ? values[i] : "");
+  PetscOptionsLeftRestore(nullptr, &count, &names, &values);
+}
+
 /// MPI is started for the scenes that need it (FEM solves, batches spread
 /// over ranks, case files of any scene) or when a launcher started this
 /// process; the others (and --help, --version) start in milliseconds without
@@ -45,7 +62,10 @@ struct MpiSession
     PetscBool petsc_running = PETSC_FALSE;
     PetscInitialized(&petsc_running);
     if (petsc_running)
+    {
+      warn_unused_petsc_options();
       PetscFinalize();
+    }
     MPI_Finalize();
   }
 };

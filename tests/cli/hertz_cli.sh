@@ -77,4 +77,6 @@ j = json.load(open(sys.argv[1]))
 assert "b_m" in j and "b_hertz_m" in j and "a_m" not in j, sorted(j)
 assert abs(j["force_per_length_n_per_m"] - 5000) < 0.05, j["force_per_length_n_per_m"]
 PY
+# A PETSc option no solver reads is named, not silently ignored.
+expect 0 "hertz_ksp_typo cg was not used" -- "$bin" hertz --model axi --refine 0 --json "$tmp/typo.json" -- -hertz_ksp_typo cg
 exit $fail
