@@ -65,7 +65,10 @@ HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
                      setup.poisson_ratio),
          rank);
 
-  // Mesh and problem.
+  // Mesh and problem. Progress lines mark the long steps (3D: seconds each).
+  if (rank == 0)
+    spdlog::info("hertz {} P{}: meshing with gmsh (h_c = {:.4g} m)", model_name(setup.model), setup.degree,
+                 grading.contact_size_m);
   const SceneMesh scene = build_scene_mesh(comm, setup.model, R, grading);
   result.mesh_s = scene.wall_s;
   const double kappa = setup.penalty_c * ref.body_modulus_pa / grading.contact_size_m;
@@ -87,6 +90,9 @@ HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
   const LineApproach line_start = line_contact_approach(ref.load, R, c_H, ref.effective_modulus_pa);
   const double first_approach = line ? line_start.approach_m : *ref.approach_m;
   const double exponent = line ? line_start.exponent : 1.5;
+  if (rank == 0)
+    spdlog::info("hertz {} P{}: load control to {:.6g} {} (Newton steps with -v)", model_name(setup.model),
+                 setup.degree, ref.load, line ? "N/m" : "N");
   const LoadControlReport load
       = reach_force(problem, ref.load, first_approach, edge_height, exponent, setup.force_rtol);
   result.load_steps = load.load_steps;
