@@ -39,8 +39,9 @@ TEMPLATES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "templates"
 WIDE = 8          # more cases of one scene kind than this: the raw table is split
 NOTE = 60         # a longer text result goes below its table, as a note
 NUMBER = re.compile(r"^[-+]?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?$|^-?inf$")
+# Every verdict of study/audit_table.cpp verdict_text(); an unknown one is an error.
 VERDICT_CLASS = {"holds": "pass", "holds only in paper-compatible mode": "partial", "does not hold": "fail",
-                 "not built yet": "none"}
+                 "cannot be tested": "none", "not built yet": "none"}
 
 
 def cell(v):
@@ -127,7 +128,9 @@ def audit(path):
         verdict = require(claim, "verdict", at)
         rows.append([require(claim, "claim", at), verdict, require(claim, "paper_value", at)]
                     + [audit_cell(cells[m], f"{at}/recomputations/{m}") if m in cells else "n/a" for m, _ in modes])
-        classes.append(VERDICT_CLASS.get(verdict, ""))
+        if verdict not in VERDICT_CLASS:
+            raise BadInput(f"{at}: unknown verdict '{verdict}' (known: {', '.join(VERDICT_CLASS)})")
+        classes.append(VERDICT_CLASS[verdict])
         note = require(claim, "note", at)
         rules.append(f"{rows[-1][0]}: {require(claim, 'rule', at)}" + (f" {note}" if note else ""))
     commands = []

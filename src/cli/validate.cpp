@@ -16,6 +16,7 @@ namespace rollcheck::cli
 {
 void add_validate_command(CLI::App& app)
 {
+  static std::string audit_json;
   static io::BatchSettings options = [] {
     io::BatchSettings o;
     o.cases = {(data_folder() / "cases" / "default").string()};
@@ -44,7 +45,7 @@ void add_validate_command(CLI::App& app)
         {
           const io::ReportFiles report = io::write_report(batch.store, options.out / "report",
                                                           io::default_scripts_folder(), "/usr/bin/python3",
-                                                          validation_file);
+                                                          validation_file, audit_json);
           summary["report"] = {{"html", report.html.string()}, {"markdown", report.markdown.string()}};
           fmt::print("report: {}\nmarkdown: {}\n", report.html.string(), report.markdown.string());
         }
@@ -55,6 +56,9 @@ void add_validate_command(CLI::App& app)
   sub->add_option("--out", options.out, "Results folder, results.h5, validation.json and report/ (default: results/ in the working folder)");
   sub->add_option("-j,--jobs", options.jobs, "Worker processes per MPI rank (default: 2)")
       ->check(CLI::Range(0, 1024));
+  sub->add_option("--audit", audit_json,
+                  "JSON of `rollcheck audit --json PATH`, shown in the report after the verdicts (default: none)")
+      ->check(CLI::ExistingFile);
   sub->add_flag("--force", options.force, "Recompute cases already done (default: reuse their results)");
   sub->add_option("--timeout", options.case_timeout_s, "A case running longer than this fails [s] (default: 600)")
       ->check(CLI::Range(0.0, 1e7));
