@@ -177,7 +177,11 @@ PenaltyContact::PenaltyContact(const SceneMesh& scene, Model model, int degree, 
   KSPCreate(mesh->comm(), &_ksp);
   KSPSetOptionsPrefix(_ksp, prefix);
   set_default_solver(_ksp, model);
-  KSPSetFromOptions(_ksp);
+  // A value PETSc rejects (an unknown KSP or PC type) is bad input, not a
+  // silently kept default; PETSc has printed which option and why.
+  if (KSPSetFromOptions(_ksp) != 0)
+    throw InputError(fmt::format("PETSc rejected the solver options (prefix {}){}: see PETSc's message above",
+                                 prefix, petsc_options.empty() ? "" : fmt::format(" '{}'", petsc_options)));
 }
 
 PenaltyContact::~PenaltyContact()
