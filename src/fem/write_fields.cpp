@@ -106,9 +106,6 @@ void write_fields(const std::filesystem::path& xdmf_path, const NodalFields& fie
   MPI_Comm comm = mesh->comm();
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  if (xdmf_path.extension() != ".xdmf")
-    throw InputError(fmt::format("hertz: the field output '{}' must end in .xdmf", xdmf_path.string()));
-  check_output_file(xdmf_path, "option --xdmf");
 
   const std::vector<Field> list = {{"displacement", "Vector", 3, fields.displacement.get()},
                                    {"stress", "Tensor", 9, fields.stress.get()},

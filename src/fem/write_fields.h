@@ -7,6 +7,8 @@
 // and colours it directly and meshio reads every field from the one file.
 // Written whole or not at all (core/atomic_file.h); every rank learns of a
 // failure. The scenes are small (<= ~10^5 nodes), so inline text is affordable.
+// The path is checked before any computation by the scene's setup
+// (fem::validate: a .xdmf in a writable folder, not a folder itself).
 #include "fem/nodal_fields.h"
 #include <filesystem>
 

@@ -161,7 +161,8 @@ private:
   void add(Parameter parameter, std::function<void(Settings&, const Value&)> set,
            std::function<Value(const Settings&)> get)
   {
-    parameter.default_value = get(Settings{});
+    static const Settings defaults{};
+    parameter.default_value = get(defaults);
     schema_.parameters.push_back(std::move(parameter));
     setters_.push_back(std::move(set));
     getters_.push_back(std::move(get));
