@@ -1,6 +1,6 @@
-// `rollcheck fem-sds`: FEM contact stress at orientations sampled from an
-// oracle run, against the preprint's analytic SDS (README "FEM contact stress
-// at sampled orientations"). Also the scene "fem-sds" of case files.
+// `rollcheck fem-sds`: SDS over a whole rolling loop under FEM contact stress,
+// against the preprint's point-Hertz SDS and line-contact Hertz
+// (docs/fem-sds.md). Also the scene "fem-sds" of case files.
 // The method is study/fem_sds.h; here its parameters, its tables in the log,
 // its plots and its JSON.
 #include "cli/cli.h"
@@ -27,8 +27,20 @@ const io::BoundSchema<study::FemSdsSettings>& fem_sds_schema()
                 "every instant) or rigid (the preprint's rigid-body oracle, whose orientations mostly stand on a rim "
                 "point)",
                 {{"rolling", study::OrientationOracle::rolling}, {"rigid", study::OrientationOracle::rigid}})
+        .integer("samples_per_loop", "--samples", &FemSdsSettings::samples_per_loop, "",
+                 "Samples of the rolling loop (spread evenly in time over its period), every one scored",
+                 io::Bounds{2, 1e7})
+        .integer("table_nodes_per_decade", "--table-nodes", &FemSdsSettings::table_nodes_per_decade, "",
+                 "FEM solves per decade of the load ratio q / (E* R) to start the nondimensional slice table with "
+                 "(fem/slice_scaling.h); doubled until FEM-SDS changes by less than the tolerance",
+                 io::Bounds{2, 64})
+        .real("tolerance", "--tolerance", &FemSdsSettings::tolerance, "",
+              "Relative change of FEM-SDS, doubling the table or the samples, that counts as converged",
+              io::Bounds{1e-6, 0.5})
         .integer("orientations", "--orientations", &FemSdsSettings::orientations, "",
-                 "Orientations K sampled from the oracle run, one per equal stratum of it", io::Bounds{1, 10000})
+                 "Orientations solved directly, slice by slice at two mesh levels, one per equal stratum of the loop: "
+                 "the check of the table against direct FEM, and the per-orientation table",
+                 io::Bounds{1, 10000})
         .integer("seed", "--seed", &FemSdsSettings::seed, "",
                  "Seed of the stratified sampling (the same seed, the same picks)", io::non_negative)
         .real("barrier_energy_excess", "--energy-excess", &FemSdsSettings::barrier_energy_excess, "",
@@ -134,10 +146,12 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
   if (rank != 0)
     return j;
   // Tables go to the log (stderr), so that `--json -` stays JSON alone.
-  spdlog::info("\nfem-sds {} ({}):\n\n{}\nanalytic SDS {}, line-Hertz SDS {}, FEM-SDS {} over {} solved of {} "
-               "orientations; {} reach a crease\n\n",
-               result.body, result.source, table, j["analytic_sds"].dump(), j["line_hertz_sds"].dump(),
-               j["fem_sds"].dump(), result.fem_solved, result.orientations.size(), result.reaching_crease);
+  spdlog::info("\nfem-sds {} ({}):\n\n{}\nover the {} samples of the loop: point-Hertz SDS (the preprint's) {}, "
+               "line-Hertz SDS {}, FEM-SDS {} ({}; {} FEM solves, K-to-2K change {}); table against direct FEM at "
+               "the orientations above: {:.3f} %\n\n",
+               result.body, result.source, table, result.loop.samples, j["analytic_sds"].dump(),
+               j["line_hertz_sds"].dump(), j["fem_sds"].dump(), j["fem_sds_status"].get<std::string>(),
+               result.loop.fem_solves, j["fem_sds_table_change"].dump(), 100 * result.table_vs_direct_worst);
   if (const std::string& out = params.text("out"); !out.empty())
     io::draw_folder(out, params.text("python"), io::default_scripts_folder() / "plot_fem_orientations.py", {},
                     "plot.log", [&](const std::filesystem::path& folder) {
@@ -151,8 +165,9 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
 void add_fem_sds_command(CLI::App& app)
 {
   add_scene_command(app, "fem-sds",
-                    "FEM contact stress at orientations sampled from an oracle run (plane-strain slices along the "
-                    "contact ruling, two mesh levels) against the preprint's analytic SDS and line-contact Hertz",
+                    "SDS over every sample of a rolling loop under FEM contact stress (plane-strain slices along the "
+                    "contact ruling through their exact scaling, a converged table of FEM solves), beside the "
+                    "preprint's point-Hertz SDS and line-contact Hertz; orientations solved directly check it",
                     fem_sds_schema().schema(), run_fem_sds);
 }
 } // namespace rollcheck::cli

@@ -31,6 +31,8 @@ void validate(const RollingStudyParameters& p)
     throw InputError(fmt::format("rolling study: face subdivisions must be at least 1, got {}", p.face_subdivisions));
   if (p.mass_points < 16)
     throw InputError(fmt::format("rolling study: mass points must be at least 16, got {}", p.mass_points));
+  if (p.samples_per_loop < 0)
+    throw InputError(fmt::format("rolling study: samples per loop must be non-negative, got {}", p.samples_per_loop));
   if (p.rolling_resistance_n_m_s > 0 && p.duration_s == 0)
     throw InputError("rolling study: with rolling resistance the loop period is unknown; give a duration (s)");
 }
@@ -164,7 +166,10 @@ RealRolling real_rolling(const geometry::BodySpec& spec, const RollingStudyParam
                                    run.initial_rate_rad_s, spec.body));
   }
   const double duration = p.duration_s > 0 ? p.duration_s : 1.02 * p.loops * run.loop_period_s;
-  run.trajectory = roll_on_ruling(body, mass, {rest, run.initial_rate_rad_s, 0}, dynamics_parameters(p, duration));
+  RollingParameters dynamics = dynamics_parameters(p, duration);
+  if (p.samples_per_loop > 0 && run.loop_period_s > 0)
+    dynamics.sample_interval_s = run.loop_period_s / static_cast<double>(p.samples_per_loop);
+  run.trajectory = roll_on_ruling(body, mass, {rest, run.initial_rate_rad_s, 0}, dynamics);
   set_window(run, p.loops);
   return run;
 }

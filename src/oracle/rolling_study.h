@@ -35,6 +35,9 @@ struct RollingStudyParameters
   int loops = 1;                        ///< complete loops scored
   double duration_s = 0;               ///< 0: loops x the undamped loop period (+2 %)
   double sample_interval_s = 1e-3;      ///< strips of the contact density
+  /// > 0: sample the line-contact loop this many times per undamped loop
+  /// period instead (every body's loop resolved alike, whatever its period).
+  long samples_per_loop = 0;
   double relative_tolerance = 1e-10;    ///< Dormand-Prince local error
   int mass_points = 2048;               ///< samples per circle (or cylinder sides) of the mass and area mesh
   ContactWidth contact_width;           ///< Hertz patch (default) or rigid unit width

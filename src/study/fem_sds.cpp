@@ -72,23 +72,13 @@ void require_hull_of_circles(const geometry::BodySpec& body)
                                  body.body));
 }
 
-/// The sampled orientations of an oracle run, with the body's circles and centre of mass.
-struct OrientationSource
-{
-  std::vector<oracle::Circle> circles;
-  Eigen::Vector3d centre_of_mass_m;
-  std::vector<Eigen::Matrix3d> rotations;
-  std::vector<double> times_s;
-  std::vector<std::vector<int>> oracle_faces; ///< rigid oracle: its own counts; rolling: empty
-  std::string description;
-};
-
-OrientationSource rolling_source(const FemSdsSettings& s)
+LoopSource rolling_source(const FemSdsSettings& s)
 {
   oracle::RollingStudyParameters rp;
   rp.barrier_energy_excess = s.barrier_energy_excess;
+  rp.samples_per_loop = s.samples_per_loop;
   const oracle::RealRolling run = oracle::real_rolling(s.body, rp);
-  OrientationSource source{run.circles, run.mass.centre_of_mass_m, {}, {}, {}, ""};
+  LoopSource source{run.circles, run.mass.centre_of_mass_m, {}, {}, {}, ""};
   for (const oracle::RollingSample& sample : run.trajectory.samples)
     if (sample.time_s <= run.scored_end_s)
     {
@@ -100,7 +90,7 @@ OrientationSource rolling_source(const FemSdsSettings& s)
   return source;
 }
 
-OrientationSource rigid_source(const FemSdsSettings& s, const Models& m, const oracle::RollingBody& body)
+LoopSource rigid_source(const FemSdsSettings& s, const Models& m, const oracle::RollingBody& body)
 {
   oracle::RigidBodySettings options;
   options.contact_threshold_m = m.locus.contact_threshold_m;
@@ -108,7 +98,7 @@ OrientationSource rigid_source(const FemSdsSettings& s, const Models& m, const o
   const auto& spins = oracle::reference_initial_spins();
   options.initial_spins.assign(spins.begin(), spins.begin() + static_cast<long>(runs));
   const oracle::Trajectory t = oracle::rigid_body_oracle(body, options, m.compat);
-  OrientationSource source{oracle::line_contact_circles(s.body), body.mass.centre_of_mass, {}, {}, {}, ""};
+  LoopSource source{oracle::line_contact_circles(s.body), body.mass.centre_of_mass, {}, {}, {}, ""};
   const double sample_dt = options.time_step_s * static_cast<double>(options.sample_every);
   std::vector<int> per_run(runs, 0);
   for (std::size_t k = 0; k < t.size(); ++k)
@@ -119,19 +109,6 @@ OrientationSource rigid_source(const FemSdsSettings& s, const Models& m, const o
   }
   source.description = fmt::format("the preprint's rigid-body oracle, {} runs, {} samples", runs, t.size());
   return source;
-}
-
-/// Linear interpolation of `values` given at increasing `at`, held constant
-/// beyond the first and last.
-double interpolate(std::span<const double> at, std::span<const double> values, double x)
-{
-  if (x <= at.front())
-    return values.front();
-  if (x >= at.back())
-    return values.back();
-  const auto upper = std::upper_bound(at.begin(), at.end(), x) - at.begin();
-  const double t = (x - at[upper - 1]) / (at[upper] - at[upper - 1]);
-  return (1 - t) * values[upper - 1] + t * values[upper];
 }
 
 /// The slices' FEM along the loaded ruling and their peaks, and the line
@@ -164,9 +141,9 @@ void solve_slices_along(MPI_Comm comm, FemSdsOrientation& r, const FemSdsSetting
   r.contact_length_m = (r.locus.loaded_to - r.locus.loaded_from) * L;
 }
 
-FemSdsOrientation evaluate_orientation(MPI_Comm comm, const OrientationSource& source, std::size_t pick,
+FemSdsOrientation evaluate_orientation(MPI_Comm comm, const LoopSource& source, std::size_t pick,
                                        const FemSdsSettings& s, const Models& m, const oracle::RollingBody& body,
-                                       const contact::FacePressure& pressure, const oracle::FaceCones& cones)
+                                       const contact::FacePressure& pressure)
 {
   FemSdsOrientation r;
   const std::vector<int>* counted = source.oracle_faces.empty() ? nullptr : &source.oracle_faces[pick];
@@ -184,20 +161,27 @@ FemSdsOrientation evaluate_orientation(MPI_Comm comm, const OrientationSource& s
   const std::vector<double> fractions
       = slice_fractions(r.locus.loaded_from, r.locus.loaded_to, s.crease_margin, s.fem_slices);
   solve_slices_along(comm, r, s, m, fractions);
-
-  // Onto the faces: the peak pressure at points along the loaded ruling, held
-  // at the outermost slices' values over the crease margins.
-  const std::vector<double> along = mapping_fractions(r.locus.loaded_from, r.locus.loaded_to, s.map_points);
-  const std::vector<int> faces = contact::faces_along_ruling(cones, r.locus, along);
-  std::vector<double> fem_values, line_values;
-  for (const fem::SliceFem& slice : r.slices)
-  {
-    fem_values.push_back(slice.peak_pressure_pa);
-    line_values.push_back(slice.hertz_peak_pressure_pa);
-  }
-  r.fem_faces = peaks_per_face(faces, along, fractions, fem_values);
-  r.line_faces = peaks_per_face(faces, along, fractions, line_values);
   return r;
+}
+
+/// Largest |table / direct - 1| of the FEM peaks of a solved orientation's slices.
+double table_against_direct(MPI_Comm comm, const FemSdsOrientation& r, fem::SliceScaling& table)
+{
+  std::vector<double> lambdas;
+  for (const fem::SliceFem& slice : r.slices)
+    if (slice.peak_pressure_pa > 0)
+      lambdas.push_back(fem::load_ratio(slice.load.load_n_per_m, slice.load.radius_m, table.effective_modulus_pa()));
+  if (lambdas.empty())
+    return 0;
+  table.cover(comm, *std::min_element(lambdas.begin(), lambdas.end()),
+              *std::max_element(lambdas.begin(), lambdas.end()));
+  double worst = 0;
+  std::size_t k = 0;
+  for (const fem::SliceFem& slice : r.slices)
+    if (slice.peak_pressure_pa > 0)
+      worst = std::max(worst, std::abs(slice.hertz_peak_pressure_pa * table.ratio(lambdas[k++]) /
+                                           slice.peak_pressure_pa - 1));
+  return worst;
 }
 
 /// The fuller model of a solved orientation: its whole ruling as one 3D slab
@@ -216,6 +200,18 @@ void check_with_slab(MPI_Comm comm, FemSdsOrientation& r, const FemSdsSettings& 
         comm, {ruling.length_m, ruling.start_radius_m, ruling.end_radius_m, s.normal_load_n, {0.0, 0.0}}, r.slices,
         settings));
   }
+}
+
+/// Rank 0's lines for the loop's scores.
+void log_loop(const LoopSds& loop, const fem::SliceScaling& table)
+{
+  auto text = [](const std::optional<double>& v) { return v ? fmt::format("{:.4g}", *v) : std::string("singular"); };
+  spdlog::info("loop of {} samples ({} singular): point-Hertz SDS {}, line-Hertz SDS {}, FEM-SDS {}; FEM table {} "
+               "solves ({} per decade, {:.1f} s), K-to-2K change {:+.3f} %, half-samples change {:+.3f} %{}",
+               loop.samples, loop.singular_samples, text(loop.point_hertz.value), text(loop.line_hertz.value),
+               text(loop.fem.value), loop.fem_solves, loop.nodes_per_decade, table.wall_s(),
+               100 * loop.table_change(), 100 * loop.fem_rulings.sample_change(),
+               loop.converged() ? "" : " - NOT CONVERGED");
 }
 
 /// Rank 0's line for an orientation just evaluated.
@@ -298,60 +294,6 @@ std::vector<double> slice_fractions(double loaded_from, double loaded_to, double
   return fractions;
 }
 
-std::vector<double> mapping_fractions(double loaded_from, double loaded_to, int points)
-{
-  std::vector<double> along;
-  for (int k = 0; k < points; ++k)
-    along.push_back(loaded_from + (loaded_to - loaded_from) * (k + 0.5) / points);
-  return along;
-}
-
-double line_hertz_peak(double force_n, double centre_of_pressure, const oracle::Ruling& ruling,
-                       double effective_modulus_pa, double f)
-{
-  const double q = oracle::line_load(force_n, centre_of_pressure, ruling.length_m, f);
-  const double radius = (1 - f) * ruling.start_radius_m + f * ruling.end_radius_m;
-  return q > 0 ? std::sqrt(q * effective_modulus_pa / (std::numbers::pi * radius)) : 0.0;
-}
-
-std::vector<std::pair<int, double>> peaks_per_face(std::span<const int> faces, std::span<const double> along,
-                                                   std::span<const double> slice_fractions,
-                                                   std::span<const double> slice_peaks)
-{
-  std::map<int, double> peak;
-  for (std::size_t k = 0; k < along.size(); ++k)
-    peak[faces[k]] = std::max(peak[faces[k]], interpolate(slice_fractions, slice_peaks, along[k]));
-  return {peak.begin(), peak.end()};
-}
-
-FemSdsScores fem_sds_scores(std::span<const FemSdsOrientation> orientations,
-                            const Eigen::VectorXd& face_peak_pressure_pa, const Eigen::VectorXd& face_areas)
-{
-  Eigen::VectorXd analytic_all = Eigen::VectorXd::Zero(face_areas.size()), analytic = analytic_all,
-                  line = analytic_all, fem = analytic_all;
-  std::size_t solved = 0;
-  for (const FemSdsOrientation& r : orientations)
-  {
-    for (const int f : r.locus.oracle_faces)
-    {
-      analytic_all[f] += face_peak_pressure_pa[f];
-      if (r.solved)
-        analytic[f] += face_peak_pressure_pa[f];
-    }
-    solved += r.solved;
-    for (const auto& [f, p] : r.fem_faces)
-      fem[f] += p;
-    for (const auto& [f, p] : r.line_faces)
-      line[f] += p;
-  }
-  auto score = [&](const Eigen::VectorXd& accumulator) -> std::optional<double> {
-    if (solved > 0 || accumulator.sum() > 0)
-      return oracle::distribution_score(accumulator, face_areas);
-    return std::nullopt;
-  };
-  return {score(analytic), score(analytic_all), score(line), score(fem)};
-}
-
 FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s)
 {
   const auto start = std::chrono::steady_clock::now();
@@ -368,17 +310,29 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s)
   const contact::FaceCurvature curvature = contact::face_curvature(mesh, m.hertz, m.compat);
   const contact::FacePressure pressure = contact::face_pressure(curvature.effective_radius_m, m.hertz, m.compat);
   const oracle::FaceCones cones = oracle::face_cones(mesh);
-  const OrientationSource source
+  const LoopSource source
       = s.oracle == OrientationOracle::rolling ? rolling_source(s) : rigid_source(s, m, body);
   result.source = source.description;
-  const std::vector<std::size_t> picks = oracle::stratified_samples(source.rotations.size(), s.orientations, s.seed);
   if (rank == 0)
-    spdlog::info("fem-sds {}: {}; {} orientations (seed {})", result.body, source.description, picks.size(), s.seed);
+    spdlog::info("fem-sds {}: {}; every sample scored, {} orientations solved directly (seed {})", result.body,
+                 source.description, s.orientations, s.seed);
 
+  fem::SliceScaling table(m.slice, s.table_nodes_per_decade);
+  LoopSdsSettings loop_settings;
+  loop_settings.normal_load_n = s.normal_load_n;
+  loop_settings.crease_margin = s.crease_margin;
+  loop_settings.map_points = s.map_points;
+  loop_settings.locus = m.locus;
+  loop_settings.tolerance = s.tolerance;
+  result.loop = loop_sds(comm, source, body, pressure.peak_pressure_pa, cones, table, loop_settings);
+  if (rank == 0)
+    log_loop(result.loop, table);
+
+  const std::vector<std::size_t> picks = oracle::stratified_samples(source.rotations.size(), s.orientations, s.seed);
   for (const std::size_t pick : picks)
   {
     FemSdsOrientation& r
-        = result.orientations.emplace_back(evaluate_orientation(comm, source, pick, s, m, body, pressure, cones));
+        = result.orientations.emplace_back(evaluate_orientation(comm, source, pick, s, m, body, pressure));
     r.index = result.orientations.size() - 1;
     result.reaching_crease += !r.locus.creases.empty();
     result.standing_on_crease += !r.solved && !r.locus.ruling;
@@ -386,6 +340,8 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s)
     {
       ++result.fem_solved;
       result.reaching_obtuse_rim += r.obtuse_loaded_rims() > 0;
+      r.table_vs_direct = table_against_direct(comm, r, table);
+      result.table_vs_direct_worst = std::max(result.table_vs_direct_worst, r.table_vs_direct);
       slab_check_if_due(comm, result, r, s, m, rank == 0);
       result.worst_refinement_change
           = std::max(result.worst_refinement_change, std::abs(r.fem_peak_refined_pa / r.fem_peak_pa - 1));
@@ -394,7 +350,9 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s)
     if (rank == 0)
       log_orientation(r);
   }
-  result.sds = fem_sds_scores(result.orientations, pressure.peak_pressure_pa, body.face_areas);
+  for (const auto& [k, node] : table.nodes())
+    result.table.push_back(node);
+  result.table_wall_s = table.wall_s();
   result.effective_modulus_pa = m.effective_modulus_pa;
   result.analytic_effective_modulus_pa = pressure.effective_modulus_pa;
   result.n_faces = static_cast<std::int64_t>(mesh.faces.rows());

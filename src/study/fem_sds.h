@@ -1,20 +1,21 @@
 #pragma once
-// FEM-SDS: FEM contact stress at orientations sampled from an oracle run,
-// against the preprint's analytic SDS (README "FEM contact stress at sampled
-// orientations").
+// FEM-SDS: the SDS of a whole rolling loop under FEM contact stress, beside
+// the preprint's point-Hertz SDS and the line-Hertz SDS of the same samples
+// (docs/fem-sds.md).
 //
-// Per orientation: the contact locus (contact/contact_locus.h), the
-// preprint's point-Hertz peak over the faces its oracle counts, the
-// line-contact Hertz slices, and the plane-strain FEM of the slices at two
-// refinement levels (fem/slice_contact.h), away from the creases the contact
-// reaches; optionally the whole ruling as one 3D slab (fem/slab_contact.h).
-// Over the orientations: the SDS template (oracle/distribution_score.h)
-// applied to the preprint's face pressures, to the line-Hertz and to the FEM
-// peak pressures mapped back onto the faces along each ruling.
+// The loop: one loop of real rolling (default) or the rigid-body oracle's
+// samples. Every sample is scored (study/loop_sds.h) through the FEM
+// slices' exact scaling (fem/slice_scaling.h); the table of FEM solves is
+// refined until doubling it changes FEM-SDS by less than the tolerance.
+// Beside it, K orientations drawn from the loop are solved directly, slice
+// by slice at two mesh levels (fem/slice_contact.h): the check of the table
+// against direct FEM, and the per-orientation table; optionally the whole
+// ruling as one 3D slab (fem/slab_contact.h), the fuller model.
 #include "contact/contact_locus.h"
 #include "contact/contact_parameters.h"
 #include "fem/slab_contact.h"
 #include "fem/slice_contact.h"
+#include "study/loop_sds.h"
 #include "geometry/body.h"
 #include <Eigen/Core>
 #include <array>
@@ -42,7 +43,14 @@ struct FemSdsSettings
   /// spec: the contact locus needs its exact circles, not a mesh file.
   geometry::BodySpec body;
   OrientationOracle oracle = OrientationOracle::rolling;
-  std::size_t orientations = 12;   ///< K, one per equal stratum of the oracle run
+  /// Samples of the rolling loop, every one scored; the loop is resampled so
+  /// that each body's loop has this many whatever its period.
+  long samples_per_loop = 16384;
+  int table_nodes_per_decade = 4;  ///< FEM table's start (refined while not converged)
+  double tolerance = 0.01;         ///< relative change of FEM-SDS that counts as converged
+  /// Orientations solved directly (slices at two levels), one per equal
+  /// stratum of the loop: the check of the table, and the per-orientation table.
+  std::size_t orientations = 2;
   std::uint64_t seed = 1;          ///< of the stratified sampling
   double barrier_energy_excess = 0.1; ///< rolling oracle: kinetic energy / potential barrier - 1
   int runs = 3;                    ///< rigid oracle: runs with the reference's first initial spins
@@ -82,7 +90,9 @@ struct FemSdsOrientation
   std::int64_t dofs = 0;
   int newton_iterations = 0, krylov_iterations = 0;
   double wall_s = 0;
-  std::vector<std::pair<int, double>> fem_faces, line_faces; ///< (face, peak) along the ruling
+  /// Largest |table / direct - 1| of the slices' FEM peaks: the scaled table
+  /// (fem/slice_scaling.h) against the slices solved as they are.
+  double table_vs_direct = 0;
   std::vector<fem::SlabFem> slab;          ///< the 3D check at two section levels, if run
   /// Lean of the body's rims at the ruling's start and end (contact/rim_overhang.h):
   /// > 0 an obtuse edge, singular against the rigid plane where loaded.
@@ -97,16 +107,6 @@ struct FemSdsOrientation
   double slab_slice_difference(const fem::SlabFem& level) const;
 };
 
-/// The SDS of each accumulator; none when no orientation was solved and the
-/// accumulator is empty (+infinity when solved ones left it empty).
-struct FemSdsScores
-{
-  std::optional<double> analytic;                  ///< preprint's face pressures, solved orientations
-  std::optional<double> analytic_all_orientations; ///< the same over every orientation
-  std::optional<double> line_hertz;                ///< line-Hertz peaks mapped onto the faces
-  std::optional<double> fem;                       ///< FEM peaks mapped onto the faces
-};
-
 struct FemSdsResult
 {
   std::string body;                        ///< geometry::body_label
@@ -114,7 +114,10 @@ struct FemSdsResult
   std::string source;                      ///< the oracle run, in words
   std::vector<FemSdsOrientation> orientations;
   std::size_t fem_solved = 0, reaching_crease = 0, standing_on_crease = 0, reaching_obtuse_rim = 0;
-  FemSdsScores sds;
+  LoopSds loop;                            ///< the scores over every sample of the loop
+  std::vector<fem::SliceScaling::Node> table; ///< the FEM solves every sample's pressures come from
+  double table_wall_s = 0;                 ///< FEM time of the table
+  double table_vs_direct_worst = 0;        ///< over the directly solved orientations
   double worst_refinement_change = 0;      ///< largest |FEM finer / FEM - 1| over solved orientations
   double max_orientation_wall_s = 0;
   std::size_t slab_checked = 0, slab_skipped = 0;
@@ -144,26 +147,4 @@ const char* support_name(oracle::CircleSupportKind kind);
 /// loaded_from + margin to loaded_to - margin, both included.
 std::vector<double> slice_fractions(double loaded_from, double loaded_to, double crease_margin, int slices);
 
-/// Fractions of the ruling mapped onto the faces: the midpoints of `points`
-/// equal parts of [loaded_from, loaded_to].
-std::vector<double> mapping_fractions(double loaded_from, double loaded_to, int points);
-
-/// Line-contact Hertz peak sqrt(q E* / (pi R)) at fraction `f` of a ruling of
-/// length L, radius R(f) linear from its start to its end radius, carrying
-/// `force_n` with centre of pressure c (oracle::line_load); 0 where unloaded.
-double line_hertz_peak(double force_n, double centre_of_pressure, const oracle::Ruling& ruling,
-                       double effective_modulus_pa, double f);
-
-/// (face, largest peak) over the mapping points: the peak at each point
-/// interpolated linearly from the slices' (held at the outermost slices'
-/// values beyond them), `faces[k]` the face holding point `along[k]`.
-std::vector<std::pair<int, double>> peaks_per_face(std::span<const int> faces, std::span<const double> along,
-                                                   std::span<const double> slice_fractions,
-                                                   std::span<const double> slice_peaks);
-
-/// The four SDS of the orientations: the preprint's per-face pressures
-/// `face_peak_pressure_pa` summed over each orientation's oracle faces, and
-/// its fem_faces / line_faces, each through the score template with `face_areas`.
-FemSdsScores fem_sds_scores(std::span<const FemSdsOrientation> orientations,
-                            const Eigen::VectorXd& face_peak_pressure_pa, const Eigen::VectorXd& face_areas);
 } // namespace rollcheck::study

@@ -78,9 +78,7 @@ void add_fem_json(nlohmann::json& j, const FemSdsOrientation& r)
   j["slices"] = nlohmann::json::array();
   for (const fem::SliceFem& s : r.slices)
     j["slices"].push_back(slice_json(s));
-  j["fem_faces"] = nlohmann::json::array();
-  for (const auto& [f, p] : r.fem_faces)
-    j["fem_faces"].push_back({f, json_number(p)});
+  j["table_vs_direct"] = json_number(r.table_vs_direct);
   if (r.slab.empty())
     return;
   j["slab"] = nlohmann::json::array();
@@ -125,22 +123,44 @@ nlohmann::json to_json(const FemSdsResult& result)
     if (r.solved)
       worst_fem_vs_line_hertz = std::max(worst_fem_vs_line_hertz, std::abs(r.fem_peak_pa / r.line_hertz_peak_pa - 1));
   }
-  const bool both = result.sds.fem && result.sds.line_hertz && *result.sds.line_hertz > 0;
+  const LoopSds& loop = result.loop;
+  const bool both = loop.fem.value && loop.line_hertz.value && *loop.line_hertz.value > 0;
+  nlohmann::json table = nlohmann::json::array();
+  for (const fem::SliceScaling::Node& node : result.table)
+    table.push_back({{"load_ratio", json_number(node.lambda)},
+                     {"fem_over_hertz", json_number(node.ratio)},
+                     {"fem_over_hertz_refined", json_number(node.refined_ratio)},
+                     {"dofs", node.fem.dofs},
+                     {"refined_dofs", node.fem.refined_dofs},
+                     {"newton_iterations", node.fem.newton_iterations},
+                     {"wall_s", json_number(node.fem.wall_s)}});
   return {
       {"fem_vs_line_hertz_worst", json_number(worst_fem_vs_line_hertz)},
-      {"fem_sds_over_line_hertz_sds", both ? json_number(*result.sds.fem / *result.sds.line_hertz) : nullptr},
+      {"fem_sds_over_line_hertz_sds", both ? json_number(*loop.fem.value / *loop.line_hertz.value) : nullptr},
       {"body", result.body},
       {"oracle", oracle_name(result.oracle)},
       {"source", result.source},
+      {"samples", loop.samples},
+      {"singular_samples", loop.singular_samples},
+      {"analytic_sds", score_json(loop.point_hertz.value)},
+      {"line_hertz_sds", score_json(loop.line_hertz.value)},
+      {"fem_sds", score_json(loop.fem.value)},
+      {"fem_sds_half_table", score_json(loop.fem_half_table)},
+      {"fem_sds_table_change", to_json(loop)["fem_sds_table_change"]},
+      {"fem_sds_sample_change", to_json(loop)["fem_sds_rulings"]["sample_change"]},
+      {"fem_solves", loop.fem_solves},
+      {"fem_solves_half_table", loop.fem_solves_half_table},
+      {"converged", loop.converged()},
+      {"fem_sds_status", loop.status()},
+      {"loop", to_json(loop)},
+      {"fem_table", table},
+      {"fem_table_wall_s", json_number(result.table_wall_s)},
+      {"table_vs_direct_worst", json_number(result.table_vs_direct_worst)},
       {"orientations", result.orientations.size()},
       {"fem_solved_orientations", result.fem_solved},
       {"orientations_reaching_crease", result.reaching_crease},
       {"orientations_standing_on_crease", result.standing_on_crease},
       {"orientations_reaching_obtuse_rim", result.reaching_obtuse_rim},
-      {"analytic_sds", score_json(result.sds.analytic)},
-      {"analytic_sds_all_orientations", score_json(result.sds.analytic_all_orientations)},
-      {"line_hertz_sds", score_json(result.sds.line_hertz)},
-      {"fem_sds", score_json(result.sds.fem)},
       {"fem_peak_worst_refinement_change", json_number(result.worst_refinement_change)},
       {"max_orientation_wall_s", json_number(result.max_orientation_wall_s)},
       {"slab_checked_orientations", result.slab_checked},
@@ -152,7 +172,7 @@ nlohmann::json to_json(const FemSdsResult& result)
       {"wall_s", json_number(result.wall_s)},
       {"per_orientation", per_orientation},
       {"contact_model",
-       "developable bodies touch the plane along a ruling: the preprint's point-contact Hertz with R = 1/sqrt(k1 k2) "
+       "every sample of the loop is scored; developable bodies touch the plane along a ruling: the preprint's point-contact Hertz with R = 1/sqrt(k1 k2) "
        "does not apply there (k1 k2 = 0 on the exact surface); the FEM and line-Hertz columns treat the ruling as "
        "plane-strain slices; peaks are taken away from the ruling's ends, where it meets the body's rims (creases: "
        "singular between two elastic bodies, not plane strain in any case; the 3D slab check shows the end)"}};

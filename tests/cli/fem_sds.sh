@@ -43,8 +43,14 @@ for o in r["per_orientation"]:
     assert o["dofs"] > 0 and o["newton_iterations"] > 0 and o["wall_s"] > 0
     print(f"cylinder t = {o['time_s']:.3f} s: FEM p0 {o['fem_peak_pa']:.6g} Pa, closed form {p0:.6g} Pa, "
           f"finer {100 * o['fem_peak_refinement_change']:+.3f} %")
-# Uniform pressure along the generator: FEM-SDS equals line-Hertz SDS to the FEM's accuracy.
+# Uniform pressure along the generator: FEM-SDS equals line-Hertz SDS to the FEM's accuracy,
+# over every sample of the loop, converged in the table and in the samples.
 assert abs(r["fem_sds"] / r["line_hertz_sds"] - 1) < 0.005, (r["fem_sds"], r["line_hertz_sds"])
+assert r["samples"] == 16384 and r["singular_samples"] == 0 and r["loop"]["samples_by_contact"] == {"ruling": 16384}
+assert r["converged"] and r["fem_sds_status"] == "converged", r["fem_sds_status"]
+assert abs(r["fem_sds_table_change"]) < 0.01 and abs(r["fem_sds_sample_change"]) < 0.01
+assert r["fem_solves"] >= r["fem_solves_half_table"] >= 2
+assert len(r["fem_table"]) >= r["fem_solves"] and r["table_vs_direct_worst"] < 0.003
 slab = json.load(open(f"{d}/slab.json"))
 assert slab["slab_checked_orientations"] == 1 and slab["slab_worst_peak_difference"] < 0.02, slab
 levels = slab["per_orientation"][0]["slab"]
@@ -62,6 +68,11 @@ assert len(unsolved) == rigid["orientations"] - rigid["fem_solved_orientations"]
 for o in unsolved:
     assert o["reaches_crease"] and "fem_peak_pa" not in o, o
 print(f"rigid oracle on the oloid: {len(unsolved)} of {rigid['orientations']} orientations stand on a crease")
+# Its samples on a rim point are named and make the FEM and line-Hertz scores singular, not dropped.
+loop = rigid["loop"]
+assert rigid["singular_samples"] == loop["samples"] - loop["samples_by_contact"].get("ruling", 0) > 0, loop
+assert rigid["fem_sds"] is None and rigid["line_hertz_sds"] is None and rigid["analytic_sds"] > 0
+assert rigid["fem_sds_status"].startswith("singular:") and "rim point" in rigid["fem_sds_status"], rigid["fem_sds_status"]
 assert rigid["orientations_standing_on_crease"] == sum(o["support"] != "segment" for o in rigid["per_orientation"])
 PY
 expect_input_error() { # args...; expected text
@@ -72,6 +83,8 @@ expect_input_error() { # args...; expected text
   fi
 }
 expect_input_error "orientations" fem-sds --body cylinder --orientations 0
+expect_input_error "samples_per_loop" fem-sds --body cylinder --samples 1
+expect_input_error "tolerance" fem-sds --body cylinder --tolerance 0
 expect_input_error "crease_margin" fem-sds --body cylinder --crease-margin 0.3
 expect_input_error "normal_load_n" fem-sds --body cylinder --load nan
 expect_input_error "mesh_file" fem-sds --mesh "$tmp/none.obj"

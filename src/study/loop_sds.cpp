@@ -1,0 +1,312 @@
+// SDS over a whole rolling loop (study/loop_sds.h).
+#include "study/loop_sds.h"
+#include "core/error.h"
+#include "core/json_number.h"
+#include "oracle/distribution_score.h"
+#include <algorithm>
+#include <chrono>
+#include <fmt/format.h>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace rollcheck::study
+{
+namespace
+{
+/// A point along a sample's loaded ruling, as both pressure models need it.
+struct MappedPoint
+{
+  int face = 0;
+  double line_hertz_pa = 0;
+  double load_ratio = 0;
+  bool even_sample = false;
+};
+
+/// One rank's share of the samples: the accumulators the scores need.
+struct SampleShare
+{
+  Eigen::VectorXd point_all, point_even, line_all, line_even;
+  std::vector<std::vector<MappedPoint>> rulings; ///< the mapped points of each ruling sample
+  std::array<std::size_t, 4> by_contact{};
+  double lambda_min = std::numeric_limits<double>::infinity(), lambda_max = 0;
+};
+
+SampleContact classify(const contact::ContactLocus& locus)
+{
+  if (locus.ruling)
+    return locus.in_equilibrium ? SampleContact::ruling : SampleContact::tipping;
+  return locus.support.kind == oracle::CircleSupportKind::point ? SampleContact::rim_point : SampleContact::flat_face;
+}
+
+/// Adds the largest value each face holds among `points` (value(point)) to `all`, and to `even` if even.
+template <typename Value>
+void add_face_peaks(const std::vector<MappedPoint>& points, Value value, Eigen::VectorXd& all, Eigen::VectorXd& even)
+{
+  std::vector<std::pair<int, double>> peaks;
+  for (const MappedPoint& p : points)
+  {
+    const double v = value(p);
+    const auto it = std::find_if(peaks.begin(), peaks.end(), [&](const auto& fp) { return fp.first == p.face; });
+    if (it == peaks.end())
+      peaks.emplace_back(p.face, v);
+    else
+      it->second = std::max(it->second, v);
+  }
+  for (const auto& [face, peak] : peaks)
+  {
+    all[face] += peak;
+    if (!points.empty() && points.front().even_sample)
+      even[face] += peak;
+  }
+}
+
+std::vector<MappedPoint> map_ruling(const contact::ContactLocus& locus, const oracle::FaceCones& cones,
+                                    double effective_modulus_pa, bool even, const LoopSdsSettings& s)
+{
+  const oracle::Ruling& ruling = *locus.ruling;
+  const std::vector<double> along = mapping_fractions(locus.loaded_from, locus.loaded_to, s.map_points);
+  const std::vector<int> faces = contact::faces_along_ruling(cones, locus, along);
+  std::vector<MappedPoint> points;
+  for (std::size_t k = 0; k < along.size(); ++k)
+  {
+    const double f = held_fraction(along[k], locus.loaded_from, locus.loaded_to, s.crease_margin);
+    const double q = oracle::line_load(s.normal_load_n, locus.centre_of_pressure, ruling.length_m, f);
+    const double radius = (1 - f) * ruling.start_radius_m + f * ruling.end_radius_m;
+    if (!(q > 0) || !(radius > 0))
+      throw ComputationError("loop SDS: a mapping point inside the loaded ruling has no load or no radius");
+    points.push_back({faces[k],
+                      line_hertz_peak(s.normal_load_n, locus.centre_of_pressure, ruling, effective_modulus_pa, f),
+                      fem::load_ratio(q, radius, effective_modulus_pa), even});
+  }
+  return points;
+}
+
+SampleShare share_of_samples(MPI_Comm comm, const LoopSource& source, const oracle::RollingBody& body,
+                             const Eigen::VectorXd& face_peak_pressure_pa, const oracle::FaceCones& cones,
+                             double effective_modulus_pa, const LoopSdsSettings& s)
+{
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  const auto n_faces = body.face_areas.size();
+  SampleShare share{Eigen::VectorXd::Zero(n_faces), Eigen::VectorXd::Zero(n_faces), Eigen::VectorXd::Zero(n_faces),
+                    Eigen::VectorXd::Zero(n_faces), {}, {}};
+  for (std::size_t j = static_cast<std::size_t>(rank); j < source.rotations.size(); j += static_cast<std::size_t>(size))
+  {
+    const std::vector<int>* counted = source.oracle_faces.empty() ? nullptr : &source.oracle_faces[j];
+    const contact::ContactLocus locus
+        = contact::contact_locus(source.circles, source.centre_of_mass_m, body, source.rotations[j], s.locus, counted);
+    const bool even = j % 2 == 0;
+    for (const int f : locus.oracle_faces)
+    {
+      share.point_all[f] += face_peak_pressure_pa[f];
+      if (even)
+        share.point_even[f] += face_peak_pressure_pa[f];
+    }
+    const SampleContact contact = classify(locus);
+    ++share.by_contact[static_cast<std::size_t>(contact)];
+    if (contact != SampleContact::ruling)
+      continue;
+    std::vector<MappedPoint> points = map_ruling(locus, cones, effective_modulus_pa, even, s);
+    for (const MappedPoint& p : points)
+    {
+      share.lambda_min = std::min(share.lambda_min, p.load_ratio);
+      share.lambda_max = std::max(share.lambda_max, p.load_ratio);
+    }
+    add_face_peaks(points, [](const MappedPoint& p) { return p.line_hertz_pa; }, share.line_all, share.line_even);
+    share.rulings.push_back(std::move(points));
+  }
+  return share;
+}
+
+void sum_over_ranks(MPI_Comm comm, Eigen::VectorXd& v)
+{
+  MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_DOUBLE, MPI_SUM, comm);
+}
+
+/// The SDS of a summed accumulator pair.
+ConvergedScore score_pair(MPI_Comm comm, Eigen::VectorXd all, Eigen::VectorXd even, const Eigen::VectorXd& areas,
+                          bool any)
+{
+  sum_over_ranks(comm, all);
+  sum_over_ranks(comm, even);
+  if (!any)
+    return {};
+  return {oracle::distribution_score(all, areas), oracle::distribution_score(even, areas)};
+}
+
+/// FEM-SDS over the ruling samples with the table of `stride`.
+ConvergedScore fem_score(MPI_Comm comm, const SampleShare& share, const fem::SliceScaling& table, int stride,
+                         const Eigen::VectorXd& areas, bool any)
+{
+  Eigen::VectorXd all = Eigen::VectorXd::Zero(areas.size()), even = all;
+  for (const std::vector<MappedPoint>& points : share.rulings)
+    add_face_peaks(
+        points, [&](const MappedPoint& p) { return p.line_hertz_pa * table.ratio(p.load_ratio, stride); }, all,
+        even);
+  return score_pair(comm, std::move(all), std::move(even), areas, any);
+}
+
+/// Nodes of the table with stride `stride` that interpolation over [lo, hi] uses.
+std::size_t nodes_used(const fem::SliceScaling& table, double lo, double hi, int stride, double& worst_change)
+{
+  const double n = table.nodes_per_decade();
+  const int first = stride * static_cast<int>(std::floor(n * std::log10(lo) / stride));
+  const int last = stride * static_cast<int>(std::ceil(n * std::log10(hi) / stride));
+  std::size_t count = 0;
+  for (const auto& [k, node] : table.nodes())
+    if (k >= first && k <= last && k % stride == 0)
+    {
+      ++count;
+      worst_change = std::max(worst_change, std::abs(node.refined_ratio / node.ratio - 1));
+    }
+  return count;
+}
+} // namespace
+
+const char* sample_contact_name(SampleContact contact)
+{
+  static const char* names[] = {"ruling", "rim point", "flat face", "tipping ruling"};
+  return names[static_cast<int>(contact)];
+}
+
+double ConvergedScore::sample_change() const
+{
+  return value && half_samples ? *value / *half_samples - 1 : std::numeric_limits<double>::quiet_NaN();
+}
+
+double LoopSds::table_change() const
+{
+  return fem_rulings.value && fem_half_table ? *fem_rulings.value / *fem_half_table - 1
+                                             : std::numeric_limits<double>::quiet_NaN();
+}
+
+bool LoopSds::converged() const
+{
+  return std::abs(table_change()) < tolerance && std::abs(fem_rulings.sample_change()) < tolerance;
+}
+
+std::string LoopSds::status() const
+{
+  if (singular_samples > 0)
+  {
+    std::string kinds;
+    for (const auto& [name, count] : samples_by_contact)
+      if (name != sample_contact_name(SampleContact::ruling))
+        kinds += fmt::format("{}{} on a {}", kinds.empty() ? "" : ", ", count, name);
+    return fmt::format("singular: {} of {} samples stand on a sharp edge ({})", singular_samples, samples, kinds);
+  }
+  if (converged())
+    return "converged";
+  return fmt::format("not converged: doubling the FEM table changes FEM-SDS by {:+.2f} %, halving the samples by "
+                     "{:+.2f} % (tolerance {:.2g} %)",
+                     100 * table_change(), 100 * fem_rulings.sample_change(), 100 * tolerance);
+}
+
+std::vector<double> mapping_fractions(double loaded_from, double loaded_to, int points)
+{
+  std::vector<double> along;
+  for (int k = 0; k < points; ++k)
+    along.push_back(loaded_from + (loaded_to - loaded_from) * (k + 0.5) / points);
+  return along;
+}
+
+double line_hertz_peak(double force_n, double centre_of_pressure, const oracle::Ruling& ruling,
+                       double effective_modulus_pa, double f)
+{
+  const double q = oracle::line_load(force_n, centre_of_pressure, ruling.length_m, f);
+  const double radius = (1 - f) * ruling.start_radius_m + f * ruling.end_radius_m;
+  return q > 0 ? std::sqrt(q * effective_modulus_pa / (std::numbers::pi * radius)) : 0.0;
+}
+
+double held_fraction(double f, double loaded_from, double loaded_to, double crease_margin)
+{
+  const double lo = loaded_from + crease_margin, hi = loaded_to - crease_margin;
+  return lo <= hi ? std::clamp(f, lo, hi) : 0.5 * (loaded_from + loaded_to);
+}
+
+LoopSds loop_sds(MPI_Comm comm, const LoopSource& source, const oracle::RollingBody& body,
+                 const Eigen::VectorXd& face_peak_pressure_pa, const oracle::FaceCones& cones,
+                 fem::SliceScaling& table, const LoopSdsSettings& s)
+{
+  if (source.rotations.empty())
+    throw ComputationError("loop SDS: the loop has no samples");
+  const auto start = std::chrono::steady_clock::now();
+  SampleShare share
+      = share_of_samples(comm, source, body, face_peak_pressure_pa, cones, table.effective_modulus_pa(), s);
+  LoopSds r;
+  r.samples = source.rotations.size();
+  r.tolerance = s.tolerance;
+  MPI_Allreduce(MPI_IN_PLACE, share.by_contact.data(), 4, MPI_UNSIGNED_LONG, MPI_SUM, comm);
+  for (std::size_t c = 0; c < share.by_contact.size(); ++c)
+    if (share.by_contact[c] > 0)
+      r.samples_by_contact[sample_contact_name(static_cast<SampleContact>(c))] = share.by_contact[c];
+  const std::size_t rulings = share.by_contact[static_cast<std::size_t>(SampleContact::ruling)];
+  r.singular_samples = r.samples - rulings;
+  const Eigen::VectorXd& areas = body.face_areas;
+  r.point_hertz = score_pair(comm, share.point_all, share.point_even, areas, true);
+  r.line_hertz_rulings = score_pair(comm, share.line_all, share.line_even, areas, rulings > 0);
+  MPI_Allreduce(MPI_IN_PLACE, &share.lambda_min, 1, MPI_DOUBLE, MPI_MIN, comm);
+  MPI_Allreduce(MPI_IN_PLACE, &share.lambda_max, 1, MPI_DOUBLE, MPI_MAX, comm);
+  r.samples_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  MPI_Allreduce(MPI_IN_PLACE, &r.samples_wall_s, 1, MPI_DOUBLE, MPI_MAX, comm);
+  if (rulings > 0)
+  {
+    r.load_ratio_min = share.lambda_min;
+    r.load_ratio_max = share.lambda_max;
+    while (true)
+    {
+      table.cover(comm, share.lambda_min, share.lambda_max);
+      r.fem_rulings = fem_score(comm, share, table, 1, areas, true);
+      r.fem_half_table = fem_score(comm, share, table, 2, areas, true).value;
+      if (std::abs(r.table_change()) < s.tolerance || 2 * table.nodes_per_decade() > s.max_nodes_per_decade)
+        break;
+      table.double_nodes();
+    }
+    r.nodes_per_decade = table.nodes_per_decade();
+    r.fem_solves = nodes_used(table, share.lambda_min, share.lambda_max, 1, r.worst_refinement_change);
+    r.fem_solves_half_table = nodes_used(table, share.lambda_min, share.lambda_max, 2, r.worst_refinement_change);
+  }
+  if (r.singular_samples == 0)
+  {
+    r.line_hertz = r.line_hertz_rulings;
+    r.fem = r.fem_rulings;
+  }
+  return r;
+}
+
+nlohmann::json to_json(const LoopSds& loop)
+{
+  auto optional_number = [](const std::optional<double>& v) { return v ? json_number(*v) : nlohmann::json(nullptr); };
+  auto change = [](double v) { return std::isnan(v) ? nlohmann::json(nullptr) : json_number(v); };
+  auto score = [&](const ConvergedScore& c) {
+    return nlohmann::json{{"value", optional_number(c.value)},
+                          {"half_samples", optional_number(c.half_samples)},
+                          {"sample_change", change(c.sample_change())}};
+  };
+  nlohmann::json by_contact = nlohmann::json::object();
+  for (const auto& [name, count] : loop.samples_by_contact)
+    by_contact[name] = count;
+  return {{"samples", loop.samples},
+          {"samples_by_contact", by_contact},
+          {"singular_samples", loop.singular_samples},
+          {"point_hertz_sds", score(loop.point_hertz)},
+          {"line_hertz_sds", score(loop.line_hertz)},
+          {"fem_sds", score(loop.fem)},
+          {"line_hertz_sds_rulings", score(loop.line_hertz_rulings)},
+          {"fem_sds_rulings", score(loop.fem_rulings)},
+          {"fem_sds_half_table", optional_number(loop.fem_half_table)},
+          {"fem_sds_table_change", change(loop.table_change())},
+          {"fem_solves", loop.fem_solves},
+          {"fem_solves_half_table", loop.fem_solves_half_table},
+          {"table_nodes_per_decade", loop.nodes_per_decade},
+          {"load_ratio_min", json_number(loop.load_ratio_min)},
+          {"load_ratio_max", json_number(loop.load_ratio_max)},
+          {"fem_worst_refinement_change", json_number(loop.worst_refinement_change)},
+          {"tolerance", json_number(loop.tolerance)},
+          {"converged", loop.converged()},
+          {"status", loop.status()},
+          {"samples_wall_s", json_number(loop.samples_wall_s)}};
+}
+} // namespace rollcheck::study

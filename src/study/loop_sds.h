@@ -1,0 +1,133 @@
+#pragma once
+// SDS over every sample of a rolling loop, under three pressure models that
+// share the samples and the faces, so that they compare number for number:
+//
+//  - point Hertz, the preprint's: at each sample, the faces within its
+//    threshold eps of the ground each add their point-Hertz peak pressure
+//    (contact/face_pressure.h);
+//  - line Hertz: the sample's contact ruling (contact/contact_locus.h) is
+//    loaded by F through the centre of mass (no-tension linear rule); at
+//    `map_points` points along its loaded part the plane-strain peak
+//    p_hertz = sqrt(q E* / (pi R)) (Johnson 1985, eq. 4.45) is taken, held at
+//    its value `crease_margin` of the ruling inside each loaded end (the
+//    slices stop short of the creases), and each face holding points adds
+//    the largest of them;
+//  - FEM: the same points with p_fem = p_hertz g(lambda), lambda = q / (E* R),
+//    the plane-strain penalty FEM's correction (fem/slice_scaling.h: exact
+//    by scaling, tabulated over the loop's range of lambda).
+//
+// A sample whose contact is not a ruling in equilibrium is named and scored
+// by what it is: on a rim point (the sharp edge of the hull) or on a flat
+// end face, or tipping (the centre of mass's foot outside the ruling, so the
+// load stands on the ruling's end, a rim point), the contact pressure of the
+// sharp edge is singular. Those samples add their point-Hertz pressures
+// (the preprint's formula is finite everywhere), and make the line-Hertz and
+// FEM scores singular: reported as such, with the scores over the rulings
+// beside them.
+//
+// Convergence, both reported: the samples (every sample against every other
+// one) and the FEM table (its nodes against every other node: K and 2K
+// solves); the table is refined, doubling its nodes per decade, until the
+// change is below `tolerance` or `max_nodes_per_decade` is reached.
+#include "contact/contact_locus.h"
+#include "fem/slice_scaling.h"
+#include "oracle/contact_density.h"
+#include "oracle/rolling_body.h"
+#include <Eigen/Core>
+#include <map>
+#include <mpi.h>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rollcheck::study
+{
+/// The contact model a sample is scored with.
+enum class SampleContact
+{
+  ruling,    ///< line contact in equilibrium: line Hertz and FEM along it
+  rim_point, ///< standing on a point of a rim: sharp edge, singular
+  flat_face, ///< lying on a flat end face: its sharp rim, singular
+  tipping    ///< a ruling whose static load falls outside it: on its end, singular
+};
+const char* sample_contact_name(SampleContact contact);
+
+/// The samples of one loop of one body: its exact circles and the orientations.
+struct LoopSource
+{
+  std::vector<oracle::Circle> circles;
+  Eigen::Vector3d centre_of_mass_m = Eigen::Vector3d::Zero();
+  std::vector<Eigen::Matrix3d> rotations;    ///< body to world, one per sample
+  std::vector<double> times_s;               ///< of each sample
+  std::vector<std::vector<int>> oracle_faces; ///< the rigid oracle's own counts; empty: the threshold
+  std::string description;
+};
+
+struct LoopSdsSettings
+{
+  double normal_load_n = 100.0;        ///< F, through the centre of mass (the preprint's)
+  double crease_margin = 0.05;         ///< fraction of the ruling held at each loaded end
+  int map_points = 64;                 ///< points along each ruling mapped onto the faces
+  contact::LocusSettings locus;
+  double tolerance = 0.01;             ///< relative change that counts as converged
+  int max_nodes_per_decade = 64;       ///< the FEM table's refinement stops here
+};
+
+/// An SDS over the loop's samples and over every other sample.
+struct ConvergedScore
+{
+  std::optional<double> value;         ///< none: singular, or nothing scored
+  std::optional<double> half_samples;  ///< over the even-numbered samples
+  double sample_change() const;        ///< value / half_samples - 1 (NaN if either is missing)
+};
+
+struct LoopSds
+{
+  std::size_t samples = 0;
+  std::map<std::string, std::size_t> samples_by_contact; ///< sample_contact_name -> count
+  std::size_t singular_samples = 0;    ///< not on a ruling in equilibrium
+  ConvergedScore point_hertz;          ///< every sample
+  ConvergedScore line_hertz, fem;      ///< every sample; none when a sample is singular
+  ConvergedScore line_hertz_rulings, fem_rulings; ///< the ruling samples alone
+  /// FEM-SDS (over the rulings) from the table with every other node: K solves.
+  std::optional<double> fem_half_table;
+  std::size_t fem_solves = 0;          ///< 2K: table nodes within the loop's range of lambda
+  std::size_t fem_solves_half_table = 0; ///< K
+  int nodes_per_decade = 0;
+  double load_ratio_min = 0, load_ratio_max = 0; ///< lambda over the mapped points
+  double worst_refinement_change = 0;  ///< over the nodes used: |g finer / g - 1|
+  double tolerance = 0;
+  double samples_wall_s = 0;           ///< loci and mapping
+  double table_change() const;         ///< fem_rulings / fem_half_table - 1
+  /// Both changes of the FEM-SDS (table, samples) below the tolerance.
+  bool converged() const;
+  /// "converged", "not converged (...)" or "singular (...)", in words.
+  std::string status() const;
+};
+
+/// The scores of `source` on `body` (the mesh the faces belong to, with its
+/// cones and the preprint's per-face point-Hertz pressures), extending and
+/// refining `table` as needed. Collective on `comm`: the ranks share the
+/// samples and the table's nodes; every rank gets the result.
+LoopSds loop_sds(MPI_Comm comm, const LoopSource& source, const oracle::RollingBody& body,
+                 const Eigen::VectorXd& face_peak_pressure_pa, const oracle::FaceCones& cones,
+                 fem::SliceScaling& table, const LoopSdsSettings& settings);
+
+/// Fractions of the ruling mapped onto the faces: the midpoints of `points`
+/// equal parts of [loaded_from, loaded_to].
+std::vector<double> mapping_fractions(double loaded_from, double loaded_to, int points);
+
+/// Line-contact Hertz peak sqrt(q E* / (pi R)) at fraction `f` of a ruling of
+/// length L, radius R(f) linear from its start to its end radius, carrying
+/// `force_n` with centre of pressure c (oracle::line_load); 0 where unloaded.
+double line_hertz_peak(double force_n, double centre_of_pressure, const oracle::Ruling& ruling,
+                       double effective_modulus_pa, double f);
+
+/// Where a mapping point's pressure is taken: `f` held inside
+/// [loaded_from + margin, loaded_to - margin] (the middle of the loaded part
+/// when that is empty).
+double held_fraction(double f, double loaded_from, double loaded_to, double crease_margin);
+
+nlohmann::json to_json(const LoopSds& loop);
+} // namespace rollcheck::study
