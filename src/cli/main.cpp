@@ -71,12 +71,14 @@ struct MpiSession
 };
 
 /// Whether the subcommand named in `args` needs MPI: every one but those that
-/// compute on one process with threads, unless a launcher (mpirun) started us.
-bool needs_mpi(const std::string& subcommand)
+/// compute on one process with threads (search, unless it scores FEM-SDS),
+/// unless a launcher (mpirun) started us.
+bool needs_mpi(const std::string& subcommand, const std::vector<std::string>& args)
 {
   static const std::set<std::string> without_mpi = {"", "mesh", "oracle", "search", "report", "audit", "optimize"};
   const bool launched = std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK") || std::getenv("PMI_RANK");
-  return launched || !without_mpi.contains(subcommand);
+  const bool fem_search = subcommand == "search" && std::ranges::find(args, "fem-sds") != args.end();
+  return launched || fem_search || !without_mpi.contains(subcommand);
 }
 
 std::string version_text()
@@ -166,7 +168,7 @@ int main(int argc, char** argv)
   // rollcheck's arguments end at `--`; PETSc's follow.
   const int ours = static_cast<int>(std::find(argv, argv + argc, std::string_view("--")) - argv);
   const std::vector<std::string> args(argv + 1, argv + ours);
-  MpiSession mpi(argc, argv, needs_mpi(subcommand_in(args)));
+  MpiSession mpi(argc, argv, needs_mpi(subcommand_in(args), args));
   spdlog::set_default_logger(spdlog::stderr_color_mt("rollcheck"));
   spdlog::set_pattern("[%^%l%$] %v");
 

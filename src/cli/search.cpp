@@ -20,9 +20,16 @@ namespace rollcheck::cli
 namespace
 {
 /// The search's options and the options that resolve into them (run_search).
+enum class SearchScore
+{
+  cds,    ///< the preprint's two-layer search
+  fem_sds ///< the family's FEM-SDS over whole rolling loops
+};
+
 struct SearchScene : oracle::SearchSettings
 {
-  std::string metric_list = "all", quirks, hdf5;
+  SearchScore score = SearchScore::cds;
+  std::string metric_list = "all", quirks, hdf5, out, python = "/usr/bin/python3";
   bool paper_compat = false;
   long table_rows = 20;
 };
@@ -36,6 +43,15 @@ const io::BoundSchema<SearchScene>& search_schema()
              "Grid of the reference code: quick (45 genomes, the preprint's), standard (616) or deep (1430)",
              {{"quick", oracle::SearchGrid::quick}, {"standard", oracle::SearchGrid::standard},
               {"deep", oracle::SearchGrid::deep}})
+        .choice("score", "--score", &S::score,
+                "cds: the preprint's two-layer search by contact-time score (approximate screening, rigid-body "
+                "revalidation); fem-sds: every genome of the grid and the references (the preprint's body, the true "
+                "oloid, the cylinder at the oloid's face count) over one loop of real rolling each, scored by "
+                "point-Hertz SDS, line-Hertz SDS, FEM-SDS and U (docs/fem-sds.md)",
+                {{"cds", SearchScore::cds}, {"fem-sds", SearchScore::fem_sds}})
+        .text("out", "--out", &S::out,
+              "--score fem-sds: folder for family.json, table.md and family.png (written whole or not at all)")
+        .text("python", "--python", &S::python, "Python with matplotlib for the plot (Debian's)")
         .integer("validate_top", "--validate-top", &S::validate_top, "",
                  "Revalidate the best K genomes by approximate CDS with the rigid-body oracle (the preprint's 5)",
                  io::Bounds{0, 100000})
@@ -158,6 +174,14 @@ void print_table(const oracle::SearchResult& result, std::size_t rows)
 nlohmann::json run_search(const io::Parameters& params)
 {
   const SearchScene scene = search_schema().bind(params);
+  if (scene.score == SearchScore::fem_sds)
+  {
+    study::FamilySettings family;
+    family.grid = scene.grid;
+    family.points = scene.points;
+    family.scoring.body.radius_m = scene.radius_m;
+    return run_family_scores(family, scene.out, scene.python);
+  }
   oracle::SearchSettings o = scene;
   o.compat = scene.paper_compat ? oracle::PaperCompat::reference() : oracle::PaperCompat::corrected();
   oracle::apply_quirk_settings(o.compat, scene.quirks, "option --quirks");

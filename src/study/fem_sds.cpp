@@ -72,7 +72,10 @@ void require_hull_of_circles(const geometry::BodySpec& body)
                                  body.body));
 }
 
-LoopSource rolling_source(const FemSdsSettings& s)
+/// One loop of real rolling; `uniformity`, if given, gets U of its contact
+/// density on `mesh` (oracle/uniformity_score.h).
+LoopSource rolling_source(const FemSdsSettings& s, const geometry::SurfaceMesh& mesh, bool& contact_held,
+                          std::optional<double>* uniformity)
 {
   oracle::RollingStudyParameters rp;
   rp.barrier_energy_excess = s.barrier_energy_excess;
@@ -85,8 +88,15 @@ LoopSource rolling_source(const FemSdsSettings& s)
       source.rotations.push_back(sample.rotation);
       source.times_s.push_back(sample.time_s);
     }
-  source.description = fmt::format("real rolling, one loop of {:.4g} s, {} samples{}", run.scored_end_s,
-                                   source.rotations.size(), run.trajectory.contact_held ? "" : " (a rim lifted)");
+  contact_held = run.trajectory.contact_held;
+  source.description
+      = contact_held ? fmt::format("real rolling, one loop of {:.4g} s, {} samples", run.scored_end_s,
+                                   source.rotations.size())
+                     : fmt::format("real rolling: a rim lifts at t = {:.4g} s, after {:.3f} of the loop (the "
+                                   "line-contact model stops there); {} samples",
+                                   run.scored_end_s, run.loops_completed, source.rotations.size());
+  if (uniformity)
+    *uniformity = oracle::score_real_rolling(run, mesh, rp).uniformity;
   return source;
 }
 
@@ -109,6 +119,47 @@ LoopSource rigid_source(const FemSdsSettings& s, const Models& m, const oracle::
   }
   source.description = fmt::format("the preprint's rigid-body oracle, {} runs, {} samples", runs, t.size());
   return source;
+}
+
+/// A body ready to be scored: its mesh, the preprint's per-face pressures, the face cones and the loop.
+struct Scene
+{
+  Models models;
+  geometry::SurfaceMesh mesh;
+  oracle::RollingBody body;
+  contact::FacePressure pressure;
+  oracle::FaceCones cones;
+  LoopSource source;
+  bool contact_held = true;
+  std::optional<double> uniformity;
+};
+
+Scene make_scene(const FemSdsSettings& s, bool with_uniformity)
+{
+  require_hull_of_circles(s.body);
+  Scene scene;
+  scene.models = models_of(s);
+  const Models& m = scene.models;
+  scene.mesh = geometry::make_body(s.body);
+  scene.body = oracle::make_rolling_body(scene.mesh, m.compat);
+  const contact::FaceCurvature curvature = contact::face_curvature(scene.mesh, m.hertz, m.compat);
+  scene.pressure = contact::face_pressure(curvature.effective_radius_m, m.hertz, m.compat);
+  scene.cones = oracle::face_cones(scene.mesh);
+  scene.source = s.oracle == OrientationOracle::rolling
+                     ? rolling_source(s, scene.mesh, scene.contact_held, with_uniformity ? &scene.uniformity : nullptr)
+                     : rigid_source(s, m, scene.body);
+  return scene;
+}
+
+LoopSdsSettings loop_settings_of(const FemSdsSettings& s, const Models& m)
+{
+  LoopSdsSettings loop;
+  loop.normal_load_n = s.normal_load_n;
+  loop.crease_margin = s.crease_margin;
+  loop.map_points = s.map_points;
+  loop.locus = m.locus;
+  loop.tolerance = s.tolerance;
+  return loop;
 }
 
 /// The slices' FEM along the loaded ruling and their peaks, and the line
@@ -301,30 +352,22 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s)
   fem::ensure_petsc();
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  const Models m = models_of(s);
+  const Scene scene = make_scene(s, false);
+  const Models& m = scene.models;
+  const LoopSource& source = scene.source;
+  const oracle::RollingBody& body = scene.body;
+  const contact::FacePressure& pressure = scene.pressure;
   FemSdsResult result;
   result.body = geometry::body_label(s.body);
   result.oracle = s.oracle;
-  const geometry::SurfaceMesh mesh = geometry::make_body(s.body);
-  const oracle::RollingBody body = oracle::make_rolling_body(mesh, m.compat);
-  const contact::FaceCurvature curvature = contact::face_curvature(mesh, m.hertz, m.compat);
-  const contact::FacePressure pressure = contact::face_pressure(curvature.effective_radius_m, m.hertz, m.compat);
-  const oracle::FaceCones cones = oracle::face_cones(mesh);
-  const LoopSource source
-      = s.oracle == OrientationOracle::rolling ? rolling_source(s) : rigid_source(s, m, body);
   result.source = source.description;
+  result.contact_held = scene.contact_held;
   if (rank == 0)
     spdlog::info("fem-sds {}: {}; every sample scored, {} orientations solved directly (seed {})", result.body,
                  source.description, s.orientations, s.seed);
 
   fem::SliceScaling table(m.slice, s.table_nodes_per_decade);
-  LoopSdsSettings loop_settings;
-  loop_settings.normal_load_n = s.normal_load_n;
-  loop_settings.crease_margin = s.crease_margin;
-  loop_settings.map_points = s.map_points;
-  loop_settings.locus = m.locus;
-  loop_settings.tolerance = s.tolerance;
-  result.loop = loop_sds(comm, source, body, pressure.peak_pressure_pa, cones, table, loop_settings);
+  result.loop = loop_sds(comm, source, body, pressure.peak_pressure_pa, scene.cones, table, loop_settings_of(s, m));
   if (rank == 0)
     log_loop(result.loop, table);
 
@@ -355,8 +398,24 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s)
   result.table_wall_s = table.wall_s();
   result.effective_modulus_pa = m.effective_modulus_pa;
   result.analytic_effective_modulus_pa = pressure.effective_modulus_pa;
-  result.n_faces = static_cast<std::int64_t>(mesh.faces.rows());
+  result.n_faces = static_cast<std::int64_t>(scene.mesh.faces.rows());
   result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
+
+BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScaling& table)
+{
+  const Scene scene = make_scene(s, true);
+  BodyLoop r;
+  r.body = geometry::body_label(s.body);
+  r.source = scene.source.description;
+  r.contact_held = scene.contact_held;
+  r.n_faces = static_cast<std::int64_t>(scene.mesh.faces.rows());
+  r.uniformity = scene.uniformity;
+  r.loop = loop_sds(comm, scene.source, scene.body, scene.pressure.peak_pressure_pa, scene.cones, table,
+                    loop_settings_of(s, scene.models));
+  return r;
+}
+
+fem::SliceSettings slice_settings(const FemSdsSettings& s) { return models_of(s).slice; }
 } // namespace rollcheck::study

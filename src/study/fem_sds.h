@@ -115,6 +115,7 @@ struct FemSdsResult
   std::vector<FemSdsOrientation> orientations;
   std::size_t fem_solved = 0, reaching_crease = 0, standing_on_crease = 0, reaching_obtuse_rim = 0;
   LoopSds loop;                            ///< the scores over every sample of the loop
+  bool contact_held = true;                ///< rolling: false when a rim lifted before the loop closed
   std::vector<fem::SliceScaling::Node> table; ///< the FEM solves every sample's pressures come from
   double table_wall_s = 0;                 ///< FEM time of the table
   double table_vs_direct_worst = 0;        ///< over the directly solved orientations
@@ -127,6 +128,23 @@ struct FemSdsResult
   std::int64_t n_faces = 0;
   double wall_s = 0;
 };
+
+/// One body's whole loop scored, with a FEM table the caller may share
+/// between bodies (the family table): the scores of run_fem_sds without the
+/// directly solved orientations, and U of the loop's contact density.
+struct BodyLoop
+{
+  std::string body;                 ///< geometry::body_label
+  std::string source;               ///< the loop, in words
+  bool contact_held = true;         ///< false: a rim lifted before the loop closed
+  std::int64_t n_faces = 0;
+  LoopSds loop;
+  std::optional<double> uniformity; ///< U (oracle/uniformity_score.h), rolling oracle only
+};
+BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& settings, fem::SliceScaling& table);
+
+/// The slices' FEM settings of `settings`: what a shared table is built with.
+fem::SliceSettings slice_settings(const FemSdsSettings& settings);
 
 /// Runs the method on the ranks of `comm` (every rank gets the whole result;
 /// rank 0 logs each orientation). InputError naming the setting for a mesh

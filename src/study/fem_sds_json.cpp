@@ -141,6 +141,7 @@ nlohmann::json to_json(const FemSdsResult& result)
       {"oracle", oracle_name(result.oracle)},
       {"source", result.source},
       {"samples", loop.samples},
+      {"contact_held", result.contact_held},
       {"singular_samples", loop.singular_samples},
       {"analytic_sds", score_json(loop.point_hertz.value)},
       {"line_hertz_sds", score_json(loop.line_hertz.value)},

@@ -1,0 +1,38 @@
+// `rollcheck search --score fem-sds`: the family table of FEM-SDS over whole
+// rolling loops (study/fem_sds_family.h): JSON with a row per genome, the
+// Markdown table on the log, and with --out the folder of family.json,
+// table.md and family.png (postprocess/plot_fem_family.py).
+#include "cli/scenes.h"
+#include "core/atomic_file.h"
+#include "io/batch_report.h"
+#include "study/fem_sds_family.h"
+#include <fstream>
+#include <mpi.h>
+#include <spdlog/spdlog.h>
+
+namespace rollcheck::cli
+{
+nlohmann::json run_family_scores(const study::FamilySettings& settings, const std::string& out,
+                                 const std::string& python)
+{
+  if (!out.empty())
+    check_output_folder(out, "option --out");
+  const study::FamilyResult result = study::fem_sds_family(MPI_COMM_WORLD, settings);
+  const nlohmann::json j = study::to_json(result);
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank != 0)
+    return j;
+  const std::string table = study::markdown_table(result);
+  spdlog::info("\nFEM-SDS of the {} grid over one loop of real rolling each, ranked by FEM-SDS ({} FEM solves shared, "
+               "{:.1f} s of FEM, {:.1f} s in all):\n\n{}",
+               oracle::name_of(settings.grid), result.fem_solves, result.table_wall_s, result.wall_s, table);
+  if (!out.empty())
+    io::draw_folder(out, python, io::default_scripts_folder() / "plot_fem_family.py", {}, "plot.log",
+                    [&](const std::filesystem::path& folder) {
+                      std::ofstream(folder / "family.json") << j.dump(1) << "\n";
+                      std::ofstream(folder / "table.md") << table;
+                    });
+  return j;
+}
+} // namespace rollcheck::cli

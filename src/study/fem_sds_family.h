@@ -1,0 +1,69 @@
+#pragma once
+// FEM-SDS of a whole family: every genome of a search grid (the preprint's
+// quick grid: 45 two-circle rollers at its 300 points per circle), the
+// preprint's (90, 1, 1) body, the true oloid and the cylinder, each over one
+// loop of real rolling (study/fem_sds.h score_body_loop), with one FEM table
+// shared by all: the nondimensional slice does not depend on the body
+// (fem/slice_scaling.h), so each body adds only the load ratios no body
+// before it reached.
+//
+// The SDS template weighs each face by its area share, so scores fall with
+// the face count (the preprint's "CDS ~ N^-2"): the references are meshed at
+// the genomes' resolution, and the cylinder gets as many faces as the true
+// oloid (sections = faces / 4). Each body's ratio to the cylinder is given
+// under every score, with U (oracle/uniformity_score.h), the
+// resolution-free uniformity of the contact density.
+//
+// A body the line-contact rolling model cannot follow over a whole loop (a
+// rim lifts: the centre of pressure leaves the ruling; or it cannot roll
+// over its potential barrier) gets a row that says why, without scores.
+#include "oracle/search_grid.h"
+#include "study/fem_sds.h"
+#include <mpi.h>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rollcheck::study
+{
+struct FamilySettings
+{
+  oracle::SearchGrid grid = oracle::SearchGrid::quick;
+  int points = 300; ///< per generating circle, every body (the preprint's search)
+  /// Everything else of the loop scores (material, load, samples, FEM);
+  /// its body and oracle are set per row (real rolling).
+  FemSdsSettings scoring;
+};
+
+struct FamilyRow
+{
+  std::string kind;                          ///< "genome", "paper (90, 1, 1)", "oloid", "cylinder"
+  std::optional<geometry::RollerGenome> genome;
+  bool scored = false;                       ///< a whole loop rolled and scored
+  std::string why_not;                       ///< when not scored
+  BodyLoop loop;
+  double wall_s = 0;
+};
+
+struct FamilyResult
+{
+  std::vector<FamilyRow> rows;               ///< the genomes in grid order, then the references
+  std::size_t cylinder = 0;                  ///< index of the cylinder's row
+  std::size_t fem_solves = 0;                ///< the shared table's nodes
+  int nodes_per_decade = 0;
+  double table_wall_s = 0;
+  double wall_s = 0;
+};
+
+/// Collective on `comm`; every rank gets the result. InputError for bad
+/// settings; a body that cannot roll a loop is a row, not an error.
+FamilyResult fem_sds_family(MPI_Comm comm, const FamilySettings& settings);
+
+/// {"genomes": [one row per genome], "references": [...], ...}, with each
+/// row's ratios to the cylinder.
+nlohmann::json to_json(const FamilyResult& result);
+
+/// The table of every row ranked by FEM-SDS, rows without scores last.
+std::string markdown_table(const FamilyResult& result);
+} // namespace rollcheck::study
