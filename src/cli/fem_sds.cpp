@@ -33,7 +33,7 @@ const io::BoundSchema<study::FemSdsSettings>& fem_sds_schema()
         .integer("table_nodes_per_decade", "--table-nodes", &FemSdsSettings::table_nodes_per_decade, "",
                  "FEM solves per decade of the load ratio q / (E* R) to start the nondimensional slice table with "
                  "(fem/slice_scaling.h); doubled until FEM-SDS changes by less than the tolerance",
-                 io::Bounds{2, 64})
+                 io::Bounds{1, 64})
         .real("tolerance", "--tolerance", &FemSdsSettings::tolerance, "",
               "Relative change of FEM-SDS, doubling the table or the samples, that counts as converged",
               io::Bounds{1e-6, 0.5})

@@ -52,6 +52,8 @@ struct HertzSettings
   double force_rtol = 1e-6;           ///< load control: |F_h - F| / F at the end
   /// Extra PETSc options, e.g. "-hertz_ksp_type gmres"; the solver's prefix is "hertz_".
   std::string petsc_options;
+  /// Progress lines (meshing, size, load control) at info level; else at debug (-v).
+  bool log_progress = true;
   /// If set, the fields are written there: one self-contained XDMF file.
   std::filesystem::path xdmf_path;
 

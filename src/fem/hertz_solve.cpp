@@ -66,8 +66,10 @@ HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
          rank);
 
   // Mesh and problem. Progress lines mark the long steps (3D: seconds each).
+  // Slices of a loop solve hundreds of these: their progress goes to -v.
+  const auto progress = setup.log_progress ? spdlog::level::info : spdlog::level::debug;
   if (rank == 0)
-    spdlog::info("hertz {} P{}: meshing with gmsh (h_c = {:.4g} m)", model_name(setup.model), setup.degree,
+    spdlog::log(progress, "hertz {} P{}: meshing with gmsh (h_c = {:.4g} m)", model_name(setup.model), setup.degree,
                  grading.contact_size_m);
   const SceneMesh scene = build_scene_mesh(comm, setup.model, R, grading);
   result.mesh_s = scene.wall_s;
@@ -77,7 +79,7 @@ HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
   result.dofs = problem.num_dofs();
   result.cells = scene.mesh->topology().index_map(scene.mesh->topology().dim())->size_global();
   if (rank == 0)
-    spdlog::info("hertz {} P{}: {} cells, {} dofs, h_c = {:.4g} m ({:.3g} per {}), kappa = {:.4g} Pa/m",
+    spdlog::log(progress, "hertz {} P{}: {} cells, {} dofs, h_c = {:.4g} m ({:.3g} per {}), kappa = {:.4g} Pa/m",
                  model_name(setup.model), setup.degree, result.cells, result.dofs, grading.contact_size_m,
                  result.elements_across_contact, line ? "b" : "a", kappa);
 
@@ -91,7 +93,7 @@ HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
   const double first_approach = line ? line_start.approach_m : *ref.approach_m;
   const double exponent = line ? line_start.exponent : 1.5;
   if (rank == 0)
-    spdlog::info("hertz {} P{}: load control to {:.6g} {} (Newton steps with -v)", model_name(setup.model),
+    spdlog::log(progress, "hertz {} P{}: load control to {:.6g} {} (Newton steps with -v)", model_name(setup.model),
                  setup.degree, ref.load, line ? "N/m" : "N");
   const LoadControlReport load
       = reach_force(problem, ref.load, first_approach, edge_height, exponent, setup.force_rtol);

@@ -56,6 +56,7 @@ SliceFem solve_slice(const SliceLoad& load, const SliceSettings& settings)
   setup.penalty_c = settings.penalty_c;
   setup.elastic_plane = settings.elastic_plane;
   setup.petsc_options = settings.petsc_options;
+  setup.log_progress = false;
   setup.refine = settings.refine < 0 ? default_refine(Model::plane_strain, 1) : settings.refine;
   const HertzResult coarse = solve_hertz(MPI_COMM_SELF, setup);
   ++setup.refine;

@@ -46,7 +46,7 @@ struct FemSdsSettings
   /// Samples of the rolling loop, every one scored; the loop is resampled so
   /// that each body's loop has this many whatever its period.
   long samples_per_loop = 16384;
-  int table_nodes_per_decade = 4;  ///< FEM table's start (refined while not converged)
+  int table_nodes_per_decade = 2;  ///< FEM table's start (refined while not converged)
   double tolerance = 0.01;         ///< relative change of FEM-SDS that counts as converged
   /// Orientations solved directly (slices at two levels), one per equal
   /// stratum of the loop: the check of the table, and the per-orientation table.
