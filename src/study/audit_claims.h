@@ -174,5 +174,12 @@ Rule coverage_at_least(double fraction);
 /// (fem-sds): each solved orientation's point-Hertz peak is within
 /// `tolerance` of the FEM peak.
 Rule point_hertz_is_contact_pressure(double tolerance);
+/// (body, cylinder) fem-sds: both converged, and cylinder / body FEM-SDS within `tolerance` of `paper`.
+Rule converged_sds_ratio(double paper, double tolerance);
+/// (body, cylinder) fem-sds: the largest line-contact stress amplitude at the
+/// fatigue load against the endurance limit; holds when only the body's exceeds it.
+Rule line_contact_fatigue(double fatigue_load_n, double endurance_limit_pa);
+/// fem-sds: the FEM slices and FEM-SDS agree with line-contact Hertz within `tolerance`.
+Rule fem_agrees_with_line_hertz(double tolerance);
 } // namespace rules
 } // namespace rollcheck::study

@@ -396,6 +396,7 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s)
   for (const auto& [k, node] : table.nodes())
     result.table.push_back(node);
   result.table_wall_s = table.wall_s();
+  result.normal_load_n = s.normal_load_n;
   result.effective_modulus_pa = m.effective_modulus_pa;
   result.analytic_effective_modulus_pa = pressure.effective_modulus_pa;
   result.n_faces = static_cast<std::int64_t>(scene.mesh.faces.rows());

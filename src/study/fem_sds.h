@@ -123,6 +123,7 @@ struct FemSdsResult
   double max_orientation_wall_s = 0;
   std::size_t slab_checked = 0, slab_skipped = 0;
   double slab_worst_peak_difference = 0;
+  double normal_load_n = 0;                 ///< F, the settings'
   double effective_modulus_pa = 0;          ///< of the FEM and the line-Hertz slices
   double analytic_effective_modulus_pa = 0; ///< of the preprint's face pressures
   std::int64_t n_faces = 0;

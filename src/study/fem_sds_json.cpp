@@ -167,6 +167,7 @@ nlohmann::json to_json(const FemSdsResult& result)
       {"slab_checked_orientations", result.slab_checked},
       {"slab_skipped_orientations", result.slab_skipped},
       {"slab_worst_peak_difference", json_number(result.slab_worst_peak_difference)},
+      {"normal_load_n", json_number(result.normal_load_n)},
       {"effective_modulus_pa", result.effective_modulus_pa},
       {"analytic_effective_modulus_pa", result.analytic_effective_modulus_pa},
       {"n_faces", result.n_faces},

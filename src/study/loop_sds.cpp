@@ -264,6 +264,14 @@ LoopSds loop_sds(MPI_Comm comm, const LoopSource& source, const oracle::RollingB
         break;
       table.double_nodes();
     }
+    for (const std::vector<MappedPoint>& points : share.rulings)
+      for (const MappedPoint& p : points)
+      {
+        r.line_hertz_peak_pa = std::max(r.line_hertz_peak_pa, p.line_hertz_pa);
+        r.fem_peak_pa = std::max(r.fem_peak_pa, p.line_hertz_pa * table.ratio(p.load_ratio));
+      }
+    MPI_Allreduce(MPI_IN_PLACE, &r.line_hertz_peak_pa, 1, MPI_DOUBLE, MPI_MAX, comm);
+    MPI_Allreduce(MPI_IN_PLACE, &r.fem_peak_pa, 1, MPI_DOUBLE, MPI_MAX, comm);
     r.nodes_per_decade = table.nodes_per_decade();
     r.fem_solves = nodes_used(table, share.lambda_min, share.lambda_max, 1, r.worst_refinement_change);
     r.fem_solves_half_table = nodes_used(table, share.lambda_min, share.lambda_max, 2, r.worst_refinement_change);
@@ -304,6 +312,8 @@ nlohmann::json to_json(const LoopSds& loop)
           {"load_ratio_min", json_number(loop.load_ratio_min)},
           {"load_ratio_max", json_number(loop.load_ratio_max)},
           {"fem_worst_refinement_change", json_number(loop.worst_refinement_change)},
+          {"line_hertz_peak_pa", json_number(loop.line_hertz_peak_pa)},
+          {"fem_peak_pa", json_number(loop.fem_peak_pa)},
           {"tolerance", json_number(loop.tolerance)},
           {"converged", loop.converged()},
           {"status", loop.status()},

@@ -96,6 +96,8 @@ struct LoopSds
   std::size_t fem_solves_half_table = 0; ///< K
   int nodes_per_decade = 0;
   double load_ratio_min = 0, load_ratio_max = 0; ///< lambda over the mapped points
+  /// Largest pressure over the loop's mapped points (inside the crease margins).
+  double line_hertz_peak_pa = 0, fem_peak_pa = 0;
   double worst_refinement_change = 0;  ///< over the nodes used: |g finer / g - 1|
   double tolerance = 0;
   double samples_wall_s = 0;           ///< loci and mapping

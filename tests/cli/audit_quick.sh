@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # `rollcheck audit --quick`: the claim table's structure (every claim, mode
 # cells, verdicts from the stated set, commands cited), the Markdown table,
-# that numbers the audit read equal what three of its listed commands print
-# when run on their own (an oracle run, a mesh run and a FEM run; timings
-# aside), and that its paper-compatible reads on the reference meshes are the
+# that numbers the audit read equal what four of its listed commands print
+# when run on their own (an oracle run, a mesh run, a Hertz FEM run and a
+# FEM-SDS run; timings aside), and that its paper-compatible reads on the reference meshes are the
 # published code's outputs (tests/data/reference/reference_outputs.json) to
 # the digits the preprint prints. Bad input (a folder without the reference
 # meshes) exits 2 and writes nothing.
@@ -16,7 +16,7 @@ meshes=$source/meshes/reference
   > "$tmp/stdout.md" || { echo "FAIL: audit run"; exit 1; }
 j=$tmp/audit.json
 check_json "28 claims" '.claims | length == 28' "$j"
-check_json "five modes, paper-compatible first" '(.modes | length) == 5 and .modes[0].mode == "paper-compatible"' "$j"
+check_json "six modes, paper-compatible first" '(.modes | length) == 6 and .modes[0].mode == "paper-compatible"' "$j"
 check_json "verdicts from the stated set" \
   '[.claims[].verdict] | all(. == "holds" or . == "holds only in paper-compatible mode" or . == "does not hold" or . == "cannot be tested" or . == "not built yet")' "$j"
 check_json "verdict rules stated" '(.verdict_rules | length) >= 4 and ([.claims[].rule] | all(length > 0))' "$j"
@@ -28,15 +28,15 @@ check_json "quick mode recorded" '.quick == true' "$j"
 check_json "claims that cannot be tested say why" \
   '[.claims[] | select(.verdict == "cannot be tested") | .recomputations[] | select(.applicable and (.built | not)) | .untestable | length > 0] | (length > 0 and all)' "$j"
 cmp -s "$tmp/audit.md" "$tmp/stdout.md" || { echo "FAIL: --markdown file differs from stdout"; fail=1; }
-grep -q '^| claim | paper | paper-compatible | matched resolution | true oloid | corrected physics | real rolling | verdict |$' \
+grep -q '^| claim | paper | paper-compatible | matched resolution | true oloid | corrected physics | real rolling | contact mechanics | verdict |$' \
   "$tmp/audit.md" || { echo "FAIL: Markdown header"; fail=1; }
 rows=$(grep -c '^| .* | \*\*\(holds\|holds only in paper-compatible mode\|does not hold\|cannot be tested\|not built yet\)\*\* |$' "$tmp/audit.md")
 [[ $rows == 28 ]] || { echo "FAIL: Markdown has $rows claim rows, want 28"; fail=1; }
 grep -q '^Verdict rules:' "$tmp/audit.md" || { echo "FAIL: no verdict rules in the Markdown"; fail=1; }
 
-# Rerun three listed commands: the first oracle command, the first mesh command,
-# the first hertz command; every value the audit read must be what they print.
-for kind in oracle mesh hertz; do
+# Rerun four listed commands: the first oracle, mesh, hertz and fem-sds
+# command; every value the audit read must be what they print.
+for kind in oracle mesh hertz fem-sds; do
   id=$(jq -r "[.commands[] | select(.command | startswith(\"rollcheck $kind \"))][0].id" "$j")
   line=$(jq -r ".commands[] | select(.id == \"$id\") | .command" "$j")
   read -r -a argv <<< "${line#rollcheck }"
