@@ -27,7 +27,7 @@ cylinder = refs["cylinder"]
 assert cylinder["scored"] and cylinder["faces"] == refs["oloid"]["faces"], (cylinder["faces"], refs["oloid"]["faces"])
 assert all(v == 1 for v in cylinder["over_cylinder"].values()), cylinder["over_cylinder"]
 # Even contact of the side (r = 1 m, h = 2 m, n sections; tests/test_study_fem_sds.cpp): 2n side triangles of
-# area sin(pi / n) h / 2 = sin(pi / n), 2n cap triangles of area sin(2 pi / n) / 2.
+# area (chord 2 sin(pi / n)) x h / 2 = 2 sin(pi / n), 2n cap triangles of area sin(2 pi / n) / 2.
 n = cylinder["faces"] // 4
 side, cap = math.sin(math.pi / n) * 2.0, 0.5 * math.sin(2 * math.pi / n)
 total = 2 * n * (side + cap)
