@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
-# Benchmark (not a test): whole-process wall time of commands that need no MPI
-# against the same work in a command that starts MPI (as every command did
-# before MPI became per-scene): `rollcheck --version` against `rollcheck hertz
-# --help` (MPI started, nothing solved), and the approximate oracle on the
-# published oloid mesh against the same oracle scene run from a case file by
-# `rollcheck run` (which starts MPI). Prints the mean of N runs and the ratio.
-#   bash scripts/bench_startup.sh [ROLLCHECK] [N]
+# Benchmark (not a test): whole-process wall time of the fast subcommands in
+# rollcheck (no FEM library loaded) against the same command in rollcheck-fem
+# (the executable with DOLFINx, PETSc and gmsh, as every command ran before
+# the split), and against the same work from a case file (`rollcheck run`,
+# which starts MPI): `--version`, and the approximate oracle on the published
+# oloid mesh. Prints the mean of N runs and the ratios.
+#   bash scripts/bench_startup.sh [BUILD_CLI_FOLDER] [N]
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
-bin=${1:-$here/build/src/cli/rollcheck}
+cli=${1:-$here/build/src/cli}
 n=${2:-20}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
 tmp=$(mktemp -d)
@@ -23,16 +23,11 @@ mean() { # mean wall seconds of N runs of the command
   end=$(date +%s.%N)
   echo "($end - $start) / $n" | bc -l
 }
-row() { # name, then the command without MPI, `::`, the command with MPI
-  local name=$1; shift
-  local fast=() slow=()
-  while [[ $1 != :: ]]; do fast+=("$1"); shift; done; shift
-  slow=("$@")
-  local a b
-  a=$(mean "${fast[@]}"); b=$(mean "${slow[@]}")
-  printf '%-22s %10.4f s %10.4f s %7.1fx\n' "$name" "$a" "$b" "$(echo "$b / $a" | bc -l)"
-}
-printf '%-22s %12s %12s %8s\n' "" "no MPI" "with MPI" "ratio"
-row "version / help" "$bin" --version :: "$bin" hertz --help
-row "approximate oracle" "$bin" oracle --oracle approx --mesh "$mesh" --paper-compat --metrics cds --json /dev/null \
-  :: "$bin" run "$tmp/approx.toml" --json /dev/null
+approx=(oracle --oracle approx --mesh "$mesh" --paper-compat --metrics cds --json /dev/null)
+v_fast=$(mean "$cli/rollcheck" --version); v_fem=$(mean "$cli/rollcheck-fem" --version)
+a_fast=$(mean "$cli/rollcheck" "${approx[@]}"); a_fem=$(mean "$cli/rollcheck-fem" "${approx[@]}")
+a_run=$(mean "$cli/rollcheck" run "$tmp/approx.toml" --json /dev/null)
+printf '%-20s %12s %14s %8s %16s %8s\n' "" "rollcheck" "rollcheck-fem" "ratio" "run CASE (MPI)" "ratio"
+printf '%-20s %10.4f s %12.4f s %7.1fx\n' "--version" "$v_fast" "$v_fem" "$(echo "$v_fem / $v_fast" | bc -l)"
+printf '%-20s %10.4f s %12.4f s %7.1fx %14.4f s %7.1fx\n' "approximate oracle" "$a_fast" "$a_fem" \
+  "$(echo "$a_fem / $a_fast" | bc -l)" "$a_run" "$(echo "$a_run / $a_fast" | bc -l)"

@@ -8,9 +8,38 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace rollcheck::cli
 {
+/// The subcommand the arguments name ("" if none): the first argument that is
+/// not an option, since rollcheck's own options take no values.
+std::string subcommand_in(const std::vector<std::string>& args);
+
+/// Whether a launcher (mpirun) started this process.
+bool launched_by_mpi();
+
+/// What the executable runs around the command line. Two executables share
+/// every other file of this layer: rollcheck-fem (fem_session.cpp), with the
+/// FEM libraries, starts MPI where a subcommand needs it and ends PETSc and
+/// MPI; rollcheck (light_session.cpp) loads no FEM library, runs the fast
+/// subcommands itself and replaces its process with rollcheck-fem, beside it,
+/// for every other command line.
+class ProcessSession
+{
+public:
+  ProcessSession(int& argc, char**& argv, const std::vector<std::string>& args);
+  ~ProcessSession();
+  ProcessSession(const ProcessSession&) = delete;
+  ProcessSession& operator=(const ProcessSession&) = delete;
+};
+
+/// The subcommands of the executable's session beyond the fast ones (none in rollcheck).
+void add_fem_commands(CLI::App& app);
+
+/// PETSc's options, the arguments after `--` (rollcheck-fem).
+void insert_petsc_options(std::vector<std::string> options);
+
 /// Registers what runs when `sub` was the parsed subcommand. The runner returns
 /// the exit code (0 success); it may throw InputError (exit 2) or
 /// ComputationError (exit 1), which main() reports.

@@ -3,10 +3,13 @@
 // Also the scene "mesh" of case files.
 #include "cli/cli.h"
 #include "cli/scenes.h"
+#include "core/error.h"
 #include "geometry/body.h"
 #include "geometry/mass_properties.h"
 #include "geometry/mesh_checks.h"
+#ifdef ROLLCHECK_FEM
 #include "geometry/tetrahedralize.h"
+#endif
 #include "geometry/write_mesh.h"
 #include <spdlog/spdlog.h>
 
@@ -62,8 +65,13 @@ nlohmann::json run_mesh(const io::Parameters& params)
     const std::filesystem::path path(scene.out);
     if (path.extension() == ".msh")
     {
+#ifdef ROLLCHECK_FEM
       const auto info = geometry::write_tetrahedral_mesh(mesh, scene.volume_mesh_size_m, path);
       summary["volume_mesh"] = {{"nodes", info.nodes}, {"tetrahedra", info.tetrahedra}};
+#else
+      // rollcheck hands command lines that name a .msh file to rollcheck-fem (light_session.cpp).
+      throw ComputationError("gmsh volume meshes are written by rollcheck-fem");
+#endif
     }
     else
       geometry::write_mesh(mesh, path);

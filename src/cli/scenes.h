@@ -5,7 +5,6 @@
 #include "geometry/body.h"
 #include "io/bound_schema.h"
 #include "io/parameters.h"
-#include "study/fem_sds_family.h"
 #include <functional>
 #include <nlohmann/json.hpp>
 
@@ -40,8 +39,4 @@ void add_material(io::BoundSchema<Settings>& schema, Youngs youngs_modulus, Pois
   schema.real("poisson_ratio", "--poisson", poisson_ratio, "", "Poisson's ratio nu of the body (steel, the preprint's 0.3)",
               io::poisson_range);
 }
-/// `search --score fem-sds` (cli/search_family.cpp): the family table, its
-/// JSON summary returned; with `out`, the folder of its files and plot.
-nlohmann::json run_family_scores(const study::FamilySettings& settings, const std::string& out,
-                                 const std::string& python);
 } // namespace rollcheck::cli

@@ -2,7 +2,7 @@
 // rolling loops (study/fem_sds_family.h): JSON with a row per genome, the
 // Markdown table on the log, and with --out the folder of family.json,
 // table.md and family.png (postprocess/plot_fem_family.py).
-#include "cli/scenes.h"
+#include "cli/search_family.h"
 #include "core/atomic_file.h"
 #include "io/batch_report.h"
 #include "study/fem_sds_family.h"

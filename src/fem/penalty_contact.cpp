@@ -27,6 +27,17 @@ double seconds_since(Clock::time_point start)
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+/// A PETSc error handler that keeps the first message (the innermost: what
+/// was rejected) in `context`, a std::string, and passes the error code up.
+PetscErrorCode keep_first_message(MPI_Comm, int, const char*, const char*, PetscErrorCode code, PetscErrorType,
+                                  const char* message, void* context)
+{
+  auto& kept = *static_cast<std::string*>(context);
+  if (kept.empty() && message)
+    kept = message;
+  return code;
+}
+
 /// Default solvers, set on the KSP before KSPSetFromOptions so that any
 /// -hertz_* option overrides them.
 void set_default_solver(KSP ksp, Model model)
@@ -178,10 +189,17 @@ PenaltyContact::PenaltyContact(const SceneMesh& scene, Model model, int degree, 
   KSPSetOptionsPrefix(_ksp, prefix);
   set_default_solver(_ksp, model);
   // A value PETSc rejects (an unknown KSP or PC type) is bad input, not a
-  // silently kept default; PETSc has printed which option and why.
-  if (KSPSetFromOptions(_ksp) != 0)
-    throw InputError(fmt::format("PETSc rejected the solver options (prefix {}){}: see PETSc's message above",
-                                 prefix, petsc_options.empty() ? "" : fmt::format(" '{}'", petsc_options)));
+  // silently kept default. PETSc's default handler would print it on rank 0
+  // and exit(0) every other rank without MPI_Finalize, so mpirun reported an
+  // improper exit instead of the exit code 2: the message is kept here and
+  // every rank throws.
+  std::string rejection;
+  PetscPushErrorHandler(keep_first_message, &rejection);
+  const PetscErrorCode set = KSPSetFromOptions(_ksp);
+  PetscPopErrorHandler();
+  if (set != 0)
+    throw InputError(fmt::format("PETSc rejected the solver options (prefix {}){}: {}", prefix,
+                                 petsc_options.empty() ? "" : fmt::format(" '{}'", petsc_options), rejection));
 }
 
 PenaltyContact::~PenaltyContact()

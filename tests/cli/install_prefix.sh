@@ -10,7 +10,7 @@ build=$(cd "$(dirname "$bin")/../.." && pwd)
 rm -rf "$tmp"; mkdir -p "$tmp/work"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
 cmake --install "$build" --prefix "$tmp/prefix" > "$tmp/install.log" 2>&1 || { cat "$tmp/install.log"; exit 1; }
-check '[[ -x $tmp/prefix/bin/rollcheck && -d $tmp/prefix/share/rollcheck/cases/default ]]' "installed layout"
+check '[[ -x $tmp/prefix/bin/rollcheck && -x $tmp/prefix/bin/rollcheck-fem && -d $tmp/prefix/share/rollcheck/cases/default ]]' "installed layout"
 check '[[ -f $tmp/prefix/share/rollcheck/meshes/reference/oloid_reference.obj ]]' "reference meshes installed"
 cd "$tmp/work"
 "$tmp/prefix/bin/rollcheck" validate --json validate.json > validate.log 2>&1

@@ -28,6 +28,8 @@ expect 2 "timeout" -- "$bin" batch points.toml --timeout -1
 # PETSc options: before `--` named; a value PETSc rejects is not silently ignored.
 expect 2 "PETSc option" -- "$bin" hertz --model axi -hertz_ksp_type cg
 expect 2 "KSP type nonsense" -- "$bin" hertz --model axi --refine 0 -- -hertz_ksp_type nonsense
+# On 2 ranks too: PETSc's own handler would exit(0) rank 1 without MPI_Finalize.
+expect 2 "KSP type nonsense" -- mpirun -n 2 "$bin" hertz --model axi --refine 0 -- -hertz_ksp_type nonsense
 expect 2 "rejected the solver options.*nonsense" -- "$bin" hertz --model axi --refine 0 --petsc-options '-hertz_pc_type nonsense'
 # Resources: declared counts against the file; sizes with their limit.
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2000000000 0 1 2\n' > huge.off

@@ -1,0 +1,99 @@
+// The process around the command line in rollcheck-fem, the executable with
+// the FEM libraries (cli.h ProcessSession): MPI for the subcommands that need
+// it, PETSc's options and its end, and the FEM subcommands.
+#include "cli/cli.h"
+#include "core/error.h"
+#include "fem/petsc_session.h"
+#include <algorithm>
+#include <cstdlib>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <mpi.h>
+#include <petscsys.h>
+#include <set>
+#include <spdlog/spdlog.h>
+
+namespace rollcheck::cli
+{
+namespace
+{
+/// A PETSc option given (after `--` or in --petsc-options) that no solver
+/// read is named, on rank 0: a misspelt option must not pass silently.
+void warn_unused_petsc_options()
+{
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  PetscInt count = 0;
+  char** names = nullptr;
+  char** values = nullptr;
+  if (PetscOptionsLeftGet(nullptr, &count, &names, &values) != 0)
+    return;
+  for (PetscInt i = 0; rank == 0 && i < count; ++i)
+    spdlog::warn("PETSc option -{}{}{} was not used by any solver", names[i], values[i] ? " " : "",
+                 values[i] ? values[i] : "");
+  PetscOptionsLeftRestore(nullptr, &count, &names, &values);
+}
+
+/// Whether the subcommand named in `args` needs MPI: every one but those that
+/// compute on one process with threads (search and optimize, unless they
+/// score FEM-SDS), unless a launcher (mpirun) started us.
+bool needs_mpi(const std::vector<std::string>& args)
+{
+  static const std::set<std::string> without_mpi = {"", "mesh", "oracle", "search", "report", "audit", "optimize"};
+  const bool fem_score = std::ranges::find(args, "fem-sds") != args.end();
+  return launched_by_mpi() || fem_score || !without_mpi.contains(subcommand_in(args));
+}
+} // namespace
+
+/// MPI is started for the scenes that need it (FEM solves, batches spread
+/// over ranks, case files of any scene) or when a launcher started this
+/// process; the others start without it. PETSc is started by whoever needs
+/// it and ended here.
+ProcessSession::ProcessSession(int& argc, char**& argv, const std::vector<std::string>& args)
+{
+  if (!needs_mpi(args))
+    return;
+  int provided;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+}
+
+ProcessSession::~ProcessSession()
+{
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  if (!initialized)
+    return;
+  PetscBool petsc_running = PETSC_FALSE;
+  PetscInitialized(&petsc_running);
+  if (petsc_running)
+  {
+    warn_unused_petsc_options();
+    PetscFinalize();
+  }
+  MPI_Finalize();
+}
+
+void add_fem_commands(CLI::App& app)
+{
+  add_hertz_command(app);
+  add_fem_sds_command(app);
+  add_crease_command(app);
+  add_run_command(app);
+  add_batch_command(app);
+  add_validate_command(app);
+}
+
+void insert_petsc_options(std::vector<std::string> options)
+{
+  if (options.empty())
+    return;
+  if (!options.front().starts_with('-'))
+    throw InputError(fmt::format("after `--` come PETSc options (-name [value] ...), got '{}'", options.front()));
+  fem::ensure_petsc();
+  std::vector<char*> argv;
+  for (std::string& option : options)
+    argv.push_back(option.data());
+  if (PetscOptionsInsertArgs(nullptr, static_cast<int>(argv.size()), argv.data()) != 0)
+    throw InputError(fmt::format("cannot read the PETSc options after `--`: {}", fmt::join(options, " ")));
+}
+} // namespace rollcheck::cli

@@ -1,0 +1,60 @@
+// The process around the command line in rollcheck, the executable without
+// the FEM libraries (cli.h ProcessSession): it loads in milliseconds and runs
+// the subcommands that need no FEM; for every other command line (a FEM
+// subcommand, a case file, a batch, FEM-SDS scores, a gmsh volume mesh,
+// PETSc options, --help, a launch under mpirun) it replaces its process with
+// rollcheck-fem, beside it in the same folder, with the same arguments.
+#include "cli/cli.h"
+#include "core/child_process.h"
+#include "core/error.h"
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <set>
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
+namespace rollcheck::cli
+{
+namespace
+{
+/// Whether this executable runs the command line itself: a fast subcommand,
+/// or --version; --help and no subcommand go to rollcheck-fem, which lists
+/// every subcommand.
+bool runs_here(int argc, char** argv, const std::vector<std::string>& args)
+{
+  static const std::set<std::string> here = {"mesh", "oracle", "search", "report", "audit", "optimize"};
+  const std::string subcommand = subcommand_in(args);
+  if (subcommand.empty())
+    return std::ranges::find(args, "--version") != args.end();
+  const bool petsc_options = std::find(argv, argv + argc, std::string_view("--")) != argv + argc;
+  const bool fem_score = std::ranges::find(args, "fem-sds") != args.end();
+  const bool volume_mesh = std::ranges::any_of(args, [](const std::string& a) { return a.ends_with(".msh"); });
+  return here.contains(subcommand) && !petsc_options && !fem_score && !volume_mesh && !launched_by_mpi();
+}
+} // namespace
+
+ProcessSession::ProcessSession(int& argc, char**& argv, const std::vector<std::string>& args)
+{
+  if (runs_here(argc, argv, args))
+    return;
+  const std::string fem = (process::own_executable().parent_path() / "rollcheck-fem").string();
+  ::execv(fem.c_str(), argv);
+  // Only reached when the exec failed.
+  std::fprintf(stderr, "[error] rollcheck: cannot start %s, which runs this command: %s\n", fem.c_str(),
+               std::strerror(errno));
+  std::exit(1);
+}
+
+ProcessSession::~ProcessSession() = default;
+
+void add_fem_commands(CLI::App&) {}
+
+void insert_petsc_options(std::vector<std::string> options)
+{
+  if (!options.empty())
+    throw InputError("PETSc options are read by rollcheck-fem");
+}
+} // namespace rollcheck::cli
