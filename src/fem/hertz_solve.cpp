@@ -93,10 +93,11 @@ HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
   const double first_approach = line ? line_start.approach_m : *ref.approach_m;
   const double exponent = line ? line_start.exponent : 1.5;
   if (rank == 0)
-    spdlog::log(progress, "hertz {} P{}: load control to {:.6g} {} (Newton steps with -v)", model_name(setup.model),
+    spdlog::log(progress, "hertz {} P{}: load control to {:.6g} {} (Newton iterations with -v)", model_name(setup.model),
                  setup.degree, ref.load, line ? "N/m" : "N");
   const LoadControlReport load
-      = reach_force(problem, ref.load, first_approach, edge_height, exponent, setup.force_rtol);
+      = reach_force(problem, ref.load, first_approach, edge_height, exponent, setup.force_rtol,
+                    rank == 0 ? progress : spdlog::level::debug);
   result.load_steps = load.load_steps;
   result.newton_iterations = load.newton.newton_iterations;
   result.krylov_iterations = load.newton.krylov_iterations;

@@ -16,7 +16,7 @@ LineApproach line_contact_approach(double load_n_per_m, double radius_m, double 
 }
 
 LoadControlReport reach_force(PenaltyContact& problem, double target, double first_approach_m,
-                              double first_shift_m, double exponent, double rtol)
+                              double first_shift_m, double exponent, double rtol, spdlog::level::level_enum progress)
 {
   constexpr int max_steps = 20;
   LoadControlReport report;
@@ -34,8 +34,8 @@ LoadControlReport reach_force(PenaltyContact& problem, double target, double fir
     report.load_steps = step;
     report.approach_m = problem.approach_m();
     report.force = problem.reaction_force_n();
-    spdlog::debug("load step {}: approach {:.9e} m, force {:.9e}, {} Newton its", step, report.approach_m,
-                  report.force, newton.newton_iterations);
+    spdlog::log(progress, "load step {}: approach {:.9e} m, force {:.6g} of {:.6g}, {} Newton iterations", step,
+                report.approach_m, report.force, target, newton.newton_iterations);
     if (!(report.force > 0))
       throw ComputationError(fmt::format("load control: no contact force at approach {:.6e} m", report.approach_m));
     if (std::abs(report.force - target) <= rtol * target)

@@ -150,7 +150,8 @@ SlabFem solve_slab(MPI_Comm comm, const SlabBody& body, std::span<const SliceFem
   // The exponent depends on R / b alone.
   const double exponent = line_contact_approach(1.0, 1.0, b_over_r, 1.0).exponent;
   const LoadControlReport load
-      = reach_force(problem, force_n, mean_approach, 0.5 * b_over_r * b_over_r * mean_radius, exponent, 1e-6);
+      = reach_force(problem, force_n, mean_approach, 0.5 * b_over_r * b_over_r * mean_radius, exponent, 1e-6,
+                    world_rank() == 0 ? spdlog::level::info : spdlog::level::debug); // minutes: progress
   result.approach_factor = load.approach_m / mean_approach;
   result.newton_iterations = load.newton.newton_iterations;
   result.krylov_iterations = load.newton.krylov_iterations;

@@ -265,20 +265,20 @@ void log_loop(const LoopSds& loop, const fem::SliceScaling& table)
                loop.converged() ? "" : " - NOT CONVERGED");
 }
 
-/// Rank 0's line for an orientation just evaluated.
-void log_orientation(const FemSdsOrientation& r)
+/// Rank 0's line for an orientation just evaluated, the `count`-th solved directly.
+void log_orientation(const FemSdsOrientation& r, std::size_t count)
 {
   if (!r.solved)
   {
-    spdlog::warn("orientation {} (t = {:.4g} s): {} - no FEM (a point of an edge or no equilibrium has no "
+    spdlog::warn("orientation {} of {} (t = {:.4g} s): {} - no FEM (a point of an edge or no equilibrium has no "
                  "finite converged peak pressure)",
-                 r.index, r.locus.time_s,
+                 r.index + 1, count, r.locus.time_s,
                  r.locus.creases.empty() ? std::string("ruling out of equilibrium") : r.locus.creases.front());
     return;
   }
-  spdlog::info("orientation {} (t = {:.4g} s, c = {:.3f}): FEM p0 {:.4g} MPa (finer {:+.2f} %), line-Hertz "
+  spdlog::info("orientation {} of {} (t = {:.4g} s, c = {:.3f}): FEM p0 {:.4g} MPa (finer {:+.2f} %), line-Hertz "
                "{:.4g} MPa, point-Hertz {:.4g} MPa; {} DOFs, {:.1f} s",
-               r.index, r.locus.time_s, r.locus.centre_of_pressure, r.fem_peak_pa / 1e6,
+               r.index + 1, count, r.locus.time_s, r.locus.centre_of_pressure, r.fem_peak_pa / 1e6,
                100 * (r.fem_peak_refined_pa / r.fem_peak_pa - 1), r.line_hertz_peak_pa / 1e6,
                r.point_hertz_peak_pa / 1e6, r.dofs, r.wall_s);
 }
@@ -391,7 +391,7 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s)
       result.max_orientation_wall_s = std::max(result.max_orientation_wall_s, r.wall_s);
     }
     if (rank == 0)
-      log_orientation(r);
+      log_orientation(r, picks.size());
   }
   for (const auto& [k, node] : table.nodes())
     result.table.push_back(node);

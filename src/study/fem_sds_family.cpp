@@ -108,11 +108,13 @@ FamilyResult fem_sds_family(MPI_Comm comm, const FamilySettings& s)
   body.radius_m = s.scoring.body.radius_m;
   body.points = s.points;
   FamilyResult result;
+  const std::vector<geometry::RollerGenome> grid = oracle::search_grid(s.grid);
+  const std::size_t total = grid.size() + 3; // and the references: the preprint's body, the oloid, the cylinder
   auto add = [&](std::string kind, const geometry::BodySpec& spec) {
     result.rows.push_back(score_row(comm, std::move(kind), spec, s, table));
     const FamilyRow& row = result.rows.back();
     if (rank == 0)
-      spdlog::info("{} {}: {} ({:.1f} s)", result.rows.size(), label(row),
+      spdlog::info("{} of {} {}: {} ({:.1f} s)", result.rows.size(), total, label(row),
                    row.scored ? fmt::format("point-Hertz SDS {}, FEM-SDS {}, U {}", number(row.loop.loop.point_hertz.value),
                                             number(row.loop.loop.fem.value), number(row.loop.uniformity))
                               : row.why_not,
@@ -120,7 +122,7 @@ FamilyResult fem_sds_family(MPI_Comm comm, const FamilySettings& s)
   };
   body.body = "roller";
   body.family = geometry::RollerFamily::paper;
-  for (const geometry::RollerGenome& genome : oracle::search_grid(s.grid))
+  for (const geometry::RollerGenome& genome : grid)
   {
     body.genome = genome;
     add("genome", body);
