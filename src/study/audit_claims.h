@@ -174,6 +174,8 @@ Rule coverage_at_least(double fraction);
 /// (fem-sds): each solved orientation's point-Hertz peak is within
 /// `tolerance` of the FEM peak.
 Rule point_hertz_is_contact_pressure(double tolerance);
+/// optimize: the start is not beaten beyond the noise threshold and its verdict is "local minimum".
+Rule start_is_local_optimum();
 /// (body, cylinder) fem-sds: both converged, and cylinder / body FEM-SDS within `tolerance` of `paper`.
 Rule converged_sds_ratio(double paper, double tolerance);
 /// (body, cylinder) fem-sds: the largest line-contact stress amplitude at the
