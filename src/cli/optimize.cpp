@@ -8,6 +8,11 @@
 #include "geometry/write_mesh.h"
 #include "io/batch_report.h"
 #include "study/optimize_family.h"
+#ifdef ROLLCHECK_FEM
+#include "study/fem_sds_family.h"
+#include <mpi.h>
+#endif
+#include "core/error.h"
 #include <fstream>
 #include <spdlog/spdlog.h>
 
@@ -38,7 +43,9 @@ void add_method_parameters(Schema& s)
 {
   using S = FamilySearchSettings;
   s.choice("score", "--score", &S::score,
-           "Score minimised: cds, sds (oracle approx or rigid) or uniformity (U of real rolling, oracle rolling)",
+           "Score minimised: cds, sds (oracle approx or rigid), uniformity (U of real rolling) or fem-sds (FEM-SDS "
+           "over one loop of real rolling, converged; a body that cannot roll a whole loop scores +inf), the last "
+           "two with oracle rolling",
            study::family_score_names())
       .choice("oracle", "--oracle", &S::oracle,
               "approx: the approximate oracle (deterministic); rigid: the rigid-body oracle (chaotic: each score the "
@@ -101,7 +108,16 @@ const Schema& optimize_schema()
 
 nlohmann::json run_optimize(const io::Parameters& params)
 {
-  const FamilySearchSettings settings = optimize_schema().bind(params);
+  FamilySearchSettings settings = optimize_schema().bind(params);
+  if (settings.score == study::FamilyScore::fem_sds)
+  {
+#ifdef ROLLCHECK_FEM
+    settings.fem_sds_score = study::fem_sds_scorer(MPI_COMM_WORLD, study::FemSdsSettings{});
+#else
+    // rollcheck hands command lines that name fem-sds to rollcheck-fem (light_session.cpp).
+    throw ComputationError("optimize --score fem-sds runs in rollcheck-fem");
+#endif
+  }
   const study::FamilySearchResult result = study::optimize_family(settings);
   const nlohmann::json j = study::to_json(result);
   const nlohmann::json& best = j["optimum"];

@@ -34,6 +34,13 @@ double load_ratio(double load_n_per_m, double radius_m, double effective_modulus
 class SliceScaling
 {
 public:
+  /// The least load ratio the table solves: below it b / R < 4e-6 and the
+  /// plane-strain solver's LU fails (measured: 1.65e-11 solves, 1e-12 does
+  /// not). Smaller ratios take g at this one: g tends to a constant as
+  /// b / R -> 0 (the half-space limit; measured 1.001-1.003 from 1e-11 to
+  /// 1e-8), and callers count the points held there.
+  static constexpr double smallest_load_ratio = 1e-11;
+
   /// `settings` as for solve_slices; E* is the slices' (rigid or elastic plane).
   SliceScaling(const SliceSettings& settings, int nodes_per_decade);
 

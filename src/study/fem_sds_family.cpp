@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <memory>
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
@@ -94,6 +96,27 @@ std::string label(const FamilyRow& row)
 
 std::string number(const std::optional<double>& v) { return v ? fmt::format("{:.4g}", *v) : std::string("-"); }
 } // namespace
+
+std::function<double(const geometry::BodySpec&)> fem_sds_scorer(MPI_Comm comm, const FemSdsSettings& base)
+{
+  fem::ensure_petsc();
+  auto table = std::make_shared<fem::SliceScaling>(slice_settings(base), base.table_nodes_per_decade);
+  return [comm, base, table](const geometry::BodySpec& body) {
+    FemSdsSettings settings = base;
+    settings.body = body;
+    settings.oracle = OrientationOracle::rolling;
+    try
+    {
+      const BodyLoop loop = score_body_loop(comm, settings, *table);
+      if (loop.contact_held && loop.loop.fem.value)
+        return *loop.loop.fem.value;
+    }
+    catch (const InputError&) // it cannot roll over its barrier: the same on every rank
+    {
+    }
+    return std::numeric_limits<double>::infinity();
+  };
+}
 
 FamilyResult fem_sds_family(MPI_Comm comm, const FamilySettings& s)
 {

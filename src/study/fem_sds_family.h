@@ -19,6 +19,7 @@
 // over its potential barrier) gets a row that says why, without scores.
 #include "oracle/search_grid.h"
 #include "study/fem_sds.h"
+#include <functional>
 #include <mpi.h>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -55,6 +56,15 @@ struct FamilyResult
   double table_wall_s = 0;
   double wall_s = 0;
 };
+
+/// FEM-SDS of a body over one loop of real rolling, for a search that scores
+/// many bodies (study/optimize_family.h BodyScore): `base`'s settings with
+/// the body replaced, one FEM table shared by every call (a body only adds
+/// the load ratios no body before it reached). +infinity for a body the
+/// line-contact model cannot follow over a whole loop (a rim lifts) or that
+/// cannot roll over its potential barrier: it has no whole loop to score.
+/// Collective on `comm` at every call.
+std::function<double(const geometry::BodySpec&)> fem_sds_scorer(MPI_Comm comm, const FemSdsSettings& base);
 
 /// Collective on `comm`; every rank gets the result. InputError for bad
 /// settings; a body that cannot roll a loop is a row, not an error.

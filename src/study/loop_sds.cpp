@@ -136,6 +136,9 @@ ConvergedScore score_pair(MPI_Comm comm, Eigen::VectorXd all, Eigen::VectorXd ev
   return {oracle::distribution_score(all, areas), oracle::distribution_score(even, areas)};
 }
 
+/// The load ratio the table is read at: held at its least (slice_scaling.h).
+double tabulated(double load_ratio) { return std::max(load_ratio, fem::SliceScaling::smallest_load_ratio); }
+
 /// FEM-SDS over the ruling samples with the table of `stride`.
 ConvergedScore fem_score(MPI_Comm comm, const SampleShare& share, const fem::SliceScaling& table, int stride,
                          const Eigen::VectorXd& areas, bool any)
@@ -143,8 +146,8 @@ ConvergedScore fem_score(MPI_Comm comm, const SampleShare& share, const fem::Sli
   Eigen::VectorXd all = Eigen::VectorXd::Zero(areas.size()), even = all;
   for (const std::vector<MappedPoint>& points : share.rulings)
     add_face_peaks(
-        points, [&](const MappedPoint& p) { return p.line_hertz_pa * table.ratio(p.load_ratio, stride); }, all,
-        even);
+        points, [&](const MappedPoint& p) { return p.line_hertz_pa * table.ratio(tabulated(p.load_ratio), stride); },
+        all, even);
   return score_pair(comm, std::move(all), std::move(even), areas, any);
 }
 
@@ -257,7 +260,7 @@ LoopSds loop_sds(MPI_Comm comm, const LoopSource& source, const oracle::RollingB
     r.load_ratio_max = share.lambda_max;
     while (true)
     {
-      table.cover(comm, share.lambda_min, share.lambda_max);
+      table.cover(comm, tabulated(share.lambda_min), tabulated(share.lambda_max));
       r.fem_rulings = fem_score(comm, share, table, 1, areas, true);
       r.fem_half_table = fem_score(comm, share, table, 2, areas, true).value;
       if (std::abs(r.table_change()) < s.tolerance || 2 * table.nodes_per_decade() > s.max_nodes_per_decade)
@@ -268,13 +271,18 @@ LoopSds loop_sds(MPI_Comm comm, const LoopSource& source, const oracle::RollingB
       for (const MappedPoint& p : points)
       {
         r.line_hertz_peak_pa = std::max(r.line_hertz_peak_pa, p.line_hertz_pa);
-        r.fem_peak_pa = std::max(r.fem_peak_pa, p.line_hertz_pa * table.ratio(p.load_ratio));
+        r.fem_peak_pa = std::max(r.fem_peak_pa, p.line_hertz_pa * table.ratio(tabulated(p.load_ratio)));
+        r.points_below_table += p.load_ratio < fem::SliceScaling::smallest_load_ratio;
+        ++r.mapped_points;
       }
     MPI_Allreduce(MPI_IN_PLACE, &r.line_hertz_peak_pa, 1, MPI_DOUBLE, MPI_MAX, comm);
     MPI_Allreduce(MPI_IN_PLACE, &r.fem_peak_pa, 1, MPI_DOUBLE, MPI_MAX, comm);
+    MPI_Allreduce(MPI_IN_PLACE, &r.points_below_table, 1, MPI_UNSIGNED_LONG, MPI_SUM, comm);
+    MPI_Allreduce(MPI_IN_PLACE, &r.mapped_points, 1, MPI_UNSIGNED_LONG, MPI_SUM, comm);
     r.nodes_per_decade = table.nodes_per_decade();
-    r.fem_solves = nodes_used(table, share.lambda_min, share.lambda_max, 1, r.worst_refinement_change);
-    r.fem_solves_half_table = nodes_used(table, share.lambda_min, share.lambda_max, 2, r.worst_refinement_change);
+    const double lo = tabulated(share.lambda_min), hi = tabulated(share.lambda_max);
+    r.fem_solves = nodes_used(table, lo, hi, 1, r.worst_refinement_change);
+    r.fem_solves_half_table = nodes_used(table, lo, hi, 2, r.worst_refinement_change);
   }
   if (r.singular_samples == 0)
   {
@@ -314,6 +322,9 @@ nlohmann::json to_json(const LoopSds& loop)
           {"fem_worst_refinement_change", json_number(loop.worst_refinement_change)},
           {"line_hertz_peak_pa", json_number(loop.line_hertz_peak_pa)},
           {"fem_peak_pa", json_number(loop.fem_peak_pa)},
+          {"mapped_points", loop.mapped_points},
+          {"points_below_table", loop.points_below_table},
+          {"smallest_table_load_ratio", json_number(fem::SliceScaling::smallest_load_ratio)},
           {"tolerance", json_number(loop.tolerance)},
           {"converged", loop.converged()},
           {"status", loop.status()},

@@ -14,7 +14,8 @@
 //    the largest of them;
 //  - FEM: the same points with p_fem = p_hertz g(lambda), lambda = q / (E* R),
 //    the plane-strain penalty FEM's correction (fem/slice_scaling.h: exact
-//    by scaling, tabulated over the loop's range of lambda).
+//    by scaling, tabulated over the loop's range of lambda, held at the
+//    table's least lambda below it; such points are counted).
 //
 // A sample whose contact is not a ruling in equilibrium is named and scored
 // by what it is: on a rim point (the sharp edge of the hull) or on a flat
@@ -98,6 +99,9 @@ struct LoopSds
   double load_ratio_min = 0, load_ratio_max = 0; ///< lambda over the mapped points
   /// Largest pressure over the loop's mapped points (inside the crease margins).
   double line_hertz_peak_pa = 0, fem_peak_pa = 0;
+  /// Mapped points of the ruling samples, and those whose load ratio lies
+  /// below the table's least (fem::SliceScaling::smallest_load_ratio), given g there.
+  std::size_t mapped_points = 0, points_below_table = 0;
   double worst_refinement_change = 0;  ///< over the nodes used: |g finer / g - 1|
   double tolerance = 0;
   double samples_wall_s = 0;           ///< loci and mapping

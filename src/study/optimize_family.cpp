@@ -71,7 +71,9 @@ public:
         if (!runs_.contains({x, r}) && std::find(missing.begin(), missing.end(), std::pair{x, r}) == missing.end())
           missing.emplace_back(x, r);
     std::vector<double> values(missing.size());
-    oracle::parallel_for(missing.size(), s_.threads, [&](std::size_t k) {
+    // FEM-SDS solves are collective over the MPI ranks: one body at a time.
+    const unsigned threads = s_.score == FamilyScore::fem_sds ? 1u : s_.threads;
+    oracle::parallel_for(missing.size(), threads, [&](std::size_t k) {
       const auto& [x, r] = missing[k];
       try
       {
@@ -228,7 +230,10 @@ std::string nuisance_text(const FamilySearchSettings& s)
 const std::vector<std::pair<std::string, FamilyScore>>& family_score_names()
 {
   static const std::vector<std::pair<std::string, FamilyScore>> names{
-      {"cds", FamilyScore::cds}, {"sds", FamilyScore::sds}, {"uniformity", FamilyScore::uniformity}};
+      {"cds", FamilyScore::cds},
+      {"sds", FamilyScore::sds},
+      {"uniformity", FamilyScore::uniformity},
+      {"fem-sds", FamilyScore::fem_sds}};
   return names;
 }
 
@@ -250,8 +255,12 @@ void validate(const FamilySearchSettings& s)
       throw InputError(fmt::format("optimize: {} = {} lies outside [{} = {}, {} = {}]", n.start, a.start, n.min,
                                    a.min, n.max, a.max));
   }
-  if ((s.score == FamilyScore::uniformity) != (s.oracle == Oracle::rolling))
-    throw InputError("optimize: the score uniformity needs oracle rolling, and cds or sds the approx or rigid oracle");
+  const bool rolls = s.score == FamilyScore::uniformity || s.score == FamilyScore::fem_sds;
+  if (rolls != (s.oracle == Oracle::rolling))
+    throw InputError("optimize: the scores uniformity and fem-sds need oracle rolling, and cds or sds the approx or "
+                     "rigid oracle");
+  if (s.score == FamilyScore::fem_sds && !s.fem_sds_score)
+    throw InputError("optimize: the score fem-sds is computed by rollcheck-fem (study/fem_sds_family.h)");
   if (s.replicates < 2)
     throw InputError(fmt::format("optimize: replicates must be at least 2 for a noise estimate, got {}", s.replicates));
   if (s.points < 3)
@@ -302,6 +311,8 @@ double replicate_score(const FamilySearchSettings& s, std::span<const double> x,
                         box.lower[i], box.upper[i]);
   }
   b.body = family_body(s, p);
+  if (s.score == FamilyScore::fem_sds)
+    return s.fem_sds_score(b.body);
   return score_of(score_body(b), s.score, p);
 }
 

@@ -12,6 +12,7 @@
 // itself is sequential.
 #include "study/optimize.h"
 #include "study/score_body.h"
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <span>
@@ -25,10 +26,15 @@ enum class FamilyScore
 {
   cds,       ///< the preprint's contact distribution score (approximate or rigid oracle)
   sds,       ///< the preprint's stress distribution score (approximate or rigid oracle)
-  uniformity ///< U of real rolling (oracle rolling)
+  uniformity, ///< U of real rolling (oracle rolling)
+  fem_sds     ///< FEM-SDS over one loop of real rolling (oracle rolling; fem_sds_score)
 };
 
-/// cds, sds, uniformity (for io::BoundSchema::choice).
+/// A body's score computed outside this library (FEM-SDS lives in
+/// rollcheck_study_fem: study/fem_sds_family.h fem_sds_scorer).
+using BodyScore = std::function<double(const geometry::BodySpec&)>;
+
+/// cds, sds, uniformity, fem-sds (for io::BoundSchema::choice).
 const std::vector<std::pair<std::string, FamilyScore>>& family_score_names();
 
 /// One parameter of the genome: its search interval and its start.
@@ -62,6 +68,9 @@ struct FamilySearchSettings
   double pilot_step = 0.05; ///< balanced_steps' pilots, fraction of each box width
   int sweep_points = 9; ///< per axis, from min to max through the start
   unsigned threads = 0; ///< evaluations in parallel (0: one per core)
+  /// score fem_sds: the body's FEM-SDS. It is called on the calling thread,
+  /// one body at a time (its FEM is collective over the MPI ranks).
+  BodyScore fem_sds_score;
   /// The oracles' options (steps, duration, rolling loops, contact parameters);
   /// its body, oracle, compat and metrics are set per genome.
   ScoreBodySettings scoring;
