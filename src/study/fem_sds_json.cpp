@@ -3,6 +3,8 @@
 #include "core/error.h"
 #include "core/json_number.h"
 #include "study/fem_sds.h"
+#include "contact/wedge_exponent.h"
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -63,6 +65,14 @@ void add_fem_json(nlohmann::json& j, const FemSdsOrientation& r)
   j["rim_overhang_deg"] = {json_number(r.rim_overhang_rad[0] * 180 / std::numbers::pi),
                            json_number(r.rim_overhang_rad[1] * 180 / std::numbers::pi)};
   j["obtuse_loaded_rims"] = r.obtuse_loaded_rims();
+  // The rims' wedges on the rigid plane (contact/wedge_exponent.h): stresses
+  // grow as r^exponent at a loaded end; 0: not singular; null: the end carries no load.
+  const std::array<bool, 2> loaded{l.loaded_from == 0, l.loaded_to == 1};
+  j["rim_stress_exponent"] = nlohmann::json::array();
+  for (int end = 0; end < 2; ++end)
+    j["rim_stress_exponent"].push_back(
+        loaded[end] ? json_number(contact::edge_on_rigid_plane_exponent(std::numbers::pi / 2 + r.rim_overhang_rad[end]))
+                    : nlohmann::json(nullptr));
   j["fem_peak_pa"] = json_number(r.fem_peak_pa);
   j["fem_peak_refined_pa"] = json_number(r.fem_peak_refined_pa);
   j["fem_peak_refinement_change"] = json_number(r.fem_peak_refined_pa / r.fem_peak_pa - 1);
