@@ -2,11 +2,13 @@
 
 For every successful case of scene kind "fem-sds" (summary written by
 study::to_json(FemSdsResult)), draws its stress distribution scores as bars,
-log scale: the preprint's analytic one ("analytic_sds", point Hertz), the
-line-contact Hertz one ("line_hertz_sds") and the FEM one ("fem_sds"); a
+log scale, each over every sample of one rolling loop ("samples", with its
+convergence in "fem_sds_status"): the preprint's analytic one ("analytic_sds",
+point Hertz), the line-contact Hertz one ("line_hertz_sds") and the FEM one
+("fem_sds"); a
 score that is null (nothing solved) or "inf" (no distribution) has no bar and
-is named in the caption. A second panel plots, per solved orientation
-("per_orientation", "fem_solved"), the FEM peak pressure ("fem_peak_pa")
+is named in the caption. A second panel plots, per orientation solved
+directly slice by slice ("per_orientation", "fem_solved"), the FEM peak pressure ("fem_peak_pa")
 against the preprint's point-Hertz peak ("point_hertz_peak_pa") and the
 line-contact Hertz peak ("line_hertz_peak_pa"), with the line of equality.
 A key missing from a fem-sds summary is an error naming it and the case.
@@ -58,16 +60,17 @@ def ratio(a, b):
 
 def table(cases):
     """The numbers of the FEM-SDS section: a header and one row per fem-sds case."""
-    header = ["case", "body", "orientations (FEM solved)", "analytic SDS", "line-Hertz SDS", "FEM SDS",
-              "FEM / analytic", "FEM / line-Hertz"]
+    header = ["case", "body", "loop samples", "analytic SDS", "line-Hertz SDS", "FEM SDS", "FEM / analytic",
+              "FEM / line-Hertz", "FEM SDS status", "orientations solved directly"]
     rows = []
     for case in cases:
         if case.ok and case.kind == KIND:
             s = scores(case)
             (fem, _, _), n = peaks(case)
-            rows.append([case.name, body(case), f"{n} ({len(fem)})",
+            rows.append([case.name, body(case), require(case.summary, "samples", where(case)),
                          *(f"{s[key]:.4g}" if s[key] is not None else "-" for key, _ in SCORES),
-                         ratio(s["fem_sds"], s["analytic_sds"]), ratio(s["fem_sds"], s["line_hertz_sds"])])
+                         ratio(s["fem_sds"], s["analytic_sds"]), ratio(s["fem_sds"], s["line_hertz_sds"]),
+                         require(case.summary, "fem_sds_status", where(case)), f"{len(fem)} of {n}"])
     return header, rows
 
 
