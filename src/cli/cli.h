@@ -19,6 +19,11 @@ std::string subcommand_in(const std::vector<std::string>& args);
 /// Whether a launcher (mpirun) started this process.
 bool launched_by_mpi();
 
+/// Whether the command line is one of the fast subcommands (mesh, oracle,
+/// search, optimize, report, audit) without FEM-SDS scores, outside mpirun:
+/// what needs neither MPI nor the FEM libraries.
+bool fast_command(const std::vector<std::string>& args);
+
 /// What the executable runs around the command line. Two executables share
 /// every other file of this layer: rollcheck-fem (fem_session.cpp), with the
 /// FEM libraries, starts MPI where a subcommand needs it and ends PETSc and

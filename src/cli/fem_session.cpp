@@ -10,7 +10,6 @@
 #include <fmt/ranges.h>
 #include <mpi.h>
 #include <petscsys.h>
-#include <set>
 #include <spdlog/spdlog.h>
 
 namespace rollcheck::cli
@@ -34,14 +33,11 @@ void warn_unused_petsc_options()
   PetscOptionsLeftRestore(nullptr, &count, &names, &values);
 }
 
-/// Whether the subcommand named in `args` needs MPI: every one but those that
-/// compute on one process with threads (search and optimize, unless they
-/// score FEM-SDS), unless a launcher (mpirun) started us.
+/// Whether the command line needs MPI: every subcommand but the fast ones,
+/// and anything a launcher (mpirun) started.
 bool needs_mpi(const std::vector<std::string>& args)
 {
-  static const std::set<std::string> without_mpi = {"", "mesh", "oracle", "search", "report", "audit", "optimize"};
-  const bool fem_score = std::ranges::find(args, "fem-sds") != args.end();
-  return launched_by_mpi() || fem_score || !without_mpi.contains(subcommand_in(args));
+  return launched_by_mpi() || (!subcommand_in(args).empty() && !fast_command(args));
 }
 } // namespace
 

@@ -12,7 +12,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <set>
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 
@@ -20,19 +19,17 @@ namespace rollcheck::cli
 {
 namespace
 {
-/// Whether this executable runs the command line itself: a fast subcommand,
-/// or --version; --help and no subcommand go to rollcheck-fem, which lists
-/// every subcommand.
+/// Whether this executable runs the command line itself: a fast subcommand
+/// (cli.h fast_command) that writes no gmsh volume mesh and passes no PETSc
+/// options, or --version; --help and no subcommand go to rollcheck-fem, which
+/// lists every subcommand.
 bool runs_here(int argc, char** argv, const std::vector<std::string>& args)
 {
-  static const std::set<std::string> here = {"mesh", "oracle", "search", "report", "audit", "optimize"};
-  const std::string subcommand = subcommand_in(args);
-  if (subcommand.empty())
+  if (subcommand_in(args).empty())
     return std::ranges::find(args, "--version") != args.end();
   const bool petsc_options = std::find(argv, argv + argc, std::string_view("--")) != argv + argc;
-  const bool fem_score = std::ranges::find(args, "fem-sds") != args.end();
   const bool volume_mesh = std::ranges::any_of(args, [](const std::string& a) { return a.ends_with(".msh"); });
-  return here.contains(subcommand) && !petsc_options && !fem_score && !volume_mesh && !launched_by_mpi();
+  return fast_command(args) && !petsc_options && !volume_mesh;
 }
 } // namespace
 

@@ -9,6 +9,7 @@
 #include "rollcheck_version.h"
 #include <algorithm>
 #include <cstdlib>
+#include <set>
 #include <cctype>
 #include <fmt/format.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
@@ -86,6 +87,13 @@ std::string subcommand_in(const std::vector<std::string>& args)
 bool launched_by_mpi()
 {
   return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK") || std::getenv("PMI_RANK");
+}
+
+bool fast_command(const std::vector<std::string>& args)
+{
+  static const std::set<std::string> fast = {"mesh", "oracle", "search", "report", "audit", "optimize"};
+  const bool fem_score = std::ranges::find(args, "fem-sds") != args.end();
+  return fast.contains(subcommand_in(args)) && !fem_score && !launched_by_mpi();
 }
 } // namespace rollcheck::cli
 

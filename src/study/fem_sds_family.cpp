@@ -16,6 +16,29 @@ namespace rollcheck::study
 {
 namespace
 {
+/// `body`'s whole loop of real rolling scored with `base`'s settings, and
+/// `why_not` empty; or why it has none: a rim lifts before the loop closes,
+/// or it cannot roll over its potential barrier (the same on every rank).
+BodyLoop whole_loop(MPI_Comm comm, const geometry::BodySpec& body, const FemSdsSettings& base,
+                    fem::SliceScaling& table, std::string& why_not)
+{
+  FemSdsSettings settings = base;
+  settings.body = body;
+  settings.oracle = OrientationOracle::rolling;
+  BodyLoop loop;
+  try
+  {
+    loop = score_body_loop(comm, settings, table);
+    why_not = loop.contact_held ? "" : loop.source;
+  }
+  catch (const InputError& e)
+  {
+    loop.body = geometry::body_label(body);
+    why_not = e.what();
+  }
+  return loop;
+}
+
 FamilyRow score_row(MPI_Comm comm, std::string kind, const geometry::BodySpec& body, const FamilySettings& s,
                     fem::SliceScaling& table)
 {
@@ -24,21 +47,8 @@ FamilyRow score_row(MPI_Comm comm, std::string kind, const geometry::BodySpec& b
   row.kind = std::move(kind);
   if (body.body == "roller")
     row.genome = body.genome;
-  FemSdsSettings settings = s.scoring;
-  settings.body = body;
-  settings.oracle = OrientationOracle::rolling;
-  try
-  {
-    row.loop = score_body_loop(comm, settings, table);
-    row.scored = row.loop.contact_held;
-    if (!row.scored)
-      row.why_not = row.loop.source;
-  }
-  catch (const InputError& e) // the body cannot roll over its barrier: the same on every rank
-  {
-    row.loop.body = geometry::body_label(body);
-    row.why_not = e.what();
-  }
+  row.loop = whole_loop(comm, body, s.scoring, table, row.why_not);
+  row.scored = row.why_not.empty();
   row.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return row;
 }
@@ -50,7 +60,6 @@ std::optional<double> ratio(const std::optional<double>& value, const std::optio
   return std::nullopt;
 }
 
-nlohmann::json optional_json(const std::optional<double>& v) { return v ? json_number(*v) : nlohmann::json(nullptr); }
 
 nlohmann::json row_json(const FamilyRow& row, const FamilyRow& cylinder)
 {
@@ -71,19 +80,18 @@ nlohmann::json row_json(const FamilyRow& row, const FamilyRow& cylinder)
   const LoopSds& c = cylinder.loop.loop;
   j["samples"] = l.samples;
   j["singular_samples"] = l.singular_samples;
-  j["point_hertz_sds"] = optional_json(l.point_hertz.value);
-  j["line_hertz_sds"] = optional_json(l.line_hertz.value);
-  j["fem_sds"] = optional_json(l.fem.value);
-  j["uniformity"] = optional_json(row.loop.uniformity);
+  j["point_hertz_sds"] = json_number(l.point_hertz.value);
+  j["line_hertz_sds"] = json_number(l.line_hertz.value);
+  j["fem_sds"] = json_number(l.fem.value);
+  j["uniformity"] = json_number(row.loop.uniformity);
   j["fem_sds_status"] = l.status();
-  const nlohmann::json loop = to_json(l);
-  j["fem_sds_table_change"] = loop["fem_sds_table_change"];
-  j["fem_sds_sample_change"] = loop["fem_sds_rulings"]["sample_change"];
+  j["fem_sds_table_change"] = json_number_or_null(l.table_change());
+  j["fem_sds_sample_change"] = json_number_or_null(l.fem_rulings.sample_change());
   if (cylinder.scored)
-    j["over_cylinder"] = {{"point_hertz_sds", optional_json(ratio(l.point_hertz.value, c.point_hertz.value))},
-                          {"line_hertz_sds", optional_json(ratio(l.line_hertz.value, c.line_hertz.value))},
-                          {"fem_sds", optional_json(ratio(l.fem.value, c.fem.value))},
-                          {"uniformity", optional_json(ratio(row.loop.uniformity, cylinder.loop.uniformity))}};
+    j["over_cylinder"] = {{"point_hertz_sds", json_number(ratio(l.point_hertz.value, c.point_hertz.value))},
+                          {"line_hertz_sds", json_number(ratio(l.line_hertz.value, c.line_hertz.value))},
+                          {"fem_sds", json_number(ratio(l.fem.value, c.fem.value))},
+                          {"uniformity", json_number(ratio(row.loop.uniformity, cylinder.loop.uniformity))}};
   return j;
 }
 
@@ -102,19 +110,9 @@ std::function<double(const geometry::BodySpec&)> fem_sds_scorer(MPI_Comm comm, c
   fem::ensure_petsc();
   auto table = std::make_shared<fem::SliceScaling>(slice_settings(base), base.table_nodes_per_decade);
   return [comm, base, table](const geometry::BodySpec& body) {
-    FemSdsSettings settings = base;
-    settings.body = body;
-    settings.oracle = OrientationOracle::rolling;
-    try
-    {
-      const BodyLoop loop = score_body_loop(comm, settings, *table);
-      if (loop.contact_held && loop.loop.fem.value)
-        return *loop.loop.fem.value;
-    }
-    catch (const InputError&) // it cannot roll over its barrier: the same on every rank
-    {
-    }
-    return std::numeric_limits<double>::infinity();
+    std::string why_not;
+    const BodyLoop loop = whole_loop(comm, body, base, *table, why_not);
+    return why_not.empty() && loop.loop.fem.value ? *loop.loop.fem.value : std::numeric_limits<double>::infinity();
   };
 }
 

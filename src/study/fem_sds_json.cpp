@@ -13,11 +13,6 @@ namespace rollcheck::study
 namespace
 {
 
-nlohmann::json score_json(const std::optional<double>& score)
-{
-  return score ? json_number(*score) : nlohmann::json(nullptr);
-}
-
 nlohmann::json slice_json(const fem::SliceFem& s)
 {
   return {{"position_m", json_number(s.load.position_m)},
@@ -153,12 +148,12 @@ nlohmann::json to_json(const FemSdsResult& result)
       {"samples", loop.samples},
       {"contact_held", result.contact_held},
       {"singular_samples", loop.singular_samples},
-      {"analytic_sds", score_json(loop.point_hertz.value)},
-      {"line_hertz_sds", score_json(loop.line_hertz.value)},
-      {"fem_sds", score_json(loop.fem.value)},
-      {"fem_sds_half_table", score_json(loop.fem_half_table)},
-      {"fem_sds_table_change", to_json(loop)["fem_sds_table_change"]},
-      {"fem_sds_sample_change", to_json(loop)["fem_sds_rulings"]["sample_change"]},
+      {"analytic_sds", json_number(loop.point_hertz.value)},
+      {"line_hertz_sds", json_number(loop.line_hertz.value)},
+      {"fem_sds", json_number(loop.fem.value)},
+      {"fem_sds_half_table", json_number(loop.fem_half_table)},
+      {"fem_sds_table_change", json_number_or_null(loop.table_change())},
+      {"fem_sds_sample_change", json_number_or_null(loop.fem_rulings.sample_change())},
       {"fem_solves", loop.fem_solves},
       {"fem_solves_half_table", loop.fem_solves_half_table},
       {"converged", loop.converged()},

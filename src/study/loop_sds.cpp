@@ -294,12 +294,10 @@ LoopSds loop_sds(MPI_Comm comm, const LoopSource& source, const oracle::RollingB
 
 nlohmann::json to_json(const LoopSds& loop)
 {
-  auto optional_number = [](const std::optional<double>& v) { return v ? json_number(*v) : nlohmann::json(nullptr); };
-  auto change = [](double v) { return std::isnan(v) ? nlohmann::json(nullptr) : json_number(v); };
   auto score = [&](const ConvergedScore& c) {
-    return nlohmann::json{{"value", optional_number(c.value)},
-                          {"half_samples", optional_number(c.half_samples)},
-                          {"sample_change", change(c.sample_change())}};
+    return nlohmann::json{{"value", json_number(c.value)},
+                          {"half_samples", json_number(c.half_samples)},
+                          {"sample_change", json_number_or_null(c.sample_change())}};
   };
   nlohmann::json by_contact = nlohmann::json::object();
   for (const auto& [name, count] : loop.samples_by_contact)
@@ -312,8 +310,8 @@ nlohmann::json to_json(const LoopSds& loop)
           {"fem_sds", score(loop.fem)},
           {"line_hertz_sds_rulings", score(loop.line_hertz_rulings)},
           {"fem_sds_rulings", score(loop.fem_rulings)},
-          {"fem_sds_half_table", optional_number(loop.fem_half_table)},
-          {"fem_sds_table_change", change(loop.table_change())},
+          {"fem_sds_half_table", json_number(loop.fem_half_table)},
+          {"fem_sds_table_change", json_number_or_null(loop.table_change())},
           {"fem_solves", loop.fem_solves},
           {"fem_solves_half_table", loop.fem_solves_half_table},
           {"table_nodes_per_decade", loop.nodes_per_decade},

@@ -24,8 +24,7 @@ nlohmann::json scores_json(const contact::ScoreVector& v)
   nlohmann::json j = nlohmann::json::object();
   for (const ScoreColumn& c : score_columns())
   {
-    const std::optional<double> value = c.value(v);
-    j[std::string(c.key)] = value ? json_number(*value) : nlohmann::json(nullptr);
+    j[std::string(c.key)] = json_number(c.value(v));
   }
   return j;
 }

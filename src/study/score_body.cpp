@@ -57,8 +57,6 @@ Scored score_rolled(const geometry::SurfaceMesh& mesh, const oracle::RollingBody
   return out;
 }
 
-nlohmann::json optional_score(const std::optional<double>& v) { return v ? json_number(*v) : nlohmann::json(nullptr); }
-
 nlohmann::json array_of(const Eigen::VectorXd& v)
 {
   nlohmann::json a = nlohmann::json::array();
@@ -123,12 +121,12 @@ nlohmann::json oracle_json(const BodyScores& r, bool per_face)
   const contact::ScoreVector& v = r.scores;
   nlohmann::json j = {{"oracle", oracle_name(r.oracle)},
                       {"body", r.body},
-                      {"cds", optional_score(v.cds)},
-                      {"sds", optional_score(v.sds)},
-                      {"tds", optional_score(v.tds)},
-                      {"wds_vol", optional_score(v.wds_vol)},
-                      {"wds_depth", optional_score(v.wds_depth)},
-                      {"fds", optional_score(v.fds)},
+                      {"cds", json_number(v.cds)},
+                      {"sds", json_number(v.sds)},
+                      {"tds", json_number(v.tds)},
+                      {"wds_vol", json_number(v.wds_vol)},
+                      {"wds_depth", json_number(v.wds_depth)},
+                      {"fds", json_number(v.fds)},
                       {"n_faces", r.n_faces},
                       {"n_samples", v.n_samples},
                       {"wall_s", r.wall_s},
