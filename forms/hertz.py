@@ -15,7 +15,10 @@
 # 2nd ed., Springer 2006): with the gap
 # g = z + u_z to the plane, the contact pressure is p = kappa <-g>_+ and the
 # contact energy (kappa / 2) <-g>_+^2 on the candidate surface ds(1).
-# kappa = c E / h is set by the caller (Pa/m).
+# kappa = c E / h is set by the caller (Pa/m), times a cellwise factor
+# (penalty_scale, DG0, 1 unless the caller grades it with the mesh: a node
+# penalty much softer than its small elements cuts a singular pressure off at
+# h / c of the largest elements instead of the local ones).
 #
 # Integrals carry the weight w = 2 pi r for the axisymmetric model, so that
 # forces and energies are those of the whole body of revolution; the plane
@@ -100,19 +103,21 @@ def contact_forms(tag, degree):
     E = Constant(cell)
     nu = Constant(cell)
     kappa = Constant(cell)
+    penalty_scale = Coefficient(FiniteElement("DG", cell, 0))
 
     sigma = stress3(strain3(tag, u, x), E, nu)
     gap = x[z] + u[z]
     penetration = conditional(lt(gap, 0), -gap, 0)
-    pressure = kappa * penetration
+    pressure = kappa * penalty_scale * penetration
     residual = (inner(sigma, strain3(tag, v, x)) * weight * dx
                 - pressure * v[z] * weight * ds_contact)
     named = {
         "u": u, "youngs_modulus": E, "poisson_ratio": nu, "penalty_stiffness": kappa,
+        "penalty_scale": penalty_scale,
         "residual": residual,
         "jacobian": derivative(residual, u, du),
         "energy": (0.5 * inner(sigma, strain3(tag, u, x)) * weight * dx
-                   + 0.5 * kappa * penetration**2 * weight * ds_contact),
+                   + 0.5 * kappa * penalty_scale * penetration**2 * weight * ds_contact),
         "contact_force": pressure * weight * ds_contact,
         "pressure_load": pressure * q * weight * ds_contact,
         "contact_mass": q * weight * ds_contact,

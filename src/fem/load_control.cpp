@@ -16,7 +16,8 @@ LineApproach line_contact_approach(double load_n_per_m, double radius_m, double 
 }
 
 LoadControlReport reach_force(PenaltyContact& problem, double target, double first_approach_m,
-                              double first_shift_m, double exponent, double rtol, spdlog::level::level_enum progress)
+                              double first_shift_m, double exponent, double rtol, spdlog::level::level_enum progress,
+                              const std::function<double()>& measured_force)
 {
   constexpr int max_steps = 20;
   LoadControlReport report;
@@ -33,7 +34,7 @@ LoadControlReport reach_force(PenaltyContact& problem, double target, double fir
     report.newton.solve_s += newton.solve_s;
     report.load_steps = step;
     report.approach_m = problem.approach_m();
-    report.force = problem.reaction_force_n();
+    report.force = measured_force ? measured_force() : problem.reaction_force_n();
     spdlog::log(progress, "load step {}: approach {:.9e} m, force {:.6g} of {:.6g}, {} Newton iterations", step,
                 report.approach_m, report.force, target, newton.newton_iterations);
     if (!(report.force > 0))

@@ -9,6 +9,7 @@
 // Each solve starts from the previous solution with the new approach
 // prescribed on the top face (see PenaltyContact::set_approach).
 #include "fem/penalty_contact.h"
+#include <functional>
 #include <spdlog/spdlog.h>
 
 namespace rollcheck::fem
@@ -35,8 +36,11 @@ LineApproach line_contact_approach(double load_n_per_m, double radius_m, double 
 
 /// `first_approach_m` and `first_shift_m` start the first solve (see
 /// PenaltyContact::start_translated); `exponent` is n_0. Each load step is
-/// logged at `progress` (info for a long solve's progress on rank 0).
+/// logged at `progress` (info for a long solve's progress on rank 0). The
+/// force is the reaction at the top face, or what `measured_force` returns
+/// (a part of the body's load, e.g. the line load at a section).
 LoadControlReport reach_force(PenaltyContact& problem, double target_force, double first_approach_m,
                               double first_shift_m, double exponent, double rtol,
-                              spdlog::level::level_enum progress = spdlog::level::debug);
+                              spdlog::level::level_enum progress = spdlog::level::debug,
+                              const std::function<double()>& measured_force = {});
 } // namespace rollcheck::fem

@@ -43,8 +43,7 @@ NodalFields recover_nodal_fields(const PenaltyContact& problem)
   require_same_layout(*Q, *S);
   require_same_layout(*Q, *V1);
 
-  const std::map<std::string, std::shared_ptr<const dfem::Function<T>>> coefficients
-      = {{"u_" + forms.suffix, problem.displacement()}};
+  const auto& coefficients = problem.coefficients();
   auto load = [&](ufcx_form* form, std::shared_ptr<const dfem::FunctionSpace> space) {
     return assemble_load(
         dfem::create_form<T>(*form, {space}, coefficients, problem.constants(), problem.subdomains(), mesh));

@@ -10,6 +10,8 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <sstream>
+#include <xtensor/xarray.hpp>
+#include <xtensor/xtensor.hpp>
 
 namespace rollcheck::fem
 {
@@ -133,7 +135,13 @@ PenaltyContact::PenaltyContact(const SceneMesh& scene, Model model, int degree, 
   std::vector<int> values(facets.size(), 1); // CONTACT_SURFACE in forms/hertz.py
   _contact_tags = std::make_shared<dolfinx::mesh::MeshTags<int>>(mesh, fdim, std::move(facets), std::move(values));
   _subdomains = {{dfem::IntegralType::exterior_facet, _contact_tags.get()}};
-  const std::map<std::string, std::shared_ptr<const dfem::Function<T>>> coefficients = {{"u_" + s, _u}};
+  // The penalty's cellwise factor (forms/hertz.py), 1 until set_penalty_scale.
+  auto Q0 = std::make_shared<dfem::FunctionSpace>(
+      dfem::create_functionspace(_forms.displacement_space, ("penalty_scale_" + s).c_str(), mesh));
+  _penalty_scale = std::make_shared<dfem::Function<T>>(Q0);
+  _penalty_scale->x()->set(1.0);
+  _coefficients = {{"u_" + s, _u}, {"penalty_scale_" + s, _penalty_scale}};
+  const auto& coefficients = _coefficients;
   auto make_form = [&](ufcx_form* form, std::vector<std::shared_ptr<const dfem::FunctionSpace>> spaces) {
     return std::make_shared<dfem::Form<T>>(
         dfem::create_form<T>(*form, spaces, coefficients, _constants, _subdomains, mesh));
@@ -372,5 +380,17 @@ double PenaltyContact::reaction_force_n() const
   double total = 0;
   MPI_Allreduce(&local, &total, 1, MPI_DOUBLE, MPI_SUM, _scene.mesh->comm());
   return -total * _scene.symmetry_multiplicity;
+}
+void PenaltyContact::set_penalty_scale(const std::function<double(const double* x)>& scale)
+{
+  _penalty_scale->interpolate([&](const xt::xtensor<double, 2>& x) -> xt::xarray<T> {
+    xt::xtensor<T, 1> values = xt::empty<T>({x.shape(1)});
+    for (std::size_t i = 0; i < x.shape(1); ++i)
+    {
+      const double point[3] = {x(0, i), x(1, i), x(2, i)};
+      values(i) = scale(point);
+    }
+    return values;
+  });
 }
 } // namespace rollcheck::fem

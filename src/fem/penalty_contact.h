@@ -60,6 +60,11 @@ public:
   /// ruling (fem/slab_contact.h). Applies from the next set_approach.
   void set_approach_profile(const std::function<double(const double* x)>& weight);
 
+  /// The penalty stiffness becomes penalty_stiffness * scale(x) in the cell
+  /// whose midpoint is x (1 before this is called): graded with the mesh, the
+  /// penalty stays as stiff against its elements where they are small.
+  void set_penalty_scale(const std::function<double(const double* x)>& scale);
+
   /// Newton to convergence at the current approach; throws ComputationError
   /// on a diverged linear solve or when Newton does not converge.
   NewtonReport solve();
@@ -74,6 +79,11 @@ public:
   std::shared_ptr<const dolfinx::mesh::Mesh> mesh() const { return _scene.mesh; }
   const SceneMesh& scene() const { return _scene; }
   std::int64_t num_dofs() const;
+  /// Coefficients of the forms (displacement, penalty scale), by their UFL names.
+  const std::map<std::string, std::shared_ptr<const dolfinx::fem::Function<T>>>& coefficients() const
+  {
+    return _coefficients;
+  }
   /// Constants shared by all forms of this model/degree, by their UFL names.
   const std::map<std::string, std::shared_ptr<const dolfinx::fem::Constant<T>>>& constants() const
   {
@@ -93,6 +103,8 @@ private:
   ContactForms _forms;
   std::shared_ptr<dolfinx::fem::FunctionSpace> _V;
   std::shared_ptr<dolfinx::fem::Function<T>> _u;
+  std::shared_ptr<dolfinx::fem::Function<T>> _penalty_scale; ///< DG0
+  std::map<std::string, std::shared_ptr<const dolfinx::fem::Function<T>>> _coefficients;
   std::shared_ptr<dolfinx::fem::Function<T>> _top_displacement; ///< the top face's prescribed values
   std::vector<std::int32_t> _top_blocks;  ///< owned and ghost
   std::vector<double> _top_weights;       ///< per top block, see set_approach_profile

@@ -92,6 +92,14 @@ int add_quarter_hemisphere(double R)
   return point_at_origin(R);
 }
 
+/// The size field (or callback) alone sets the element sizes.
+void sizes_from_fields_alone()
+{
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+}
+
 void set_graded_size_field(int pole, const MeshGrading& g)
 {
   namespace field = gmsh::model::mesh::field;
@@ -104,10 +112,7 @@ void set_graded_size_field(int pole, const MeshGrading& g)
   field::setNumber(threshold, "DistMin", g.fine_radius_m);
   field::setNumber(threshold, "DistMax", g.fine_radius_m + (g.far_size_m - g.contact_size_m) / g.growth);
   field::setAsBackgroundMesh(threshold);
-  // The field alone sets the sizes.
-  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  sizes_from_fields_alone();
 }
 
 /// Quarter disc of radius 1 extruded along gmsh's z by `length` in the given
@@ -123,31 +128,76 @@ int add_extruded_quarter_disc(double length, const std::vector<double>& layer_fr
   return pole;
 }
 
+/// The rim end's solid (build_rim_end_mesh): the block x in [-L, H],
+/// y in [0, H], z <= H, inside the cylinder of radius R about the line
+/// (x, 0, R), cut by the other face's half-space, its edge filleted.
+void add_rim_end(const RimEndGeometry& g)
+{
+  namespace occ = gmsh::model::occ;
+  const double H = g.depth_m, L = g.length_m, R = g.radius_m;
+  // The box overlaps the tangent plane z = 0 instead of touching it.
+  const int box = occ::addBox(-L, 0, -0.1 * H, L + H, H, 1.1 * H);
+  const int cylinder = occ::addCylinder(-L - H, 0, R, L + 3 * H, 0, 0, R);
+  gmsh::vectorpair body, cut;
+  std::vector<gmsh::vectorpair> map;
+  occ::intersect({{3, box}}, {{3, cylinder}}, body, map);
+  // Beyond the other face: n . p > 0, n = (sin a, 0, cos a) for the interior
+  // angle a, which is +x (a square end) turned about y by a - 90 deg.
+  const double span = 10 * (L + H);
+  const int half_space = occ::addBox(0, -span, -span, span, 2 * span, 2 * span);
+  occ::rotate({{3, half_space}}, 0, 0, 0, 0, 1, 0, g.interior_angle_rad - std::numbers::pi / 2);
+  occ::cut(body, {{3, half_space}}, cut, map);
+  occ::synchronize();
+  if (cut.size() != 1)
+    throw ComputationError(fmt::format("rim end: the cut left {} volumes, not one", cut.size()));
+  if (!(g.edge_radius_m > 0))
+    return;
+  // The edge: the one curve that crosses the block (y from 0 to H) near the origin.
+  gmsh::vectorpair curves;
+  gmsh::model::getEntities(curves, 1);
+  std::vector<int> edges;
+  const double tol = 1e-5 * H;
+  for (const auto& [dim, tag] : curves)
+  {
+    double x0, y0, z0, x1, y1, z1;
+    gmsh::model::getBoundingBox(dim, tag, x0, y0, z0, x1, y1, z1);
+    if (y0 < tol && y1 > H - tol && x0 > -tol && x1 < 0.5 * H && z1 < 0.1 * H)
+      edges.push_back(tag);
+  }
+  if (edges.size() != 1)
+    throw ComputationError(fmt::format("rim end: found {} edge curves, not one", edges.size()));
+  gmsh::vectorpair filleted;
+  occ::fillet({cut[0].second}, edges, {g.edge_radius_m}, filleted, true);
+  occ::synchronize();
+  if (filleted.size() != 1)
+    throw ComputationError(fmt::format("rim end: the fillet of radius {:.3g} m failed", g.edge_radius_m));
+}
+
 /// gmsh compares lengths with its geometric tolerance, 1e-8 of the model's
 /// size (Geometry.Tolerance); an element size near it makes the 2D mesher
 /// throw from inside an OpenMP region, which aborts the process. Measured on
 /// the plane-strain Hertz scene: h_c = 1.35e-8 of the model (1e-5 N) meshes
 /// and solves (b within 0.05 % of Hertz), 1.35e-9 (1e-7 N) aborts. Sizes below
 /// 1e-8 of the model are refused before meshing, as bad input.
-void require_meshable(const MeshGrading& grading)
+void require_meshable(double smallest_size_m)
 {
   constexpr double smallest_relative_size = 1e-8;
   double x0, y0, z0, x1, y1, z1;
   gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
   const double model_size = std::max({x1 - x0, y1 - y0, z1 - z0});
-  if (!(grading.contact_size_m >= smallest_relative_size * model_size))
+  if (!(smallest_size_m >= smallest_relative_size * model_size))
     throw InputError(fmt::format(
         "the contact element size {:.3g} is {:.3g} of the modelled body ({:.3g}), below the {:g} gmsh can mesh "
         "reliably: the load is too small (or the body too large) for the contact to be resolved; the smallest "
         "representable load gives a contact about {:g} times larger",
-        grading.contact_size_m, grading.contact_size_m / model_size, model_size, smallest_relative_size,
-        smallest_relative_size * model_size / grading.contact_size_m));
+        smallest_size_m, smallest_size_m / model_size, model_size, smallest_relative_size,
+        smallest_relative_size * model_size / smallest_size_m));
 }
 
-/// Runs gmsh on the geometry `add_geometry` builds (it returns the tag of the
-/// point of contact) with the grading about that point; nodes with `dim`
-/// coordinates, cells of the simplex of dimension `dim`.
-RawMesh mesh_with_gmsh(int dim, const std::function<int()>& add_geometry, const MeshGrading& grading)
+/// Runs gmsh on the geometry `add_geometry` builds, whose element sizes it
+/// sets too (it returns the smallest size); nodes with `dim` coordinates,
+/// cells of the simplex of dimension `dim`.
+RawMesh mesh_with_gmsh(int dim, const std::function<double()>& add_geometry_and_sizes)
 {
   gmsh::initialize();
   RawMesh raw;
@@ -156,9 +206,7 @@ RawMesh mesh_with_gmsh(int dim, const std::function<int()>& add_geometry, const 
     gmsh::option::setNumber("General.Terminal", 0);
     gmsh::option::setNumber("General.NumThreads", 1);
     gmsh::model::add("scene");
-    const int pole = add_geometry();
-    require_meshable(grading);
-    set_graded_size_field(pole, grading);
+    require_meshable(add_geometry_and_sizes());
     gmsh::option::setNumber("Mesh.Algorithm", 6);   // Frontal-Delaunay: near-equilateral triangles
     gmsh::option::setNumber("Mesh.Algorithm3D", 1); // Delaunay
     gmsh::option::setNumber("Mesh.Optimize", 1);
@@ -201,6 +249,16 @@ RawMesh mesh_with_gmsh(int dim, const std::function<int()>& add_geometry, const 
   }
   gmsh::finalize();
   return raw;
+}
+
+/// mesh_with_gmsh with the grading about the point of contact, whose tag
+/// `add_geometry` returns.
+RawMesh mesh_with_gmsh(int dim, const std::function<int()>& add_geometry, const MeshGrading& grading)
+{
+  return mesh_with_gmsh(dim, [&] {
+    set_graded_size_field(add_geometry(), grading);
+    return grading.contact_size_m;
+  });
 }
 
 using Predicate = std::function<bool(double, double, double)>;
@@ -407,6 +465,66 @@ SceneMesh build_slab_mesh(MPI_Comm comm, const SlabGeometry& slab, const MeshGra
   parts.in_plane = [&](double x, double y, double z) {
     const double a = along(x, y, z), R = radius(a);
     return std::abs(a) < tol * L || std::abs(a - L) < tol * L || std::abs(y / R) < tol || std::abs(z / R - 1) < tol;
+  };
+  tag_parts(scene, parts);
+  scene.symmetry_multiplicity = 2;
+  scene.wall_s = seconds_since(start);
+  return scene;
+}
+
+double rim_end_element_size(const RimEndSizes& sizes, const double* x)
+{
+  // Distances from the loaded part of the edge (along y through the origin)
+  // and from the contact strip (along -x).
+  const double to_edge = std::sqrt(x[0] * x[0] + x[2] * x[2] + std::pow(std::max(x[1] - sizes.edge_zone_m, 0.0), 2));
+  const double to_strip = std::sqrt(x[2] * x[2] + std::pow(std::max(x[1] - sizes.contact_zone_m, 0.0), 2)
+                                    + std::pow(std::max(x[0], 0.0), 2));
+  return std::min(
+      {sizes.far_m, sizes.edge_m + sizes.growth * to_edge, sizes.contact_m + sizes.growth * to_strip});
+}
+
+SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& g, const RimEndSizes& sizes)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const double H = g.depth_m, L = g.length_m;
+  for (double v : {g.radius_m, H, L, sizes.edge_m, sizes.contact_m, sizes.far_m, sizes.growth})
+    if (!std::isfinite(v) || v <= 0)
+      throw InputError(fmt::format("rim end: radius, depth, length and element sizes must be positive and finite "
+                                   "(R = {} m, H = {} m, L = {} m, sizes {} m, {} m, {} m, growth {})",
+                                   g.radius_m, H, L, sizes.edge_m, sizes.contact_m, sizes.far_m, sizes.growth));
+  if (!(g.interior_angle_rad >= std::numbers::pi / 2 && g.interior_angle_rad < std::numbers::pi))
+    throw InputError(fmt::format("rim end: the interior angle must lie in [90, 180) deg, got {} deg",
+                                 g.interior_angle_rad * 180 / std::numbers::pi));
+  if (!(g.edge_radius_m >= 0 && g.edge_radius_m < 0.1 * H) || g.radius_m < H)
+    throw InputError(fmt::format("rim end: need 0 <= edge radius < H / 10 and R >= H (edge radius {} m, R = {} m, "
+                                 "H = {} m)",
+                                 g.edge_radius_m, g.radius_m, H));
+  // OpenCASCADE's tolerances are absolute (1e-7): the geometry is built with
+  // H as the unit and the mesh scaled back.
+  const RimEndGeometry unit{g.radius_m / H, g.interior_angle_rad, g.edge_radius_m / H, 1.0, L / H};
+  SceneMesh scene = distribute(comm, 3, [&] {
+    RawMesh raw = mesh_with_gmsh(3, [&] {
+      add_rim_end(unit);
+      gmsh::model::mesh::setSizeCallback([sizes, H](int, int, double x, double y, double z) {
+        const double point[3] = {x * H, y * H, z * H};
+        return rim_end_element_size(sizes, point) / H;
+      });
+      sizes_from_fields_alone();
+      return std::min(sizes.edge_m, sizes.contact_m) / H;
+    });
+    for (double& x : raw.x)
+      x *= H;
+    return raw;
+  });
+  const double tol = 1e-9 * H;
+  SceneParts parts;
+  parts.symmetry_x = [=](double x, double, double) { return std::abs(x + L) < tol; };
+  parts.symmetry_y = [=](double, double y, double) { return std::abs(y) < tol; };
+  parts.top = [=](double, double, double z) { return std::abs(z - H) < tol; };
+  parts.curved = [](double, double, double) { return true; };
+  parts.in_plane = [=](double x, double y, double z) {
+    return std::abs(x + L) < tol || std::abs(x - H) < tol || std::abs(y) < tol || std::abs(y - H) < tol
+           || std::abs(z - H) < tol;
   };
   tag_parts(scene, parts);
   scene.symmetry_multiplicity = 2;

@@ -28,6 +28,18 @@
 //   side x = W and the top z = H. Mirrored, the surface has a kink of
 //   180 deg - 2 beta at the apex, which touches the plane first.
 //
+// - rim end (build_rim_end_mesh): the neighbourhood of one end of a loaded
+//   ruling, the y >= 0 half by symmetry. The ruling runs along x and ends at
+//   the origin, on the body's rim (the edge, along y). The contacting sheet is
+//   the cylinder of radius R about (x, 0, R) (its curvature across the
+//   ruling); beyond the edge the other face is the plane through the y axis
+//   at the interior angle a from the sheet, measured through the body in the
+//   ruling's vertical plane (90 deg: a square end, the face x = 0; towards
+//   180 deg the other face rises gently beyond x = 0). The block is cut at
+//   x = -L (the far side, a plane of symmetry: plane strain), x = H (beyond
+//   the edge), y = H and z = H (the loaded top); the edge may be rounded
+//   with a fillet of radius r_e (OpenCASCADE).
+//
 // Grading: element size h(d) = min(h_far, h_c + g max(0, d - r_fine)) with d
 // the distance from the first point of contact (gmsh Distance + Threshold
 // fields, linear in between); see MeshGrading. The slab is the plane-strain
@@ -86,6 +98,35 @@ struct CreaseGeometry
 /// Model::plane_strain conventions (the vertical is the second coordinate);
 /// symmetry multiplicity 2.
 SceneMesh build_crease_mesh(MPI_Comm comm, const CreaseGeometry& crease, const MeshGrading& grading);
+
+struct RimEndGeometry
+{
+  double radius_m = 0;           ///< R, of the contacting sheet across the ruling
+  double interior_angle_rad = 0; ///< a, in [90, 180) deg
+  double edge_radius_m = 0;      ///< r_e of the fillet; 0: a sharp edge
+  double depth_m = 0;            ///< H: the block's height and half-width (R >= H)
+  double length_m = 0;           ///< L: contact modelled from the far side x = -L to the edge
+};
+
+/// Element size min(far, edge + growth d_edge, contact + growth d_strip),
+/// d_edge the distance from the edge's first `edge_zone_m` (from y = 0),
+/// d_strip from the strip y < contact_zone_m along the ruling.
+struct RimEndSizes
+{
+  double edge_m = 0, edge_zone_m = 0;
+  double contact_m = 0, contact_zone_m = 0;
+  double growth = 0.3;
+  double far_m = 0;
+};
+
+/// The size at the point x (m) of the rim end scene.
+double rim_end_element_size(const RimEndSizes& sizes, const double* x);
+
+/// Model::solid conventions, symmetry_x the far side; symmetry multiplicity
+/// 2. The contact facets are every face but the block's planes (the sheet,
+/// the fillet, the other face). InputError for a geometry outside the
+/// ranges above.
+SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& geometry, const RimEndSizes& sizes);
 
 /// `section_grading` in units of the local radius (the section at unit
 /// radius). Model::solid conventions; symmetry multiplicity 2.

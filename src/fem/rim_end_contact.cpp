@@ -1,0 +1,213 @@
+#include "fem/rim_end_contact.h"
+#include "contact/hertz.h"
+#include "contact/wedge_exponent.h"
+#include "core/error.h"
+#include "fem/all_gather.h"
+#include "fem/load_control.h"
+#include "fem/nodal_fields.h"
+#include "fem/penalty_contact.h"
+#include "fem/petsc_session.h"
+#include "fem/scene_mesh.h"
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+namespace rollcheck::fem
+{
+namespace
+{
+void validate(const RimEndSettings& s)
+{
+  for (const auto& [value, name] :
+       {std::pair{s.radius_m, "radius_m"}, std::pair{s.load_n_per_m, "load_n_per_m"},
+        std::pair{s.youngs_modulus_pa, "youngs_modulus_pa"}, std::pair{s.depth_over_half_width, "depth_over_half_width"},
+        std::pair{s.length_over_depth, "length_over_depth"},
+        std::pair{s.edge_element_over_half_width, "edge_element_over_half_width"},
+        std::pair{s.tolerance, "tolerance"}, std::pair{s.penalty_c, "penalty_c"}})
+    if (!std::isfinite(value) || value <= 0)
+      throw InputError(fmt::format("rim: {} must be positive and finite, got {}", name, value));
+  if (!(s.interior_angle_rad >= std::numbers::pi / 2 && s.interior_angle_rad < std::numbers::pi))
+    throw InputError(fmt::format("rim: interior_angle_deg must lie in [90, 180), got {}",
+                                 s.interior_angle_rad * 180 / std::numbers::pi));
+  if (!(s.poisson_ratio >= 0 && s.poisson_ratio < 0.5))
+    throw InputError(fmt::format("rim: poisson_ratio must lie in [0, 0.5), got {}", s.poisson_ratio));
+  if (!(s.edge_radius_m >= 0) || !std::isfinite(s.edge_radius_m))
+    throw InputError(fmt::format("rim: edge_radius_m must be >= 0 and finite, got {}", s.edge_radius_m));
+  if (s.depth_over_half_width < 4 || s.length_over_depth < 1)
+    throw InputError(fmt::format("rim: the block must be at least 4 b deep and H long (depth_over_half_width {}, "
+                                 "length_over_depth {})",
+                                 s.depth_over_half_width, s.length_over_depth));
+  if (s.contact_elements < 2 || s.contact_elements > 40 || s.levels < 1 || s.levels > 6)
+    throw InputError(fmt::format("rim: contact_elements must be 2 to 40 and levels 2 to 6, got {} and {}",
+                                 s.contact_elements, s.levels));
+}
+
+/// Mean and standard deviation of the centre-line pressures with x in [from,
+/// to], at least `least` of them.
+std::array<double, 2> centre_line_mean(const std::vector<CentreLineNode>& line, double from, double to,
+                                       int least = 2)
+{
+  double sum = 0, sum2 = 0;
+  int n = 0;
+  for (const CentreLineNode& node : line)
+    if (node.x_m >= from && node.x_m <= to)
+    {
+      sum += node.pressure_pa;
+      sum2 += node.pressure_pa * node.pressure_pa;
+      ++n;
+    }
+  if (n < least)
+    throw ComputationError(fmt::format("rim: fewer than {} centre-line nodes in [{:.3g}, {:.3g}] m", least, from, to));
+  const double mean = sum / n;
+  return {mean, std::sqrt(std::max(sum2 / n - mean * mean, 0.0))};
+}
+
+/// 2 int p dy over the surface nodes of the far side x = -L (y >= 0 half).
+double far_line_load(const std::vector<SurfacePressureNode>& nodes, double far_x, double tol)
+{
+  std::vector<std::array<double, 2>> section; // (y, p)
+  for (const SurfacePressureNode& n : nodes)
+    if (std::abs(n.x[0] - far_x) < tol)
+      section.push_back({n.x[1], n.pressure_pa});
+  std::sort(section.begin(), section.end());
+  double load = 0;
+  for (std::size_t i = 1; i < section.size(); ++i)
+    load += 0.5 * (section[i][1] + section[i - 1][1]) * (section[i][0] - section[i - 1][0]);
+  return 2 * load;
+}
+
+RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_element_m)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const RimEndSettings& s = study.setup;
+  const double b = study.half_width_m, H = s.depth_over_half_width * b, L = s.length_over_depth * H;
+  RimEndLevel level;
+  level.edge_element_m = edge_element_m;
+  RimEndSizes sizes;
+  sizes.contact_m = b / s.contact_elements;
+  sizes.contact_zone_m = 1.5 * b;
+  sizes.edge_m = std::min(edge_element_m, sizes.contact_m);
+  sizes.edge_zone_m = 1.5 * b;
+  sizes.far_m = H / 4;
+  const SceneMesh scene = build_rim_end_mesh(
+      comm, {s.radius_m, s.interior_angle_rad, s.edge_radius_m, H, L}, sizes);
+  const double body_modulus = s.youngs_modulus_pa;
+  PenaltyContact problem(scene, Model::solid, 1, body_modulus, s.poisson_ratio,
+                         s.penalty_c * body_modulus / sizes.contact_m, s.petsc_options);
+  // kappa = c E / h(x) with the mesh's own size: a penalty as soft as at the
+  // strip's elements would cut the edge's singular pressure off at h_c / c.
+  problem.set_penalty_scale([&](const double* x) { return sizes.contact_m / rim_end_element_size(sizes, x); });
+  level.dofs = problem.num_dofs();
+  const double tol = 1e-9 * H;
+  auto surface = [&] { return gather_surface_pressure(comm, recover_nodal_fields(problem)); };
+  // Start as the slices do: the sheet's height at the contact edge as the
+  // shift, and that plus a line contact's approach for the top.
+  const double shift = 0.5 * b * b / s.radius_m;
+  const LineApproach line = line_contact_approach(s.load_n_per_m, H, b, study.effective_modulus_pa);
+  const LoadControlReport report
+      = reach_force(problem, s.load_n_per_m, shift + line.approach_m, shift, line.exponent, 2e-3,
+                    world_rank() == 0 ? spdlog::level::info : spdlog::level::debug,
+                    [&] { return far_line_load(surface(), -L, tol); });
+  level.newton_iterations = report.newton.newton_iterations;
+  level.krylov_iterations = report.newton.krylov_iterations;
+  level.far_load_n_per_m = report.force;
+
+  const double end_zone = 2 * b + s.edge_radius_m;
+  double edge_sum = 0;
+  int edge_nodes = 0;
+  for (const SurfacePressureNode& n : surface())
+  {
+    if (std::abs(n.x[1]) < tol)
+      level.centre_line.push_back({n.x[0], n.pressure_pa});
+    // A sharp edge at y: on the sheet, z_e = R - sqrt(R^2 - y^2), and on the
+    // other face, x_e = -z_e cot a.
+    const double z_edge = s.radius_m - std::sqrt(s.radius_m * s.radius_m - n.x[1] * n.x[1]);
+    const double x_edge = -z_edge / std::tan(s.interior_angle_rad);
+    if (!(s.edge_radius_m > 0) && n.x[1] <= b / 2 && std::hypot(n.x[0] - x_edge, n.x[2] - z_edge) < 1e-3 * edge_element_m)
+    {
+      edge_sum += n.pressure_pa;
+      ++edge_nodes;
+    }
+  }
+  if (edge_nodes > 0)
+    level.edge_pressure_pa = edge_sum / edge_nodes;
+  std::sort(level.centre_line.begin(), level.centre_line.end(),
+            [](const CentreLineNode& a, const CentreLineNode& c) { return a.x_m < c.x_m; });
+  if (level.centre_line.size() < 3)
+    throw ComputationError(fmt::format("rim: unresolved contact (h_e = {:.3g} m, b = {:.3g} m)", edge_element_m, b));
+  // P1 tetrahedra scatter the nodal pressure by about 2 % from node to node
+  // (measured along the far strip: 2.3-2.5 % at 6 and 10 elements across b,
+  // penalty c = 10), so pressures are read as means over a stretch of the
+  // ruling: H at the far side and in the middle, and about each node near the
+  // end +-b / 8 or, where the contact elements are longer, +-h_c.
+  const double window = std::max(b / 8, sizes.contact_m);
+  const auto [far_mean, far_scatter] = centre_line_mean(level.centre_line, -L, -L + H);
+  level.far_peak_pa = far_mean;
+  level.far_scatter = far_scatter / far_mean;
+  level.mid_peak_pa = centre_line_mean(level.centre_line, -L / 2 - H / 2, -L / 2 + H / 2)[0];
+  // The sheet and the fillet (beyond them lies the other face, out of contact).
+  for (const CentreLineNode& node : level.centre_line)
+    if (node.x_m > -end_zone && node.x_m <= s.edge_radius_m)
+    {
+      const double smoothed = centre_line_mean(level.centre_line, node.x_m - window, node.x_m + window, 1)[0];
+      if (smoothed > level.end_peak_pa)
+      {
+        level.end_peak_pa = smoothed;
+        level.end_peak_x_m = node.x_m;
+      }
+    }
+  if (!(level.end_peak_pa > 0))
+    throw ComputationError(fmt::format("rim: no pressure near the edge (h_e = {:.3g} m, b = {:.3g} m)",
+                                       edge_element_m, b));
+  level.wall_s = wall_seconds_since(comm, start);
+  return level;
+}
+} // namespace
+
+RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
+{
+  validate(setup);
+  ensure_petsc();
+  RimEndStudy study;
+  study.setup = setup;
+  study.effective_modulus_pa = contact::effective_modulus_rigid_plane(setup.youngs_modulus_pa, setup.poisson_ratio);
+  const contact::LineHertz hertz
+      = contact::line_contact(setup.load_n_per_m, setup.radius_m, study.effective_modulus_pa, setup.poisson_ratio);
+  study.half_width_m = hertz.half_width_m;
+  study.hertz_peak_pa = hertz.peak_pressure_pa;
+  if (setup.edge_radius_m >= 0.1 * setup.depth_over_half_width * study.half_width_m)
+    throw InputError(fmt::format("rim: edge_radius_m {} m is not small against the block's depth H = {:.3g} m "
+                                 "(at most H / 10)",
+                                 setup.edge_radius_m, setup.depth_over_half_width * study.half_width_m));
+  const bool sharp = !(setup.edge_radius_m > 0);
+  study.wedge_exponent = sharp ? contact::edge_on_rigid_plane_exponent(setup.interior_angle_rad) : 0.0;
+  study.singular = study.wedge_exponent < 0;
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  for (int k = 0; k < setup.levels; ++k)
+  {
+    const double h_e = setup.edge_element_over_half_width * study.half_width_m / std::pow(2.0, k);
+    study.levels.push_back(solve_level(comm, study, h_e));
+    const RimEndLevel& l = study.levels.back();
+    if (rank == 0)
+      spdlog::info("rim level {}: h_e = {:.3g} b, {} dofs, far q {:.5g} N/m, far p {:.5g} Pa, end peak {:.5g} Pa "
+                   "at x = {:.3g} b, edge {:.5g} Pa, {:.1f} s",
+                   k, h_e / study.half_width_m, l.dofs, l.far_load_n_per_m, l.far_peak_pa, l.end_peak_pa,
+                   l.end_peak_x_m / study.half_width_m, l.edge_pressure_pa, l.wall_s);
+  }
+  const RimEndLevel &last = study.levels.back(), &before = study.levels[study.levels.size() - 2];
+  study.plane_strain_change = std::abs(last.mid_peak_pa / last.far_peak_pa - 1);
+  if (sharp && before.edge_pressure_pa > 0 && last.edge_pressure_pa > 0)
+    study.measured_exponent = std::log(last.edge_pressure_pa / before.edge_pressure_pa)
+                              / std::log(last.edge_element_m / before.edge_element_m);
+  if (!study.singular)
+  {
+    study.end_peak_change = last.end_peak_pa / before.end_peak_pa - 1;
+    study.converged = std::abs(*study.end_peak_change) < setup.tolerance;
+    study.end_to_interior = last.end_peak_pa / last.far_peak_pa;
+  }
+  return study;
+}
+} // namespace rollcheck::fem

@@ -1,0 +1,111 @@
+#pragma once
+// One end of a loaded ruling, in 3D: the rim end scene (fem/scene_mesh.h
+// build_rim_end_mesh) pressed onto the rigid frictionless plane, at several
+// sizes of the elements along the edge.
+//
+// Load: the far side x = -L is a plane of symmetry, so the section there is
+// in plane strain once L is long enough against the block's depth H. The top's
+// approach is set by load control (fem/load_control.h) until the line load of
+// that section, q_far = 2 int p dy over its surface nodes, is the line load q
+// the contact locus gives at the end (contact/line_contact.h). The model's
+// unit is line Hertz's half-width for that q, b = sqrt(4 q R / (pi E*)), with
+// E* = E / (1 - nu^2) against the rigid plane: H = 10 b and L = 3 H by
+// default. That the far side is in plane strain is shown, not assumed: the
+// centre-line pressure at x = -L / 2 against x = -L (`plane_strain_change`).
+//
+// Edge: sharp (edge radius 0) or rounded. A sharp edge of interior angle a
+// mirrors in the plane into the free-free wedge of 2 a (contact/wedge_exponent.h,
+// M. L. Williams 1952): for a > 90 deg its stresses grow as r^(lambda - 1)
+// towards the edge, and the edge's nodal pressure (a force over an element's
+// area) grows as h_e^(lambda - 1) when the edge elements h_e shrink. The
+// study halves h_e level by level and measures that exponent as
+// ln(p_k / p_{k-1}) / ln(h_k / h_{k-1}) between the last two levels. A sharp
+// edge of a > 90 deg is reported singular with both exponents and no peak
+// value; a square edge (a = 90 deg, not singular on the rigid plane) and a
+// rounded edge have an end peak that must converge: its change between the
+// last two levels below `tolerance`, or the study says it did not.
+#include <array>
+#include <cstdint>
+#include <mpi.h>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rollcheck::fem
+{
+struct RimEndSettings
+{
+  /// R across the ruling at the end: the 10 mm cylinder of the Hertz scenes.
+  double radius_m = 0.01;
+  /// q at the end: the preprint's F = 100 N spread over a 10 mm ruling.
+  double load_n_per_m = 1e4;
+  /// a, between the contact sheet and the other face, [90, 180) deg; 90: a square end.
+  double interior_angle_rad = std::numbers::pi / 2;
+  double edge_radius_m = 0;          ///< r_e; 0: sharp
+  double youngs_modulus_pa = 200e9;  ///< steel (the preprint's)
+  double poisson_ratio = 0.3;        ///< steel (the preprint's)
+  double depth_over_half_width = 10; ///< H / b
+  double length_over_depth = 3;      ///< L / H
+  int contact_elements = 6;          ///< elements across b along the contact strip
+  /// Edge elements at the first level, h_e / b; each further level halves them.
+  double edge_element_over_half_width = 1.0 / 8;
+  int levels = 3;
+  double tolerance = 0.03;           ///< the end peak's change per level that counts as converged
+  /// kappa = c E / h(x), h(x) the element size there (fem/scene_mesh.h
+  /// rim_end_element_size): at c = 100 (the other scenes') the nodal
+  /// pressures along the strip scattered by 4-5 %, at c = 10 by 2.4 %.
+  double penalty_c = 10.0;
+  std::string petsc_options;         ///< prefix "hertz_" (default: 3D GMRES + GAMG)
+};
+
+/// A surface node on the ruling's centre line y = 0: position along the
+/// ruling and pressure.
+struct CentreLineNode
+{
+  double x_m;
+  double pressure_pa;
+};
+
+struct RimEndLevel
+{
+  double edge_element_m = 0;         ///< h_e
+  double far_load_n_per_m = 0;       ///< q_far reached
+  double far_peak_pa = 0;            ///< mean centre-line pressure over x in [-L, -L + H]
+  double far_scatter = 0;            ///< their standard deviation over their mean
+  double mid_peak_pa = 0;            ///< the same over x in [-L / 2 - H / 2, -L / 2 + H / 2]
+  /// Largest centre-line pressure within 2 b + r_e of the edge (each the
+  /// mean over +-max(b / 8, h_c) along the ruling), and where (x).
+  double end_peak_pa = 0, end_peak_x_m = 0;
+  /// Mean nodal pressure on a sharp edge's nodes with y <= b / 2 (0 when rounded).
+  double edge_pressure_pa = 0;
+  std::vector<CentreLineNode> centre_line;
+  std::int64_t dofs = 0;
+  int newton_iterations = 0, krylov_iterations = 0;
+  double wall_s = 0;
+};
+
+struct RimEndStudy
+{
+  RimEndSettings setup;
+  double effective_modulus_pa = 0;   ///< E* = E / (1 - nu^2)
+  double half_width_m = 0;           ///< b of line Hertz
+  double hertz_peak_pa = 0;          ///< p0 of line Hertz
+  /// lambda - 1 of the mirrored wedge (0: not singular; rounded edges 0).
+  double wedge_exponent = 0;
+  bool singular = false;             ///< a sharp edge with a > 90 deg
+  /// Growth exponent of the edge's nodal pressure between the last two levels (sharp edges).
+  std::optional<double> measured_exponent;
+  /// Not singular: the end peak's change between the last two levels, and
+  /// whether it is below the tolerance; the end/far peak ratio at the last level.
+  std::optional<double> end_peak_change;
+  bool converged = false;
+  std::optional<double> end_to_interior;
+  double plane_strain_change = 0;    ///< |p(-L/2) / p(-L) - 1| at the last level
+  std::vector<RimEndLevel> levels;
+};
+
+/// Every rank gets the study. InputError for bad settings (naming the
+/// setting), ComputationError for a failed solve or an unresolved contact.
+RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup);
+} // namespace rollcheck::fem
