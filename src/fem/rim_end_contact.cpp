@@ -1,6 +1,7 @@
 #include "fem/rim_end_contact.h"
 #include "contact/hertz.h"
 #include "contact/wedge_exponent.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "fem/all_gather.h"
 #include "fem/load_control.h"
@@ -8,6 +9,7 @@
 #include "fem/penalty_contact.h"
 #include "fem/petsc_session.h"
 #include "fem/scene_mesh.h"
+#include "fem/write_fields.h"
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -39,8 +41,14 @@ void validate(const RimEndSettings& s)
     throw InputError(fmt::format("rim: the block must be at least 4 b deep and H long (depth_over_half_width {}, "
                                  "length_over_depth {})",
                                  s.depth_over_half_width, s.length_over_depth));
+  if (!s.xdmf_path.empty())
+  {
+    if (s.xdmf_path.extension() != ".xdmf")
+      throw InputError(fmt::format("rim: the field output '{}' (--xdmf) must end in .xdmf", s.xdmf_path.string()));
+    check_output_file(s.xdmf_path, "rim: the field output (--xdmf)");
+  }
   if (s.contact_elements < 2 || s.contact_elements > 40 || s.levels < 1 || s.levels > 6)
-    throw InputError(fmt::format("rim: contact_elements must be 2 to 40 and levels 2 to 6, got {} and {}",
+    throw InputError(fmt::format("rim: contact_elements must be 2 to 40 and levels 1 to 6, got {} and {}",
                                  s.contact_elements, s.levels));
 }
 
@@ -78,7 +86,7 @@ double far_line_load(const std::vector<SurfacePressureNode>& nodes, double far_x
   return 2 * load;
 }
 
-RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_element_m)
+RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_element_m, bool write)
 {
   const auto start = std::chrono::steady_clock::now();
   const RimEndSettings& s = study.setup;
@@ -117,7 +125,10 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   const double end_zone = 2 * b + s.edge_radius_m;
   double edge_sum = 0;
   int edge_nodes = 0;
-  for (const SurfacePressureNode& n : surface())
+  const NodalFields fields = recover_nodal_fields(problem);
+  if (write)
+    write_fields(s.xdmf_path, fields);
+  for (const SurfacePressureNode& n : gather_surface_pressure(comm, fields))
   {
     if (std::abs(n.x[1]) < tol)
       level.centre_line.push_back({n.x[0], n.pressure_pa});
@@ -189,7 +200,7 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
   for (int k = 0; k < setup.levels; ++k)
   {
     const double h_e = setup.edge_element_over_half_width * study.half_width_m / std::pow(2.0, k);
-    study.levels.push_back(solve_level(comm, study, h_e));
+    study.levels.push_back(solve_level(comm, study, h_e, k + 1 == setup.levels && !setup.xdmf_path.empty()));
     const RimEndLevel& l = study.levels.back();
     if (rank == 0)
       spdlog::info("rim level {}: h_e = {:.3g} b, {} dofs, far q {:.5g} N/m, far p {:.5g} Pa, end peak {:.5g} Pa "
@@ -197,8 +208,13 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
                    k, h_e / study.half_width_m, l.dofs, l.far_load_n_per_m, l.far_peak_pa, l.end_peak_pa,
                    l.end_peak_x_m / study.half_width_m, l.edge_pressure_pa, l.wall_s);
   }
-  const RimEndLevel &last = study.levels.back(), &before = study.levels[study.levels.size() - 2];
+  const RimEndLevel& last = study.levels.back();
   study.plane_strain_change = std::abs(last.mid_peak_pa / last.far_peak_pa - 1);
+  if (!study.singular)
+    study.end_to_interior = last.end_peak_pa / last.far_peak_pa;
+  if (study.levels.size() < 2)
+    return study; // one level: nothing to say of convergence
+  const RimEndLevel& before = study.levels[study.levels.size() - 2];
   if (sharp && before.edge_pressure_pa > 0 && last.edge_pressure_pa > 0)
     study.measured_exponent = std::log(last.edge_pressure_pa / before.edge_pressure_pa)
                               / std::log(last.edge_element_m / before.edge_element_m);
@@ -206,7 +222,6 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
   {
     study.end_peak_change = last.end_peak_pa / before.end_peak_pa - 1;
     study.converged = std::abs(*study.end_peak_change) < setup.tolerance;
-    study.end_to_interior = last.end_peak_pa / last.far_peak_pa;
   }
   return study;
 }

@@ -26,6 +26,7 @@
 // last two levels below `tolerance`, or the study says it did not.
 #include <array>
 #include <cstdint>
+#include <filesystem>
 #include <mpi.h>
 #include <numbers>
 #include <optional>
@@ -50,13 +51,15 @@ struct RimEndSettings
   int contact_elements = 6;          ///< elements across b along the contact strip
   /// Edge elements at the first level, h_e / b; each further level halves them.
   double edge_element_over_half_width = 1.0 / 8;
-  int levels = 3;
+  int levels = 3;                    ///< 1 to 6; convergence needs 2
   double tolerance = 0.03;           ///< the end peak's change per level that counts as converged
   /// kappa = c E / h(x), h(x) the element size there (fem/scene_mesh.h
   /// rim_end_element_size): at c = 100 (the other scenes') the nodal
   /// pressures along the strip scattered by 4-5 %, at c = 10 by 2.4 %.
   double penalty_c = 10.0;
   std::string petsc_options;         ///< prefix "hertz_" (default: 3D GMRES + GAMG)
+  /// The last level's fields (fem/write_fields.h), if set: a .xdmf in a writable folder.
+  std::filesystem::path xdmf_path;
 };
 
 /// A surface node on the ruling's centre line y = 0: position along the
@@ -96,8 +99,9 @@ struct RimEndStudy
   bool singular = false;             ///< a sharp edge with a > 90 deg
   /// Growth exponent of the edge's nodal pressure between the last two levels (sharp edges).
   std::optional<double> measured_exponent;
-  /// Not singular: the end peak's change between the last two levels, and
-  /// whether it is below the tolerance; the end/far peak ratio at the last level.
+  /// Not singular: the end peak's change between the last two levels (none
+  /// with one level), whether it is below the tolerance, and the end/far
+  /// peak ratio at the last level.
   std::optional<double> end_peak_change;
   bool converged = false;
   std::optional<double> end_to_interior;

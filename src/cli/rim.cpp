@@ -1,0 +1,143 @@
+// `rollcheck rim`: one end of a loaded ruling in 3D on the rigid plane, the
+// edge sharp or rounded, at several sizes of the edge elements
+// (fem/rim_end_contact.h). A sharp obtuse edge is reported singular with its
+// measured growth exponent beside Williams's, never as a peak; a square or a
+// rounded edge has a converged end/interior peak ratio, or says it has not.
+// Also the scene "rim" of case files.
+#include "cli/cli.h"
+#include "cli/scenes.h"
+#include "core/json_number.h"
+#include "fem/rim_end_contact.h"
+#include <fmt/format.h>
+#include <mpi.h>
+#include <numbers>
+#include <spdlog/spdlog.h>
+
+namespace rollcheck::cli
+{
+namespace
+{
+const io::BoundSchema<fem::RimEndSettings>& rim_schema()
+{
+  using fem::RimEndSettings;
+  static const io::BoundSchema<RimEndSettings> schema = [] {
+    io::BoundSchema<RimEndSettings> s("rim");
+    s.real("radius_m", "--radius", &RimEndSettings::radius_m, "m",
+           "R, the contacting sheet's radius across the ruling at the end (the Hertz scenes' 10 mm cylinder)",
+           io::positive)
+        .real("load_n_per_m", "--load-per-length", &RimEndSettings::load_n_per_m, "N/m",
+              "q, the line load at the end (the preprint's F = 100 N over a 10 mm ruling)", io::positive)
+        .real("interior_angle_deg", "--interior-angle", &RimEndSettings::interior_angle_rad, "deg",
+              "a, between the contact sheet and the rim's other face through the body: 90 a square end, towards "
+              "180 the other face rises gently (fem-sds reports 90 + each end's rim lean)",
+              io::Bounds{90, 180, false, true}, std::numbers::pi / 180)
+        .real("edge_radius_m", "--edge-radius", &RimEndSettings::edge_radius_m, "m",
+              "r_e of the edge's fillet, the way a part is finished; 0: the sharp edge of the ideal hull",
+              io::Bounds{0, 1, false, false});
+    add_material(s, &RimEndSettings::youngs_modulus_pa, &RimEndSettings::poisson_ratio);
+    s.real("depth_over_half_width", "--depth", &RimEndSettings::depth_over_half_width, "",
+           "H / b: the block's depth and half-width in units of line Hertz's half-width b", io::Bounds{4, 100})
+        .real("length_over_depth", "--length", &RimEndSettings::length_over_depth, "",
+              "L / H: the contact modelled from the far side (plane strain) to the edge", io::Bounds{1, 20})
+        .integer("contact_elements", "--contact-elements", &RimEndSettings::contact_elements, "",
+                 "Elements across b along the contact strip", io::Bounds{2, 40})
+        .real("edge_element_over_half_width", "--edge-element", &RimEndSettings::edge_element_over_half_width, "",
+              "h_e / b at the first level; each further level halves it", io::Bounds{1e-3, 1, false, false})
+        .integer("levels", "--levels", &RimEndSettings::levels, "", "Edge mesh levels (convergence needs 2)",
+                 io::Bounds{1, 6})
+        .real("tolerance", "--tolerance", &RimEndSettings::tolerance, "",
+              "Largest change of the end peak between the last two levels that counts as converged",
+              io::Bounds{0, 1, true, false})
+        .real("penalty_c", "--penalty-c", &RimEndSettings::penalty_c, "",
+              "Penalty kappa = c E / h(x), h the local element size", io::positive)
+        .text("xdmf", "--xdmf", &RimEndSettings::xdmf_path,
+              "Write the last level's displacement, stress and contact pressure to this self-contained .xdmf "
+              "(ParaView)");
+    return s;
+  }();
+  return schema;
+}
+
+nlohmann::json run_rim(const io::Parameters& p)
+{
+  const fem::RimEndSettings setup = rim_schema().bind(p);
+  const fem::RimEndStudy study = fem::solve_rim_end(MPI_COMM_WORLD, setup);
+  const double b = study.half_width_m;
+
+  nlohmann::json levels = nlohmann::json::array();
+  std::string table = "| h_e / b | DOFs | Newton | s | far q (N/m) | far p / p0 | scatter | mid / far | end peak / far "
+                      "| at x / b | edge / far |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const fem::RimEndLevel& l : study.levels)
+  {
+    nlohmann::json centre_line = nlohmann::json::array();
+    for (const fem::CentreLineNode& n : l.centre_line)
+      if (n.x_m > -3 * b)
+        centre_line.push_back({n.x_m, n.pressure_pa});
+    levels.push_back({{"edge_element_m", l.edge_element_m},
+                      {"dofs", l.dofs},
+                      {"newton_iterations", l.newton_iterations},
+                      {"krylov_iterations", l.krylov_iterations},
+                      {"wall_s", l.wall_s},
+                      {"far_load_n_per_m", l.far_load_n_per_m},
+                      {"far_peak_pa", l.far_peak_pa},
+                      {"far_scatter", l.far_scatter},
+                      {"mid_peak_pa", l.mid_peak_pa},
+                      {"end_peak_pa", l.end_peak_pa},
+                      {"end_peak_x_m", l.end_peak_x_m},
+                      {"edge_pressure_pa", l.edge_pressure_pa > 0 ? json_number(l.edge_pressure_pa) : nlohmann::json(nullptr)},
+                      {"centre_line_x_m_pressure_pa", centre_line}});
+    table += fmt::format("| {:.4f} | {} | {} | {:.1f} | {:.5g} | {:.4f} | {:.3f} | {:.4f} | {:.4f} | {:.3f} | {} |\n",
+                         l.edge_element_m / b, l.dofs, l.newton_iterations, l.wall_s, l.far_load_n_per_m,
+                         l.far_peak_pa / study.hertz_peak_pa, l.far_scatter, l.mid_peak_pa / l.far_peak_pa,
+                         l.end_peak_pa / l.far_peak_pa, l.end_peak_x_m / b,
+                         l.edge_pressure_pa > 0 ? fmt::format("{:.4f}", l.edge_pressure_pa / l.far_peak_pa) : "-");
+  }
+  const std::string verdict
+      = study.singular
+            ? fmt::format("singular: the edge's pressure grows as h_e^{:.3f} (Williams's wedge: {:.3f}); no peak value",
+                          study.measured_exponent.value_or(std::nan("")), study.wedge_exponent)
+        : !study.end_peak_change
+            ? fmt::format("one level: end peak / interior {:.4f}, convergence not checked", *study.end_to_interior)
+        : study.converged
+            ? fmt::format("converged: end peak / interior {:.4f} (last change {:+.2f} %)", *study.end_to_interior,
+                          100 * *study.end_peak_change)
+            : fmt::format("NOT converged: end peak / interior {:.4f} changed {:+.2f} % at the last level",
+                          *study.end_to_interior, 100 * *study.end_peak_change);
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  // Tables go to the log (stderr), so that `--json -` stays JSON alone.
+  if (rank == 0)
+    spdlog::info("\nrim end, interior angle {:.4g} deg, edge radius {:.3g} m ({:.3g} b), R = {:.4g} m, q = {:.5g} "
+                 "N/m (b = {:.4g} m, p0 = {:.5g} Pa):\n\n{}\n{}; far side in plane strain to {:.2f} %.\n\n",
+                 setup.interior_angle_rad * 180 / std::numbers::pi, setup.edge_radius_m, setup.edge_radius_m / b,
+                 setup.radius_m, setup.load_n_per_m, b, study.hertz_peak_pa, table, verdict,
+                 100 * study.plane_strain_change);
+  return {{"counter_face", "rigid"},
+          {"interior_angle_deg", setup.interior_angle_rad * 180 / std::numbers::pi},
+          {"edge_radius_m", setup.edge_radius_m},
+          {"radius_m", setup.radius_m},
+          {"load_n_per_m", setup.load_n_per_m},
+          {"effective_modulus_pa", study.effective_modulus_pa},
+          {"half_width_m", b},
+          {"hertz_peak_pa", study.hertz_peak_pa},
+          {"singular", study.singular},
+          {"wedge_exponent", study.wedge_exponent},
+          {"measured_exponent", json_number(study.measured_exponent)},
+          {"end_to_interior", study.singular ? nlohmann::json(nullptr) : json_number(study.end_to_interior)},
+          {"end_peak_change", json_number(study.end_peak_change)},
+          {"converged", study.converged},
+          {"plane_strain_change", study.plane_strain_change},
+          {"verdict", verdict},
+          {"levels", levels}};
+}
+} // namespace
+
+void add_rim_command(CLI::App& app)
+{
+  add_scene_command(app, "rim",
+                    "FEM of one loaded ruling end at the body's rim in 3D on the rigid plane (gmsh OpenCASCADE, sharp "
+                    "or rounded edge, several edge mesh levels): singular with its exponent, or the converged "
+                    "end/interior peak ratio",
+                    rim_schema().schema(), run_rim);
+}
+} // namespace rollcheck::cli

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# rollcheck rim and the rim case: a sharp obtuse rim is reported singular
+# with its exponent and no end peak; a rounded one with the end/interior
+# ratio; the fields are written whole for ParaView; bad input exits 2 naming
+# the setting and writes nothing.
+set -u
+source "$(dirname "$0")/lib.sh"
+bin=$1; here=$2; tmp=$3
+rm -rf "$tmp"; mkdir -p "$tmp"
+export OPENBLAS_NUM_THREADS=1
+"$bin" -q run "$here/cases/rim_obtuse_sharp.toml" --set levels=2 --json "$tmp/sharp.json" > "$tmp/sharp.log" 2>&1 \
+  || { echo "FAIL: sharp rim case"; cat "$tmp/sharp.log"; exit 1; }
+check_json "sharp obtuse rim singular, exponent of the wedge, no peak" \
+  '.singular == true and .end_to_interior == null and .wedge_exponent < -0.38 and .wedge_exponent > -0.39
+   and .measured_exponent < 0 and (.levels | length) == 2 and .counter_face == "rigid"' "$tmp/sharp.json"
+"$bin" -q rim --interior-angle 120 --edge-radius 1.2e-5 --levels 1 --edge-element 0.0625 --xdmf "$tmp/rounded.xdmf" \
+  --json "$tmp/rounded.json" > "$tmp/rounded.log" 2>&1 || { echo "FAIL: rounded rim"; cat "$tmp/rounded.log"; exit 1; }
+check_json "rounded rim: a ratio, not singular, one level says nothing of convergence" \
+  '.singular == false and .end_to_interior > 1 and .end_peak_change == null and .converged == false' "$tmp/rounded.json"
+check '/usr/bin/python3 -c "import meshio, sys; m = meshio.read(sys.argv[1]); assert max(m.point_data[\"contact_pressure\"]) > 0" "$tmp/rounded.xdmf"' \
+  "the rounded rim's fields read back with a contact pressure"
+for args in "--interior-angle 180:interior_angle_deg" "--interior-angle 80:interior_angle_deg" "--radius -1:radius_m" \
+            "--load-per-length nan:load_n_per_m" "--levels 0:levels" "--xdmf $tmp/f.vtu:--xdmf" \
+            "--edge-radius 1e-3:edge_radius_m"; do
+  "$bin" -q rim ${args%%:*} --json "$tmp/bad.json" > "$tmp/bad.log" 2>&1; rc=$?
+  if [[ $rc -ne 2 ]] || ! grep -q -- "${args#*:}" "$tmp/bad.log" || [[ -e "$tmp/bad.json" ]]; then
+    echo "FAIL: rim ${args%%:*} gave exit $rc without '${args#*:}' (or wrote a result):"; cat "$tmp/bad.log"; fail=1
+  fi
+done
+exit $fail
