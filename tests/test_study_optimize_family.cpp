@@ -2,7 +2,8 @@
 // a genome is a function of the genome, its (90, 1, 1) members are the bodies
 // the library builds by name (the centre-line one the true oloid, area 4 pi),
 // the rigid score is the mean of the replicates score_body gives with the
-// nudged spins, and the search returns a body no worse than its start.
+// nudged spins, the search returns a body no worse than its start, and under
+// matched face count each genome's hull has the start's face count.
 #include "study/optimize_family.h"
 #include "core/error.h"
 #include "geometry/body.h"
@@ -63,7 +64,7 @@ TEST(OptimizeFamily, ItsNinetyOneOneMembersAreTheNamedOloids)
     oloid.points = s.points;
     EXPECT_EQ(family_score(s, family_oloid), *scores_of(s, oloid).scores.cds);
     // The true oloid's area is 4 pi r^2; the hull of 100 points per circle is within 1e-3 of it.
-    const double area = geometry::mass_properties(geometry::make_body(family_body(s, family_oloid))).area_m2;
+    const double area = geometry::mass_properties(geometry::make_body(family_body(s, family_oloid, s.points))).area_m2;
     EXPECT_NEAR(area / (4 * std::numbers::pi), 1, 1e-3);
 
     s.family = geometry::RollerFamily::paper;
@@ -78,7 +79,7 @@ TEST(OptimizeFamily, TheRigidScoreIsTheMeanOfTheNudgedRuns)
   s.oracle = Oracle::rigid;
   s.replicates = 3;
   s.paper_compat = true; // the preprint's chaotic dynamics, over its 10 s runs
-  geometry::BodySpec body = family_body(s, family_oloid);
+  geometry::BodySpec body = family_body(s, family_oloid, s.points);
   const double nominal = *scores_of(s, body).scores.cds;
   double sum = nominal;
   // Replicates 1 and 2: every spin nudged by +1e-12 and -1e-12 rad/s along x (the band's first two).
@@ -134,4 +135,98 @@ TEST(OptimizeFamily, BadBoxesAreNamed)
   s = cheap();
   s.score = FamilyScore::uniformity;
   EXPECT_THROW(validate(s), InputError);
+}
+
+namespace
+{
+/// Genomes of both families whose hulls at 300 points per circle have face
+/// counts well away from their (90, 1, 1)'s (898 faces paper, 800 centre-line).
+const std::vector<std::pair<geometry::RollerFamily, std::vector<double>>> unmatched_genomes{
+    {geometry::RollerFamily::paper, {97.14, 0.9936, 0.7508}},
+    {geometry::RollerFamily::paper, {95.8, 0.555, 0.832}},
+    {geometry::RollerFamily::paper, {60, 1.5, 1.4}},
+    {geometry::RollerFamily::centre_line, {67.6, 0.5, 0.604}},
+    {geometry::RollerFamily::centre_line, {74.1, 0.757, 1.071}},
+    {geometry::RollerFamily::centre_line, {40, 1.4, 0.7}}};
+
+/// A face count within 0.5 % of the target: one or two points per circle add about 3 to 6 faces.
+constexpr double face_tolerance = 0.005;
+} // namespace
+
+TEST(OptimizeFamily, MatchedBodiesHaveTheStartsFaceCount)
+{
+  for (const auto& [family, x] : unmatched_genomes)
+  {
+    FamilySearchSettings s = cheap();
+    s.points = 300;
+    s.family = family;
+    s.match_face_count = true;
+    FamilyMeshes meshes(s);
+    const long target = meshes.target_faces();
+    EXPECT_EQ(target, geometry::make_body(family_body(s, family_oloid, s.points)).faces.rows());
+    const long unmatched = hull_faces(s, x, s.points);
+    ASSERT_GT(std::abs(unmatched - target), face_tolerance * target)
+        << "(" << x[0] << ", " << x[1] << ", " << x[2] << ") tests no matching: " << unmatched << " faces";
+
+    const MeshResolution m = meshes.resolution(x);
+    EXPECT_EQ(m.faces, geometry::make_body(family_body(s, x, m.points)).faces.rows());
+    EXPECT_LE(std::abs(m.faces - target), face_tolerance * target)
+        << "(" << x[0] << ", " << x[1] << ", " << x[2] << "): " << m.faces << " faces at " << m.points
+        << " points, target " << target;
+    EXPECT_NE(m.points, s.points);
+    // Nearest among the points around it, and the fewest points of those as near.
+    for (int n = m.points - 10; n <= m.points + 10; ++n)
+    {
+      const long distance = std::abs(hull_faces(s, x, n) - target);
+      EXPECT_TRUE(distance > std::abs(m.faces - target) || (distance == std::abs(m.faces - target) && n >= m.points))
+          << n << " points give " << hull_faces(s, x, n) << " faces, nearer " << target << " than " << m.points;
+    }
+  }
+}
+
+TEST(OptimizeFamily, MatchingChangesTheScoreWhereTheFacesDiffer)
+{
+  FamilySearchSettings unmatched = cheap();
+  unmatched.points = 300;
+  unmatched.paper_compat = true;
+  FamilySearchSettings matched = unmatched;
+  matched.match_face_count = true;
+  const std::vector<double>& x = unmatched_genomes.front().second;
+  FamilyMeshes meshes(matched);
+  const MeshResolution m = meshes.resolution(x);
+  ASSERT_NE(m.points, unmatched.points);
+  EXPECT_EQ(family_score(matched, x), *scores_of(matched, family_body(matched, x, m.points)).scores.cds);
+  EXPECT_EQ(family_score(unmatched, x), *scores_of(unmatched, family_body(unmatched, x, unmatched.points)).scores.cds);
+  EXPECT_NE(family_score(matched, x), family_score(unmatched, x));
+  // The start is the target: meshed alike either way.
+  EXPECT_EQ(meshes.resolution(family_oloid).points, unmatched.points);
+  EXPECT_EQ(family_score(matched, family_oloid), family_score(unmatched, family_oloid));
+}
+
+TEST(OptimizeFamily, TheResultSaysHowTheBodiesAreMeshed)
+{
+  for (const bool match : {false, true})
+  {
+    FamilySearchSettings s = cheap();
+    s.match_face_count = match;
+    const FamilySearchResult r = optimize_family(s);
+    const nlohmann::json mesh = to_json(r)["mesh"];
+    EXPECT_EQ(mesh["matched_resolution"], match ? "faces" : "points");
+    EXPECT_EQ(mesh["points_per_circle"], s.points);
+    EXPECT_EQ(mesh["start"]["points"], s.points);
+    EXPECT_EQ(mesh["start"]["faces"], r.target_faces);
+    EXPECT_EQ(mesh["optimum"]["points"], r.best_mesh.points);
+    EXPECT_EQ(mesh["optimum"]["faces"], hull_faces(s, r.search.best_x, r.best_mesh.points));
+    if (match)
+    {
+      EXPECT_EQ(mesh["target_faces"], r.target_faces);
+      EXPECT_LE(std::abs(r.best_mesh.faces - r.target_faces), face_tolerance * 2 * r.target_faces);
+      EXPECT_EQ(r.search.best_value, family_score(s, r.search.best_x));
+    }
+    else
+    {
+      EXPECT_TRUE(mesh["target_faces"].is_null());
+      EXPECT_EQ(r.best_mesh.points, s.points);
+    }
+  }
 }

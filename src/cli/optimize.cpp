@@ -2,11 +2,15 @@
 // what its (90, 1, 1) member is (gradient, Hessian, verdict), by a continuous
 // search with NLopt (docs/optimize.md). Also the scene "optimize" of case
 // files. The method is study/optimize_family.h; here its parameters, a line
-// in the log, the optimum's mesh, the JSON and the sweeps' plot.
+// in the log, the optimum's mesh, the JSON, the sweeps' plot and the finished
+// runs kept in the output folder for a rerun (io/evaluation_cache.h).
 #include "cli/cli.h"
 #include "cli/scenes.h"
+#include "core/atomic_file.h"
 #include "geometry/write_mesh.h"
 #include "io/batch_report.h"
+#include "io/case_hash.h"
+#include "io/evaluation_cache.h"
 #include "study/optimize_family.h"
 #ifdef ROLLCHECK_FEM
 #include "study/fem_sds_family.h"
@@ -59,7 +63,12 @@ void add_method_parameters(Schema& s)
               "Roller family: paper (the preprint's) or centre-line (its (90,1,1) is the true oloid)",
               {{"paper", geometry::RollerFamily::paper}, {"centre-line", geometry::RollerFamily::centre_line}})
       .integer("points", "--points", &S::points, "",
-               "Samples per generating circle, the same for every body (matched resolution)", body_points_range)
+               "Samples per generating circle: of every body, or with --matched-resolution of the start only",
+               body_points_range)
+      .flag("matched_resolution", "--matched-resolution", &S::match_face_count,
+            "Match the face count, not the points per circle: mesh each genome with the points per circle whose "
+            "hull's face count is nearest the start's at --points (ties: the fewer points), since CDS falls about "
+            "as faces^-2; off: every body with --points per circle")
       .choice("method", "--method", &S::method, "NLopt method (docs/optimize.md)", study::method_names())
       .integer("max_evaluations", "--max-evaluations", &S::max_evaluations, "",
                "Distinct genomes the search scores, the start included", io::Bounds{1, 100000})
@@ -86,7 +95,8 @@ void add_oracle_parameters(Schema& s)
                "Rolling oracle: loops of the contact curve scored", io::Bounds{1, 1000})
       .unbound({"out", "--out", std::string(), "",
                 "Folder for optimize.json, the optimum's mesh optimum.obj and sweeps.png (written whole or not at "
-                "all); empty: none"})
+                "all), and evaluations.json, the finished runs, kept during the search so that the same command "
+                "rerun after an interruption reuses them; empty: none"})
       .unbound({"python", "--python", std::string("/usr/bin/python3"), "",
                 "Python with matplotlib for the plot (Debian's)"});
 }
@@ -106,9 +116,69 @@ const Schema& optimize_schema()
   return schema;
 }
 
+/// The parameters that steer the search but change no run's value (a run is
+/// one genome and replicate): a rerun that changes only these reuses the runs.
+const std::vector<std::string> search_only_keys{"method",       "max_evaluations", "replicates", "pilot_step",
+                                                "sweep_points", "threads",         "out",        "python"};
+
+/// case_hash of the parameters a run's value depends on (the version included).
+std::string run_settings_hash(const io::Parameters& params)
+{
+  nlohmann::json resolved = params.to_json();
+  for (const std::string& key : search_only_keys)
+    resolved.erase(key);
+  return io::case_hash(resolved);
+}
+
+constexpr const char* evaluations_file = "evaluations.json";
+
+/// Whether this process saves the runs: under mpirun every rank of rollcheck-fem
+/// runs the same search (FEM-SDS solves are collective) and reads the same
+/// runs, and the first rank alone writes them.
+bool saves_runs()
+{
+  int rank = 0;
+#ifdef ROLLCHECK_FEM
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  if (initialized)
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+#endif
+  return rank == 0;
+}
+
+/// The runs a previous search with the same settings left in `out`. The folder
+/// is made now (rollcheck's, with its marker) so that each batch of runs is
+/// saved there as it finishes; the results replace the folder whole at the end.
+io::EvaluationCache open_evaluation_cache(const std::filesystem::path& out, const io::Parameters& params)
+{
+  if (saves_runs() && !std::filesystem::exists(out / output_marker))
+    write_folder_atomically(out, "option --out", [](const std::filesystem::path&) {});
+  io::EvaluationCache cache(out / evaluations_file, run_settings_hash(params));
+  if (cache.size() > 0)
+    spdlog::info("optimize: {} finished runs of the same settings in {}", cache.size(),
+                 (out / evaluations_file).string());
+  return cache;
+}
+
 nlohmann::json run_optimize(const io::Parameters& params)
 {
   FamilySearchSettings settings = optimize_schema().bind(params);
+  const std::string& out = params.text("out");
+  std::optional<io::EvaluationCache> cache;
+  if (!out.empty())
+  {
+    cache = open_evaluation_cache(out, params);
+    settings.run_store.recall = [&cache](std::span<const double> x, int replicate) {
+      return cache->recall(x, replicate);
+    };
+    settings.run_store.record = [&cache, saves = saves_runs()](std::span<const study::OracleRun> runs) {
+      for (const study::OracleRun& run : runs)
+        cache->add(run.x, run.replicate, run.value);
+      if (saves)
+        cache->save();
+    };
+  }
   if (settings.score == study::FamilyScore::fem_sds)
   {
 #ifdef ROLLCHECK_FEM
@@ -122,17 +192,21 @@ nlohmann::json run_optimize(const io::Parameters& params)
   const nlohmann::json j = study::to_json(result);
   const nlohmann::json& best = j["optimum"];
   spdlog::info("optimize {} ({}): start {} -> {}, optimum {} -> {} ({} the start beyond the noise {}); at the start: "
-               "{}; {} genomes, {} oracle runs, {:.1f} s",
+               "{}; hull faces {} at the start, {} at the optimum ({} points per circle); {} genomes, {} oracle "
+               "runs, {} recalled, {:.1f} s",
                j["score"].get<std::string>(), j["oracle"].get<std::string>(), j["start"].dump(),
                j["start_value"].dump(), best["x"].dump(), best["value"].dump(),
                best["beats_start"].get<bool>() ? "beats" : "does not beat", j["noise"]["sigma"].dump(),
-               j["verdict_at_start"].dump(), result.score_evaluations, result.oracle_runs, result.wall_s);
-  if (const std::string& out = params.text("out"); !out.empty())
+               j["verdict_at_start"].dump(), result.start_mesh.faces, result.best_mesh.faces, result.best_mesh.points,
+               result.score_evaluations, result.oracle_runs, result.recalled_runs, result.wall_s);
+  if (!out.empty())
     io::draw_folder(out, params.text("python"), io::default_scripts_folder() / "plot_optimize.py", {}, "plot.log",
                     [&](const std::filesystem::path& folder) {
                       std::ofstream(folder / "optimize.json") << j.dump(1) << "\n";
-                      geometry::write_mesh(geometry::make_body(study::family_body(settings, result.search.best_x)),
-                                           folder / "optimum.obj");
+                      cache->save(folder / evaluations_file);
+                      const geometry::BodySpec optimum =
+                          study::family_body(settings, result.search.best_x, result.best_mesh.points);
+                      geometry::write_mesh(geometry::make_body(optimum), folder / "optimum.obj");
                     });
   return j;
 }

@@ -1,6 +1,7 @@
 #include "study/optimize_family.h"
 #include "core/error.h"
 #include "core/json_number.h"
+#include "geometry/convex_hull.h"
 #include "oracle/parallel_for.h"
 #include "study/paper_quirks.h"
 #include <algorithm>
@@ -52,13 +53,14 @@ double radical_inverse(int index, int base)
 
 std::string genome_text(std::span<const double> x) { return fmt::format("({})", fmt::join(x, ", ")); }
 
-/// The runs (genome, replicate) of score_body, each run once, and the search's
-/// score formed from them. Runs asked for together are run in parallel.
+/// The runs (genome, replicate) of score_body, each run once (or recalled from
+/// the settings' store), and the search's score formed from them. Runs asked
+/// for together are run in parallel.
 class Evaluator
 {
 public:
   explicit Evaluator(const FamilySearchSettings& s)
-      : s_(s), averaged_(s.oracle == Oracle::rigid ? s.replicates : 1)
+      : s_(s), averaged_(s.oracle == Oracle::rigid ? s.replicates : 1), meshes_(s)
   {
   }
 
@@ -68,8 +70,14 @@ public:
     std::vector<std::pair<std::vector<double>, int>> missing;
     for (const std::vector<double>& x : points)
       for (int r = 0; r < replicates; ++r)
-        if (!runs_.contains({x, r}) && std::find(missing.begin(), missing.end(), std::pair{x, r}) == missing.end())
+      {
+        if (runs_.contains({x, r}) || std::find(missing.begin(), missing.end(), std::pair{x, r}) != missing.end())
+          continue;
+        if (const std::optional<double> value = recall(x, r))
+          runs_.emplace(std::pair{x, r}, *value);
+        else
           missing.emplace_back(x, r);
+      }
     std::vector<double> values(missing.size());
     // FEM-SDS solves are collective over the MPI ranks: one body at a time.
     const unsigned threads = s_.score == FamilyScore::fem_sds ? 1u : s_.threads;
@@ -77,15 +85,22 @@ public:
       const auto& [x, r] = missing[k];
       try
       {
-        values[k] = replicate_score(s_, x, r);
+        values[k] = replicate_score(s_, meshes_, x, r);
       }
       catch (const std::exception& e)
       {
         throw ComputationError(fmt::format("scoring genome {} (replicate {}): {}", genome_text(x), r, e.what()));
       }
     });
+    std::vector<OracleRun> finished;
     for (std::size_t k = 0; k < missing.size(); ++k)
+    {
       runs_.emplace(missing[k], values[k]);
+      finished.push_back({missing[k].first, missing[k].second, values[k]});
+    }
+    oracle_runs_ += static_cast<long>(finished.size());
+    if (s_.run_store.record && !finished.empty())
+      s_.run_store.record(finished);
   }
 
   double replicate(std::span<const double> x, int r)
@@ -109,11 +124,23 @@ public:
 
   void prefetch(const std::vector<std::vector<double>>& points) { run(points, averaged_); }
   long scored() const { return static_cast<long>(scored_.size()); }
-  long runs() const { return static_cast<long>(runs_.size()); }
+  long oracle_runs() const { return oracle_runs_; }
+  long recalled_runs() const { return recalled_runs_; }
+  FamilyMeshes& meshes() { return meshes_; }
 
 private:
+  /// The store's value of run (x, r), if it has one.
+  std::optional<double> recall(std::span<const double> x, int r)
+  {
+    std::optional<double> value = s_.run_store.recall ? s_.run_store.recall(x, r) : std::nullopt;
+    recalled_runs_ += value.has_value();
+    return value;
+  }
+
   const FamilySearchSettings& s_;
   int averaged_;
+  FamilyMeshes meshes_;
+  long oracle_runs_ = 0, recalled_runs_ = 0;
   std::map<std::pair<std::vector<double>, int>, double> runs_;
   std::set<std::vector<double>> scored_;
 };
@@ -273,17 +300,96 @@ void validate(const FamilySearchSettings& s)
     throw InputError(fmt::format("optimize: sweep_points must be at least 2, got {}", s.sweep_points));
 }
 
-geometry::BodySpec family_body(const FamilySearchSettings& s, std::span<const double> x)
+geometry::BodySpec family_body(const FamilySearchSettings& s, std::span<const double> x, int points)
 {
   geometry::BodySpec b;
   b.body = "roller";
   b.family = s.family;
   b.genome = {x[0], x[1], x[2], 2};
-  b.points = s.points;
+  b.points = points;
   return b;
 }
 
-double replicate_score(const FamilySearchSettings& s, std::span<const double> x, int replicate)
+long hull_faces(const FamilySearchSettings& s, std::span<const double> x, int points)
+{
+  const geometry::BodySpec b = family_body(s, x, points);
+  return geometry::convex_hull(geometry::roller_points(b.genome, b.family, b.radius_m, b.points)).faces.rows();
+}
+
+MeshResolution matched_mesh(const FamilySearchSettings& s, std::span<const double> x, long target_faces)
+{
+  constexpr int least_points = 3, bracket = 2;
+  // Each hull once: the guess's bracket often holds `points` itself.
+  std::map<int, long> faces{{s.points, hull_faces(s, x, s.points)}};
+  const auto mesh = [&](int points) {
+    const auto [entry, added] = faces.try_emplace(points);
+    if (added)
+      entry->second = hull_faces(s, x, points);
+    return MeshResolution{points, entry->second};
+  };
+  const auto closer = [target_faces](const MeshResolution& a, const MeshResolution& b) {
+    return std::tuple(std::abs(a.faces - target_faces), a.points)
+           < std::tuple(std::abs(b.faces - target_faces), b.points);
+  };
+  const int guess =
+      std::max(least_points, static_cast<int>(std::lround(double(s.points) * target_faces / faces.at(s.points))));
+  MeshResolution best = mesh(guess);
+  for (int k = 1, improved_at = 0; k <= improved_at + bracket; ++k)
+    for (const int points : {guess - k, guess + k})
+    {
+      if (points < least_points)
+        continue;
+      if (const MeshResolution m = mesh(points); closer(m, best))
+      {
+        best = m;
+        improved_at = k;
+      }
+    }
+  return best;
+}
+
+FamilyMeshes::FamilyMeshes(const FamilySearchSettings& s)
+    : settings_(s), target_faces_(hull_faces(s, start_of(s), s.points))
+{
+}
+
+int FamilyMeshes::points(std::span<const double> x)
+{
+  return settings_.match_face_count ? resolution(x).points : settings_.points;
+}
+
+MeshResolution FamilyMeshes::resolution(std::span<const double> x)
+{
+  if (!settings_.match_face_count)
+    return {settings_.points, hull_faces(settings_, x, settings_.points)};
+  // The first thread to ask for a genome matches it outside the lock, so that
+  // a phase's genomes are matched in parallel; the others (a rigid score's
+  // replicates of the same genome) wait for its answer.
+  std::promise<MeshResolution> promise;
+  std::shared_future<MeshResolution> matched;
+  bool first;
+  {
+    const std::lock_guard lock(mutex_);
+    const auto [entry, inserted] = matched_.try_emplace(std::vector<double>(x.begin(), x.end()),
+                                                        promise.get_future().share());
+    matched = entry->second;
+    first = inserted;
+  }
+  if (first)
+  {
+    try
+    {
+      promise.set_value(matched_mesh(settings_, x, target_faces_));
+    }
+    catch (...)
+    {
+      promise.set_exception(std::current_exception());
+    }
+  }
+  return matched.get();
+}
+
+double replicate_score(const FamilySearchSettings& s, FamilyMeshes& meshes, std::span<const double> x, int replicate)
 {
   ScoreBodySettings b = s.scoring;
   b.oracle = s.oracle;
@@ -310,7 +416,7 @@ double replicate_score(const FamilySearchSettings& s, std::span<const double> x,
                                    * (2 * radical_inverse(replicate, bases[i]) - 1),
                         box.lower[i], box.upper[i]);
   }
-  b.body = family_body(s, p);
+  b.body = family_body(s, p, meshes.points(p));
   if (s.score == FamilyScore::fem_sds)
     return s.fem_sds_score(b.body);
   return score_of(score_body(b), s.score, p);
@@ -362,8 +468,12 @@ FamilySearchResult optimize_family(const FamilySearchSettings& s)
 
   ev.prefetch(sweep_points(start, r.box, s.sweep_points));
   r.sweeps = sweep_axes(score, start, r.box, s.sweep_points);
+  r.target_faces = ev.meshes().target_faces();
+  r.start_mesh = ev.meshes().resolution(start);
+  r.best_mesh = ev.meshes().resolution(r.search.best_x);
   r.score_evaluations = ev.scored();
-  r.oracle_runs = ev.runs();
+  r.oracle_runs = ev.oracle_runs();
+  r.recalled_runs = ev.recalled_runs();
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   return r;
 }
@@ -378,6 +488,24 @@ nlohmann::json derivatives_json(const std::optional<StepChoice>& steps, const st
   nlohmann::json j = to_json(*d);
   j["step_choice"] = to_json(*steps);
   return j;
+}
+
+nlohmann::json mesh_json(const FamilySearchResult& r)
+{
+  const auto resolution = [](const MeshResolution& m) {
+    return nlohmann::json{{"points", m.points}, {"faces", m.faces}};
+  };
+  const bool faces = r.settings.match_face_count;
+  return {{"matched_resolution", faces ? "faces" : "points"},
+          {"points_per_circle", r.settings.points},
+          {"target_faces", faces ? nlohmann::json(r.target_faces) : nlohmann::json()},
+          {"start", resolution(r.start_mesh)},
+          {"optimum", resolution(r.best_mesh)},
+          {"radius_m", geometry::BodySpec{}.radius_m},
+          {"note", faces ? "each body is meshed with the points per generating circle whose hull's face count is "
+                           "nearest target_faces, the start's at points_per_circle (ties: the fewer points)"
+                         : "every body is meshed with points_per_circle per generating circle; its face count "
+                           "moves with the genome"}};
 }
 
 nlohmann::json optimum_json(const FamilySearchResult& r)
@@ -422,11 +550,7 @@ nlohmann::json to_json(const FamilySearchResult& r)
           {"paper_compat", s.paper_compat},
           {"family", s.family == geometry::RollerFamily::paper ? "paper" : "centre-line"},
           {"parameters", {"theta_deg", "offset", "ratio"}},
-          {"mesh",
-           {{"points_per_circle", s.points},
-            {"matched_resolution", true},
-            {"radius_m", geometry::BodySpec{}.radius_m},
-            {"note", "every body is meshed with the same points per generating circle"}}},
+          {"mesh", mesh_json(r)},
           {"box", {{"lower", numbers(r.box.lower)}, {"upper", numbers(r.box.upper)}}},
           {"start", numbers(r.search.start)},
           {"start_value", json_number(r.search.start_value)},
@@ -439,6 +563,7 @@ nlohmann::json to_json(const FamilySearchResult& r)
           {"search", to_json(r.search)},
           {"score_evaluations", r.score_evaluations},
           {"oracle_runs", r.oracle_runs},
+          {"recalled_runs", r.recalled_runs},
           {"wall_s", r.wall_s}};
 }
 } // namespace rollcheck::study

@@ -1,8 +1,9 @@
 #pragma once
 // Where a two-circle roller family's optimum lies, and what the family's
 // (90, 1, 1) member is: the method of `rollcheck optimize` (docs/optimize.md).
-// A genome x = (theta_deg, offset d, ratio rho) is meshed (r1 = 1, the same
-// points per circle for every body: matched resolution) and scored by
+// A genome x = (theta_deg, offset d, ratio rho) is meshed (r1 = 1) with the
+// same points per circle as every other body, or with the points per circle
+// whose hull has the start's face count (matched face count), and scored by
 // score_body (CDS or SDS under the approximate or rigid-body oracle, U under
 // real rolling). The flow is optimize.h's: the noise measured at the start,
 // a search in the box, central-difference gradient and Hessian with their
@@ -13,6 +14,9 @@
 #include "study/optimize.h"
 #include "study/score_body.h"
 #include <functional>
+#include <future>
+#include <map>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <span>
@@ -37,6 +41,26 @@ using BodyScore = std::function<double(const geometry::BodySpec&)>;
 /// cds, sds, uniformity, fem-sds (for io::BoundSchema::choice).
 const std::vector<std::pair<std::string, FamilyScore>>& family_score_names();
 
+/// One finished run of score_body: the genome, the replicate, the value.
+struct OracleRun
+{
+  std::vector<double> x;
+  int replicate = 0;
+  double value = 0;
+};
+
+/// Runs kept outside the search, so that rerunning it after an interruption
+/// reuses the finished ones (rollcheck optimize --out keeps them in a file:
+/// io/evaluation_cache.h). The keeper answers only for runs under the same
+/// settings. Both hooks empty: nothing is kept.
+struct RunStore
+{
+  /// The value of run (x, replicate) if it was finished before.
+  std::function<std::optional<double>(std::span<const double> x, int replicate)> recall;
+  /// The runs of one phase, once all of them finished (on the calling thread).
+  std::function<void(std::span<const OracleRun> runs)> record;
+};
+
 /// One parameter of the genome: its search interval and its start.
 struct FamilyAxis
 {
@@ -51,7 +75,12 @@ struct FamilySearchSettings
   Oracle oracle = Oracle::approximate;
   bool paper_compat = false; ///< every switch of oracle/paper_compat.h as the reference code; else corrected
   geometry::RollerFamily family = geometry::RollerFamily::paper;
-  int points = 100; ///< samples per generating circle, the same for every body (matched resolution)
+  int points = 100; ///< samples per generating circle: of every body, or of the start (match_face_count)
+  /// Mesh each genome with the points per circle whose hull's face count is
+  /// nearest the start's at `points` (ties: the fewer points): CDS falls about
+  /// as N_faces^-2, and at fixed points per circle the face count moves with
+  /// the genome. Off: every body meshed with `points` per circle.
+  bool match_face_count = false;
   /// Wider than the preprint's grid {60..120} x {0.7..1.3} x {0.8..1.2}; start at the family's (90, 1, 1).
   FamilyAxis theta_deg{40, 140, 90}, offset{0.5, 1.5, 1}, ratio{0.6, 1.4, 1};
   Method method = Method::bobyqa;
@@ -71,6 +100,8 @@ struct FamilySearchSettings
   /// score fem_sds: the body's FEM-SDS. It is called on the calling thread,
   /// one body at a time (its FEM is collective over the MPI ranks).
   BodyScore fem_sds_score;
+  /// Finished runs kept across interrupted searches: asked before each run, told after each phase.
+  RunStore run_store;
   /// The oracles' options (steps, duration, rolling loops, contact parameters);
   /// its body, oracle, compat and metrics are set per genome.
   ScoreBodySettings scoring;
@@ -79,12 +110,53 @@ struct FamilySearchSettings
 /// InputError naming the setting (theta_min_deg, ..., the start outside its interval, ...).
 void validate(const FamilySearchSettings& settings);
 
-/// The body of genome x (theta_deg, offset, ratio) of the settings' family.
-geometry::BodySpec family_body(const FamilySearchSettings& settings, std::span<const double> x);
+/// The body of genome x (theta_deg, offset, ratio) of the settings' family,
+/// meshed with `points` per generating circle.
+geometry::BodySpec family_body(const FamilySearchSettings& settings, std::span<const double> x, int points);
+
+/// How one body is meshed: points per generating circle, and its hull's faces.
+struct MeshResolution
+{
+  int points = 0;
+  long faces = 0;
+};
+
+/// The face count of family_body(settings, x, points)'s hull (Qhull alone:
+/// no body checks, no scoring).
+long hull_faces(const FamilySearchSettings& settings, std::span<const double> x, int points);
+
+/// The points per circle whose hull's face count is nearest `target_faces`
+/// (ties: the fewer points). The face count is about proportional to the
+/// points but not monotone in them, so the points around the proportional
+/// guess are tried, outwards until two more on either side bring no gain.
+MeshResolution matched_mesh(const FamilySearchSettings& settings, std::span<const double> x, long target_faces);
+
+/// The mesh of every genome of one search: `points` per circle, or with
+/// match_face_count the matched_mesh of the start's face count, found once
+/// per genome. Safe to use from the threads of one phase.
+class FamilyMeshes
+{
+public:
+  explicit FamilyMeshes(const FamilySearchSettings& settings);
+  /// The start's face count at `points`: every body's target under match_face_count.
+  long target_faces() const { return target_faces_; }
+  /// Points per circle genome x is meshed with.
+  int points(std::span<const double> x);
+  /// Those points and the hull's face count they give.
+  MeshResolution resolution(std::span<const double> x);
+
+private:
+  const FamilySearchSettings& settings_;
+  long target_faces_;
+  std::mutex mutex_;
+  std::map<std::vector<double>, std::shared_future<MeshResolution>> matched_;
+};
 
 /// One evaluation of the score at x under the nuisance inputs of `replicate`
-/// (0: none): a spin nudge for the rigid oracle, a jitter of x otherwise.
-double replicate_score(const FamilySearchSettings& settings, std::span<const double> x, int replicate);
+/// (0: none): a spin nudge for the rigid oracle, a jitter of x otherwise; the
+/// body meshed as `meshes` says for the genome it runs.
+double replicate_score(const FamilySearchSettings& settings, FamilyMeshes& meshes, std::span<const double> x,
+                       int replicate);
 
 /// The score the search minimises: replicate 0 (approximate, rolling), or the
 /// mean of replicates 0 .. replicates-1 (rigid).
@@ -103,8 +175,11 @@ struct FamilySearchResult
   std::optional<Derivatives> at_start, at_best;
   std::string start_derivatives_note, best_derivatives_note;
   std::vector<AxisSweep> sweeps;     ///< through the start
+  long target_faces = 0;             ///< the start's hull faces at `points`
+  MeshResolution start_mesh, best_mesh;
   long score_evaluations = 0;        ///< distinct genomes scored in all phases
-  long oracle_runs = 0;              ///< score_body calls
+  long oracle_runs = 0;              ///< score_body calls (runs not recalled)
+  long recalled_runs = 0;            ///< runs taken from settings.run_store
   double wall_s = 0;
 };
 

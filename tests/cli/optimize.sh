@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # rollcheck optimize: a tiny search (approximate oracle, CDS, 60 points per
 # circle) writes the JSON with its keys, the optimum's mesh and the sweeps'
-# plot; a bad box (min > max, a start outside it) exits 2 naming the key.
+# plot; with --matched-resolution the optimum's hull (optimum.obj) has about
+# the start's face count; a bad box (min > max, a start outside it) exits 2
+# naming the key.
 set -u
 source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
@@ -17,7 +19,8 @@ for key in ["score", "oracle", "family", "mesh", "box", "start", "start_value", 
             "score_evaluations", "oracle_runs", "wall_s"]:
     assert key in r, key
 assert r["start"] == [90, 1, 1] and r["score"] == "cds" and r["oracle"] == "approx"
-assert r["mesh"]["points_per_circle"] == 60 and r["mesh"]["matched_resolution"] is True
+assert r["mesh"]["points_per_circle"] == 60 and r["mesh"]["matched_resolution"] == "points"
+assert r["mesh"]["optimum"]["points"] == 60 and r["mesh"]["target_faces"] is None
 best = r["optimum"]
 for key in ["x", "value", "displacement_from_start", "distance_from_start_box_units", "beats_start",
             "significance_threshold", "theta_deg", "offset", "ratio"]:
@@ -30,6 +33,19 @@ assert json.load(open(os.path.join(sys.argv[2], "optimize.json"))) == r
 for name in ["optimum.obj", "sweeps.png"]:
     assert os.path.getsize(os.path.join(sys.argv[2], name)) > 0, name
 print("optimum", best["x"], best["value"], "from", r["start_value"])
+PY
+"$bin" -q optimize --points 60 --max-evaluations 12 --sweep-points 3 --threads 1 --matched-resolution \
+  --json "$tmp/matched.json" --out "$tmp/matched" > "$tmp/matched.log" 2>&1 \
+  || { echo "FAIL: optimize --matched-resolution"; cat "$tmp/matched.log"; exit 1; }
+/usr/bin/python3 - "$tmp/matched.json" "$tmp/matched/optimum.obj" <<'PY' || fail=1
+import json, sys
+mesh = json.load(open(sys.argv[1]))["mesh"]
+assert mesh["matched_resolution"] == "faces" and mesh["points_per_circle"] == 60, mesh
+assert mesh["start"] == {"points": 60, "faces": mesh["target_faces"]}, mesh
+faces = sum(1 for line in open(sys.argv[2]) if line.startswith("f "))
+assert faces == mesh["optimum"]["faces"], (faces, mesh)
+assert abs(faces - mesh["target_faces"]) <= 0.01 * mesh["target_faces"], (faces, mesh)
+print("matched optimum", mesh["optimum"], "target", mesh["target_faces"])
 PY
 for args in "--theta-min 150:theta_min_deg" "--offset-max 0.6:offset_start" "--ratio-start 2:ratio_start" \
             "--theta-min 0:theta_min_deg" "--replicates 1:replicates" "--score uniformity:uniformity"; do
