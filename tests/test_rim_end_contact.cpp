@@ -59,16 +59,45 @@ TEST(RimEndContact, ObtuseSharpRimGrowsAsTheWedge)
   EXPECT_NEAR(*study.measured_exponent / study.wedge_exponent, 1.0, 0.1);
 }
 
-TEST(RimEndContact, RoundedObtuseRimConverges)
+TEST(RimEndContact, RoundedRimIsResolvedOnlyBelowItsBoundaryLayer)
 {
+  // At the preprint's load (p0 = 0.26 GPa) a fillet of b / 2 has a boundary
+  // layer s = 0.0006 b: edge elements of b / 16 and b / 32 do not resolve it,
+  // and the study must say so rather than call the peak converged.
   fem::RimEndSettings s;
   s.interior_angle_rad = 120 * degree;
-  const fem::RimEndStudy probe = fem::solve_rim_end(MPI_COMM_WORLD, {.levels = 1});
-  s.edge_radius_m = 0.5 * probe.half_width_m;
-  // The fillet (an arc of 60 deg, b / 4 long) gets 4 elements at the first level.
+  s.edge_radius_m = 1.2e-5;
   s.edge_element_over_half_width = 1.0 / 16;
+  s.levels = 2;
   const fem::RimEndStudy study = fem::solve_rim_end(MPI_COMM_WORLD, s);
   print(study);
   EXPECT_FALSE(study.singular);
+  EXPECT_LT(study.boundary_layer_m, 1e-3 * study.half_width_m);
+  EXPECT_FALSE(study.resolved);
+  EXPECT_FALSE(study.converged);
+}
+
+TEST(RimEndContact, RoundedObtuseRimConvergesOnceResolved)
+{
+  // A bearing's load, p0 = 2.0 GPa (q = pi R p0^2 / E*), and a fillet of 2 b:
+  // s = 0.023 b, resolved by the fourth level (b / 256 <= s / 4).
+  fem::RimEndSettings s;
+  s.interior_angle_rad = 120 * degree;
+  s.load_n_per_m = 571769.86;
+  const double b = 1.82e-4;
+  s.edge_radius_m = 2 * b;
+  s.depth_over_half_width = 25;
+  s.edge_element_over_half_width = 1.0 / 32;
+  s.levels = 4;
+  const fem::RimEndStudy study = fem::solve_rim_end(MPI_COMM_WORLD, s);
+  print(study);
+  EXPECT_NEAR(study.half_width_m / b, 1.0, 0.01);
+  EXPECT_FALSE(study.singular);
+  EXPECT_TRUE(study.resolved);
   EXPECT_TRUE(study.converged) << study.end_peak_change.value_or(std::nan(""));
+  // The pressure peaks where the contact runs onto the fillet, just past
+  // x_t = r_e tan 30 deg, above the interior's.
+  EXPECT_NEAR(study.levels.back().end_peak_x_m / study.fillet_start_m, -1.0, 0.1);
+  ASSERT_TRUE(study.end_to_interior.has_value());
+  EXPECT_GT(*study.end_to_interior, 1.5);
 }

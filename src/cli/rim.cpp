@@ -6,6 +6,7 @@
 // Also the scene "rim" of case files.
 #include "cli/cli.h"
 #include "cli/scenes.h"
+#include "contact/edge_on_elastic_block_exponent.h"
 #include "core/json_number.h"
 #include "fem/rim_end_contact.h"
 #include <fmt/format.h>
@@ -98,6 +99,10 @@ nlohmann::json run_rim(const io::Parameters& p)
                           study.measured_exponent.value_or(std::nan("")), study.wedge_exponent)
         : !study.end_peak_change
             ? fmt::format("one level: end peak / interior {:.4f}, convergence not checked", *study.end_to_interior)
+        : !study.resolved
+            ? fmt::format("NOT resolved: the rounded edge's boundary layer s = {:.3g} b needs edge elements of s / 4, "
+                          "the last level has {:.3g} b; end peak / interior {:.4f} is a number of the mesh",
+                          study.boundary_layer_m / b, study.levels.back().edge_element_m / b, *study.end_to_interior)
         : study.converged
             ? fmt::format("converged: end peak / interior {:.4f} (last change {:+.2f} %)", *study.end_to_interior,
                           100 * *study.end_peak_change)
@@ -123,8 +128,19 @@ nlohmann::json run_rim(const io::Parameters& p)
           {"singular", study.singular},
           {"wedge_exponent", study.wedge_exponent},
           {"measured_exponent", json_number(study.measured_exponent)},
-          {"end_to_interior", study.singular ? nlohmann::json(nullptr) : json_number(study.end_to_interior)},
+          // What a block of the body's own material would make of a sharp
+          // edge (analytic; the elastic counter-face is not modelled here).
+          {"same_material_block_exponent",
+           setup.edge_radius_m > 0 ? nlohmann::json(nullptr)
+                                   : json_number(contact::edge_on_elastic_block_exponent(
+                                         setup.interior_angle_rad, setup.youngs_modulus_pa, setup.poisson_ratio,
+                                         setup.youngs_modulus_pa, setup.poisson_ratio))},
+          {"end_to_interior",
+           study.singular || !study.resolved ? nlohmann::json(nullptr) : json_number(study.end_to_interior)},
           {"end_peak_change", json_number(study.end_peak_change)},
+          {"fillet_start_m", study.fillet_start_m},
+          {"boundary_layer_m", study.boundary_layer_m},
+          {"resolved", study.resolved},
           {"converged", study.converged},
           {"plane_strain_change", study.plane_strain_change},
           {"verdict", verdict},

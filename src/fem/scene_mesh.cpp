@@ -152,7 +152,7 @@ void add_rim_end(const RimEndGeometry& g)
     throw ComputationError(fmt::format("rim end: the cut left {} volumes, not one", cut.size()));
   if (!(g.edge_radius_m > 0))
     return;
-  // The edge: the one curve that crosses the block (y from 0 to H) near the origin.
+  // The edge: the one curve that crosses the block (y from 0 to H) from the origin.
   gmsh::vectorpair curves;
   gmsh::model::getEntities(curves, 1);
   std::vector<int> edges;
@@ -161,7 +161,7 @@ void add_rim_end(const RimEndGeometry& g)
   {
     double x0, y0, z0, x1, y1, z1;
     gmsh::model::getBoundingBox(dim, tag, x0, y0, z0, x1, y1, z1);
-    if (y0 < tol && y1 > H - tol && x0 > -tol && x1 < 0.5 * H && z1 < 0.1 * H)
+    if (y0 < tol && y1 > H - tol && x0 > -tol && x1 < 0.5 * H && z0 < tol)
       edges.push_back(tag);
   }
   if (edges.size() != 1)
@@ -194,9 +194,9 @@ void require_meshable(double smallest_size_m)
         smallest_relative_size * model_size / smallest_size_m));
 }
 
-/// Runs gmsh on the geometry `add_geometry` builds, whose element sizes it
-/// sets too (it returns the smallest size); nodes with `dim` coordinates,
-/// cells of the simplex of dimension `dim`.
+/// Runs gmsh on the geometry `add_geometry` builds, whose element sizes (and
+/// any other meshing option) it sets too; it returns the smallest size.
+/// Nodes with `dim` coordinates, cells of the simplex of dimension `dim`.
 RawMesh mesh_with_gmsh(int dim, const std::function<double()>& add_geometry_and_sizes)
 {
   gmsh::initialize();
@@ -206,10 +206,10 @@ RawMesh mesh_with_gmsh(int dim, const std::function<double()>& add_geometry_and_
     gmsh::option::setNumber("General.Terminal", 0);
     gmsh::option::setNumber("General.NumThreads", 1);
     gmsh::model::add("scene");
-    require_meshable(add_geometry_and_sizes());
     gmsh::option::setNumber("Mesh.Algorithm", 6);   // Frontal-Delaunay: near-equilateral triangles
     gmsh::option::setNumber("Mesh.Algorithm3D", 1); // Delaunay
     gmsh::option::setNumber("Mesh.Optimize", 1);
+    require_meshable(add_geometry_and_sizes());
     gmsh::model::mesh::generate(dim);
 
     std::vector<std::size_t> node_tags;
@@ -474,9 +474,10 @@ SceneMesh build_slab_mesh(MPI_Comm comm, const SlabGeometry& slab, const MeshGra
 
 double rim_end_element_size(const RimEndSizes& sizes, const double* x)
 {
-  // Distances from the loaded part of the edge (along y through the origin)
-  // and from the contact strip (along -x).
-  const double to_edge = std::sqrt(x[0] * x[0] + x[2] * x[2] + std::pow(std::max(x[1] - sizes.edge_zone_m, 0.0), 2));
+  // Distances from the loaded part of the edge line (along y through
+  // (edge_x_m, 0, 0)) and from the contact strip (along -x).
+  const double to_edge = std::sqrt(std::pow(x[0] - sizes.edge_x_m, 2) + x[2] * x[2]
+                                   + std::pow(std::max(x[1] - sizes.edge_zone_m, 0.0), 2));
   const double to_strip = std::sqrt(x[2] * x[2] + std::pow(std::max(x[1] - sizes.contact_zone_m, 0.0), 2)
                                     + std::pow(std::max(x[0], 0.0), 2));
   return std::min(
@@ -510,6 +511,9 @@ SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& g, const RimEn
         return rim_end_element_size(sizes, point) / H;
       });
       sizes_from_fields_alone();
+      // gmsh's Delaunay stalled (inserting points for minutes) on a fillet's
+      // graded mesh; HXT meshed it in seconds.
+      gmsh::option::setNumber("Mesh.Algorithm3D", 10);
       return std::min(sizes.edge_m, sizes.contact_m) / H;
     });
     for (double& x : raw.x)

@@ -109,11 +109,12 @@ struct RimEndGeometry
 };
 
 /// Element size min(far, edge + growth d_edge, contact + growth d_strip),
-/// d_edge the distance from the edge's first `edge_zone_m` (from y = 0),
-/// d_strip from the strip y < contact_zone_m along the ruling.
+/// d_edge the distance from the line along y through (edge_x_m, 0, 0) for
+/// y < edge_zone_m (the sharp edge at x = 0, or where a fillet leaves the
+/// sheet), d_strip from the strip y < contact_zone_m along the ruling.
 struct RimEndSizes
 {
-  double edge_m = 0, edge_zone_m = 0;
+  double edge_m = 0, edge_zone_m = 0, edge_x_m = 0;
   double contact_m = 0, contact_zone_m = 0;
   double growth = 0.3;
   double far_m = 0;
