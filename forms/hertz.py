@@ -18,7 +18,10 @@
 # kappa = c E / h is set by the caller (Pa/m), times a cellwise factor
 # (penalty_scale, DG0, 1 unless the caller grades it with the mesh: a node
 # penalty much softer than its small elements cuts a singular pressure off at
-# h / c of the largest elements instead of the local ones).
+# h / c of the largest elements instead of the local ones). The gap may also
+# carry an initial part (initial_gap, P1, 0 unless set): the height of a
+# surface that the mesh represents flattened onto z = 0 (half-space theory's
+# profile, K. L. Johnson, "Contact Mechanics", 1985, sec. 4.2).
 #
 # Integrals carry the weight w = 2 pi r for the axisymmetric model, so that
 # forces and energies are those of the whole body of revolution; the plane
@@ -104,16 +107,17 @@ def contact_forms(tag, degree):
     nu = Constant(cell)
     kappa = Constant(cell)
     penalty_scale = Coefficient(FiniteElement("DG", cell, 0))
+    initial_gap = Coefficient(FiniteElement("Lagrange", cell, 1))
 
     sigma = stress3(strain3(tag, u, x), E, nu)
-    gap = x[z] + u[z]
+    gap = x[z] + u[z] + initial_gap
     penetration = conditional(lt(gap, 0), -gap, 0)
     pressure = kappa * penalty_scale * penetration
     residual = (inner(sigma, strain3(tag, v, x)) * weight * dx
                 - pressure * v[z] * weight * ds_contact)
     named = {
         "u": u, "youngs_modulus": E, "poisson_ratio": nu, "penalty_stiffness": kappa,
-        "penalty_scale": penalty_scale,
+        "penalty_scale": penalty_scale, "initial_gap": initial_gap,
         "residual": residual,
         "jacobian": derivative(residual, u, du),
         "energy": (0.5 * inner(sigma, strain3(tag, u, x)) * weight * dx

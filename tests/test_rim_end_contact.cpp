@@ -37,14 +37,37 @@ TEST(RimEndContact, SquareEndIsFiniteAndConverges)
   const fem::RimEndStudy study = fem::solve_rim_end(MPI_COMM_WORLD, s);
   print(study);
   EXPECT_FALSE(study.singular);
-  ASSERT_TRUE(study.end_peak_change.has_value());
-  EXPECT_TRUE(study.converged) << *study.end_peak_change;
-  EXPECT_LT(study.plane_strain_change, 0.01);
+  ASSERT_TRUE(study.end_change.has_value());
+  EXPECT_TRUE(study.converged) << *study.end_change;
+  // The far side is in plane strain: the middle's pressure is the far
+  // side's within three standard errors of the nodes' scatter, which the
+  // averages keep below 1 %.
+  EXPECT_LT(study.plane_strain_noise, 0.01);
+  EXPECT_LT(study.plane_strain_change, 3 * study.plane_strain_noise);
   // The free end lowers the pressure at the edge (0.26-0.30 of the far side's
   // measured) and refining does not make it grow, as a singular edge's would.
   ASSERT_TRUE(study.measured_exponent.has_value());
   EXPECT_GT(*study.measured_exponent, -0.05);
   EXPECT_LT(study.levels.back().edge_pressure_pa, study.levels.back().far_peak_pa);
+}
+
+TEST(RimEndContact, FlatSheetAgreesWithTheCylinder)
+{
+  // The reduction the scene uses where R >= 20 H (the preprint's load: R = 41 H),
+  // against OpenCASCADE's cylinder: measured 0.948 / 0.963 (end peak) and
+  // 0.267 / 0.263 (edge) of the far side's pressure at b / 32.
+  fem::RimEndSettings s;
+  s.levels = 2;
+  s.sheet = fem::SheetModel::flat;
+  const fem::RimEndStudy flat = fem::solve_rim_end(MPI_COMM_WORLD, s);
+  s.sheet = fem::SheetModel::cylinder;
+  const fem::RimEndStudy cylinder = fem::solve_rim_end(MPI_COMM_WORLD, s);
+  EXPECT_TRUE(flat.flat_sheet);
+  EXPECT_FALSE(cylinder.flat_sheet);
+  const fem::RimEndLevel &f = flat.levels.back(), &c = cylinder.levels.back();
+  EXPECT_NEAR(f.far_peak_pa / c.far_peak_pa, 1.0, 0.02);
+  EXPECT_NEAR(f.end_peak_pa / f.far_peak_pa, c.end_peak_pa / c.far_peak_pa, 0.03);
+  EXPECT_NEAR(f.edge_pressure_pa / f.far_peak_pa, c.edge_pressure_pa / c.far_peak_pa, 0.02);
 }
 
 TEST(RimEndContact, ObtuseSharpRimGrowsAsTheWedge)
@@ -80,21 +103,21 @@ TEST(RimEndContact, RoundedRimIsResolvedOnlyBelowItsBoundaryLayer)
 TEST(RimEndContact, RoundedObtuseRimConvergesOnceResolved)
 {
   // A bearing's load, p0 = 2.0 GPa (q = pi R p0^2 / E*), and a fillet of 2 b:
-  // s = 0.023 b, resolved by the fourth level (b / 256 <= s / 4).
+  // s = 0.023 b, resolved at the third level (b / 256 <= s / 4).
   fem::RimEndSettings s;
   s.interior_angle_rad = 120 * degree;
   s.load_n_per_m = 571769.86;
   const double b = 1.82e-4;
   s.edge_radius_m = 2 * b;
   s.depth_over_half_width = 25;
-  s.edge_element_over_half_width = 1.0 / 32;
-  s.levels = 4;
+  s.edge_element_over_half_width = 1.0 / 64;
+  s.levels = 3;
   const fem::RimEndStudy study = fem::solve_rim_end(MPI_COMM_WORLD, s);
   print(study);
   EXPECT_NEAR(study.half_width_m / b, 1.0, 0.01);
   EXPECT_FALSE(study.singular);
   EXPECT_TRUE(study.resolved);
-  EXPECT_TRUE(study.converged) << study.end_peak_change.value_or(std::nan(""));
+  EXPECT_TRUE(study.converged) << study.end_change.value_or(std::nan(""));
   // The pressure peaks where the contact runs onto the fillet, just past
   // x_t = r_e tan 30 deg, above the interior's.
   EXPECT_NEAR(study.levels.back().end_peak_x_m / study.fillet_start_m, -1.0, 0.1);

@@ -2,7 +2,7 @@
 // edge sharp or rounded, at several sizes of the edge elements
 // (fem/rim_end_contact.h). A sharp obtuse edge is reported singular with its
 // measured growth exponent beside Williams's, never as a peak; a square or a
-// rounded edge has a converged end/interior peak ratio, or says it has not.
+// rounded edge has a converged end/interior pressure ratio, or says it has not.
 // Also the scene "rim" of case files.
 #include "cli/cli.h"
 #include "cli/scenes.h"
@@ -40,6 +40,11 @@ const io::BoundSchema<fem::RimEndSettings>& rim_schema()
            "H / b: the block's depth and half-width in units of line Hertz's half-width b", io::Bounds{4, 100})
         .real("length_over_depth", "--length", &RimEndSettings::length_over_depth, "",
               "L / H: the contact modelled from the far side (plane strain) to the edge", io::Bounds{1, 20})
+        .choice("sheet", "--sheet", &RimEndSettings::sheet,
+                "The contact sheet as a cylinder, or flattened onto z = 0 with its height in the contact's initial "
+                "gap (half-space theory's profile); auto: flat where R >= 20 H",
+                {{"auto", fem::SheetModel::automatic}, {"cylinder", fem::SheetModel::cylinder},
+                 {"flat", fem::SheetModel::flat}})
         .integer("contact_elements", "--contact-elements", &RimEndSettings::contact_elements, "",
                  "Elements across b along the contact strip", io::Bounds{2, 40})
         .real("edge_element_over_half_width", "--edge-element", &RimEndSettings::edge_element_over_half_width, "",
@@ -93,30 +98,31 @@ nlohmann::json run_rim(const io::Parameters& p)
                          l.end_peak_pa / l.far_peak_pa, l.end_peak_x_m / b,
                          l.edge_pressure_pa > 0 ? fmt::format("{:.4f}", l.edge_pressure_pa / l.far_peak_pa) : "-");
   }
+  const bool sharp = !(setup.edge_radius_m > 0);
   const std::string verdict
       = study.singular
             ? fmt::format("singular: the edge's pressure grows as h_e^{:.3f} (Williams's wedge: {:.3f}); no peak value",
                           study.measured_exponent.value_or(std::nan("")), study.wedge_exponent)
-        : !study.end_peak_change
-            ? fmt::format("one level: end peak / interior {:.4f}, convergence not checked", *study.end_to_interior)
+        : !study.end_change
+            ? fmt::format("one level: end pressure / interior {:.4f}, convergence not checked", *study.end_to_interior)
         : !study.resolved
             ? fmt::format("NOT resolved: the rounded edge's boundary layer s = {:.3g} b needs edge elements of s / 4, "
-                          "the last level has {:.3g} b; end peak / interior {:.4f} is a number of the mesh",
+                          "the last level has {:.3g} b; end pressure / interior {:.4f} is a number of the mesh",
                           study.boundary_layer_m / b, study.levels.back().edge_element_m / b, *study.end_to_interior)
         : study.converged
-            ? fmt::format("converged: end peak / interior {:.4f} (last change {:+.2f} %)", *study.end_to_interior,
-                          100 * *study.end_peak_change)
-            : fmt::format("NOT converged: end peak / interior {:.4f} changed {:+.2f} % at the last level",
-                          *study.end_to_interior, 100 * *study.end_peak_change);
+            ? fmt::format("converged: end pressure / interior {:.4f} (last change {:+.2f} %; {})", *study.end_to_interior,
+                          100 * *study.end_change, sharp ? "the square edge's own" : "the rounded edge's peak")
+            : fmt::format("NOT converged: end pressure / interior {:.4f} changed {:+.2f} % at the last level",
+                          *study.end_to_interior, 100 * *study.end_change);
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   // Tables go to the log (stderr), so that `--json -` stays JSON alone.
   if (rank == 0)
     spdlog::info("\nrim end, interior angle {:.4g} deg, edge radius {:.3g} m ({:.3g} b), R = {:.4g} m, q = {:.5g} "
-                 "N/m (b = {:.4g} m, p0 = {:.5g} Pa):\n\n{}\n{}; far side in plane strain to {:.2f} %.\n\n",
+                 "N/m (b = {:.4g} m, p0 = {:.5g} Pa):\n\n{}\n{}; far side in plane strain to {:.2f} % (standard error {:.2f} %).\n\n",
                  setup.interior_angle_rad * 180 / std::numbers::pi, setup.edge_radius_m, setup.edge_radius_m / b,
                  setup.radius_m, setup.load_n_per_m, b, study.hertz_peak_pa, table, verdict,
-                 100 * study.plane_strain_change);
+                 100 * study.plane_strain_change, 100 * study.plane_strain_noise);
   return {{"counter_face", "rigid"},
           {"interior_angle_deg", setup.interior_angle_rad * 180 / std::numbers::pi},
           {"edge_radius_m", setup.edge_radius_m},
@@ -137,12 +143,14 @@ nlohmann::json run_rim(const io::Parameters& p)
                                          setup.youngs_modulus_pa, setup.poisson_ratio))},
           {"end_to_interior",
            study.singular || !study.resolved ? nlohmann::json(nullptr) : json_number(study.end_to_interior)},
-          {"end_peak_change", json_number(study.end_peak_change)},
+          {"end_change", json_number(study.end_change)},
+          {"sheet", study.flat_sheet ? "flat" : "cylinder"},
           {"fillet_start_m", study.fillet_start_m},
           {"boundary_layer_m", study.boundary_layer_m},
           {"resolved", study.resolved},
           {"converged", study.converged},
           {"plane_strain_change", study.plane_strain_change},
+          {"plane_strain_noise", study.plane_strain_noise},
           {"verdict", verdict},
           {"levels", levels}};
 }
@@ -153,7 +161,7 @@ void add_rim_command(CLI::App& app)
   add_scene_command(app, "rim",
                     "FEM of one loaded ruling end at the body's rim in 3D on the rigid plane (gmsh OpenCASCADE, sharp "
                     "or rounded edge, several edge mesh levels): singular with its exponent, or the converged "
-                    "end/interior peak ratio",
+                    "end/interior pressure ratio",
                     rim_schema().schema(), run_rim);
 }
 } // namespace rollcheck::cli

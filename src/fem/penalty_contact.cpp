@@ -111,6 +111,19 @@ std::vector<dolfinx::la::Vector<T>> rigid_body_modes(const dolfinx::fem::Functio
   dolfinx::la::orthonormalize(std::span(modes));
   return modes;
 }
+/// f's values at the points of a scalar space (DG0: cell midpoints, P1: vertices).
+void interpolate_scalar(dolfinx::fem::Function<double>& f, const std::function<double(const double* x)>& value)
+{
+  f.interpolate([&](const xt::xtensor<double, 2>& x) -> xt::xarray<double> {
+    xt::xtensor<double, 1> values = xt::empty<double>({x.shape(1)});
+    for (std::size_t i = 0; i < x.shape(1); ++i)
+    {
+      const double point[3] = {x(0, i), x(1, i), x(2, i)};
+      values(i) = value(point);
+    }
+    return values;
+  });
+}
 } // namespace
 
 PenaltyContact::PenaltyContact(const SceneMesh& scene, Model model, int degree, double body_modulus_pa,
@@ -140,7 +153,9 @@ PenaltyContact::PenaltyContact(const SceneMesh& scene, Model model, int degree, 
       dfem::create_functionspace(_forms.displacement_space, ("penalty_scale_" + s).c_str(), mesh));
   _penalty_scale = std::make_shared<dfem::Function<T>>(Q0);
   _penalty_scale->x()->set(1.0);
-  _coefficients = {{"u_" + s, _u}, {"penalty_scale_" + s, _penalty_scale}};
+  _initial_gap = std::make_shared<dfem::Function<T>>(std::make_shared<dfem::FunctionSpace>(
+      dfem::create_functionspace(_forms.displacement_space, ("initial_gap_" + s).c_str(), mesh)));
+  _coefficients = {{"u_" + s, _u}, {"penalty_scale_" + s, _penalty_scale}, {"initial_gap_" + s, _initial_gap}};
   const auto& coefficients = _coefficients;
   auto make_form = [&](ufcx_form* form, std::vector<std::shared_ptr<const dfem::FunctionSpace>> spaces) {
     return std::make_shared<dfem::Form<T>>(
@@ -381,16 +396,14 @@ double PenaltyContact::reaction_force_n() const
   MPI_Allreduce(&local, &total, 1, MPI_DOUBLE, MPI_SUM, _scene.mesh->comm());
   return -total * _scene.symmetry_multiplicity;
 }
+
 void PenaltyContact::set_penalty_scale(const std::function<double(const double* x)>& scale)
 {
-  _penalty_scale->interpolate([&](const xt::xtensor<double, 2>& x) -> xt::xarray<T> {
-    xt::xtensor<T, 1> values = xt::empty<T>({x.shape(1)});
-    for (std::size_t i = 0; i < x.shape(1); ++i)
-    {
-      const double point[3] = {x(0, i), x(1, i), x(2, i)};
-      values(i) = scale(point);
-    }
-    return values;
-  });
+  interpolate_scalar(*_penalty_scale, scale);
+}
+
+void PenaltyContact::set_initial_gap(const std::function<double(const double* x)>& gap)
+{
+  interpolate_scalar(*_initial_gap, gap);
 }
 } // namespace rollcheck::fem

@@ -65,6 +65,10 @@ public:
   /// penalty stays as stiff against its elements where they are small.
   void set_penalty_scale(const std::function<double(const double* x)>& scale);
 
+  /// The gap to the plane becomes z + u_z + gap(x) (0 before this is
+  /// called): a surface the mesh carries flattened onto z = 0.
+  void set_initial_gap(const std::function<double(const double* x)>& gap);
+
   /// Newton to convergence at the current approach; throws ComputationError
   /// on a diverged linear solve or when Newton does not converge.
   NewtonReport solve();
@@ -79,7 +83,7 @@ public:
   std::shared_ptr<const dolfinx::mesh::Mesh> mesh() const { return _scene.mesh; }
   const SceneMesh& scene() const { return _scene; }
   std::int64_t num_dofs() const;
-  /// Coefficients of the forms (displacement, penalty scale), by their UFL names.
+  /// Coefficients of the forms (displacement, penalty scale, initial gap), by their UFL names.
   const std::map<std::string, std::shared_ptr<const dolfinx::fem::Function<T>>>& coefficients() const
   {
     return _coefficients;
@@ -104,6 +108,7 @@ private:
   std::shared_ptr<dolfinx::fem::FunctionSpace> _V;
   std::shared_ptr<dolfinx::fem::Function<T>> _u;
   std::shared_ptr<dolfinx::fem::Function<T>> _penalty_scale; ///< DG0
+  std::shared_ptr<dolfinx::fem::Function<T>> _initial_gap;   ///< P1
   std::map<std::string, std::shared_ptr<const dolfinx::fem::Function<T>>> _coefficients;
   std::shared_ptr<dolfinx::fem::Function<T>> _top_displacement; ///< the top face's prescribed values
   std::vector<std::int32_t> _top_blocks;  ///< owned and ghost

@@ -52,10 +52,16 @@ void validate(const RimEndSettings& s)
                                  s.contact_elements, s.levels));
 }
 
+struct Sample
+{
+  double mean, sd;
+  int count;
+  double standard_error() const { return sd / std::sqrt(count); }
+};
+
 /// Mean and standard deviation of the centre-line pressures with x in [from,
 /// to], at least `least` of them.
-std::array<double, 2> centre_line_mean(const std::vector<CentreLineNode>& line, double from, double to,
-                                       int least = 2)
+Sample centre_line_mean(const std::vector<CentreLineNode>& line, double from, double to, int least = 2)
 {
   double sum = 0, sum2 = 0;
   int n = 0;
@@ -69,7 +75,7 @@ std::array<double, 2> centre_line_mean(const std::vector<CentreLineNode>& line, 
   if (n < least)
     throw ComputationError(fmt::format("rim: fewer than {} centre-line nodes in [{:.3g}, {:.3g}] m", least, from, to));
   const double mean = sum / n;
-  return {mean, std::sqrt(std::max(sum2 / n - mean * mean, 0.0))};
+  return {mean, std::sqrt(std::max(sum2 / n - mean * mean, 0.0)), n};
 }
 
 /// 2 int p dy over the surface nodes of the far side x = -L (y >= 0 half).
@@ -101,13 +107,16 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   sizes.edge_x_m = -study.fillet_start_m;
   sizes.far_m = H / 4;
   const SceneMesh scene = build_rim_end_mesh(
-      comm, {s.radius_m, s.interior_angle_rad, s.edge_radius_m, H, L}, sizes);
+      comm, {s.radius_m, s.interior_angle_rad, s.edge_radius_m, H, L, study.flat_sheet}, sizes);
   const double body_modulus = s.youngs_modulus_pa;
   PenaltyContact problem(scene, Model::solid, 1, body_modulus, s.poisson_ratio,
                          s.penalty_c * body_modulus / sizes.contact_m, s.petsc_options);
   // kappa = c E / h(x) with the mesh's own size: a penalty as soft as at the
   // strip's elements would cut the edge's singular pressure off at h_c / c.
   problem.set_penalty_scale([&](const double* x) { return sizes.contact_m / rim_end_element_size(sizes, x); });
+  auto sheet_height = [&](double y) { return s.radius_m - std::sqrt(s.radius_m * s.radius_m - y * y); };
+  if (study.flat_sheet)
+    problem.set_initial_gap([&](const double* x) { return sheet_height(std::min(x[1], s.radius_m)); });
   level.dofs = problem.num_dofs();
   const double tol = 1e-9 * H;
   auto surface = [&] { return gather_surface_pressure(comm, recover_nodal_fields(problem)); };
@@ -133,9 +142,9 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   {
     if (std::abs(n.x[1]) < tol)
       level.centre_line.push_back({n.x[0], n.pressure_pa});
-    // A sharp edge at y: on the sheet, z_e = R - sqrt(R^2 - y^2), and on the
-    // other face, x_e = -z_e cot a.
-    const double z_edge = s.radius_m - std::sqrt(s.radius_m * s.radius_m - n.x[1] * n.x[1]);
+    // A sharp edge at y: on the sheet, z_e = R - sqrt(R^2 - y^2) (0 flat),
+    // and on the other face, x_e = -z_e cot a.
+    const double z_edge = study.flat_sheet ? 0.0 : sheet_height(n.x[1]);
     const double x_edge = -z_edge / std::tan(s.interior_angle_rad);
     if (!(s.edge_radius_m > 0) && n.x[1] <= b / 2 && std::hypot(n.x[0] - x_edge, n.x[2] - z_edge) < 1e-3 * edge_element_m)
     {
@@ -153,19 +162,22 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   // (measured along the far strip: 2.3-2.5 % at 6 and 10 elements across b,
   // penalty c = 10), so pressures are read as means over a stretch of the
   // ruling: H at the far side and in the middle, and about each node near the
-  // end +-b / 8 or, where the contact elements are longer, +-h_c (a rounded
-  // edge: at most half its boundary layer).
-  const double window = s.edge_radius_m > 0 ? std::min(std::max(b / 8, sizes.contact_m), study.boundary_layer_m / 2)
-                                             : std::max(b / 8, sizes.contact_m);
-  const auto [far_mean, far_scatter] = centre_line_mean(level.centre_line, -L, -L + H);
-  level.far_peak_pa = far_mean;
-  level.far_scatter = far_scatter / far_mean;
-  level.mid_peak_pa = centre_line_mean(level.centre_line, -L / 2 - H / 2, -L / 2 + H / 2)[0];
+  // end +-b / 4, the scale on which a square end's pressure falls (a rounded
+  // edge: at most half its boundary layer; +-b / 8 left the square end's peak
+  // changing by 2-4 % from level to level, the scatter's size).
+  const double window = s.edge_radius_m > 0 ? std::min(b / 4, study.boundary_layer_m / 2) : b / 4;
+  const Sample far = centre_line_mean(level.centre_line, -L, -L + H);
+  const Sample mid = centre_line_mean(level.centre_line, -L / 2 - H / 2, -L / 2 + H / 2);
+  level.far_peak_pa = far.mean;
+  level.far_scatter = far.sd / far.mean;
+  level.mid_peak_pa = mid.mean;
+  level.mid_to_far_standard_error
+      = std::hypot(far.standard_error() / far.mean, mid.standard_error() / mid.mean) * mid.mean / far.mean;
   // The sheet and the fillet (beyond them lies the other face, out of contact).
   for (const CentreLineNode& node : level.centre_line)
     if (node.x_m > -end_zone && node.x_m <= s.edge_radius_m)
     {
-      const double smoothed = centre_line_mean(level.centre_line, node.x_m - window, node.x_m + window, 1)[0];
+      const double smoothed = centre_line_mean(level.centre_line, node.x_m - window, node.x_m + window, 1).mean;
       if (smoothed > level.end_peak_pa)
       {
         level.end_peak_pa = smoothed;
@@ -196,6 +208,9 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
                                  "(at most H / 10)",
                                  setup.edge_radius_m, setup.depth_over_half_width * study.half_width_m));
   const bool sharp = !(setup.edge_radius_m > 0);
+  const double depth_m = setup.depth_over_half_width * study.half_width_m;
+  study.flat_sheet = setup.sheet == SheetModel::flat
+                     || (setup.sheet == SheetModel::automatic && setup.radius_m >= 20 * depth_m);
   study.fillet_start_m = setup.edge_radius_m * std::tan((std::numbers::pi - setup.interior_angle_rad) / 2);
   study.boundary_layer_m = 4 * study.hertz_peak_pa * setup.edge_radius_m / (std::numbers::pi * study.effective_modulus_pa);
   study.wedge_exponent = sharp ? contact::edge_on_rigid_plane_exponent(setup.interior_angle_rad) : 0.0;
@@ -216,8 +231,13 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
   const RimEndLevel& last = study.levels.back();
   study.resolved = sharp || last.edge_element_m <= study.boundary_layer_m / 4;
   study.plane_strain_change = std::abs(last.mid_peak_pa / last.far_peak_pa - 1);
+  study.plane_strain_noise = last.mid_to_far_standard_error;
+  // What converges at a non-singular end: a sharp (square) edge's own
+  // pressure; a rounded edge's peak (a square end's largest pressure near the
+  // end is the interior's, falling towards the edge).
+  auto end_value = [sharp](const RimEndLevel& l) { return sharp ? l.edge_pressure_pa : l.end_peak_pa; };
   if (!study.singular)
-    study.end_to_interior = last.end_peak_pa / last.far_peak_pa;
+    study.end_to_interior = end_value(last) / last.far_peak_pa;
   if (study.levels.size() < 2)
     return study; // one level: nothing to say of convergence
   const RimEndLevel& before = study.levels[study.levels.size() - 2];
@@ -242,8 +262,8 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
   }
   if (!study.singular)
   {
-    study.end_peak_change = last.end_peak_pa / before.end_peak_pa - 1;
-    study.converged = study.resolved && std::abs(*study.end_peak_change) < setup.tolerance;
+    study.end_change = end_value(last) / end_value(before) - 1;
+    study.converged = study.resolved && std::abs(*study.end_change) < setup.tolerance;
   }
   return study;
 }

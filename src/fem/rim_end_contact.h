@@ -21,9 +21,9 @@
 // study halves h_e level by level and measures that exponent as the least
 // squares slope of ln p_edge on ln h_e over the levels. A sharp
 // edge of a > 90 deg is reported singular with both exponents and no peak
-// value; a square edge (a = 90 deg, not singular on the rigid plane) and a
-// rounded edge have an end peak that must converge: its change between the
-// last two levels below `tolerance`, or the study says it did not.
+// value; a square edge (a = 90 deg, not singular on the rigid plane) has an
+// edge pressure, a rounded edge an end peak, that must converge: its change
+// between the last two levels below `tolerance`, or the study says it did not.
 //
 // A rounded edge leaves the sheet at x = -x_t, x_t = r_e tan((180 deg - a) / 2),
 // with a jump of curvature from 0 to 1 / r_e. The contact reaches past it
@@ -33,7 +33,8 @@
 // pressure there grows under refinement as at a crack tip (measured: 5.1 to
 // 6.6 times the interior from h_e = b / 32 to b / 64 at a = 90 deg,
 // r_e = b / 2). The edge elements are therefore graded about the line
-// x = -x_t, a rounded edge counts as resolved only once h_e <= s / 4 at the
+// x = -x_t (grading them over the whole fillet instead stalled gmsh's
+// Delaunay for minutes), a rounded edge counts as resolved only once h_e <= s / 4 at the
 // last level, and converged only when resolved.
 #include <array>
 #include <cstdint>
@@ -46,6 +47,13 @@
 
 namespace rollcheck::fem
 {
+enum class SheetModel
+{
+  automatic,
+  cylinder,
+  flat
+};
+
 struct RimEndSettings
 {
   /// R across the ruling at the end: the 10 mm cylinder of the Hertz scenes.
@@ -59,11 +67,16 @@ struct RimEndSettings
   double poisson_ratio = 0.3;        ///< steel (the preprint's)
   double depth_over_half_width = 10; ///< H / b
   double length_over_depth = 3;      ///< L / H
+  /// The contact sheet as OpenCASCADE's cylinder, or flattened onto z = 0
+  /// with its height in the initial gap (fem/scene_mesh.h RimEndGeometry);
+  /// automatic: flat where R >= 20 H (the sheet rises less than H / 40
+  /// across the block), the cylinder below.
+  SheetModel sheet = SheetModel::automatic;
   int contact_elements = 6;          ///< elements across b along the contact strip
   /// Edge elements at the first level, h_e / b; each further level halves them.
   double edge_element_over_half_width = 1.0 / 8;
   int levels = 3;                    ///< 1 to 6; convergence needs 2
-  double tolerance = 0.03;           ///< the end peak's change per level that counts as converged
+  double tolerance = 0.03;           ///< the end pressure's change per level that counts as converged
   /// kappa = c E / h(x), h(x) the element size there (fem/scene_mesh.h
   /// rim_end_element_size): at c = 100 (the other scenes') the nodal
   /// pressures along the strip scattered by 4-5 %, at c = 10 by 2.4 %.
@@ -88,8 +101,10 @@ struct RimEndLevel
   double far_peak_pa = 0;            ///< mean centre-line pressure over x in [-L, -L + H]
   double far_scatter = 0;            ///< their standard deviation over their mean
   double mid_peak_pa = 0;            ///< the same over x in [-L / 2 - H / 2, -L / 2 + H / 2]
+  double mid_to_far_standard_error = 0; ///< of mid_peak_pa / far_peak_pa, from the nodes' scatter
   /// Largest centre-line pressure within 2 b + r_e of the edge (each the
-  /// mean over +-max(b / 8, h_c) along the ruling), and where (x).
+  /// mean over +-b / 4 along the ruling, a rounded edge's over at most half
+  /// its boundary layer), and where (x).
   double end_peak_pa = 0, end_peak_x_m = 0;
   /// Mean nodal pressure on a sharp edge's nodes with y <= b / 2 (0 when rounded).
   double edge_pressure_pa = 0;
@@ -111,15 +126,18 @@ struct RimEndStudy
   double fillet_start_m = 0;         ///< x_t: the fillet leaves the sheet at x = -x_t (0 sharp)
   double boundary_layer_m = 0;       ///< s = 4 p0 r_e / (pi E*) (0 sharp)
   bool resolved = false;             ///< sharp, or h_e <= s / 4 at the last level
+  bool flat_sheet = false;           ///< the sheet model used
   /// Growth exponent of the edge's nodal pressure over the levels (sharp edges, >= 2 levels).
   std::optional<double> measured_exponent;
-  /// Not singular: the end peak's change between the last two levels (none
-  /// with one level), whether it is resolved and below the tolerance, and
-  /// the end/far peak ratio at the last level.
-  std::optional<double> end_peak_change;
+  /// Not singular: the end's pressure (a sharp square edge's own pressure,
+  /// a rounded edge's end peak) over the far side's at the last level, its
+  /// change between the last two levels (none with one level), and whether
+  /// it is resolved and the change below the tolerance.
+  std::optional<double> end_change;
   bool converged = false;
   std::optional<double> end_to_interior;
   double plane_strain_change = 0;    ///< |p(-L/2) / p(-L) - 1| at the last level
+  double plane_strain_noise = 0;     ///< its standard error (the nodal pressures' scatter)
   std::vector<RimEndLevel> levels;
 };
 

@@ -135,12 +135,17 @@ void add_rim_end(const RimEndGeometry& g)
 {
   namespace occ = gmsh::model::occ;
   const double H = g.depth_m, L = g.length_m, R = g.radius_m;
-  // The box overlaps the tangent plane z = 0 instead of touching it.
-  const int box = occ::addBox(-L, 0, -0.1 * H, L + H, H, 1.1 * H);
-  const int cylinder = occ::addCylinder(-L - H, 0, R, L + 3 * H, 0, 0, R);
   gmsh::vectorpair body, cut;
   std::vector<gmsh::vectorpair> map;
-  occ::intersect({{3, box}}, {{3, cylinder}}, body, map);
+  if (g.flat_sheet)
+    body = {{3, occ::addBox(-L, 0, 0, L + H, H, H)}};
+  else
+  {
+    // The box overlaps the tangent plane z = 0 instead of touching it.
+    const int box = occ::addBox(-L, 0, -0.1 * H, L + H, H, 1.1 * H);
+    const int cylinder = occ::addCylinder(-L - H, 0, R, L + 3 * H, 0, 0, R);
+    occ::intersect({{3, box}}, {{3, cylinder}}, body, map);
+  }
   // Beyond the other face: n . p > 0, n = (sin a, 0, cos a) for the interior
   // angle a, which is +x (a square end) turned about y by a - 90 deg.
   const double span = 10 * (L + H);
@@ -502,7 +507,7 @@ SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& g, const RimEn
                                  g.edge_radius_m, g.radius_m, H));
   // OpenCASCADE's tolerances are absolute (1e-7): the geometry is built with
   // H as the unit and the mesh scaled back.
-  const RimEndGeometry unit{g.radius_m / H, g.interior_angle_rad, g.edge_radius_m / H, 1.0, L / H};
+  const RimEndGeometry unit{g.radius_m / H, g.interior_angle_rad, g.edge_radius_m / H, 1.0, L / H, g.flat_sheet};
   SceneMesh scene = distribute(comm, 3, [&] {
     RawMesh raw = mesh_with_gmsh(3, [&] {
       add_rim_end(unit);
@@ -511,9 +516,6 @@ SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& g, const RimEn
         return rim_end_element_size(sizes, point) / H;
       });
       sizes_from_fields_alone();
-      // gmsh's Delaunay stalled (inserting points for minutes) on a fillet's
-      // graded mesh; HXT meshed it in seconds.
-      gmsh::option::setNumber("Mesh.Algorithm3D", 10);
       return std::min(sizes.edge_m, sizes.contact_m) / H;
     });
     for (double& x : raw.x)

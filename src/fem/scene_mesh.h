@@ -106,6 +106,12 @@ struct RimEndGeometry
   double edge_radius_m = 0;      ///< r_e of the fillet; 0: a sharp edge
   double depth_m = 0;            ///< H: the block's height and half-width (R >= H)
   double length_m = 0;           ///< L: contact modelled from the far side x = -L to the edge
+  /// The sheet flattened onto z = 0 (its height, R - sqrt(R^2 - y^2), then
+  /// belongs in the contact's initial gap: PenaltyContact::set_initial_gap).
+  /// OpenCASCADE's cylinder surface of R >> H is too thin in its parameters
+  /// for gmsh to mesh (R / H = 3400 failed); flattened, the geometry errs by
+  /// H^2 / (2 R) at y = H, far from the contact.
+  bool flat_sheet = false;
 };
 
 /// Element size min(far, edge + growth d_edge, contact + growth d_strip),
