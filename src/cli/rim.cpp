@@ -35,6 +35,10 @@ const io::BoundSchema<fem::RimEndSettings>& rim_schema()
         .real("edge_radius_m", "--edge-radius", &RimEndSettings::edge_radius_m, "m",
               "r_e of the edge's fillet, the way a part is finished; 0: the sharp edge of the ideal hull",
               io::Bounds{0, 1, false, false});
+    s.choice("counter_face", "--counter-face", &RimEndSettings::counter_face,
+             "What the body presses on: rigid (the frictionless rigid plane) or steel (a block of the body's own "
+             "material, a second elastic body, frictionless; sharp edges, one process)",
+             {{"rigid", fem::CounterFace::rigid}, {"steel", fem::CounterFace::block}});
     add_material(s, &RimEndSettings::youngs_modulus_pa, &RimEndSettings::poisson_ratio);
     s.real("depth_over_half_width", "--depth", &RimEndSettings::depth_over_half_width, "",
            "H / b: the block's depth and half-width in units of line Hertz's half-width b", io::Bounds{4, 100})
@@ -101,7 +105,7 @@ nlohmann::json run_rim(const io::Parameters& p)
   const bool sharp = !(setup.edge_radius_m > 0);
   const std::string verdict
       = study.singular
-            ? fmt::format("singular: the edge's pressure grows as h_e^{:.3f} (Williams's wedge: {:.3f}); no peak value",
+            ? fmt::format("singular: the edge's pressure grows as h_e^{:.3f} (the wedge's eigenvalue: {:.3f}); no peak value",
                           study.measured_exponent.value_or(std::nan("")), study.wedge_exponent)
         : !study.end_change
             ? fmt::format("one level: end pressure / interior {:.4f}, convergence not checked", *study.end_to_interior)
@@ -123,7 +127,7 @@ nlohmann::json run_rim(const io::Parameters& p)
                  setup.interior_angle_rad * 180 / std::numbers::pi, setup.edge_radius_m, setup.edge_radius_m / b,
                  setup.radius_m, setup.load_n_per_m, b, study.hertz_peak_pa, table, verdict,
                  100 * study.plane_strain_change, 100 * study.plane_strain_noise);
-  return {{"counter_face", "rigid"},
+  return {{"counter_face", setup.counter_face == fem::CounterFace::rigid ? "rigid" : "steel"},
           {"interior_angle_deg", setup.interior_angle_rad * 180 / std::numbers::pi},
           {"edge_radius_m", setup.edge_radius_m},
           {"radius_m", setup.radius_m},

@@ -139,6 +139,7 @@ PenaltyContact::PenaltyContact(const SceneMesh& scene, Model model, int degree, 
   _V = std::make_shared<dfem::FunctionSpace>(dfem::create_functionspace(_forms.displacement_space, "v_0", mesh));
   _u = std::make_shared<dfem::Function<T>>(_V);
   _u->name = "displacement";
+  _dof_coordinates = _V->tabulate_dof_coordinates(false);
 
   const std::string& s = _forms.suffix;
   _constants = {{"youngs_modulus_" + s, std::make_shared<dfem::Constant<T>>(body_modulus_pa)},
@@ -275,6 +276,13 @@ void PenaltyContact::assemble_residual(dolfinx::la::Vector<T>& b) const
   std::span<T> array = b.mutable_array();
   std::fill(array.begin(), array.end(), 0.0);
   dolfinx::fem::assemble_vector<T>(array, *_residual);
+  const int bs = _V->dofmap()->index_map_bs();
+  const std::vector<double> pressure = pair_pressures_pa();
+  for (std::size_t i = 0; i < _pairs.size(); ++i)
+  {
+    array[_pairs[i].upper * bs + _z_component] -= pressure[i] * _pairs[i].area_m2;
+    array[_pairs[i].lower * bs + _z_component] += pressure[i] * _pairs[i].area_m2;
+  }
   b.scatter_rev(std::plus<T>());
   // The state satisfies the Dirichlet conditions, so the increment is zero there.
   dolfinx::fem::set_bc<T>(array, _bcs, _u->x()->array(), -1.0);
@@ -284,6 +292,17 @@ void PenaltyContact::assemble_jacobian()
 {
   MatZeroEntries(_A);
   dolfinx::fem::assemble_matrix(dolfinx::la::petsc::Matrix::set_block_fn(_A, ADD_VALUES), *_jacobian, _bcs);
+  const int bs = _V->dofmap()->index_map_bs();
+  const std::vector<double> pressure = pair_pressures_pa();
+  // Every pair's entries, zero where open: the first final assembly freezes
+  // the matrix's nonzero structure to the entries set so far.
+  for (std::size_t i = 0; i < _pairs.size(); ++i)
+  {
+    const PetscInt rows[2] = {_pairs[i].upper * bs + _z_component, _pairs[i].lower * bs + _z_component};
+    const double k = pressure[i] > 0 ? _pairs[i].stiffness_pa_per_m * _pairs[i].area_m2 : 0.0;
+    const PetscScalar values[4] = {k, -k, -k, k};
+    MatSetValuesLocal(_A, 2, rows, 2, rows, values, ADD_VALUES);
+  }
   MatAssemblyBegin(_A, MAT_FLUSH_ASSEMBLY);
   MatAssemblyEnd(_A, MAT_FLUSH_ASSEMBLY);
   dolfinx::fem::set_diagonal<T>(dolfinx::la::petsc::Matrix::set_fn(_A, INSERT_VALUES), *_V, _bcs);
@@ -293,7 +312,10 @@ void PenaltyContact::assemble_jacobian()
 
 double PenaltyContact::energy() const
 {
-  const double local = dolfinx::fem::assemble_scalar(*_energy);
+  double local = dolfinx::fem::assemble_scalar(*_energy);
+  const std::vector<double> pressure = pair_pressures_pa();
+  for (std::size_t i = 0; i < _pairs.size(); ++i)
+    local += 0.5 * pressure[i] * pressure[i] / _pairs[i].stiffness_pa_per_m * _pairs[i].area_m2;
   double total = 0;
   MPI_Allreduce(&local, &total, 1, MPI_DOUBLE, MPI_SUM, _scene.mesh->comm());
   return total;
@@ -388,6 +410,13 @@ double PenaltyContact::reaction_force_n() const
   dolfinx::la::Vector<T> b(map, _V->dofmap()->index_map_bs());
   std::span<T> array = b.mutable_array();
   dolfinx::fem::assemble_vector<T>(array, *_residual);
+  const int bs = _V->dofmap()->index_map_bs();
+  const std::vector<double> pressure = pair_pressures_pa();
+  for (std::size_t i = 0; i < _pairs.size(); ++i)
+  {
+    array[_pairs[i].upper * bs + _z_component] -= pressure[i] * _pairs[i].area_m2;
+    array[_pairs[i].lower * bs + _z_component] += pressure[i] * _pairs[i].area_m2;
+  }
   b.scatter_rev(std::plus<T>());
   double local = 0;
   for (std::int32_t dof : _top_z_dofs)
@@ -405,5 +434,38 @@ void PenaltyContact::set_penalty_scale(const std::function<double(const double* 
 void PenaltyContact::set_initial_gap(const std::function<double(const double* x)>& gap)
 {
   interpolate_scalar(*_initial_gap, gap);
+}
+
+void PenaltyContact::set_node_pairs(std::vector<NodePair> pairs)
+{
+  int processes = 1;
+  MPI_Comm_size(_scene.mesh->comm(), &processes);
+  if (processes > 1 && !pairs.empty())
+    throw InputError("contact between two elastic bodies (node pairs) runs on one process");
+  _pairs = std::move(pairs);
+  dolfinx::la::SparsityPattern pattern = dolfinx::fem::create_sparsity_pattern(*_jacobian);
+  for (const NodePair& pair : _pairs)
+  {
+    const std::int32_t blocks[2] = {pair.upper, pair.lower};
+    pattern.insert(blocks, blocks);
+  }
+  pattern.assemble();
+  MatDestroy(&_A);
+  _A = dolfinx::la::petsc::create_matrix(_scene.mesh->comm(), pattern, "aij");
+  MatSetNearNullSpace(_A, _near_nullspace);
+}
+
+std::vector<double> PenaltyContact::pair_pressures_pa() const
+{
+  const std::span<const T> u = _u->x()->array();
+  const int bs = _V->dofmap()->index_map_bs();
+  std::vector<double> pressure(_pairs.size());
+  for (std::size_t i = 0; i < _pairs.size(); ++i)
+  {
+    const NodePair& pair = _pairs[i];
+    const double gap = pair.initial_gap_m + u[pair.upper * bs + _z_component] - u[pair.lower * bs + _z_component];
+    pressure[i] = gap < 0 ? -pair.stiffness_pa_per_m * gap : 0.0;
+  }
+  return pressure;
 }
 } // namespace rollcheck::fem

@@ -36,6 +36,21 @@ struct NewtonReport
   double solve_s = 0;
 };
 
+/// Frictionless contact between two elastic bodies meshed together, node to
+/// node: a node of the upper body's contact face and its twin of the lower
+/// body's at the same place (the mesh carries the interface flattened, the
+/// bodies' profile in `initial_gap_m`). Gap g = g0 + u_z(upper) - u_z(lower),
+/// pressure p = kappa <-g>_+, the force p A on each, opposite
+/// (P. Wriggers, Computational Contact Mechanics, 2nd ed., 2006, sec. 4.1:
+/// the node-to-node penalty, exact for matching meshes and small slip).
+struct NodePair
+{
+  std::int32_t upper, lower;     ///< local dof blocks (one process)
+  double area_m2;                ///< the upper node's lumped contact area
+  double initial_gap_m;          ///< g0
+  double stiffness_pa_per_m;     ///< kappa
+};
+
 class PenaltyContact
 {
 public:
@@ -69,6 +84,13 @@ public:
   /// called): a surface the mesh carries flattened onto z = 0.
   void set_initial_gap(const std::function<double(const double* x)>& gap);
 
+  /// Contact between two bodies by node pairs, besides (or instead of: set
+  /// the penalty scale to 0) the rigid plane's. The Jacobian's sparsity is
+  /// rebuilt to hold the pairs. One process only (the twins must both be local).
+  void set_node_pairs(std::vector<NodePair> pairs);
+  /// p = kappa <-g>_+ of each pair at the current state.
+  std::vector<double> pair_pressures_pa() const;
+
   /// Newton to convergence at the current approach; throws ComputationError
   /// on a diverged linear solve or when Newton does not converge.
   NewtonReport solve();
@@ -82,6 +104,8 @@ public:
   std::shared_ptr<const dolfinx::fem::Function<T>> displacement() const { return _u; }
   std::shared_ptr<const dolfinx::mesh::Mesh> mesh() const { return _scene.mesh; }
   const SceneMesh& scene() const { return _scene; }
+  /// Coordinates (x, y, z) of each local dof block.
+  const std::vector<double>& dof_coordinates() const { return _dof_coordinates; }
   std::int64_t num_dofs() const;
   /// Coefficients of the forms (displacement, penalty scale, initial gap), by their UFL names.
   const std::map<std::string, std::shared_ptr<const dolfinx::fem::Function<T>>>& coefficients() const
@@ -109,6 +133,8 @@ private:
   std::shared_ptr<dolfinx::fem::Function<T>> _u;
   std::shared_ptr<dolfinx::fem::Function<T>> _penalty_scale; ///< DG0
   std::shared_ptr<dolfinx::fem::Function<T>> _initial_gap;   ///< P1
+  std::vector<NodePair> _pairs;
+  std::vector<double> _dof_coordinates;
   std::map<std::string, std::shared_ptr<const dolfinx::fem::Function<T>>> _coefficients;
   std::shared_ptr<dolfinx::fem::Function<T>> _top_displacement; ///< the top face's prescribed values
   std::vector<std::int32_t> _top_blocks;  ///< owned and ghost

@@ -1,4 +1,5 @@
 #include "fem/rim_end_contact.h"
+#include "contact/edge_on_elastic_block_exponent.h"
 #include "contact/hertz.h"
 #include "contact/wedge_exponent.h"
 #include "core/atomic_file.h"
@@ -12,6 +13,7 @@
 #include "fem/write_fields.h"
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <cmath>
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -92,6 +94,33 @@ double far_line_load(const std::vector<SurfacePressureNode>& nodes, double far_x
   return 2 * load;
 }
 
+/// The body's interface nodes (those with contact area: its contact facets
+/// on z = 0) paired with their twins of the block at the same place; gaps
+/// and stiffnesses left for the caller.
+std::vector<NodePair> interface_pairs(const PenaltyContact& problem, double tol)
+{
+  const std::vector<double>& x = problem.dof_coordinates();
+  const std::vector<double> area = recover_nodal_fields(problem).contact_weight;
+  std::map<std::pair<double, double>, std::vector<std::int32_t>> at_interface;
+  for (std::size_t i = 0; i < x.size() / 3; ++i)
+    if (std::abs(x[3 * i + 2]) < tol)
+      at_interface[{std::round(x[3 * i] / tol), std::round(x[3 * i + 1] / tol)}].push_back(static_cast<std::int32_t>(i));
+  std::vector<NodePair> pairs;
+  for (const auto& [where, blocks] : at_interface)
+  {
+    const bool first_upper = area[blocks[0]] > 0;
+    if (blocks.size() == 1 && !first_upper)
+      continue; // on the block's free top beyond the body
+    if (blocks.size() != 2)
+      throw ComputationError(fmt::format("rim on a block: {} interface nodes at one place, not a pair", blocks.size()));
+    if (!first_upper && !(area[blocks[1]] > 0))
+      continue; // a node of the body's edge line without contact area
+    const std::int32_t upper = first_upper ? blocks[0] : blocks[1], lower = first_upper ? blocks[1] : blocks[0];
+    pairs.push_back({upper, lower, area[upper], 0.0, 0.0});
+  }
+  return pairs;
+}
+
 RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_element_m, bool write)
 {
   const auto start = std::chrono::steady_clock::now();
@@ -106,20 +135,49 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   sizes.edge_zone_m = 1.5 * b;
   sizes.edge_x_m = -study.fillet_start_m;
   sizes.far_m = H / 4;
-  const SceneMesh scene = build_rim_end_mesh(
-      comm, {s.radius_m, s.interior_angle_rad, s.edge_radius_m, H, L, study.flat_sheet}, sizes);
+  const bool block = s.counter_face == CounterFace::block;
+  const RimEndGeometry geometry{s.radius_m, s.interior_angle_rad, s.edge_radius_m, H, L, study.flat_sheet};
+  const SceneMesh scene = block ? build_rim_block_mesh(comm, geometry, sizes) : build_rim_end_mesh(comm, geometry, sizes);
   const double body_modulus = s.youngs_modulus_pa;
   PenaltyContact problem(scene, Model::solid, 1, body_modulus, s.poisson_ratio,
                          s.penalty_c * body_modulus / sizes.contact_m, s.petsc_options);
   // kappa = c E / h(x) with the mesh's own size: a penalty as soft as at the
   // strip's elements would cut the edge's singular pressure off at h_c / c.
-  problem.set_penalty_scale([&](const double* x) { return sizes.contact_m / rim_end_element_size(sizes, x); });
+  auto penalty_scale = [&](const double* x) { return sizes.contact_m / rim_end_element_size(sizes, x); };
   auto sheet_height = [&](double y) { return s.radius_m - std::sqrt(s.radius_m * s.radius_m - y * y); };
-  if (study.flat_sheet)
-    problem.set_initial_gap([&](const double* x) { return sheet_height(std::min(x[1], s.radius_m)); });
-  level.dofs = problem.num_dofs();
   const double tol = 1e-9 * H;
-  auto surface = [&] { return gather_surface_pressure(comm, recover_nodal_fields(problem)); };
+  std::vector<double> pair_x; // the pairs' positions (x, y, z), block counter-face
+  if (block)
+  {
+    // The block's top stays still: its bottom is the "top" face of weight 0.
+    problem.set_approach_profile([](const double* x) { return x[2] > 0 ? 1.0 : 0.0; });
+    problem.set_penalty_scale([](const double*) { return 0.0; }); // no rigid plane
+    std::vector<NodePair> pairs = interface_pairs(problem, tol);
+    for (NodePair& pair : pairs)
+    {
+      const double* x = &problem.dof_coordinates()[3 * pair.upper];
+      pair.initial_gap_m = sheet_height(x[1]);
+      pair.stiffness_pa_per_m = s.penalty_c * body_modulus / sizes.contact_m * penalty_scale(x);
+      pair_x.insert(pair_x.end(), x, x + 3);
+    }
+    problem.set_node_pairs(std::move(pairs));
+  }
+  else
+  {
+    problem.set_penalty_scale(penalty_scale);
+    if (study.flat_sheet)
+      problem.set_initial_gap([&](const double* x) { return sheet_height(std::min(x[1], s.radius_m)); });
+  }
+  level.dofs = problem.num_dofs();
+  auto surface = [&] {
+    if (!block)
+      return gather_surface_pressure(comm, recover_nodal_fields(problem));
+    std::vector<SurfacePressureNode> nodes;
+    const std::vector<double> pressure = problem.pair_pressures_pa();
+    for (std::size_t i = 0; i < pressure.size(); ++i)
+      nodes.push_back({{pair_x[3 * i], pair_x[3 * i + 1], pair_x[3 * i + 2]}, pressure[i], 0.0});
+    return nodes;
+  };
   // Start as the slices do: the sheet's height at the contact edge as the
   // shift, and that plus a line contact's approach for the top.
   const double shift = 0.5 * b * b / s.radius_m;
@@ -135,10 +193,9 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   const double end_zone = 2 * b + s.edge_radius_m;
   double edge_sum = 0;
   int edge_nodes = 0;
-  const NodalFields fields = recover_nodal_fields(problem);
   if (write)
-    write_fields(s.xdmf_path, fields);
-  for (const SurfacePressureNode& n : gather_surface_pressure(comm, fields))
+    write_fields(s.xdmf_path, recover_nodal_fields(problem));
+  for (const SurfacePressureNode& n : surface())
   {
     if (std::abs(n.x[1]) < tol)
       level.centre_line.push_back({n.x[0], n.pressure_pa});
@@ -198,7 +255,8 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
   ensure_petsc();
   RimEndStudy study;
   study.setup = setup;
-  study.effective_modulus_pa = contact::effective_modulus_rigid_plane(setup.youngs_modulus_pa, setup.poisson_ratio);
+  const bool block = setup.counter_face == CounterFace::block;
+  study.effective_modulus_pa = contact::effective_modulus(setup.youngs_modulus_pa, setup.poisson_ratio, block);
   const contact::LineHertz hertz
       = contact::line_contact(setup.load_n_per_m, setup.radius_m, study.effective_modulus_pa, setup.poisson_ratio);
   study.half_width_m = hertz.half_width_m;
@@ -209,11 +267,20 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
                                  setup.edge_radius_m, setup.depth_over_half_width * study.half_width_m));
   const bool sharp = !(setup.edge_radius_m > 0);
   const double depth_m = setup.depth_over_half_width * study.half_width_m;
-  study.flat_sheet = setup.sheet == SheetModel::flat
+  study.flat_sheet = setup.sheet == SheetModel::flat || block
                      || (setup.sheet == SheetModel::automatic && setup.radius_m >= 20 * depth_m);
+  if (block && (setup.sheet == SheetModel::cylinder || setup.radius_m < 20 * depth_m))
+    throw InputError(fmt::format("rim: the block counter-face needs the flat sheet, R >= 20 H (R = {} m, H = {:.3g} m)",
+                                 setup.radius_m, depth_m));
+  if (block && !sharp)
+    throw InputError("rim: the block counter-face models sharp edges (edge_radius_m 0): a fillet's contact runs "
+                     "onto the fillet, off the flat interface the node pairs join");
   study.fillet_start_m = setup.edge_radius_m * std::tan((std::numbers::pi - setup.interior_angle_rad) / 2);
   study.boundary_layer_m = 4 * study.hertz_peak_pa * setup.edge_radius_m / (std::numbers::pi * study.effective_modulus_pa);
-  study.wedge_exponent = sharp ? contact::edge_on_rigid_plane_exponent(setup.interior_angle_rad) : 0.0;
+  const double E = setup.youngs_modulus_pa, nu = setup.poisson_ratio;
+  study.wedge_exponent = !sharp ? 0.0
+                         : block ? contact::edge_on_elastic_block_exponent(setup.interior_angle_rad, E, nu, E, nu)
+                                 : contact::edge_on_rigid_plane_exponent(setup.interior_angle_rad);
   study.singular = study.wedge_exponent < 0;
   int rank = 0;
   MPI_Comm_rank(comm, &rank);

@@ -54,6 +54,15 @@ enum class SheetModel
   flat
 };
 
+/// What the body presses on: the rigid frictionless plane, or a block of the
+/// body's own material (the preprint's steel on steel), a second elastic
+/// body in frictionless contact (PenaltyContact::set_node_pairs).
+enum class CounterFace
+{
+  rigid,
+  block
+};
+
 struct RimEndSettings
 {
   /// R across the ruling at the end: the 10 mm cylinder of the Hertz scenes.
@@ -63,6 +72,7 @@ struct RimEndSettings
   /// a, between the contact sheet and the other face, [90, 180) deg; 90: a square end.
   double interior_angle_rad = std::numbers::pi / 2;
   double edge_radius_m = 0;          ///< r_e; 0: sharp
+  CounterFace counter_face = CounterFace::rigid;
   double youngs_modulus_pa = 200e9;  ///< steel (the preprint's)
   double poisson_ratio = 0.3;        ///< steel (the preprint's)
   double depth_over_half_width = 10; ///< H / b

@@ -1,6 +1,7 @@
 #include "fem/scene_mesh.h"
 #include "core/error.h"
 #include <fmt/format.h>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <dolfinx/fem/CoordinateElement.h>
@@ -229,12 +230,47 @@ RawMesh mesh_with_gmsh(int dim, const std::function<double()>& add_geometry_and_
       for (int j = 0; j < dim; ++j)
         raw.x.push_back(coords[3 * i + j]);
 
+    // Cells volume by volume (surface by surface in 2D), highest first: a
+    // node shared with a volume met before is given a twin of its own, so
+    // that the volumes are separate bodies touching at their shared faces.
     const int gmsh_type = dim == 3 ? 4 : 2; // 4-node tetrahedron, 3-node triangle
-    std::vector<std::size_t> element_tags, element_nodes;
-    gmsh::model::mesh::getElementsByType(gmsh_type, element_tags, element_nodes);
-    raw.cells.reserve(element_nodes.size());
-    for (std::size_t tag : element_nodes)
-      raw.cells.push_back(index.at(tag));
+    gmsh::vectorpair volumes;
+    gmsh::model::getEntities(volumes, dim);
+    std::vector<std::pair<double, int>> by_height;
+    for (const auto& [d, tag] : volumes)
+    {
+      double x0, y0, z0, x1, y1, z1;
+      gmsh::model::getBoundingBox(d, tag, x0, y0, z0, x1, y1, z1);
+      by_height.push_back({-(dim == 3 ? z1 : y1), tag});
+    }
+    std::sort(by_height.begin(), by_height.end());
+    std::unordered_map<std::size_t, int> owner; // node tag -> the volume that met it first
+    for (const auto& [height, volume] : by_height)
+    {
+      std::vector<std::size_t> element_tags, element_nodes;
+      gmsh::model::mesh::getElementsByType(gmsh_type, element_tags, element_nodes, volume);
+      std::unordered_map<std::size_t, std::int64_t> twin;
+      for (std::size_t tag : element_nodes)
+      {
+        const int first = owner.emplace(tag, volume).first->second;
+        if (first == volume)
+        {
+          raw.cells.push_back(index.at(tag));
+          continue;
+        }
+        auto [entry, inserted] = twin.emplace(tag, static_cast<std::int64_t>(raw.x.size() / dim));
+        if (inserted)
+        {
+          const std::int64_t original = index.at(tag);
+          for (int j = 0; j < dim; ++j)
+          {
+            const double coordinate = raw.x[original * dim + j]; // push_back may move raw.x
+            raw.x.push_back(coordinate);
+          }
+        }
+        raw.cells.push_back(entry->second);
+      }
+    }
   }
   catch (const InputError&)
   {
@@ -533,6 +569,62 @@ SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& g, const RimEn
            || std::abs(z - H) < tol;
   };
   tag_parts(scene, parts);
+  scene.symmetry_multiplicity = 2;
+  scene.wall_s = seconds_since(start);
+  return scene;
+}
+
+SceneMesh build_rim_block_mesh(MPI_Comm comm, const RimEndGeometry& g, const RimEndSizes& sizes)
+{
+  const auto start = std::chrono::steady_clock::now();
+  if (!g.flat_sheet)
+    throw InputError("rim end on a block: the sheet must be flat (its profile in the initial gap)");
+  const double H = g.depth_m, L = g.length_m;
+  const RimEndGeometry unit{g.radius_m / H, g.interior_angle_rad, g.edge_radius_m / H, 1.0, L / H, true};
+  SceneMesh scene = distribute(comm, 3, [&] {
+    RawMesh raw = mesh_with_gmsh(3, [&] {
+      add_rim_end(unit);
+      namespace occ = gmsh::model::occ;
+      gmsh::vectorpair bodies, out;
+      gmsh::model::getEntities(bodies, 3);
+      const int block = occ::addBox(-L / H, 0, -1, L / H + 1, 1, 1);
+      std::vector<gmsh::vectorpair> map;
+      occ::fragment(bodies, {{3, block}}, out, map);
+      occ::synchronize();
+      gmsh::model::mesh::setSizeCallback([sizes, H](int, int, double x, double y, double z) {
+        // The block is graded as the body, mirrored in the interface.
+        const double point[3] = {x * H, y * H, std::abs(z) * H};
+        return rim_end_element_size(sizes, point) / H;
+      });
+      sizes_from_fields_alone();
+      return std::min(sizes.edge_m, sizes.contact_m) / H;
+    });
+    for (double& x : raw.x)
+      x *= H;
+    return raw;
+  });
+  const double tol = 1e-9 * H;
+  SceneParts parts;
+  parts.symmetry_x = [=](double x, double, double) { return std::abs(x + L) < tol; };
+  parts.symmetry_y = [=](double, double y, double) { return std::abs(y) < tol; };
+  parts.top = [=](double, double, double z) { return std::abs(std::abs(z) - H) < tol; };
+  parts.curved = [](double, double, double) { return false; };
+  parts.in_plane = [](double, double, double) { return true; };
+  tag_parts(scene, parts);
+  // The contact face: the upper body's facets on the interface z = 0 (the
+  // lower body's twins lie at the same place, on cells below).
+  const dolfinx::mesh::Mesh& mesh = *scene.mesh;
+  const int tdim = mesh.topology().dim();
+  const std::vector<std::int32_t> interface = boundary_facets(
+      mesh, [=](double x, double, double z) { return std::abs(z) < tol && x < tol; });
+  auto facet_cells = mesh.topology().connectivity(tdim - 1, tdim);
+  std::vector<std::int32_t> cells;
+  for (std::int32_t f : interface)
+    cells.push_back(facet_cells->links(f)[0]);
+  const std::vector<double> mid = dolfinx::mesh::compute_midpoints(mesh, tdim, cells);
+  for (std::size_t i = 0; i < interface.size(); ++i)
+    if (mid[3 * i + 2] > 0)
+      scene.contact_facets.push_back(interface[i]);
   scene.symmetry_multiplicity = 2;
   scene.wall_s = seconds_since(start);
   return scene;

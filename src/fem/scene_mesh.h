@@ -135,6 +135,15 @@ double rim_end_element_size(const RimEndSizes& sizes, const double* x);
 /// ranges above.
 SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& geometry, const RimEndSizes& sizes);
 
+/// The rim end (flat sheet) on a block: the body above z = 0 as
+/// build_rim_end_mesh's, and the block x in [-L, H], y in [0, H], z in
+/// [-H, 0] below, meshed together (their shared face conforming) as two
+/// separate bodies: each interface node has a twin of the block's at the
+/// same place (PenaltyContact::set_node_pairs). Top facets: the body's top
+/// z = H and the block's bottom z = -H; symmetry planes through both; the
+/// contact facets are the body's on the interface.
+SceneMesh build_rim_block_mesh(MPI_Comm comm, const RimEndGeometry& geometry, const RimEndSizes& sizes);
+
 /// `section_grading` in units of the local radius (the section at unit
 /// radius). Model::solid conventions; symmetry multiplicity 2.
 SceneMesh build_slab_mesh(MPI_Comm comm, const SlabGeometry& slab, const MeshGrading& section_grading);
