@@ -64,10 +64,6 @@ def main():
             lean = orientation["rim_overhang_deg"][end]
             angle = 90 + lean
             q, radius = piece["load_n_per_m"], piece["radius_m"]
-            if angle < 90:
-                rows.append(f"| {number} | {name} | {lean:.1f} | {angle:.1f} | {q:.4g} | {radius * 1e3:.3g} | - "
-                            "| 0 (acute) | - | not modelled: acute rim | - |")
-                continue
             rim = run_json(mpi + [rollcheck, "-q", "rim", "--interior-angle", f"{min(angle, 179.5):.6f}",
                                   "--radius", repr(radius), "--load-per-length", repr(q),
                                   "--edge-radius", repr(args.edge_radius), "--levels", str(args.levels)], env)

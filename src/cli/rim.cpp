@@ -29,9 +29,9 @@ const io::BoundSchema<fem::RimEndSettings>& rim_schema()
         .real("load_n_per_m", "--load-per-length", &RimEndSettings::load_n_per_m, "N/m",
               "q, the line load at the end (the preprint's F = 100 N over a 10 mm ruling)", io::positive)
         .real("interior_angle_deg", "--interior-angle", &RimEndSettings::interior_angle_rad, "deg",
-              "a, between the contact sheet and the rim's other face through the body: 90 a square end, towards "
-              "180 the other face rises gently (fem-sds reports 90 + each end's rim lean)",
-              io::Bounds{90, 180, false, true}, std::numbers::pi / 180)
+              "a, between the contact sheet and the rim's other face through the body: 90 a square end, below it "
+              "an acute rim, towards 180 the other face rises gently (fem-sds reports 90 + each end's rim lean)",
+              io::Bounds{60, 180, false, true}, std::numbers::pi / 180)
         .real("edge_radius_m", "--edge-radius", &RimEndSettings::edge_radius_m, "m",
               "r_e of the edge's fillet, the way a part is finished; 0: the sharp edge of the ideal hull",
               io::Bounds{0, 1, false, false});
@@ -115,7 +115,7 @@ nlohmann::json run_rim(const io::Parameters& p)
                           study.boundary_layer_m / b, study.levels.back().edge_element_m / b, *study.end_to_interior)
         : study.converged
             ? fmt::format("converged: end pressure / interior {:.4f} (last change {:+.2f} %; {})", *study.end_to_interior,
-                          100 * *study.end_change, sharp ? "the square edge's own" : "the rounded edge's peak")
+                          100 * *study.end_change, sharp ? "the sharp edge's own" : "the rounded edge's peak")
             : fmt::format("NOT converged: end pressure / interior {:.4f} changed {:+.2f} % at the last level",
                           *study.end_to_interior, 100 * *study.end_change);
   int rank = 0;

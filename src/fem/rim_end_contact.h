@@ -69,7 +69,8 @@ struct RimEndSettings
   double radius_m = 0.01;
   /// q at the end: the preprint's F = 100 N spread over a 10 mm ruling.
   double load_n_per_m = 1e4;
-  /// a, between the contact sheet and the other face, [90, 180) deg; 90: a square end.
+  /// a, between the contact sheet and the other face, [60, 180) deg; 90: a
+  /// square end, below it an acute (undercut) rim.
   double interior_angle_rad = std::numbers::pi / 2;
   double edge_radius_m = 0;          ///< r_e; 0: sharp
   CounterFace counter_face = CounterFace::rigid;
@@ -139,10 +140,11 @@ struct RimEndStudy
   bool flat_sheet = false;           ///< the sheet model used
   /// Growth exponent of the edge's nodal pressure over the levels (sharp edges, >= 2 levels).
   std::optional<double> measured_exponent;
-  /// Not singular: the end's pressure (a sharp square edge's own pressure,
-  /// a rounded edge's end peak) over the far side's at the last level, its
-  /// change between the last two levels (none with one level), and whether
-  /// it is resolved and the change below the tolerance.
+  /// Not singular: the end's pressure (a sharp square or acute edge's own
+  /// pressure, a rounded edge's end peak) over the far side's at the last
+  /// level, its change between the last two levels over the larger of it and
+  /// the far side's (none with one level), and whether it is resolved and
+  /// the change below the tolerance.
   std::optional<double> end_change;
   bool converged = false;
   std::optional<double> end_to_interior;

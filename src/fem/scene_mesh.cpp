@@ -167,7 +167,7 @@ void add_rim_end(const RimEndGeometry& g)
   {
     double x0, y0, z0, x1, y1, z1;
     gmsh::model::getBoundingBox(dim, tag, x0, y0, z0, x1, y1, z1);
-    if (y0 < tol && y1 > H - tol && x0 > -tol && x1 < 0.5 * H && z0 < tol)
+    if (y0 < tol && y1 > H - tol && x0 > -0.5 * H && x1 < 0.5 * H && z0 < tol)
       edges.push_back(tag);
   }
   if (edges.size() != 1)
@@ -534,8 +534,8 @@ SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& g, const RimEn
       throw InputError(fmt::format("rim end: radius, depth, length and element sizes must be positive and finite "
                                    "(R = {} m, H = {} m, L = {} m, sizes {} m, {} m, {} m, growth {})",
                                    g.radius_m, H, L, sizes.edge_m, sizes.contact_m, sizes.far_m, sizes.growth));
-  if (!(g.interior_angle_rad >= std::numbers::pi / 2 && g.interior_angle_rad < std::numbers::pi))
-    throw InputError(fmt::format("rim end: the interior angle must lie in [90, 180) deg, got {} deg",
+  if (!(g.interior_angle_rad >= std::numbers::pi / 3 && g.interior_angle_rad < std::numbers::pi))
+    throw InputError(fmt::format("rim end: the interior angle must lie in [60, 180) deg, got {} deg",
                                  g.interior_angle_rad * 180 / std::numbers::pi));
   if (!(g.edge_radius_m >= 0 && g.edge_radius_m < 0.1 * H) || g.radius_m < H)
     throw InputError(fmt::format("rim end: need 0 <= edge radius < H / 10 and R >= H (edge radius {} m, R = {} m, "

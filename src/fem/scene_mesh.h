@@ -34,7 +34,8 @@
 //   the cylinder of radius R about (x, 0, R) (its curvature across the
 //   ruling); beyond the edge the other face is the plane through the y axis
 //   at the interior angle a from the sheet, measured through the body in the
-//   ruling's vertical plane (90 deg: a square end, the face x = 0; towards
+//   ruling's vertical plane (90 deg: a square end, the face x = 0; below, an
+//   acute rim whose other face leans back over the sheet; towards
 //   180 deg the other face rises gently beyond x = 0). The block is cut at
 //   x = -L (the far side, a plane of symmetry: plane strain), x = H (beyond
 //   the edge), y = H and z = H (the loaded top); the edge may be rounded
@@ -102,7 +103,7 @@ SceneMesh build_crease_mesh(MPI_Comm comm, const CreaseGeometry& crease, const M
 struct RimEndGeometry
 {
   double radius_m = 0;           ///< R, of the contacting sheet across the ruling
-  double interior_angle_rad = 0; ///< a, in [90, 180) deg
+  double interior_angle_rad = 0; ///< a, in [60, 180) deg
   double edge_radius_m = 0;      ///< r_e of the fillet; 0: a sharp edge
   double depth_m = 0;            ///< H: the block's height and half-width (R >= H)
   double length_m = 0;           ///< L: contact modelled from the far side x = -L to the edge
