@@ -1,6 +1,8 @@
 #include "fem/penalty_contact.h"
 #include "core/error.h"
+#include "fem/nodal_fields.h"
 #include <chrono>
+#include <map>
 #include <cmath>
 #include <dolfinx/fem/assembler.h>
 #include <dolfinx/fem/petsc.h>
@@ -467,5 +469,31 @@ std::vector<double> PenaltyContact::pair_pressures_pa() const
     pressure[i] = gap < 0 ? -pair.stiffness_pa_per_m * gap : 0.0;
   }
   return pressure;
+}
+
+std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double tol)
+{
+  const std::vector<double>& x = problem.dof_coordinates();
+  const std::vector<double> area = recover_nodal_fields(problem).contact_weight;
+  const int up = problem.mesh()->geometry().dim() - 1;
+  std::map<std::pair<double, double>, std::vector<std::int32_t>> at_interface;
+  for (std::size_t i = 0; i < x.size() / 3; ++i)
+    if (std::abs(x[3 * i + up]) < tol)
+      at_interface[{std::round(x[3 * i] / tol), std::round(x[3 * i + 1] / tol)}].push_back(
+          static_cast<std::int32_t>(i));
+  std::vector<NodePair> pairs;
+  for (const auto& [where, blocks] : at_interface)
+  {
+    const bool first_upper = area[blocks[0]] > 0;
+    if (blocks.size() == 1 && !first_upper)
+      continue; // on the lower body's free face beyond the upper one
+    if (blocks.size() != 2)
+      throw ComputationError(fmt::format("node pairs: {} interface nodes at one place, not a pair", blocks.size()));
+    if (!first_upper && !(area[blocks[1]] > 0))
+      continue; // on the edge of the upper body's face, without contact area
+    const std::int32_t upper = first_upper ? blocks[0] : blocks[1], lower = first_upper ? blocks[1] : blocks[0];
+    pairs.push_back({upper, lower, area[upper], 0.0, 0.0});
+  }
+  return pairs;
 }
 } // namespace rollcheck::fem

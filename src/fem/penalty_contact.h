@@ -51,6 +51,14 @@ struct NodePair
   double stiffness_pa_per_m;     ///< kappa
 };
 
+class PenaltyContact;
+
+/// The upper body's interface nodes (those with contact area: on its contact
+/// facets, at height 0) paired with their twins of the lower body at the
+/// same place (coordinates equal to `tol`); gaps and stiffnesses are left
+/// for the caller. ComputationError where a contact node has no twin.
+std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double tol);
+
 class PenaltyContact
 {
 public:

@@ -13,7 +13,6 @@
 #include "fem/write_fields.h"
 #include <algorithm>
 #include <chrono>
-#include <map>
 #include <cmath>
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -94,33 +93,6 @@ double far_line_load(const std::vector<SurfacePressureNode>& nodes, double far_x
   return 2 * load;
 }
 
-/// The body's interface nodes (those with contact area: its contact facets
-/// on z = 0) paired with their twins of the block at the same place; gaps
-/// and stiffnesses left for the caller.
-std::vector<NodePair> interface_pairs(const PenaltyContact& problem, double tol)
-{
-  const std::vector<double>& x = problem.dof_coordinates();
-  const std::vector<double> area = recover_nodal_fields(problem).contact_weight;
-  std::map<std::pair<double, double>, std::vector<std::int32_t>> at_interface;
-  for (std::size_t i = 0; i < x.size() / 3; ++i)
-    if (std::abs(x[3 * i + 2]) < tol)
-      at_interface[{std::round(x[3 * i] / tol), std::round(x[3 * i + 1] / tol)}].push_back(static_cast<std::int32_t>(i));
-  std::vector<NodePair> pairs;
-  for (const auto& [where, blocks] : at_interface)
-  {
-    const bool first_upper = area[blocks[0]] > 0;
-    if (blocks.size() == 1 && !first_upper)
-      continue; // on the block's free top beyond the body
-    if (blocks.size() != 2)
-      throw ComputationError(fmt::format("rim on a block: {} interface nodes at one place, not a pair", blocks.size()));
-    if (!first_upper && !(area[blocks[1]] > 0))
-      continue; // a node of the body's edge line without contact area
-    const std::int32_t upper = first_upper ? blocks[0] : blocks[1], lower = first_upper ? blocks[1] : blocks[0];
-    pairs.push_back({upper, lower, area[upper], 0.0, 0.0});
-  }
-  return pairs;
-}
-
 RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_element_m, bool write)
 {
   const auto start = std::chrono::steady_clock::now();
@@ -152,7 +124,7 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
     // The block's top stays still: its bottom is the "top" face of weight 0.
     problem.set_approach_profile([](const double* x) { return x[2] > 0 ? 1.0 : 0.0; });
     problem.set_penalty_scale([](const double*) { return 0.0; }); // no rigid plane
-    std::vector<NodePair> pairs = interface_pairs(problem, tol);
+    std::vector<NodePair> pairs = interface_node_pairs(problem, tol);
     for (NodePair& pair : pairs)
     {
       const double* x = &problem.dof_coordinates()[3 * pair.upper];

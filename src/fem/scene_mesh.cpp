@@ -402,6 +402,24 @@ void tag_parts(SceneMesh& scene, const SceneParts& parts)
       scene.contact_facets.push_back(candidates[i]);
 }
 
+/// The contact facets of two bodies meshed as twins along an interface:
+/// the boundary facets `on` it whose cell lies above (coordinate `up` > 0);
+/// the lower body's twins lie at the same place, on cells below.
+void upper_interface_facets(SceneMesh& scene, const Predicate& on, int up)
+{
+  const dolfinx::mesh::Mesh& mesh = *scene.mesh;
+  const int tdim = mesh.topology().dim();
+  const std::vector<std::int32_t> interface = boundary_facets(mesh, on);
+  auto facet_cells = mesh.topology().connectivity(tdim - 1, tdim);
+  std::vector<std::int32_t> cells;
+  for (std::int32_t f : interface)
+    cells.push_back(facet_cells->links(f)[0]);
+  const std::vector<double> mid = dolfinx::mesh::compute_midpoints(mesh, tdim, cells);
+  for (std::size_t i = 0; i < interface.size(); ++i)
+    if (mid[3 * i + up] > 0)
+      scene.contact_facets.push_back(interface[i]);
+}
+
 double seconds_since(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -611,20 +629,37 @@ SceneMesh build_rim_block_mesh(MPI_Comm comm, const RimEndGeometry& g, const Rim
   parts.curved = [](double, double, double) { return false; };
   parts.in_plane = [](double, double, double) { return true; };
   tag_parts(scene, parts);
-  // The contact face: the upper body's facets on the interface z = 0 (the
-  // lower body's twins lie at the same place, on cells below).
-  const dolfinx::mesh::Mesh& mesh = *scene.mesh;
-  const int tdim = mesh.topology().dim();
-  const std::vector<std::int32_t> interface = boundary_facets(
-      mesh, [=](double x, double, double z) { return std::abs(z) < tol && x < tol; });
-  auto facet_cells = mesh.topology().connectivity(tdim - 1, tdim);
-  std::vector<std::int32_t> cells;
-  for (std::int32_t f : interface)
-    cells.push_back(facet_cells->links(f)[0]);
-  const std::vector<double> mid = dolfinx::mesh::compute_midpoints(mesh, tdim, cells);
-  for (std::size_t i = 0; i < interface.size(); ++i)
-    if (mid[3 * i + 2] > 0)
-      scene.contact_facets.push_back(interface[i]);
+  upper_interface_facets(scene, [=](double x, double, double z) { return std::abs(z) < tol && x < tol; }, 2);
+  scene.symmetry_multiplicity = 2;
+  scene.wall_s = seconds_since(start);
+  return scene;
+}
+
+SceneMesh build_line_block_mesh(MPI_Comm comm, double size_m, const MeshGrading& grading)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const double W = size_m;
+  SceneMesh scene = distribute(comm, 2, [&] {
+    return mesh_with_gmsh(2, [&] {
+      namespace occ = gmsh::model::occ;
+      const int body = occ::addRectangle(0, 0, 0, W, W);
+      const int block = occ::addRectangle(0, -W, 0, W, W);
+      gmsh::vectorpair out;
+      std::vector<gmsh::vectorpair> map;
+      occ::fragment({{2, body}}, {{2, block}}, out, map);
+      occ::synchronize();
+      set_graded_size_field(point_at_origin(W), grading);
+      return grading.contact_size_m;
+    });
+  });
+  const double tol = 1e-9 * W;
+  SceneParts parts;
+  parts.symmetry_x = [=](double x, double, double) { return std::abs(x) < tol; };
+  parts.top = [=](double, double y, double) { return std::abs(std::abs(y) - W) < tol; };
+  parts.curved = [](double, double, double) { return false; };
+  parts.in_plane = [](double, double, double) { return true; };
+  tag_parts(scene, parts);
+  upper_interface_facets(scene, [=](double, double y, double) { return std::abs(y) < tol; }, 1);
   scene.symmetry_multiplicity = 2;
   scene.wall_s = seconds_since(start);
   return scene;

@@ -145,6 +145,14 @@ SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& geometry, cons
 /// contact facets are the body's on the interface.
 SceneMesh build_rim_block_mesh(MPI_Comm comm, const RimEndGeometry& geometry, const RimEndSizes& sizes);
 
+/// Two elastic bodies pressed together in plane strain, for line Hertz
+/// between them: the upper body x in [0, W], y in [0, W] and the lower
+/// x in [0, W], y in [-W, 0] (the x >= 0 half by symmetry), meshed together
+/// as twins along y = 0 (as build_rim_block_mesh), graded about the origin.
+/// Top facets y = W and y = -W; symmetry x = 0; contact facets the upper
+/// body's on y = 0.
+SceneMesh build_line_block_mesh(MPI_Comm comm, double size_m, const MeshGrading& grading);
+
 /// `section_grading` in units of the local radius (the section at unit
 /// radius). Model::solid conventions; symmetry multiplicity 2.
 SceneMesh build_slab_mesh(MPI_Comm comm, const SlabGeometry& slab, const MeshGrading& section_grading);

@@ -20,6 +20,13 @@ check_json "rounded rim under its boundary layer: not singular, not resolved, so
    and .converged == false and .boundary_layer_m > 1.8e-8 and .boundary_layer_m < 1.9e-8' "$tmp/rounded.json"
 check '/usr/bin/python3 -c "import meshio, sys; m = meshio.read(sys.argv[1]); assert max(m.point_data[\"contact_pressure\"]) > 0" "$tmp/rounded.xdmf"' \
   "the rounded rim's fields read back with a contact pressure"
+"$bin" -q rim --counter-face steel --levels 1 --json "$tmp/steel.json" > "$tmp/steel.log" 2>&1 \
+  || { echo "FAIL: steel counter-face"; cat "$tmp/steel.log"; exit 1; }
+check_json "steel block: the square end singular with the elastic wedge's exponent, b of E* halved" \
+  '.counter_face == "steel" and .singular == true and .wedge_exponent < -0.225 and .wedge_exponent > -0.227
+   and .half_width_m > 3.40e-5 and .half_width_m < 3.41e-5 and .end_to_interior == null' "$tmp/steel.json"
+"$bin" -q rim --counter-face steel --edge-radius 1e-5 > "$tmp/bad.log" 2>&1
+check '[[ $? -eq 2 ]] && grep -q "sharp edges" "$tmp/bad.log"' "steel with a fillet exits 2 saying the block models sharp edges"
 for args in "--interior-angle 180:interior_angle_deg" "--interior-angle 50:interior_angle_deg" "--radius -1:radius_m" \
             "--load-per-length nan:load_n_per_m" "--levels 0:levels" "--xdmf $tmp/f.vtu:--xdmf" \
             "--edge-radius 1e-3:edge_radius_m"; do
