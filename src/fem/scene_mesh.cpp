@@ -531,6 +531,47 @@ SceneMesh build_slab_mesh(MPI_Comm comm, const SlabGeometry& slab, const MeshGra
   return scene;
 }
 
+namespace
+{
+/// The rim end built and meshed in units of H (`unit`), scaled back to
+/// metres; with the block below it, graded as the body mirrored in the
+/// interface.
+RawMesh mesh_rim_end(const RimEndGeometry& unit, const RimEndSizes& sizes, double H, bool with_block)
+{
+  RawMesh raw = mesh_with_gmsh(3, [&] {
+    add_rim_end(unit);
+    if (with_block)
+    {
+      namespace occ = gmsh::model::occ;
+      gmsh::vectorpair bodies, out;
+      gmsh::model::getEntities(bodies, 3);
+      const int block = occ::addBox(-unit.length_m, 0, -1, unit.length_m + 1, 1, 1);
+      std::vector<gmsh::vectorpair> map;
+      occ::fragment(bodies, {{3, block}}, out, map);
+      occ::synchronize();
+    }
+    gmsh::model::mesh::setSizeCallback([sizes, H](int, int, double x, double y, double z) {
+      const double point[3] = {x * H, y * H, std::abs(z) * H};
+      return rim_end_element_size(sizes, point) / H;
+    });
+    sizes_from_fields_alone();
+    return std::min(sizes.edge_m, sizes.contact_m) / H;
+  });
+  for (double& x : raw.x)
+    x *= H;
+  return raw;
+}
+
+/// The rim end's planes of symmetry: the far side x = -L and y = 0.
+SceneParts rim_end_planes(double L, double tol)
+{
+  SceneParts parts;
+  parts.symmetry_x = [=](double x, double, double) { return std::abs(x + L) < tol; };
+  parts.symmetry_y = [=](double, double y, double) { return std::abs(y) < tol; };
+  return parts;
+}
+} // namespace
+
 double rim_end_element_size(const RimEndSizes& sizes, const double* x)
 {
   // Distances from the loaded part of the edge line (along y through
@@ -562,24 +603,9 @@ SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& g, const RimEn
   // OpenCASCADE's tolerances are absolute (1e-7): the geometry is built with
   // H as the unit and the mesh scaled back.
   const RimEndGeometry unit{g.radius_m / H, g.interior_angle_rad, g.edge_radius_m / H, 1.0, L / H, g.flat_sheet};
-  SceneMesh scene = distribute(comm, 3, [&] {
-    RawMesh raw = mesh_with_gmsh(3, [&] {
-      add_rim_end(unit);
-      gmsh::model::mesh::setSizeCallback([sizes, H](int, int, double x, double y, double z) {
-        const double point[3] = {x * H, y * H, z * H};
-        return rim_end_element_size(sizes, point) / H;
-      });
-      sizes_from_fields_alone();
-      return std::min(sizes.edge_m, sizes.contact_m) / H;
-    });
-    for (double& x : raw.x)
-      x *= H;
-    return raw;
-  });
+  SceneMesh scene = distribute(comm, 3, [&] { return mesh_rim_end(unit, sizes, H, false); });
   const double tol = 1e-9 * H;
-  SceneParts parts;
-  parts.symmetry_x = [=](double x, double, double) { return std::abs(x + L) < tol; };
-  parts.symmetry_y = [=](double, double y, double) { return std::abs(y) < tol; };
+  SceneParts parts = rim_end_planes(L, tol);
   parts.top = [=](double, double, double z) { return std::abs(z - H) < tol; };
   parts.curved = [](double, double, double) { return true; };
   parts.in_plane = [=](double x, double y, double z) {
@@ -599,32 +625,9 @@ SceneMesh build_rim_block_mesh(MPI_Comm comm, const RimEndGeometry& g, const Rim
     throw InputError("rim end on a block: the sheet must be flat (its profile in the initial gap)");
   const double H = g.depth_m, L = g.length_m;
   const RimEndGeometry unit{g.radius_m / H, g.interior_angle_rad, g.edge_radius_m / H, 1.0, L / H, true};
-  SceneMesh scene = distribute(comm, 3, [&] {
-    RawMesh raw = mesh_with_gmsh(3, [&] {
-      add_rim_end(unit);
-      namespace occ = gmsh::model::occ;
-      gmsh::vectorpair bodies, out;
-      gmsh::model::getEntities(bodies, 3);
-      const int block = occ::addBox(-L / H, 0, -1, L / H + 1, 1, 1);
-      std::vector<gmsh::vectorpair> map;
-      occ::fragment(bodies, {{3, block}}, out, map);
-      occ::synchronize();
-      gmsh::model::mesh::setSizeCallback([sizes, H](int, int, double x, double y, double z) {
-        // The block is graded as the body, mirrored in the interface.
-        const double point[3] = {x * H, y * H, std::abs(z) * H};
-        return rim_end_element_size(sizes, point) / H;
-      });
-      sizes_from_fields_alone();
-      return std::min(sizes.edge_m, sizes.contact_m) / H;
-    });
-    for (double& x : raw.x)
-      x *= H;
-    return raw;
-  });
+  SceneMesh scene = distribute(comm, 3, [&] { return mesh_rim_end(unit, sizes, H, true); });
   const double tol = 1e-9 * H;
-  SceneParts parts;
-  parts.symmetry_x = [=](double x, double, double) { return std::abs(x + L) < tol; };
-  parts.symmetry_y = [=](double, double y, double) { return std::abs(y) < tol; };
+  SceneParts parts = rim_end_planes(L, tol);
   parts.top = [=](double, double, double z) { return std::abs(std::abs(z) - H) < tol; };
   parts.curved = [](double, double, double) { return false; };
   parts.in_plane = [](double, double, double) { return true; };
