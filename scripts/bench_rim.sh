@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Benchmark (not a test) of `rollcheck rim` against issue 14's budget of 60 s
+# for one end solved at converged accuracy: the wall time of each study, the
+# time of its last (finest) level, and the ratio to the budget.
+#  - square end, rigid plane, 3 levels (2 ranks);
+#  - 120 deg sharp rim, rigid plane, 4 levels (2 ranks): the exponent's fit;
+#  - 120 deg rim rounded (2 b), 2.0 GPa, 4 levels (2 ranks): resolved;
+#  - square end on the steel block, 4 levels (one process: the node pairs).
+#   bash scripts/bench_rim.sh [ROLLCHECK]
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+bin=${1:-$here/build/src/cli/rollcheck}
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+run() { # NAME COMMAND...: the study's JSON in $tmp/NAME.json, its wall seconds in $tmp/NAME.s
+  local name=$1 start end; shift
+  start=$(date +%s.%N); "$@" --json "$tmp/$name.json" > /dev/null 2> "$tmp/log" || { cat "$tmp/log"; exit 1; }
+  end=$(date +%s.%N); echo "$end - $start" | bc -l > "$tmp/$name.s"
+}
+run square mpirun -n 2 "$bin" rim
+run sharp120 mpirun -n 2 "$bin" run "$here/cases/rim_obtuse_sharp.toml"
+run rounded120 mpirun -n 2 "$bin" run "$here/cases/rim_obtuse_rounded.toml"
+run steel "$bin" rim --counter-face steel --levels 4
+/usr/bin/python3 - "$tmp" <<'PY'
+import json, sys
+tmp = sys.argv[1]
+budget = 60.0
+print("| study | verdict | levels | study s | finest level s | finest / 60 s budget |")
+print("|---|---|---|---|---|---|")
+for name in ["square", "sharp120", "rounded120", "steel"]:
+    r = json.load(open(f"{tmp}/{name}.json"))
+    total = float(open(f"{tmp}/{name}.s").read())
+    finest = r["levels"][-1]["wall_s"]
+    print(f"| {name} | {r['verdict']} | {len(r['levels'])} | {total:.1f} | {finest:.1f} | {finest / budget:.2f} |")
+PY
