@@ -8,9 +8,13 @@
 // material and load parameter is a named option whose default is the
 // preprint's value. Also the contact loci of sampled orientations of bodies
 // that are hulls of circles (contact_locus.h: support set, load, creases) and
-// the rims at a ruling's ends (rim_overhang.h), which the FEM layer is given.
+// the rims at a ruling's ends (rim_overhang.h), which the FEM layer is given,
+// and the stress singularity of a rim's edge on the rigid plane
+// (wedge_exponent.h) or on a block of elastic material
+// (edge_on_elastic_block_exponent.h).
 // Knows nothing of how the trajectory was produced.
 #include "contact/contact_locus.h"
+#include "contact/edge_on_elastic_block_exponent.h"
 #include "contact/contact_parameters.h"
 #include "contact/face_curvature.h"
 #include "contact/face_pressure.h"
@@ -20,3 +24,4 @@
 #include "contact/sliding_speed.h"
 #include "contact/trajectory_scores.h"
 #include "contact/wear.h"
+#include "contact/wedge_exponent.h"
