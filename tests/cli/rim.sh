@@ -10,6 +10,8 @@ rm -rf "$tmp"; mkdir -p "$tmp"
 export OPENBLAS_NUM_THREADS=1
 "$bin" -q run "$here/cases/rim_obtuse_sharp.toml" --set levels=2 --json "$tmp/sharp.json" > "$tmp/sharp.log" 2>&1 \
   || { echo "FAIL: sharp rim case"; cat "$tmp/sharp.log"; exit 1; }
+check '/usr/bin/python3 "$here/postprocess/plot_rim.py" "$tmp/sharp.json" "$tmp/sharp.png" > /dev/null && [[ -s "$tmp/sharp.png" ]]' \
+  "the pressure near the rim plots"
 check_json "sharp obtuse rim singular, exponent of the wedge, no peak" \
   '.singular == true and .end_to_interior == null and .wedge_exponent < -0.38 and .wedge_exponent > -0.39
    and .measured_exponent < 0 and (.levels | length) == 2 and .counter_face == "rigid"' "$tmp/sharp.json"
