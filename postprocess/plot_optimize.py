@@ -8,6 +8,10 @@ Reads OUT/optimize.json (written by `rollcheck optimize --out OUT` or
               optimum marked. Bodies whose score is infinite (FEM-SDS of a
               body that cannot roll a whole loop) are marked as crosses at
               the top of each panel.
+  optimum.png a rendered view of the optimum's mesh (OUT/optimum.obj),
+              beside the start's (OUT/start.obj) when the folder has it, both
+              seen from the same direction at the same scale, each face shaded
+              by the cosine between its normal and a light direction.
 
     /usr/bin/python3 postprocess/plot_optimize.py --out OUT
 """
@@ -18,6 +22,10 @@ import os
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
+import numpy as np
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+LIGHT = np.array([0.4, -0.5, 0.77]) / np.linalg.norm([0.4, -0.5, 0.77])
 
 
 def number(value):
@@ -31,9 +39,65 @@ def finite_points(xs, ys):
     return [p[0] for p in finite], [p[1] for p in finite], [x for x, y in zip(xs, map(number, ys)) if y == float("inf")]
 
 
+def read_obj(path):
+    """The vertices (n x 3) and triangles (m x 3, 0-based) of an OBJ file of triangles."""
+    vertices, faces = [], []
+    with open(path) as f:
+        for line in f:
+            fields = line.split()
+            if fields and fields[0] == "v":
+                vertices.append([float(v) for v in fields[1:4]])
+            elif fields and fields[0] == "f":
+                faces.append([int(v.split("/")[0]) - 1 for v in fields[1:4]])
+    return np.array(vertices), np.array(faces)
+
+
+def draw_body(ax, vertices, faces, half_extent, title):
+    """The mesh shaded by its faces' outward normals against LIGHT, on a cube of +-half_extent."""
+    triangles = vertices[faces]
+    normals = np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0])
+    normals /= np.linalg.norm(normals, axis=1)[:, None]
+    # Ambient 0.25 keeps the faces turned away from the light visible.
+    brightness = 0.25 + 0.75 * np.clip(normals @ LIGHT, 0, 1)
+    colours = plt.cm.Blues(0.15 + 0.85 * brightness)
+    ax.add_collection3d(Poly3DCollection(triangles, facecolors=colours, edgecolors="none"))
+    centre = 0.5 * (vertices.min(axis=0) + vertices.max(axis=0))
+    for set_limits, c in zip([ax.set_xlim, ax.set_ylim, ax.set_zlim], centre):
+        set_limits(c - half_extent, c + half_extent)
+    ax.set_box_aspect((1, 1, 1))
+    ax.view_init(elev=22, azim=-58)
+    ax.set_xlabel("x")
+    ax.set_ylabel("y")
+    ax.set_zlabel("z")
+    ax.set_title(title, fontsize=8)
+
+
+def draw_bodies(folder, result):
+    """optimum.png: the optimum's mesh, beside the start's when the folder has start.obj."""
+    best, mesh = result["optimum"], result["mesh"]
+    panels = []
+    if os.path.exists(os.path.join(folder, "start.obj")):
+        panels.append(("start.obj", "start", result["start"], result["start_value"], mesh["start"]))
+    panels.append(("optimum.obj", "optimum", best["x"], best["value"], mesh["optimum"]))
+    bodies = [read_obj(os.path.join(folder, name)) for name, *_ in panels]
+    half_extent = max(0.5 * (v.max(axis=0) - v.min(axis=0)).max() for v, _ in bodies)
+    fig = plt.figure(figsize=(4.6 * len(panels), 4.6))
+    for k, ((_, label, x, value, resolution), (vertices, faces)) in enumerate(zip(panels, bodies)):
+        ax = fig.add_subplot(1, len(panels), k + 1, projection="3d")
+        genome = ", ".join(f"{v:.4g}" for v in x)
+        draw_body(ax, vertices, faces, half_extent,
+                  f"{label} ({genome})\n{result['score']} {number(value):.4g}, "
+                  f"{resolution['faces']} faces ({resolution['points']} points per circle)")
+    verdict = "beats the start" if best["beats_start"] else "does not beat the start beyond the noise"
+    fig.suptitle(f"{result['family']} family, {result['oracle']} oracle: the optimum {verdict}", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(os.path.join(folder, "optimum.png"), dpi=120)
+    print("optimum.png: the optimum's mesh" + (" beside the start's" if len(panels) == 2 else ""))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", required=True, help="folder holding optimize.json; sweeps.png goes there")
+    parser.add_argument("--out", required=True, help="folder holding optimize.json and the meshes; the plots go there")
     args = parser.parse_args()
     with open(os.path.join(args.out, "optimize.json")) as f:
         result = json.load(f)
@@ -67,6 +131,7 @@ def main():
     fig.tight_layout()
     fig.savefig(os.path.join(args.out, "sweeps.png"), dpi=120)
     print("sweeps.png: the score along each axis through the start, and the search's points")
+    draw_bodies(args.out, result)
 
 
 if __name__ == "__main__":

@@ -2,8 +2,9 @@
 // what its (90, 1, 1) member is (gradient, Hessian, verdict), by a continuous
 // search with NLopt (docs/optimize.md). Also the scene "optimize" of case
 // files. The method is study/optimize_family.h; here its parameters, a line
-// in the log, the optimum's mesh, the JSON, the sweeps' plot and the finished
-// runs kept in the output folder for a rerun (io/evaluation_cache.h).
+// in the log, the start's and the optimum's meshes, the JSON, the plots and
+// the finished runs kept in the output folder for a rerun
+// (io/evaluation_cache.h).
 #include "cli/cli.h"
 #include "cli/scenes.h"
 #include "core/atomic_file.h"
@@ -53,7 +54,8 @@ void add_method_parameters(Schema& s)
            study::family_score_names())
       .choice("oracle", "--oracle", &S::oracle,
               "approx: the approximate oracle (deterministic); rigid: the rigid-body oracle (chaotic: each score the "
-              "mean of --replicates runs with nudged spins); rolling: real rolling (for --score uniformity)",
+              "mean of --replicates runs at genomes moved by --resolution); rolling: real rolling (for --score "
+              "uniformity and fem-sds)",
               {{"approx", study::Oracle::approximate},
                {"rigid", study::Oracle::rigid},
                {"rolling", study::Oracle::rolling}})
@@ -67,15 +69,16 @@ void add_method_parameters(Schema& s)
                body_points_range)
       .flag("matched_resolution", "--matched-resolution", &S::match_face_count,
             "Match the face count, not the points per circle: mesh each genome with the points per circle whose "
-            "hull's face count is nearest the start's at --points (ties: the fewer points), since CDS falls about "
-            "as faces^-2; off: every body with --points per circle")
+            "hull's face count is nearest the start's at --points (ties: --points itself, else the fewer points), "
+            "since CDS falls about as faces^-2; off: every body with --points per circle")
       .choice("method", "--method", &S::method, "NLopt method (docs/optimize.md)", study::method_names())
       .integer("max_evaluations", "--max-evaluations", &S::max_evaluations, "",
                "Distinct genomes the search scores, the start included", io::Bounds{1, 100000})
       .integer("replicates", "--replicates", &S::replicates, "",
-               "Noise replicates at the start (rigid: also runs averaged per score)", io::Bounds{2, 1000})
+               "Noise replicates at the start, each the genome moved by --resolution (rigid: also the runs averaged "
+               "per score)", io::Bounds{2, 1000})
       .real("resolution", "--resolution", &S::resolution, "",
-            "Fraction of each box width the search resolves (xtol); approx and rolling: the noise replicates' move",
+            "Fraction of each box width the search resolves (xtol), and the noise replicates' move",
             io::Bounds{0, 0.5, true, true})
       .real("pilot_step", "--pilot-step", &S::pilot_step, "",
             "Pilot steps of the derivatives' step choice, fraction of each box width", io::Bounds{0, 0.25, true})
@@ -94,9 +97,10 @@ void add_oracle_parameters(Schema& s)
       .integer("loops", "--loops", [](FamilySearchSettings& f) -> auto& { return f.scoring.rolling.loops; }, "",
                "Rolling oracle: loops of the contact curve scored", io::Bounds{1, 1000})
       .unbound({"out", "--out", std::string(), "",
-                "Folder for optimize.json, the optimum's mesh optimum.obj and sweeps.png (written whole or not at "
-                "all), and evaluations.json, the finished runs, kept during the search so that the same command "
-                "rerun after an interruption reuses them; empty: none"})
+                "Folder for optimize.json, the meshes start.obj and optimum.obj, sweeps.png and optimum.png (a "
+                "rendered view of both bodies), written whole or not at all, and evaluations.json, the finished "
+                "runs, kept during the search so that the same command rerun after an interruption reuses them; "
+                "empty: none"})
       .unbound({"python", "--python", std::string("/usr/bin/python3"), "",
                 "Python with matplotlib for the plot (Debian's)"});
 }
@@ -121,12 +125,20 @@ const Schema& optimize_schema()
 const std::vector<std::string> search_only_keys{"method",       "max_evaluations", "replicates", "pilot_step",
                                                 "sweep_points", "threads",         "out",        "python"};
 
+/// What a run (genome, replicate) computes beyond the parameters: the genome a
+/// replicate moves to (study::replicate_genome) and the mesh it gets under
+/// matched face count. Hashed with the parameters, so that runs saved when
+/// the rigid replicates nudged the initial spins, or when matched ties went
+/// to the fewer points alone, are not recalled.
+constexpr const char* run_definition = "replicates move the genome by resolution; matched ties keep points";
+
 /// case_hash of the parameters a run's value depends on (the version included).
 std::string run_settings_hash(const io::Parameters& params)
 {
   nlohmann::json resolved = params.to_json();
   for (const std::string& key : search_only_keys)
     resolved.erase(key);
+  resolved["run_definition"] = run_definition;
   return io::case_hash(resolved);
 }
 
@@ -204,8 +216,12 @@ nlohmann::json run_optimize(const io::Parameters& params)
                     [&](const std::filesystem::path& folder) {
                       std::ofstream(folder / "optimize.json") << j.dump(1) << "\n";
                       cache->save(folder / evaluations_file);
+                      // Both bodies as they were scored, for the plot's side-by-side view.
+                      const geometry::BodySpec start =
+                          study::family_body(settings, result.search.start, result.start_mesh.points);
                       const geometry::BodySpec optimum =
                           study::family_body(settings, result.search.best_x, result.best_mesh.points);
+                      geometry::write_mesh(geometry::make_body(start), folder / "start.obj");
                       geometry::write_mesh(geometry::make_body(optimum), folder / "optimum.obj");
                     });
   return j;

@@ -28,7 +28,7 @@ namespace rollcheck::study
 /// The score of a point of the family, e.g. (theta_deg, d, rho).
 using Score = std::function<double(std::span<const double>)>;
 /// The score of a point with the nuisance inputs of replicate `replicate`
-/// (e.g. the initial spin nudged by a replicate-dependent 1e-12 rad/s).
+/// (e.g. the point moved by less than the search resolves, in a replicate-dependent direction).
 using ReplicateScore = std::function<double(std::span<const double>, int replicate)>;
 
 /// The search box; a parameter with lower == upper is fixed (not searched).

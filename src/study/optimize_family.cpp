@@ -3,7 +3,6 @@
 #include "core/json_number.h"
 #include "geometry/convex_hull.h"
 #include "oracle/parallel_for.h"
-#include "study/paper_quirks.h"
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -244,13 +243,15 @@ nlohmann::json numbers(std::span<const double> values)
 
 std::string nuisance_text(const FamilySearchSettings& s)
 {
+  const std::string move = fmt::format("the genome moved by {:g} of each box width in a replicate-dependent direction "
+                                       "(the spread between points the search cannot resolve)",
+                                       s.resolution);
   if (s.oracle == Oracle::rigid)
-    return fmt::format("initial spins nudged by multiples of {:g} rad/s (study/paper_quirks.h's band for replicates "
-                       "1-6); each score is the mean of {} replicates",
-                       spin_nudge_rad_s, s.replicates);
-  return fmt::format("the oracle is deterministic: the genome moved by {:g} of each box width in a replicate-"
-                     "dependent direction (the spread the search cannot resolve); each score is one evaluation",
-                     s.resolution);
+    return move + fmt::format("; the rigid-body runs of a moved genome have lost the nominal run's trajectory within "
+                              "the run, so the replicates also sample the oracle's chaotic spread; each score is the "
+                              "mean of {} replicates",
+                              s.replicates);
+  return move + "; the oracle is deterministic: each score is one evaluation";
 }
 } // namespace
 
@@ -327,9 +328,11 @@ MeshResolution matched_mesh(const FamilySearchSettings& s, std::span<const doubl
       entry->second = hull_faces(s, x, points);
     return MeshResolution{points, entry->second};
   };
-  const auto closer = [target_faces](const MeshResolution& a, const MeshResolution& b) {
-    return std::tuple(std::abs(a.faces - target_faces), a.points)
-           < std::tuple(std::abs(b.faces - target_faces), b.points);
+  // Ties go to `points` itself: other point counts can give the same face
+  // count, and the start, meshed at another of them, would change its score.
+  const auto closer = [&](const MeshResolution& a, const MeshResolution& b) {
+    return std::tuple(std::abs(a.faces - target_faces), a.points != s.points, a.points)
+           < std::tuple(std::abs(b.faces - target_faces), b.points != s.points, b.points);
   };
   const int guess =
       std::max(least_points, static_cast<int>(std::lround(double(s.points) * target_faces / faces.at(s.points))));
@@ -389,6 +392,21 @@ MeshResolution FamilyMeshes::resolution(std::span<const double> x)
   return matched.get();
 }
 
+std::vector<double> replicate_genome(const FamilySearchSettings& s, std::span<const double> x, int replicate)
+{
+  std::vector<double> p(x.begin(), x.end());
+  if (replicate == 0)
+    return p;
+  constexpr std::array<int, 3> bases{2, 3, 5};
+  const Box box = box_of(s);
+  for (std::size_t i = 0; i < 3; ++i)
+  {
+    const double direction = 2 * radical_inverse(replicate, bases[i]) - 1;
+    p[i] = std::clamp(p[i] + s.resolution * (box.upper[i] - box.lower[i]) * direction, box.lower[i], box.upper[i]);
+  }
+  return p;
+}
+
 double replicate_score(const FamilySearchSettings& s, FamilyMeshes& meshes, std::span<const double> x, int replicate)
 {
   ScoreBodySettings b = s.scoring;
@@ -398,24 +416,7 @@ double replicate_score(const FamilySearchSettings& s, FamilyMeshes& meshes, std:
   b.metrics.cds = s.score == FamilyScore::cds;
   b.metrics.sds = s.score == FamilyScore::sds;
   b.convergence_every = 0;
-  std::vector<double> p(x.begin(), x.end());
-  if (replicate > 0 && s.oracle == Oracle::rigid)
-  {
-    // Replicates 1 .. 6: +x, -x, +y, -y, +z, -z (the band's order); then again, larger.
-    const int k = replicate - 1;
-    const double nudge = (k % 2 == 0 ? 1 : -1) * spin_nudge_rad_s * (1 + k / 6);
-    for (Eigen::Vector3d& w : b.rigid.initial_spins)
-      w[(k / 2) % 3] += nudge;
-  }
-  else if (replicate > 0)
-  {
-    constexpr std::array<int, 3> bases{2, 3, 5};
-    const Box box = box_of(s);
-    for (std::size_t i = 0; i < 3; ++i)
-      p[i] = std::clamp(p[i] + s.resolution * (box.upper[i] - box.lower[i])
-                                   * (2 * radical_inverse(replicate, bases[i]) - 1),
-                        box.lower[i], box.upper[i]);
-  }
+  const std::vector<double> p = replicate_genome(s, x, replicate);
   b.body = family_body(s, p, meshes.points(p));
   if (s.score == FamilyScore::fem_sds)
     return s.fem_sds_score(b.body);
@@ -503,7 +504,8 @@ nlohmann::json mesh_json(const FamilySearchResult& r)
           {"optimum", resolution(r.best_mesh)},
           {"radius_m", geometry::BodySpec{}.radius_m},
           {"note", faces ? "each body is meshed with the points per generating circle whose hull's face count is "
-                           "nearest target_faces, the start's at points_per_circle (ties: the fewer points)"
+                           "nearest target_faces, the start's at points_per_circle (ties: points_per_circle itself, else the "
+                           "fewer points)"
                          : "every body is meshed with points_per_circle per generating circle; its face count "
                            "moves with the genome"}};
 }

@@ -71,13 +71,15 @@ struct FamilySearchSettings
 {
   FamilyScore score = FamilyScore::cds;
   /// approximate (deterministic) or rigid (chaotic: each score the mean of
-  /// `replicates` runs with nudged initial spins) for cds and sds; rolling for uniformity.
+  /// `replicates` runs, see `replicates`) for cds and sds; rolling for uniformity and fem_sds.
   Oracle oracle = Oracle::approximate;
   bool paper_compat = false; ///< every switch of oracle/paper_compat.h as the reference code; else corrected
   geometry::RollerFamily family = geometry::RollerFamily::paper;
   int points = 100; ///< samples per generating circle: of every body, or of the start (match_face_count)
   /// Mesh each genome with the points per circle whose hull's face count is
-  /// nearest the start's at `points` (ties: the fewer points): CDS falls about
+  /// nearest the start's at `points` (ties: `points` itself, else the fewer
+  /// points, so that a genome with the start's face count at `points`, the
+  /// start included, is meshed as without matching): CDS falls about
   /// as N_faces^-2, and at fixed points per circle the face count moves with
   /// the genome. Off: every body meshed with `points` per circle.
   bool match_face_count = false;
@@ -85,11 +87,13 @@ struct FamilySearchSettings
   FamilyAxis theta_deg{40, 140, 90}, offset{0.5, 1.5, 1}, ratio{0.6, 1.4, 1};
   Method method = Method::bobyqa;
   int max_evaluations = 60; ///< distinct genomes the search scores, the start included
-  /// Noise replicates at the start (>= 2). Rigid oracle: spins nudged by
-  /// replicate (study/paper_quirks.h's band for replicates 1 .. 6), and every
-  /// score is the mean of this many replicates. Approximate and rolling
-  /// oracles (deterministic): the genome moved by `resolution` of each box
-  /// width in a replicate-dependent direction.
+  /// Noise replicates at the start (>= 2): replicate r > 0 moves the genome by
+  /// `resolution` of each box width in a replicate-dependent direction
+  /// (replicate_genome). Rigid oracle: every score is the mean of this many
+  /// replicates. A 1e-12 rad/s spin nudge (study/paper_quirks.h's band) is not
+  /// used: over the 10 s runs it moves the preprint's body's scores by only
+  /// 0.05 %, while a moved genome's runs lose the nominal trajectory and spread
+  /// by about 11 % (docs/optimize.md "The rigid-body noise").
   int replicates = 4;
   /// Fraction of each box width the search resolves (its xtol); the
   /// deterministic oracles' noise is the score's spread over such moves.
@@ -126,9 +130,10 @@ struct MeshResolution
 long hull_faces(const FamilySearchSettings& settings, std::span<const double> x, int points);
 
 /// The points per circle whose hull's face count is nearest `target_faces`
-/// (ties: the fewer points). The face count is about proportional to the
-/// points but not monotone in them, so the points around the proportional
-/// guess are tried, outwards until two more on either side bring no gain.
+/// (ties: settings.points itself, else the fewer points). The face count is
+/// about proportional to the points but not monotone in them, so the points
+/// around the proportional guess are tried, outwards until two more on either
+/// side bring no gain.
 MeshResolution matched_mesh(const FamilySearchSettings& settings, std::span<const double> x, long target_faces);
 
 /// The mesh of every genome of one search: `points` per circle, or with
@@ -152,14 +157,19 @@ private:
   std::map<std::vector<double>, std::shared_future<MeshResolution>> matched_;
 };
 
-/// One evaluation of the score at x under the nuisance inputs of `replicate`
-/// (0: none): a spin nudge for the rigid oracle, a jitter of x otherwise; the
-/// body meshed as `meshes` says for the genome it runs.
+/// The genome replicate `replicate` scores in place of x: x itself for 0, else
+/// x moved by `resolution` of each box width along the Halton direction
+/// (bases 2, 3, 5) of the replicate, clipped to the box.
+std::vector<double> replicate_genome(const FamilySearchSettings& settings, std::span<const double> x, int replicate);
+
+/// One evaluation of the score at replicate_genome(x, replicate), the body
+/// meshed as `meshes` says for that genome.
 double replicate_score(const FamilySearchSettings& settings, FamilyMeshes& meshes, std::span<const double> x,
                        int replicate);
 
 /// The score the search minimises: replicate 0 (approximate, rolling), or the
-/// mean of replicates 0 .. replicates-1 (rigid).
+/// mean of replicates 0 .. replicates-1 (rigid: a local average over the
+/// moved genomes, which smooths the chaotic oracle).
 double family_score(const FamilySearchSettings& settings, std::span<const double> x);
 
 struct FamilySearchResult

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # rollcheck optimize: a tiny search (approximate oracle, CDS, 60 points per
-# circle) writes the JSON with its keys, the optimum's mesh and the sweeps'
-# plot; with --matched-resolution the optimum's hull (optimum.obj) has about
-# the start's face count; a bad box (min > max, a start outside it) exits 2
-# naming the key.
+# circle) writes the JSON with its keys, the start's and the optimum's meshes,
+# the sweeps' plot and the rendered view of both bodies (PNG files); with
+# --matched-resolution the optimum's hull (optimum.obj) has about the start's
+# face count; a bad box (min > max, a start outside it) exits 2 naming the key.
 set -u
 source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
@@ -30,8 +30,13 @@ assert r["search"]["evaluations"] <= 12
 assert [s["parameter"] for s in r["sweeps"]] == ["theta_deg", "offset", "ratio"]
 assert r["verdict_at_start"] in ["not stationary", "local minimum", "local maximum", "saddle", "undetermined"]
 assert json.load(open(os.path.join(sys.argv[2], "optimize.json"))) == r
-for name in ["optimum.obj", "sweeps.png"]:
+for name in ["start.obj", "optimum.obj"]:
     assert os.path.getsize(os.path.join(sys.argv[2], name)) > 0, name
+faces = sum(1 for line in open(os.path.join(sys.argv[2], "start.obj")) if line.startswith("f "))
+assert faces == r["mesh"]["start"]["faces"], (faces, r["mesh"]["start"])
+for name in ["sweeps.png", "optimum.png"]:
+    with open(os.path.join(sys.argv[2], name), "rb") as f:
+        assert f.read(8) == b"\x89PNG\r\n\x1a\n", name + " is not a PNG"
 print("optimum", best["x"], best["value"], "from", r["start_value"])
 PY
 "$bin" -q optimize --points 60 --max-evaluations 12 --sweep-points 3 --threads 1 --matched-resolution \
