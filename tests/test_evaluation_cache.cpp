@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include "family_search_fixture.h"
 #include <gtest/gtest.h>
 #include <limits>
 #include <stdexcept>
@@ -19,16 +20,6 @@ namespace fs = std::filesystem;
 
 namespace
 {
-/// Approximate oracle, CDS, 100 points per circle: milliseconds per genome.
-FamilySearchSettings cheap()
-{
-  FamilySearchSettings s;
-  s.points = 100;
-  s.max_evaluations = 15;
-  s.sweep_points = 3;
-  s.threads = 2;
-  return s;
-}
 
 /// A fresh file in the tests' scratch folder.
 fs::path scratch_file(const std::string& name)
@@ -67,14 +58,14 @@ TEST(EvaluationCache, ARerunRecallsEveryRunAndGivesTheSameResult)
 {
   const fs::path file = scratch_file("rerun.json");
   io::EvaluationCache first_cache(file, "settings-a");
-  const FamilySearchResult first = optimize_family(kept_in(cheap(), first_cache));
+  const FamilySearchResult first = optimize_family(kept_in(cheap_family_search(), first_cache));
   EXPECT_EQ(first.recalled_runs, 0);
   ASSERT_GT(first.oracle_runs, 0);
   EXPECT_EQ(static_cast<long>(first_cache.size()), first.oracle_runs);
 
   io::EvaluationCache second_cache(file, "settings-a");
   EXPECT_EQ(second_cache.size(), first_cache.size());
-  const FamilySearchResult second = optimize_family(kept_in(cheap(), second_cache));
+  const FamilySearchResult second = optimize_family(kept_in(cheap_family_search(), second_cache));
   EXPECT_EQ(second.oracle_runs, 0);
   EXPECT_EQ(second.recalled_runs, first.oracle_runs);
   EXPECT_EQ(second.search.best_x, first.search.best_x);
@@ -84,12 +75,12 @@ TEST(EvaluationCache, ARerunRecallsEveryRunAndGivesTheSameResult)
 
 TEST(EvaluationCache, AnInterruptedSearchResumesToTheSameResult)
 {
-  const FamilySearchResult whole = optimize_family(cheap());
+  const FamilySearchResult whole = optimize_family(cheap_family_search());
   const fs::path file = scratch_file("interrupted.json");
   std::size_t kept = 0;
   {
     io::EvaluationCache cache(file, "settings-a");
-    FamilySearchSettings interrupted = kept_in(cheap(), cache);
+    FamilySearchSettings interrupted = kept_in(cheap_family_search(), cache);
     int batches = 0;
     interrupted.run_store.record = [&batches, save = interrupted.run_store.record](
                                        std::span<const OracleRun> runs) {
@@ -103,7 +94,7 @@ TEST(EvaluationCache, AnInterruptedSearchResumesToTheSameResult)
   ASSERT_GT(kept, 0u);
   ASSERT_LT(static_cast<long>(kept), whole.oracle_runs) << "the interruption came after the last run";
   io::EvaluationCache cache(file, "settings-a");
-  const FamilySearchResult resumed = optimize_family(kept_in(cheap(), cache));
+  const FamilySearchResult resumed = optimize_family(kept_in(cheap_family_search(), cache));
   EXPECT_EQ(resumed.recalled_runs, static_cast<long>(kept));
   EXPECT_EQ(resumed.recalled_runs + resumed.oracle_runs, whole.oracle_runs);
   EXPECT_EQ(outcome(resumed), outcome(whole));
@@ -113,11 +104,11 @@ TEST(EvaluationCache, ACacheOfOtherSettingsIsNotReused)
 {
   const fs::path file = scratch_file("other_settings.json");
   io::EvaluationCache points_100(file, "settings-a");
-  const FamilySearchResult first = optimize_family(kept_in(cheap(), points_100));
+  const FamilySearchResult first = optimize_family(kept_in(cheap_family_search(), points_100));
 
   io::EvaluationCache other(file, "settings-b");
   EXPECT_EQ(other.size(), 0u);
-  const FamilySearchResult second = optimize_family(kept_in(cheap(), other));
+  const FamilySearchResult second = optimize_family(kept_in(cheap_family_search(), other));
   EXPECT_EQ(second.recalled_runs, 0);
   EXPECT_EQ(second.oracle_runs, first.oracle_runs);
   // Its saves replaced the file: the first settings' runs are gone.

@@ -16,6 +16,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <iostream>
+#include "family_search_fixture.h"
 #include <gtest/gtest.h>
 #include <numbers>
 
@@ -24,16 +25,6 @@ using namespace rollcheck::study;
 
 namespace
 {
-/// Approximate oracle, CDS, 100 points per circle: milliseconds per genome.
-FamilySearchSettings cheap()
-{
-  FamilySearchSettings s;
-  s.points = 100;
-  s.max_evaluations = 15;
-  s.sweep_points = 3;
-  s.threads = 2;
-  return s;
-}
 
 /// The scores score_body gives a named body under the search's oracle settings.
 BodyScores scores_of(const FamilySearchSettings& s, geometry::BodySpec body)
@@ -51,7 +42,7 @@ const std::vector<double> family_oloid{90, 1, 1};
 
 TEST(OptimizeFamily, TheScoreIsAFunctionOfTheGenome)
 {
-  const FamilySearchSettings s = cheap();
+  const FamilySearchSettings s = cheap_family_search();
   const std::vector<double> x{75.5, 1.1, 0.9};
   EXPECT_EQ(family_score(s, x), family_score(s, x));
   EXPECT_NE(family_score(s, x), family_score(s, family_oloid));
@@ -61,7 +52,7 @@ TEST(OptimizeFamily, ItsNinetyOneOneMembersAreTheNamedOloids)
 {
   for (const bool compat : {false, true})
   {
-    FamilySearchSettings s = cheap();
+    FamilySearchSettings s = cheap_family_search();
     s.paper_compat = compat;
     s.family = geometry::RollerFamily::centre_line;
     geometry::BodySpec oloid;
@@ -80,7 +71,7 @@ TEST(OptimizeFamily, ItsNinetyOneOneMembersAreTheNamedOloids)
 
 TEST(OptimizeFamily, TheRigidScoreIsTheMeanOfTheMovedGenomesRuns)
 {
-  FamilySearchSettings s = cheap();
+  FamilySearchSettings s = cheap_family_search();
   s.oracle = Oracle::rigid;
   s.replicates = 3;
   s.paper_compat = true; // the preprint's chaotic dynamics, over its 10 s runs
@@ -106,7 +97,7 @@ TEST(OptimizeFamily, TheRigidReplicatesSpreadFarBeyondTheSpinNudgeBand)
   // nudge has not grown into a different trajectory yet. A genome moved by
   // the search's resolution has, so its runs sample the chaotic spread a
   // search meets between neighbouring genomes.
-  FamilySearchSettings s = cheap();
+  FamilySearchSettings s = cheap_family_search();
   s.oracle = Oracle::rigid;
   s.paper_compat = true;
   ScoreBodySettings band_settings = s.scoring;
@@ -126,7 +117,7 @@ TEST(OptimizeFamily, TheRigidReplicatesSpreadFarBeyondTheSpinNudgeBand)
 
 TEST(OptimizeFamily, TheSearchReturnsABodyNoWorseThanItsStart)
 {
-  const FamilySearchSettings s = cheap();
+  const FamilySearchSettings s = cheap_family_search();
   const FamilySearchResult r = optimize_family(s);
   EXPECT_EQ(r.search.start_value, family_score(s, family_oloid));
   EXPECT_LE(r.search.best_value, r.search.start_value);
@@ -153,7 +144,7 @@ TEST(OptimizeFamily, FindsTheBodyAGeometricScorePicksOut)
   // of the target genome's body, meshed alike. It is 0 there and positive
   // elsewhere: five measures of the hull pin down its three parameters. The
   // score enters through the hook an outside score uses (BodyScore).
-  FamilySearchSettings s = cheap();
+  FamilySearchSettings s = cheap_family_search();
   s.score = FamilyScore::fem_sds;
   s.oracle = Oracle::rolling;
   s.max_evaluations = 300;
@@ -192,7 +183,7 @@ TEST(OptimizeFamily, FindsTheBodyAGeometricScorePicksOut)
 
 TEST(OptimizeFamily, BadBoxesAreNamed)
 {
-  FamilySearchSettings s = cheap();
+  FamilySearchSettings s = cheap_family_search();
   s.theta_deg.min = 150; // above its max, 140
   try
   {
@@ -203,10 +194,10 @@ TEST(OptimizeFamily, BadBoxesAreNamed)
   {
     EXPECT_NE(std::string(e.what()).find("theta_min_deg"), std::string::npos) << e.what();
   }
-  s = cheap();
+  s = cheap_family_search();
   s.ratio.start = 1.5;
   EXPECT_THROW(validate(s), InputError);
-  s = cheap();
+  s = cheap_family_search();
   s.score = FamilyScore::uniformity;
   EXPECT_THROW(validate(s), InputError);
 }
@@ -231,7 +222,7 @@ TEST(OptimizeFamily, MatchedBodiesHaveTheStartsFaceCount)
 {
   for (const auto& [family, x] : unmatched_genomes)
   {
-    FamilySearchSettings s = cheap();
+    FamilySearchSettings s = cheap_family_search();
     s.points = 300;
     s.family = family;
     s.match_face_count = true;
@@ -260,7 +251,7 @@ TEST(OptimizeFamily, MatchedBodiesHaveTheStartsFaceCount)
 
 TEST(OptimizeFamily, MatchingChangesTheScoreWhereTheFacesDiffer)
 {
-  FamilySearchSettings unmatched = cheap();
+  FamilySearchSettings unmatched = cheap_family_search();
   unmatched.points = 300;
   unmatched.paper_compat = true;
   FamilySearchSettings matched = unmatched;
@@ -282,7 +273,7 @@ TEST(OptimizeFamily, TheStartKeepsItsPointsWhereFewerPointsGiveItsFaceCount)
   // The true oloid's hull has 264 faces at 98 and at 100 points per circle:
   // a tie that "the fewer points" alone would give to 98, re-meshing the
   // start and changing its score.
-  FamilySearchSettings matched = cheap();
+  FamilySearchSettings matched = cheap_family_search();
   matched.family = geometry::RollerFamily::centre_line;
   matched.match_face_count = true;
   ASSERT_EQ(hull_faces(matched, family_oloid, 98), hull_faces(matched, family_oloid, matched.points));
@@ -297,7 +288,7 @@ TEST(OptimizeFamily, TheResultSaysHowTheBodiesAreMeshed)
 {
   for (const bool match : {false, true})
   {
-    FamilySearchSettings s = cheap();
+    FamilySearchSettings s = cheap_family_search();
     s.match_face_count = match;
     const FamilySearchResult r = optimize_family(s);
     const nlohmann::json mesh = to_json(r)["mesh"];
