@@ -311,3 +311,29 @@ TEST(OptimizeFamily, TheResultSaysHowTheBodiesAreMeshed)
     }
   }
 }
+
+TEST(OptimizeFamily, FemSdsReplicatesAlsoChangeTheMesh)
+{
+  // FEM-SDS moves by up to a third between meshes of one genome, so its
+  // noise replicates mesh the body with 2, -2, 4, -4 more points per circle;
+  // the other scores keep the mesh.
+  FamilySearchSettings s = cheap_family_search();
+  for (int r = 0; r < 5; ++r)
+    EXPECT_EQ(replicate_mesh_offset(s, r), 0);
+  s.score = FamilyScore::fem_sds;
+  s.oracle = Oracle::rolling;
+  const std::vector<int> offsets{0, 2, -2, 4, -4};
+  std::vector<int> seen;
+  s.fem_sds_score = [&](const geometry::BodySpec& body) {
+    seen.push_back(body.points);
+    return 1.0;
+  };
+  FamilyMeshes meshes(s);
+  const std::vector<double> start{90, 1, 1};
+  for (int r = 0; r < 5; ++r)
+  {
+    EXPECT_EQ(replicate_mesh_offset(s, r), offsets[r]);
+    replicate_score(s, meshes, start, r);
+    EXPECT_EQ(seen.back(), s.points + offsets[r]);
+  }
+}

@@ -130,7 +130,8 @@ const std::vector<std::string> search_only_keys{"method",       "max_evaluations
 /// matched face count. Hashed with the parameters, so that runs saved when
 /// the rigid replicates nudged the initial spins, or when matched ties went
 /// to the fewer points alone, are not recalled.
-constexpr const char* run_definition = "replicates move the genome by resolution; matched ties keep points";
+constexpr const char* run_definition
+    = "replicates move the genome by resolution; matched ties keep points; FEM-SDS replicates add 2, -2, 4 points";
 
 /// case_hash of the parameters a run's value depends on (the version included).
 std::string run_settings_hash(const io::Parameters& params)

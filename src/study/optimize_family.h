@@ -93,7 +93,8 @@ struct FamilySearchSettings
   /// replicates. A 1e-12 rad/s spin nudge (study/paper_quirks.h's band) is not
   /// used: over the 10 s runs it moves the preprint's body's scores by only
   /// 0.05 %, while a moved genome's runs lose the nominal trajectory and spread
-  /// by about 11 % (docs/optimize.md "The rigid-body noise").
+  /// by about 11 % (docs/optimize.md "The rigid-body noise"). FEM-SDS: the
+  /// replicates also change the mesh (replicate_mesh_offset).
   int replicates = 4;
   /// Fraction of each box width the search resolves (its xtol); the
   /// deterministic oracles' noise is the score's spread over such moves.
@@ -162,8 +163,14 @@ private:
 /// (bases 2, 3, 5) of the replicate, clipped to the box.
 std::vector<double> replicate_genome(const FamilySearchSettings& settings, std::span<const double> x, int replicate);
 
+/// Points per circle replicate `replicate` adds to its body's mesh: FEM-SDS
+/// 0, 2, -2, 4, -4, ... (the score moves by up to a third between meshes of
+/// one genome: the true oloid at 96 to 104 points per circle scored 1.28e-05
+/// to 1.97e-05, so its noise must include the mesh); other scores 0.
+int replicate_mesh_offset(const FamilySearchSettings& settings, int replicate);
+
 /// One evaluation of the score at replicate_genome(x, replicate), the body
-/// meshed as `meshes` says for that genome.
+/// meshed as `meshes` says for that genome, plus replicate_mesh_offset points.
 double replicate_score(const FamilySearchSettings& settings, FamilyMeshes& meshes, std::span<const double> x,
                        int replicate);
 
