@@ -19,6 +19,7 @@
 #endif
 #include "core/error.h"
 #include <fstream>
+#include <map>
 #include <spdlog/spdlog.h>
 
 namespace rollcheck::cli
@@ -192,17 +193,33 @@ nlohmann::json run_optimize(const io::Parameters& params)
         cache->save();
     };
   }
+  // The FEM-SDS loops' convergence, one status per body scored (a score is
+  // reported with its convergence).
+  auto fem_sds_statuses = std::make_shared<std::vector<std::string>>();
   if (settings.score == study::FamilyScore::fem_sds)
   {
 #ifdef ROLLCHECK_FEM
-    settings.fem_sds_score = study::fem_sds_scorer(MPI_COMM_WORLD, study::FemSdsSettings{});
+    settings.fem_sds_score = study::fem_sds_scorer(MPI_COMM_WORLD, study::FemSdsSettings{}, fem_sds_statuses);
 #else
     // rollcheck hands command lines that name fem-sds to rollcheck-fem (light_session.cpp).
     throw ComputationError("optimize --score fem-sds runs in rollcheck-fem");
 #endif
   }
   const study::FamilySearchResult result = study::optimize_family(settings);
-  const nlohmann::json j = study::to_json(result);
+  nlohmann::json j = study::to_json(result);
+  if (settings.score == study::FamilyScore::fem_sds)
+  {
+    std::map<std::string, int> counts;
+    for (const std::string& status : *fem_sds_statuses)
+      ++counts[status.starts_with("converged") ? "converged" : status.starts_with("not converged") ? "not converged"
+                                                                                                   : status];
+    j["fem_sds_loops"] = {{"scored", fem_sds_statuses->size()}, {"by_status", counts}};
+    const int unconverged = counts.count("not converged") ? counts["not converged"] : 0;
+    if (unconverged > 0)
+      spdlog::warn("optimize: {} of the {} FEM-SDS loops scored did not converge to the tolerance (JSON "
+                   "fem_sds_loops)",
+                   unconverged, fem_sds_statuses->size());
+  }
   const nlohmann::json& best = j["optimum"];
   spdlog::info("optimize {} ({}): start {} -> {}, optimum {} -> {} ({} the start beyond the noise {}); at the start: "
                "{}; hull faces {} at the start, {} at the optimum ({} points per circle); {} genomes, {} oracle "

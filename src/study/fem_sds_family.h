@@ -20,6 +20,7 @@
 #include "oracle/search_grid.h"
 #include "study/fem_sds.h"
 #include <functional>
+#include <memory>
 #include <mpi.h>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -63,8 +64,12 @@ struct FamilyResult
 /// the load ratios no body before it reached). +infinity for a body the
 /// line-contact model cannot follow over a whole loop (a rim lifts) or that
 /// cannot roll over its potential barrier: it has no whole loop to score.
-/// Collective on `comm` at every call.
-std::function<double(const geometry::BodySpec&)> fem_sds_scorer(MPI_Comm comm, const FemSdsSettings& base);
+/// Collective on `comm` at every call. Each call's loop status (LoopSds::status:
+/// "converged", "not converged (...)", "singular (...)", or why there is no
+/// loop) is appended to `statuses`, if given, so that the search can report
+/// how many of the bodies it scored were converged.
+std::function<double(const geometry::BodySpec&)> fem_sds_scorer(
+    MPI_Comm comm, const FemSdsSettings& base, std::shared_ptr<std::vector<std::string>> statuses = {});
 
 /// Collective on `comm`; every rank gets the result. InputError for bad
 /// settings; a body that cannot roll a loop is a row, not an error.

@@ -52,6 +52,12 @@ assert faces == mesh["optimum"]["faces"], (faces, mesh)
 assert abs(faces - mesh["target_faces"]) <= 0.01 * mesh["target_faces"], (faces, mesh)
 print("matched optimum", mesh["optimum"], "target", mesh["target_faces"])
 PY
+# FEM-SDS: every body's loop status is counted (a score with its convergence).
+"$bin" -q optimize --score fem-sds --oracle rolling --family centre-line --points 60 --max-evaluations 3 \
+  --replicates 2 --sweep-points 2 --json "$tmp/fem.json" > "$tmp/fem.log" 2>&1 || { echo "FAIL: fem-sds optimize"; cat "$tmp/fem.log"; fail=1; }
+check_json "FEM-SDS loops counted by status, one per body scored" \
+  '.fem_sds_loops.scored > 0 and ([.fem_sds_loops.by_status[]] | add) == .fem_sds_loops.scored
+   and (.fem_sds_loops.by_status.converged // 0) > 0' "$tmp/fem.json"
 for args in "--theta-min 150:theta_min_deg" "--offset-max 0.6:offset_start" "--ratio-start 2:ratio_start" \
             "--theta-min 0:theta_min_deg" "--replicates 1:replicates" "--score uniformity:uniformity"; do
   "$bin" -q optimize ${args%%:*} > "$tmp/bad.log" 2>&1; rc=$?
