@@ -224,12 +224,12 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
 RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
 {
   validate(setup);
+  ensure_petsc(); // MPI too
   int processes = 1;
   MPI_Comm_size(comm, &processes);
   if (setup.counter_face == CounterFace::block && processes > 1)
     throw InputError("rim: the steel counter-face (node pairs between the bodies) runs on one process: run it "
                      "without mpirun");
-  ensure_petsc();
   RimEndStudy study;
   study.setup = setup;
   const bool block = setup.counter_face == CounterFace::block;
