@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
@@ -141,9 +142,11 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
       problem.set_initial_gap([&](const double* x) { return sheet_height(std::min(x[1], s.radius_m)); });
   }
   level.dofs = problem.num_dofs();
-  auto surface = [&] {
+  // The contact face's nodal pressures: the pairs' (block), or the rigid
+  // plane's from recovered fields (computed here unless the caller has them).
+  auto surface = [&](const NodalFields* fields = nullptr) {
     if (!block)
-      return gather_surface_pressure(comm, recover_nodal_fields(problem));
+      return gather_surface_pressure(comm, fields ? *fields : recover_nodal_fields(problem));
     std::vector<SurfacePressureNode> nodes;
     const std::vector<double> pressure = problem.pair_pressures_pa();
     for (std::size_t i = 0; i < pressure.size(); ++i)
@@ -165,9 +168,12 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   const double end_zone = 2 * b + s.edge_radius_m;
   double edge_sum = 0;
   int edge_nodes = 0;
+  std::optional<NodalFields> fields;
+  if (write || !block)
+    fields = recover_nodal_fields(problem);
   if (write)
-    write_fields(s.xdmf_path, recover_nodal_fields(problem));
-  for (const SurfacePressureNode& n : surface())
+    write_fields(s.xdmf_path, *fields);
+  for (const SurfacePressureNode& n : surface(fields ? &*fields : nullptr))
   {
     if (std::abs(n.x[1]) < tol)
       level.centre_line.push_back({n.x[0], n.pressure_pa});
