@@ -1,14 +1,17 @@
-// `rollcheck rim`: one end of a loaded ruling in 3D on the rigid plane, the
-// edge sharp or rounded, at several sizes of the edge elements
-// (fem/rim_end_contact.h). A sharp obtuse edge is reported singular with its
-// measured growth exponent beside Williams's, never as a peak; a square or a
-// rounded edge has a converged end/interior pressure ratio, or says it has not.
+// `rollcheck rim`: one end of a loaded ruling in 3D on the rigid plane or a
+// steel block, the edge sharp or rounded, at several sizes of the edge
+// elements (fem/rim_end_contact.h). A sharp singular edge is reported singular
+// with its measured growth exponent beside the wedge's, never as a peak; a
+// square or a rounded edge has a converged end/interior pressure ratio, or
+// says it has not. With --body: every loaded end of the body's rolling loop
+// and the end-aware FEM-SDS and FEM-FDS (study/rim_loop.h).
 // Also the scene "rim" of case files.
 #include "cli/cli.h"
 #include "cli/scenes.h"
 #include "contact/edge_on_elastic_block_exponent.h"
 #include "core/json_number.h"
 #include "fem/rim_end_contact.h"
+#include "study/rim_loop.h"
 #include <fmt/format.h>
 #include <mpi.h>
 #include <numbers>
@@ -18,49 +21,78 @@ namespace rollcheck::cli
 {
 namespace
 {
-const io::BoundSchema<fem::RimEndSettings>& rim_schema()
+/// The command's settings: without a body, one end (`end`); with one, every
+/// loaded end of its loop.
+struct RimCommand : study::RimLoopSettings
+{
+  RimCommand() { loop.body.body.clear(); }
+};
+
+const io::BoundSchema<RimCommand>& rim_schema()
 {
   using fem::RimEndSettings;
-  static const io::BoundSchema<RimEndSettings> schema = [] {
-    io::BoundSchema<RimEndSettings> s("rim");
-    s.real("radius_m", "--radius", &RimEndSettings::radius_m, "m",
-           "R, the contacting sheet's radius across the ruling at the end (the Hertz scenes' 10 mm cylinder)",
+  auto end = [](auto member) {
+    return [member](RimCommand& c) -> auto& { return std::invoke(member, c.end); };
+  };
+  static const io::BoundSchema<RimCommand> schema = [&] {
+    io::BoundSchema<RimCommand> s("rim");
+    s.include(body_schema(), [](RimCommand& c) -> geometry::BodySpec& { return c.loop.body; });
+    s.integer("orientations", "--orientations", [](RimCommand& c) -> std::size_t& { return c.loop.orientations; }, "",
+              "With --body: orientations of the loop solved directly (slices and an end model at each loaded rim "
+              "end), one per equal stratum of the loop",
+              io::Bounds{1, 1000})
+        .integer("seed", "--seed", [](RimCommand& c) -> std::uint64_t& { return c.loop.seed; }, "",
+                 "With --body: seed of the stratified sampling of those orientations", io::non_negative)
+        .integer("samples_per_loop", "--samples", [](RimCommand& c) -> long& { return c.loop.samples_per_loop; }, "",
+                 "With --body: samples of the rolling loop, every one scored", io::Bounds{2, 1e7})
+        .real("normal_load_n", "--load", [](RimCommand& c) -> double& { return c.loop.normal_load_n; }, "N",
+              "With --body: force F pressing the body onto the counter-face through its centre of mass (the "
+              "preprint's; its fatigue load is 5000 N)",
+              io::positive)
+        .real("end_table_step_deg", "--end-table-step", &RimCommand::end_table_step_rad, "deg",
+              "With --body: largest spacing of the end table's interior angles (end models across the loop's "
+              "range of loaded ends; the check halves it)",
+              io::Bounds{0.5, 60}, std::numbers::pi / 180);
+    s.real("sheet_radius_m", "--sheet-radius", end(&RimEndSettings::radius_m), "m",
+           "One end: R, the contacting sheet's radius across the ruling at the end (the Hertz scenes' 10 mm "
+           "cylinder)",
            io::positive)
-        .real("load_n_per_m", "--load-per-length", &RimEndSettings::load_n_per_m, "N/m",
-              "q, the line load at the end (the preprint's F = 100 N over a 10 mm ruling)", io::positive)
-        .real("interior_angle_deg", "--interior-angle", &RimEndSettings::interior_angle_rad, "deg",
-              "a, between the contact sheet and the rim's other face through the body: 90 a square end, below it "
-              "an acute rim, towards 180 the other face rises gently (fem-sds reports 90 + each end's rim lean)",
+        .real("load_n_per_m", "--load-per-length", end(&RimEndSettings::load_n_per_m), "N/m",
+              "One end: q, the line load at the end (the preprint's F = 100 N over a 10 mm ruling)", io::positive)
+        .real("interior_angle_deg", "--interior-angle", end(&RimEndSettings::interior_angle_rad), "deg",
+              "One end: a, between the contact sheet and the rim's other face through the body: 90 a square end, "
+              "below it an acute rim, towards 180 the other face rises gently (fem-sds reports 90 + each end's rim "
+              "lean)",
               io::Bounds{60, 180, false, true}, std::numbers::pi / 180)
-        .real("edge_radius_m", "--edge-radius", &RimEndSettings::edge_radius_m, "m",
+        .real("edge_radius_m", "--edge-radius", end(&RimEndSettings::edge_radius_m), "m",
               "r_e of the edge's fillet, the way a part is finished; 0: the sharp edge of the ideal hull",
               io::Bounds{0, 1, false, false});
-    s.choice("counter_face", "--counter-face", &RimEndSettings::counter_face,
+    s.choice("counter_face", "--counter-face", end(&RimEndSettings::counter_face),
              "What the body presses on: rigid (the frictionless rigid plane) or steel (a block of the body's own "
              "material, a second elastic body, frictionless; sharp edges, one process)",
              {{"rigid", fem::CounterFace::rigid}, {"steel", fem::CounterFace::block}});
-    add_material(s, &RimEndSettings::youngs_modulus_pa, &RimEndSettings::poisson_ratio);
-    s.real("depth_over_half_width", "--depth", &RimEndSettings::depth_over_half_width, "",
+    add_material(s, end(&RimEndSettings::youngs_modulus_pa), end(&RimEndSettings::poisson_ratio));
+    s.real("depth_over_half_width", "--depth", end(&RimEndSettings::depth_over_half_width), "",
            "H / b: the block's depth and half-width in units of line Hertz's half-width b", io::Bounds{4, 100})
-        .real("length_over_depth", "--length", &RimEndSettings::length_over_depth, "",
+        .real("length_over_depth", "--length", end(&RimEndSettings::length_over_depth), "",
               "L / H: the contact modelled from the far side (plane strain) to the edge", io::Bounds{1, 20})
-        .choice("sheet", "--sheet", &RimEndSettings::sheet,
+        .choice("sheet", "--sheet", end(&RimEndSettings::sheet),
                 "The contact sheet as a cylinder, or flattened onto z = 0 with its height in the contact's initial "
                 "gap (half-space theory's profile); auto: flat where R >= 20 H",
                 {{"auto", fem::SheetModel::automatic}, {"cylinder", fem::SheetModel::cylinder},
                  {"flat", fem::SheetModel::flat}})
-        .integer("contact_elements", "--contact-elements", &RimEndSettings::contact_elements, "",
+        .integer("contact_elements", "--contact-elements", end(&RimEndSettings::contact_elements), "",
                  "Elements across b along the contact strip", io::Bounds{2, 40})
-        .real("edge_element_over_half_width", "--edge-element", &RimEndSettings::edge_element_over_half_width, "",
+        .real("edge_element_over_half_width", "--edge-element", end(&RimEndSettings::edge_element_over_half_width), "",
               "h_e / b at the first level; each further level halves it", io::Bounds{1e-3, 1, false, false})
-        .integer("levels", "--levels", &RimEndSettings::levels, "", "Edge mesh levels (convergence needs 2)",
+        .integer("levels", "--levels", end(&RimEndSettings::levels), "", "Edge mesh levels (convergence needs 2)",
                  io::Bounds{1, 6})
-        .real("tolerance", "--tolerance", &RimEndSettings::tolerance, "",
+        .real("tolerance", "--tolerance", end(&RimEndSettings::tolerance), "",
               "Largest change of the end peak between the last two levels that counts as converged",
               io::Bounds{0, 1, true, false})
-        .real("penalty_c", "--penalty-c", &RimEndSettings::penalty_c, "",
+        .real("penalty_c", "--penalty-c", end(&RimEndSettings::penalty_c), "",
               "Penalty kappa = c E / h(x), h the local element size", io::positive)
-        .text("xdmf", "--xdmf", &RimEndSettings::xdmf_path,
+        .text("xdmf", "--xdmf", end(&RimEndSettings::xdmf_path),
               "Write the last level's displacement, stress and contact pressure to this self-contained .xdmf "
               "(ParaView)");
     return s;
@@ -68,9 +100,8 @@ const io::BoundSchema<fem::RimEndSettings>& rim_schema()
   return schema;
 }
 
-nlohmann::json run_rim(const io::Parameters& p)
+nlohmann::json run_one_end(const fem::RimEndSettings& setup)
 {
-  const fem::RimEndSettings setup = rim_schema().bind(p);
   const fem::RimEndStudy study = fem::solve_rim_end(MPI_COMM_WORLD, setup);
   const double b = study.half_width_m;
 
@@ -130,7 +161,7 @@ nlohmann::json run_rim(const io::Parameters& p)
   return {{"counter_face", setup.counter_face == fem::CounterFace::rigid ? "rigid" : "steel"},
           {"interior_angle_deg", setup.interior_angle_rad * 180 / std::numbers::pi},
           {"edge_radius_m", setup.edge_radius_m},
-          {"radius_m", setup.radius_m},
+          {"sheet_radius_m", setup.radius_m},
           {"load_n_per_m", setup.load_n_per_m},
           {"effective_modulus_pa", study.effective_modulus_pa},
           {"half_width_m", b},
@@ -158,14 +189,84 @@ nlohmann::json run_rim(const io::Parameters& p)
           {"verdict", verdict},
           {"levels", levels}};
 }
+std::string end_verdict(const fem::RimEndStudy& study)
+{
+  if (study.singular)
+    return fmt::format("singular, measured {:.3f}", study.measured_exponent.value_or(std::nan("")));
+  if (!study.end_to_interior || !study.resolved)
+    return "rounded edge not resolved";
+  return fmt::format("{:.3f}{}", *study.end_to_interior, study.converged ? "" : " (NOT converged)");
+}
+
+nlohmann::json run_loop(study::RimLoopSettings settings)
+{
+  settings.loop.youngs_modulus_pa = settings.end.youngs_modulus_pa;
+  settings.loop.poisson_ratio = settings.end.poisson_ratio;
+  const study::RimLoopResult r = study::run_rim_loop(MPI_COMM_WORLD, settings);
+  const nlohmann::json j = study::to_json(r);
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank != 0)
+    return j;
+  constexpr double degree = std::numbers::pi / 180;
+  std::string ends = "| orientation | end | interior angle (deg) | q (N/m) | R (mm) | b (um) | wedge exponent | FEM: "
+                     "exponent or end/interior | end peak / orientation's peak | end table | s |\n"
+                     "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const study::RimLoopEnd& e : r.ends)
+  {
+    double seconds = 0;
+    for (const fem::RimEndLevel& l : e.study.levels)
+      seconds += l.wall_s;
+    ends += fmt::format("| {} | {} | {:.1f}{} | {:.4g} | {:.3g} | {:.3g} | {:.3f} | {} | {} | {} | {:.0f} |\n",
+                        e.orientation, e.end == 0 ? "start" : "end", e.interior_angle_rad / degree,
+                        e.modelled_angle_rad != e.interior_angle_rad
+                            ? fmt::format(" (modelled {:.1f})", e.modelled_angle_rad / degree)
+                            : "",
+                        e.study.setup.load_n_per_m, e.study.setup.radius_m * 1e3, e.study.half_width_m * 1e6,
+                        e.study.wedge_exponent, end_verdict(e.study),
+                        e.end_peak_pa ? fmt::format("{:.3f}", *e.end_peak_pa / e.interior_peak_pa) : "-",
+                        e.table_ratio ? fmt::format("{:.3f}", *e.table_ratio) : "-", seconds);
+  }
+  auto score = [](const study::ConvergedScore& c) {
+    if (!c.value)
+      return std::string("singular");
+    if (std::isinf(*c.value))
+      return std::string("infinite (no stress amplitude above the endurance limit)");
+    return fmt::format("{:.5g} (halving the samples {:+.2f} %)", *c.value, 100 * c.sample_change());
+  };
+  const study::LoopSds& loop = r.loop;
+  std::string scores = fmt::format("interior only: FEM-SDS {}, FEM-FDS {}", score(loop.fem_rulings),
+                                   score(loop.fem_fds_rulings));
+  if (!loop.end_aware.empty())
+    scores += fmt::format("\nwith the ends:  FEM-SDS {}, FEM-FDS {}; {}", score(loop.end_aware[0].sds),
+                          score(loop.end_aware[0].fds), r.end_aware_status());
+  spdlog::info("\nrims of {} ({}), counter-face {}, edge {}:\n\n{}\nloaded rim ends over the loop: {} in {} of {} "
+               "samples, interior angles {:.1f} to {:.1f} deg (singular above {:.2f} deg); end table of {} nodes "
+               "at q = {:.4g} N/m, R = {:.4g} m, against the direct ends {}\n{}\n\n",
+               r.fem_sds.body, r.fem_sds.source, j["counter_face"].get<std::string>(),
+               r.end_setup.edge_radius_m > 0 ? fmt::format("rounded, r_e = {:.3g} m", r.end_setup.edge_radius_m)
+                                             : "sharp",
+               ends, loop.loaded_ends, loop.loaded_end_samples, loop.samples, loop.loaded_end_angle_min_rad / degree,
+               loop.loaded_end_angle_max_rad / degree, r.singular_from_rad / degree, r.table.size(),
+               r.reference_load_n_per_m, r.reference_radius_m,
+               r.table_vs_direct ? fmt::format("{:.2f} %", 100 * *r.table_vs_direct) : "-", scores);
+  return j;
+}
+
+nlohmann::json run_rim(const io::Parameters& p)
+{
+  const RimCommand command = rim_schema().bind(p);
+  return command.loop.body.body.empty() ? run_one_end(command.end) : run_loop(command);
+}
 } // namespace
 
 void add_rim_command(CLI::App& app)
 {
   add_scene_command(app, "rim",
-                    "FEM of one loaded ruling end at the body's rim in 3D on the rigid plane (gmsh OpenCASCADE, sharp "
-                    "or rounded edge, several edge mesh levels): singular with its exponent, or the converged "
-                    "end/interior pressure ratio",
+                    "FEM of a loaded ruling end at the body's rim in 3D on the rigid plane or a steel block (gmsh "
+                    "OpenCASCADE, sharp or rounded edge, several edge mesh levels): singular with its exponent, or "
+                    "the converged end/interior pressure ratio. With --body: every loaded end of the body's rolling "
+                    "loop, and FEM-SDS and FEM-FDS with the ends",
                     rim_schema().schema(), run_rim);
 }
 } // namespace rollcheck::cli

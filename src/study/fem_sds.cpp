@@ -347,6 +347,13 @@ std::vector<double> slice_fractions(double loaded_from, double loaded_to, double
 
 FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s)
 {
+  require_hull_of_circles(s.body);
+  fem::SliceScaling table(models_of(s).slice, s.table_nodes_per_decade);
+  return run_fem_sds(comm, s, table);
+}
+
+FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScaling& table)
+{
   const auto start = std::chrono::steady_clock::now();
   require_hull_of_circles(s.body);
   fem::ensure_petsc();
@@ -366,7 +373,6 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s)
     spdlog::info("fem-sds {}: {}; every sample scored, {} orientations solved directly (seed {})", result.body,
                  source.description, s.orientations, s.seed);
 
-  fem::SliceScaling table(m.slice, s.table_nodes_per_decade);
   result.loop = loop_sds(comm, source, body, pressure.peak_pressure_pa, scene.cones, table, loop_settings_of(s, m));
   if (rank == 0)
     log_loop(result.loop, table);
@@ -404,7 +410,8 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s)
   return result;
 }
 
-BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScaling& table)
+BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScaling& table,
+                         std::vector<EndFactor> end_factors)
 {
   const Scene scene = make_scene(s, true);
   BodyLoop r;
@@ -413,8 +420,9 @@ BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScali
   r.contact_held = scene.contact_held;
   r.n_faces = static_cast<std::int64_t>(scene.mesh.faces.rows());
   r.uniformity = scene.uniformity;
-  r.loop = loop_sds(comm, scene.source, scene.body, scene.pressure.peak_pressure_pa, scene.cones, table,
-                    loop_settings_of(s, scene.models));
+  LoopSdsSettings loop = loop_settings_of(s, scene.models);
+  loop.end_factors = std::move(end_factors);
+  r.loop = loop_sds(comm, scene.source, scene.body, scene.pressure.peak_pressure_pa, scene.cones, table, loop);
   return r;
 }
 

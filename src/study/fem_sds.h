@@ -142,7 +142,9 @@ struct BodyLoop
   LoopSds loop;
   std::optional<double> uniformity; ///< U (oracle/uniformity_score.h), rolling oracle only
 };
-BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& settings, fem::SliceScaling& table);
+/// `end_factors`: end-aware scores of the loop (study/loop_sds.h).
+BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& settings, fem::SliceScaling& table,
+                         std::vector<EndFactor> end_factors = {});
 
 /// The slices' FEM settings of `settings`: what a shared table is built with.
 fem::SliceSettings slice_settings(const FemSdsSettings& settings);
@@ -151,6 +153,8 @@ fem::SliceSettings slice_settings(const FemSdsSettings& settings);
 /// rank 0 logs each orientation). InputError naming the setting for a mesh
 /// file or a body that is not a hull of circles; ComputationError from the FEM.
 FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& settings);
+/// The same with the caller's FEM table (extended as needed), to share it.
+FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& settings, fem::SliceScaling& table);
 
 nlohmann::json to_json(const FemSdsOrientation& orientation);
 nlohmann::json to_json(const FemSdsResult& result);

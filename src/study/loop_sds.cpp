@@ -1,5 +1,7 @@
 // SDS over a whole rolling loop (study/loop_sds.h).
 #include "study/loop_sds.h"
+#include "contact/fatigue.h"
+#include "contact/rim_overhang.h"
 #include "core/error.h"
 #include "core/json_number.h"
 #include "oracle/distribution_score.h"
@@ -20,14 +22,30 @@ struct MappedPoint
   int face = 0;
   double line_hertz_pa = 0;
   double load_ratio = 0;
-  bool even_sample = false;
+};
+
+/// A loaded rim end of a ruling sample: the face at the end, the line-Hertz
+/// pressure and load ratio of the end itself, and the rim's interior angle.
+struct LoadedEnd
+{
+  int face = 0;
+  double line_hertz_pa = 0;
+  double load_ratio = 0;
+  double interior_angle_rad = 0;
+};
+
+struct RulingSample
+{
+  std::vector<MappedPoint> points;
+  std::vector<LoadedEnd> ends;
+  bool even = false;
 };
 
 /// One rank's share of the samples: the accumulators the scores need.
 struct SampleShare
 {
   Eigen::VectorXd point_all, point_even, line_all, line_even;
-  std::vector<std::vector<MappedPoint>> rulings; ///< the mapped points of each ruling sample
+  std::vector<RulingSample> rulings;
   std::array<std::size_t, 4> by_contact{};
   double lambda_min = std::numeric_limits<double>::infinity(), lambda_max = 0;
 };
@@ -39,47 +57,68 @@ SampleContact classify(const contact::ContactLocus& locus)
   return locus.support.kind == oracle::CircleSupportKind::point ? SampleContact::rim_point : SampleContact::flat_face;
 }
 
-/// Adds the largest value each face holds among `points` (value(point)) to `all`, and to `even` if even.
-template <typename Value>
-void add_face_peaks(const std::vector<MappedPoint>& points, Value value, Eigen::VectorXd& all, Eigen::VectorXd& even)
+/// Adds what each face holds, transform(its largest pressure among
+/// `points`), to `all`, and to `even` if the sample is even.
+template <typename Transform>
+void add_face_peaks(const std::vector<std::pair<int, double>>& points, bool even_sample, Transform transform,
+                    Eigen::VectorXd& all, Eigen::VectorXd& even)
 {
   std::vector<std::pair<int, double>> peaks;
-  for (const MappedPoint& p : points)
+  for (const auto& [face, pressure] : points)
   {
-    const double v = value(p);
-    const auto it = std::find_if(peaks.begin(), peaks.end(), [&](const auto& fp) { return fp.first == p.face; });
+    const auto it = std::find_if(peaks.begin(), peaks.end(), [&](const auto& fp) { return fp.first == face; });
     if (it == peaks.end())
-      peaks.emplace_back(p.face, v);
+      peaks.emplace_back(face, pressure);
     else
-      it->second = std::max(it->second, v);
+      it->second = std::max(it->second, pressure);
   }
   for (const auto& [face, peak] : peaks)
   {
-    all[face] += peak;
-    if (!points.empty() && points.front().even_sample)
-      even[face] += peak;
+    const double value = transform(peak);
+    all[face] += value;
+    if (even_sample)
+      even[face] += value;
   }
 }
 
-std::vector<MappedPoint> map_ruling(const contact::ContactLocus& locus, const oracle::FaceCones& cones,
-                                    double effective_modulus_pa, bool even, const LoopSdsSettings& s)
+RulingSample map_ruling(std::span<const oracle::Circle> circles, const contact::ContactLocus& locus,
+                        const oracle::FaceCones& cones, double effective_modulus_pa, bool even,
+                        const LoopSdsSettings& s)
 {
   const oracle::Ruling& ruling = *locus.ruling;
+  auto radius_at = [&](double f) { return (1 - f) * ruling.start_radius_m + f * ruling.end_radius_m; };
+  auto load_at = [&](double f) { return oracle::line_load(s.normal_load_n, locus.centre_of_pressure, ruling.length_m, f); };
   const std::vector<double> along = mapping_fractions(locus.loaded_from, locus.loaded_to, s.map_points);
   const std::vector<int> faces = contact::faces_along_ruling(cones, locus, along);
-  std::vector<MappedPoint> points;
+  RulingSample sample;
+  sample.even = even;
   for (std::size_t k = 0; k < along.size(); ++k)
   {
     const double f = held_fraction(along[k], locus.loaded_from, locus.loaded_to, s.crease_margin);
-    const double q = oracle::line_load(s.normal_load_n, locus.centre_of_pressure, ruling.length_m, f);
-    const double radius = (1 - f) * ruling.start_radius_m + f * ruling.end_radius_m;
-    if (!(q > 0) || !(radius > 0))
+    const double q = load_at(f);
+    if (!(q > 0) || !(radius_at(f) > 0))
       throw ComputationError("loop SDS: a mapping point inside the loaded ruling has no load or no radius");
-    points.push_back({faces[k],
-                      line_hertz_peak(s.normal_load_n, locus.centre_of_pressure, ruling, effective_modulus_pa, f),
-                      fem::load_ratio(q, radius, effective_modulus_pa), even});
+    sample.points.push_back({faces[k],
+                             line_hertz_peak(s.normal_load_n, locus.centre_of_pressure, ruling, effective_modulus_pa, f),
+                             fem::load_ratio(q, radius_at(f), effective_modulus_pa)});
   }
-  return points;
+  const bool start_loaded = locus.loaded_from == 0, end_loaded = locus.loaded_to == 1;
+  if (!start_loaded && !end_loaded)
+    return sample;
+  const std::array<double, 2> lean
+      = contact::rim_overhang(circles, locus.support.circles[0], locus.support.circles[1], ruling);
+  for (const int end : {0, 1})
+  {
+    if (!(end == 0 ? start_loaded : end_loaded))
+      continue;
+    const double f = end;
+    const double fractions[1] = {f};
+    sample.ends.push_back(
+        {contact::faces_along_ruling(cones, locus, fractions)[0],
+         line_hertz_peak(s.normal_load_n, locus.centre_of_pressure, ruling, effective_modulus_pa, f),
+         fem::load_ratio(load_at(f), radius_at(f), effective_modulus_pa), std::numbers::pi / 2 + lean[end]});
+  }
+  return sample;
 }
 
 SampleShare share_of_samples(MPI_Comm comm, const LoopSource& source, const oracle::RollingBody& body,
@@ -108,14 +147,16 @@ SampleShare share_of_samples(MPI_Comm comm, const LoopSource& source, const orac
     ++share.by_contact[static_cast<std::size_t>(contact)];
     if (contact != SampleContact::ruling)
       continue;
-    std::vector<MappedPoint> points = map_ruling(locus, cones, effective_modulus_pa, even, s);
-    for (const MappedPoint& p : points)
+    RulingSample ruling = map_ruling(source.circles, locus, cones, effective_modulus_pa, even, s);
+    std::vector<std::pair<int, double>> line_hertz;
+    for (const MappedPoint& p : ruling.points)
     {
       share.lambda_min = std::min(share.lambda_min, p.load_ratio);
       share.lambda_max = std::max(share.lambda_max, p.load_ratio);
+      line_hertz.emplace_back(p.face, p.line_hertz_pa);
     }
-    add_face_peaks(points, [](const MappedPoint& p) { return p.line_hertz_pa; }, share.line_all, share.line_even);
-    share.rulings.push_back(std::move(points));
+    add_face_peaks(line_hertz, even, [](double p) { return p; }, share.line_all, share.line_even);
+    share.rulings.push_back(std::move(ruling));
   }
   return share;
 }
@@ -139,16 +180,56 @@ ConvergedScore score_pair(MPI_Comm comm, Eigen::VectorXd all, Eigen::VectorXd ev
 /// The load ratio the table is read at: held at its least (slice_scaling.h).
 double tabulated(double load_ratio) { return std::max(load_ratio, fem::SliceScaling::smallest_load_ratio); }
 
-/// FEM-SDS over the ruling samples with the table of `stride`.
-ConvergedScore fem_score(MPI_Comm comm, const SampleShare& share, const fem::SliceScaling& table, int stride,
-                         const Eigen::VectorXd& areas, bool any)
+/// The load ratio the table is read at for a loaded end: held within the
+/// range the table covers for the ruling points.
+struct TableRange
 {
-  Eigen::VectorXd all = Eigen::VectorXd::Zero(areas.size()), even = all;
-  for (const std::vector<MappedPoint>& points : share.rulings)
-    add_face_peaks(
-        points, [&](const MappedPoint& p) { return p.line_hertz_pa * table.ratio(tabulated(p.load_ratio), stride); },
-        all, even);
-  return score_pair(comm, std::move(all), std::move(even), areas, any);
+  double lo, hi;
+};
+
+/// FEM-SDS and FEM-FDS over the ruling samples with the table of `stride`,
+/// and with their loaded ends' pressures if `end_factor` is given.
+EndAwareScores fem_scores(MPI_Comm comm, const SampleShare& share, const fem::SliceScaling& table, int stride,
+                          const Eigen::VectorXd& areas, bool any, const LoopSdsSettings& s, TableRange range,
+                          const EndFactor* end_factor)
+{
+  EndAwareScores out;
+  Eigen::VectorXd sds_all = Eigen::VectorXd::Zero(areas.size()), sds_even = sds_all, fds_all = sds_all,
+                  fds_even = sds_all;
+  auto fem_pressure = [&](double line_hertz_pa, double load_ratio) {
+    return line_hertz_pa * table.ratio(tabulated(load_ratio), stride);
+  };
+  // The preprint's amplitude of a contact stress cycle, corrected: p / 2.
+  auto damage = [&](double p) { return contact::miner_damage_per_cycle(p / 2, s.fatigue); };
+  for (const RulingSample& ruling : share.rulings)
+  {
+    std::vector<std::pair<int, double>> points;
+    for (const MappedPoint& p : ruling.points)
+      points.emplace_back(p.face, fem_pressure(p.line_hertz_pa, p.load_ratio));
+    if (end_factor)
+      for (const LoadedEnd& end : ruling.ends)
+      {
+        const std::optional<double> factor = (*end_factor)(end.interior_angle_rad);
+        if (!factor)
+        {
+          ++out.singular_ends;
+          continue;
+        }
+        const double p = *factor * fem_pressure(end.line_hertz_pa, std::clamp(end.load_ratio, range.lo, range.hi));
+        out.peak_pa = std::max(out.peak_pa, p);
+        points.emplace_back(end.face, p);
+      }
+    add_face_peaks(points, ruling.even, [](double p) { return p; }, sds_all, sds_even);
+    add_face_peaks(points, ruling.even, damage, fds_all, fds_even);
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &out.singular_ends, 1, MPI_UNSIGNED_LONG, MPI_SUM, comm);
+  MPI_Allreduce(MPI_IN_PLACE, &out.peak_pa, 1, MPI_DOUBLE, MPI_MAX, comm);
+  const bool finite = any && out.singular_ends == 0;
+  if (!finite)
+    out.peak_pa = 0;
+  out.sds = score_pair(comm, std::move(sds_all), std::move(sds_even), areas, finite);
+  out.fds = score_pair(comm, std::move(fds_all), std::move(fds_even), areas, finite);
+  return out;
 }
 
 /// Nodes of the table with stride `stride` that interpolation over [lo, hi] uses.
@@ -258,17 +339,22 @@ LoopSds loop_sds(MPI_Comm comm, const LoopSource& source, const oracle::RollingB
   {
     r.load_ratio_min = share.lambda_min;
     r.load_ratio_max = share.lambda_max;
+    const TableRange range{share.lambda_min, share.lambda_max};
     while (true)
     {
       table.cover(comm, tabulated(share.lambda_min), tabulated(share.lambda_max));
-      r.fem_rulings = fem_score(comm, share, table, 1, areas, true);
-      r.fem_half_table = fem_score(comm, share, table, 2, areas, true).value;
+      const EndAwareScores interior = fem_scores(comm, share, table, 1, areas, true, s, range, nullptr);
+      r.fem_rulings = interior.sds;
+      r.fem_fds_rulings = interior.fds;
+      r.fem_half_table = fem_scores(comm, share, table, 2, areas, true, s, range, nullptr).sds.value;
       if (std::abs(r.table_change()) < s.tolerance || 2 * table.nodes_per_decade() > s.max_nodes_per_decade)
         break;
       table.double_nodes();
     }
-    for (const std::vector<MappedPoint>& points : share.rulings)
-      for (const MappedPoint& p : points)
+    for (const EndFactor& factor : s.end_factors)
+      r.end_aware.push_back(fem_scores(comm, share, table, 1, areas, true, s, range, &factor));
+    for (const RulingSample& ruling : share.rulings)
+      for (const MappedPoint& p : ruling.points)
       {
         r.line_hertz_peak_pa = std::max(r.line_hertz_peak_pa, p.line_hertz_pa);
         r.fem_peak_pa = std::max(r.fem_peak_pa, p.line_hertz_pa * table.ratio(tabulated(p.load_ratio)));
@@ -280,6 +366,24 @@ LoopSds loop_sds(MPI_Comm comm, const LoopSource& source, const oracle::RollingB
     MPI_Allreduce(MPI_IN_PLACE, &r.points_below_table, 1, MPI_UNSIGNED_LONG, MPI_SUM, comm);
     MPI_Allreduce(MPI_IN_PLACE, &r.mapped_points, 1, MPI_UNSIGNED_LONG, MPI_SUM, comm);
     r.nodes_per_decade = table.nodes_per_decade();
+    r.loaded_end_angle_min_rad = std::numeric_limits<double>::infinity();
+    r.loaded_end_angle_max_rad = -r.loaded_end_angle_min_rad;
+    for (const RulingSample& ruling : share.rulings)
+    {
+      r.loaded_end_samples += !ruling.ends.empty();
+      r.loaded_ends += ruling.ends.size();
+      for (const LoadedEnd& end : ruling.ends)
+      {
+        r.loaded_end_angle_min_rad = std::min(r.loaded_end_angle_min_rad, end.interior_angle_rad);
+        r.loaded_end_angle_max_rad = std::max(r.loaded_end_angle_max_rad, end.interior_angle_rad);
+      }
+    }
+    MPI_Allreduce(MPI_IN_PLACE, &r.loaded_end_samples, 1, MPI_UNSIGNED_LONG, MPI_SUM, comm);
+    MPI_Allreduce(MPI_IN_PLACE, &r.loaded_ends, 1, MPI_UNSIGNED_LONG, MPI_SUM, comm);
+    MPI_Allreduce(MPI_IN_PLACE, &r.loaded_end_angle_min_rad, 1, MPI_DOUBLE, MPI_MIN, comm);
+    MPI_Allreduce(MPI_IN_PLACE, &r.loaded_end_angle_max_rad, 1, MPI_DOUBLE, MPI_MAX, comm);
+    if (r.loaded_ends == 0)
+      r.loaded_end_angle_min_rad = r.loaded_end_angle_max_rad = 0;
     const double lo = tabulated(share.lambda_min), hi = tabulated(share.lambda_max);
     r.fem_solves = nodes_used(table, lo, hi, 1, r.worst_refinement_change);
     r.fem_solves_half_table = nodes_used(table, lo, hi, 2, r.worst_refinement_change);
@@ -299,10 +403,16 @@ nlohmann::json to_json(const LoopSds& loop)
                           {"half_samples", json_number(c.half_samples)},
                           {"sample_change", json_number_or_null(c.sample_change())}};
   };
+  nlohmann::json end_aware = nlohmann::json::array();
+  for (const EndAwareScores& e : loop.end_aware)
+    end_aware.push_back({{"fem_sds", score(e.sds)},
+                         {"fem_fds", score(e.fds)},
+                         {"singular_ends", e.singular_ends},
+                         {"end_peak_pa", e.singular_ends > 0 ? nlohmann::json(nullptr) : json_number(e.peak_pa)}});
   nlohmann::json by_contact = nlohmann::json::object();
   for (const auto& [name, count] : loop.samples_by_contact)
     by_contact[name] = count;
-  return {{"samples", loop.samples},
+  nlohmann::json out = {{"samples", loop.samples},
           {"samples_by_contact", by_contact},
           {"singular_samples", loop.singular_samples},
           {"point_hertz_sds", score(loop.point_hertz)},
@@ -310,6 +420,11 @@ nlohmann::json to_json(const LoopSds& loop)
           {"fem_sds", score(loop.fem)},
           {"line_hertz_sds_rulings", score(loop.line_hertz_rulings)},
           {"fem_sds_rulings", score(loop.fem_rulings)},
+          {"fem_fds_rulings", score(loop.fem_fds_rulings)},
+          {"loaded_end_samples", loop.loaded_end_samples},
+          {"loaded_ends", loop.loaded_ends},
+          {"loaded_end_angle_min_deg", loop.loaded_end_angle_min_rad * 180 / std::numbers::pi},
+          {"loaded_end_angle_max_deg", loop.loaded_end_angle_max_rad * 180 / std::numbers::pi},
           {"fem_sds_half_table", json_number(loop.fem_half_table)},
           {"fem_sds_table_change", json_number_or_null(loop.table_change())},
           {"fem_solves", loop.fem_solves},
@@ -327,5 +442,8 @@ nlohmann::json to_json(const LoopSds& loop)
           {"converged", loop.converged()},
           {"status", loop.status()},
           {"samples_wall_s", json_number(loop.samples_wall_s)}};
+  if (!loop.end_aware.empty())
+    out["end_aware"] = end_aware;
+  return out;
 }
 } // namespace rollcheck::study

@@ -26,15 +26,30 @@
 // FEM scores singular: reported as such, with the scores over the rulings
 // beside them.
 //
+// FEM-FDS: the same FEM pressures as the preprint's FDS accumulates them
+// (contact/trajectory_scores.h): each face adds the Miner damage of the
+// amplitude p / 2 of its largest pressure (contact/fatigue.h), here at the
+// loop's own load F (set F to the fatigue load to score fatigue).
+//
+// End-aware FEM scores (study/rim_loop.h): a ruling sample whose load
+// reaches a rim (loaded_from = 0 or loaded_to = 1) has a loaded end there,
+// of interior angle 90 deg + the rim's lean (contact/rim_overhang.h). The
+// caller's end factor gives the end's pressure over the plane-strain FEM
+// pressure at the end (p_fem at the end's own load ratio, held inside the
+// table's range), and the face at the end adds it as one more point; a
+// factor of none marks a singular end, which makes those scores singular.
+//
 // Convergence, both reported: the samples (every sample against every other
 // one) and the FEM table (its nodes against every other node: K and 2K
 // solves); the table is refined, doubling its nodes per decade, until the
 // change is below `tolerance` or `max_nodes_per_decade` is reached.
 #include "contact/contact_locus.h"
+#include "contact/contact_parameters.h"
 #include "fem/slice_scaling.h"
 #include "oracle/contact_density.h"
 #include "oracle/rolling_body.h"
 #include <Eigen/Core>
+#include <functional>
 #include <map>
 #include <mpi.h>
 #include <nlohmann/json.hpp>
@@ -65,6 +80,10 @@ struct LoopSource
   std::string description;
 };
 
+/// A loaded rim end's pressure over the interior FEM's at the end, from the
+/// end's interior angle (rad); none: the end is singular.
+using EndFactor = std::function<std::optional<double>(double interior_angle_rad)>;
+
 struct LoopSdsSettings
 {
   double normal_load_n = 100.0;        ///< F, through the centre of mass (the preprint's)
@@ -73,6 +92,10 @@ struct LoopSdsSettings
   contact::LocusSettings locus;
   double tolerance = 0.01;             ///< relative change that counts as converged
   int max_nodes_per_decade = 64;       ///< the FEM table's refinement stops here
+  contact::FatigueParameters fatigue;  ///< FEM-FDS's S-N law (its load_n is not used: F is)
+  /// One set of end-aware scores per factor (e.g. an end table and its every
+  /// other node); none: no end-aware scores.
+  std::vector<EndFactor> end_factors;
 };
 
 /// An SDS over the loop's samples and over every other sample.
@@ -83,6 +106,14 @@ struct ConvergedScore
   double sample_change() const;        ///< value / half_samples - 1 (NaN if either is missing)
 };
 
+/// FEM-SDS and FEM-FDS of the ruling samples with their loaded ends' pressures.
+struct EndAwareScores
+{
+  ConvergedScore sds, fds;             ///< none when an end is singular
+  std::size_t singular_ends = 0;       ///< loaded ends the factor calls singular
+  double peak_pa = 0;                  ///< largest end pressure (0 when singular)
+};
+
 struct LoopSds
 {
   std::size_t samples = 0;
@@ -91,6 +122,12 @@ struct LoopSds
   ConvergedScore point_hertz;          ///< every sample
   ConvergedScore line_hertz, fem;      ///< every sample; none when a sample is singular
   ConvergedScore line_hertz_rulings, fem_rulings; ///< the ruling samples alone
+  ConvergedScore fem_fds_rulings;      ///< FEM-FDS of the ruling samples (interior only)
+  /// Ruling samples whose load reaches a rim, their loaded ends, and the
+  /// range of those ends' interior angles (rad).
+  std::size_t loaded_end_samples = 0, loaded_ends = 0;
+  double loaded_end_angle_min_rad = 0, loaded_end_angle_max_rad = 0;
+  std::vector<EndAwareScores> end_aware; ///< one per LoopSdsSettings::end_factors
   /// FEM-SDS (over the rulings) from the table with every other node: K solves.
   std::optional<double> fem_half_table;
   std::size_t fem_solves = 0;          ///< 2K: table nodes within the loop's range of lambda

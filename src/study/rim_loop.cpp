@@ -1,0 +1,319 @@
+// The rims over a body's rolling loop (study/rim_loop.h).
+#include "study/rim_loop.h"
+#include "contact/edge_on_elastic_block_exponent.h"
+#include "contact/wedge_exponent.h"
+#include "core/error.h"
+#include "core/json_number.h"
+#include "fem/petsc_session.h"
+#include "fem/slice_scaling.h"
+#include "oracle/contact_density.h"
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <numbers>
+#include <spdlog/spdlog.h>
+
+namespace rollcheck::study
+{
+namespace
+{
+constexpr double degree = std::numbers::pi / 180;
+/// The end model's range of interior angles (fem/rim_end_contact.h), 180 deg open.
+constexpr double smallest_modelled_angle = 60 * degree, largest_modelled_angle = 179.5 * degree;
+
+/// An exponent this close to 0 is not a singularity any refinement could show.
+constexpr double exponent_floor = 1e-6;
+
+double sharp_edge_exponent(const fem::RimEndSettings& end, double interior_angle_rad)
+{
+  return end.counter_face == fem::CounterFace::rigid
+             ? contact::edge_on_rigid_plane_exponent(interior_angle_rad)
+             : contact::edge_on_elastic_block_exponent(interior_angle_rad, end.youngs_modulus_pa, end.poisson_ratio,
+                                                       end.youngs_modulus_pa, end.poisson_ratio);
+}
+
+double median(std::vector<double> values)
+{
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+fem::RimEndSettings end_settings(const RimLoopSettings& s, double radius_m, double load_n_per_m, double angle_rad)
+{
+  fem::RimEndSettings e = s.end;
+  e.radius_m = radius_m;
+  e.load_n_per_m = load_n_per_m;
+  e.interior_angle_rad = std::clamp(angle_rad, smallest_modelled_angle, largest_modelled_angle);
+  e.youngs_modulus_pa = s.loop.youngs_modulus_pa;
+  e.poisson_ratio = s.loop.poisson_ratio;
+  e.xdmf_path.clear(); // one end's fields, not the loop's
+  return e;
+}
+
+/// The end models at every loaded end of the directly solved orientations.
+std::vector<RimLoopEnd> direct_ends(MPI_Comm comm, const RimLoopSettings& s, const FemSdsResult& interior)
+{
+  std::vector<RimLoopEnd> ends;
+  for (const FemSdsOrientation& r : interior.orientations)
+  {
+    if (!r.solved)
+      continue;
+    const oracle::Ruling& ruling = *r.locus.ruling;
+    for (const int end : {0, 1})
+    {
+      const bool loaded = end == 0 ? r.locus.loaded_from == 0 : r.locus.loaded_to == 1;
+      const double q = oracle::line_load(s.loop.normal_load_n, r.locus.centre_of_pressure, ruling.length_m, end);
+      if (!loaded || !(q > 0))
+        continue;
+      RimLoopEnd e;
+      e.orientation = r.index;
+      e.end = end;
+      e.interior_angle_rad = std::numbers::pi / 2 + r.rim_overhang_rad[static_cast<std::size_t>(end)];
+      const fem::RimEndSettings settings
+          = end_settings(s, end == 0 ? ruling.start_radius_m : ruling.end_radius_m, q, e.interior_angle_rad);
+      e.modelled_angle_rad = settings.interior_angle_rad;
+      e.study = fem::solve_rim_end(comm, settings);
+      e.interior_peak_pa = r.fem_peak_pa;
+      if (e.study.end_to_interior && e.study.resolved && !e.study.singular)
+        e.end_peak_pa = *e.study.end_to_interior * e.study.levels.back().far_peak_pa;
+      ends.push_back(std::move(e));
+    }
+  }
+  return ends;
+}
+
+/// Nodes evenly over [lo, hi], an odd number of them (every other one is a
+/// table too), at most `step` apart; one where the range is a point.
+std::vector<double> table_angles(double lo, double hi, double step)
+{
+  if (!(hi - lo > 1e-9))
+    return {lo};
+  const int halves = std::max(1, static_cast<int>(std::ceil((hi - lo) / (2 * step))));
+  std::vector<double> angles;
+  for (int k = 0; k <= 2 * halves; ++k)
+    angles.push_back(lo + (hi - lo) * k / (2 * halves));
+  return angles;
+}
+} // namespace
+
+double singular_from_angle(const fem::RimEndSettings& end)
+{
+  if (end.edge_radius_m > 0)
+    return std::numbers::pi;
+  auto singular = [&](double a) { return sharp_edge_exponent(end, a) < -exponent_floor; };
+  double lo = smallest_modelled_angle, hi = largest_modelled_angle;
+  if (singular(lo))
+    return lo;
+  if (!singular(hi))
+    return std::numbers::pi;
+  while (hi - lo > 1e-10)
+  {
+    const double mid = 0.5 * (lo + hi);
+    (singular(mid) ? hi : lo) = mid;
+  }
+  return hi;
+}
+
+std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, int stride, double singular_from_rad,
+                                      double interior_angle_rad)
+{
+  if (interior_angle_rad > singular_from_rad)
+    return std::nullopt;
+  std::vector<const EndTableNode*> nodes;
+  for (std::size_t k = 0; k < table.size(); k += static_cast<std::size_t>(stride))
+    nodes.push_back(&table[k]);
+  if (nodes.empty())
+    throw ComputationError("rim loop: a non-singular loaded end, but the end table is empty");
+  auto ratio = [](const EndTableNode* n) {
+    if (!n->study.end_to_interior)
+      throw ComputationError(fmt::format("rim loop: the end table's node at {:.2f} deg has no end/interior ratio "
+                                         "(its rounded edge is not resolved)",
+                                         n->interior_angle_rad / degree));
+    return *n->study.end_to_interior;
+  };
+  if (interior_angle_rad <= nodes.front()->interior_angle_rad)
+    return ratio(nodes.front());
+  if (interior_angle_rad >= nodes.back()->interior_angle_rad)
+    return ratio(nodes.back());
+  const auto upper = std::upper_bound(nodes.begin(), nodes.end(), interior_angle_rad,
+                                      [](double a, const EndTableNode* n) { return a < n->interior_angle_rad; });
+  const EndTableNode *right = *upper, *left = *(upper - 1);
+  const double t = (interior_angle_rad - left->interior_angle_rad) / (right->interior_angle_rad - left->interior_angle_rad);
+  return (1 - t) * ratio(left) + t * ratio(right);
+}
+
+std::optional<double> RimLoopResult::worst_end_to_interior() const
+{
+  std::optional<double> worst;
+  for (const RimLoopEnd& e : ends)
+    if (e.end_peak_pa)
+      worst = std::max(worst.value_or(0.0), *e.end_peak_pa / e.interior_peak_pa);
+  return worst;
+}
+
+std::string RimLoopResult::end_aware_status() const
+{
+  if (loop.loaded_ends == 0)
+    return "no sample of the loop loads a rim end";
+  if (loop.end_aware.empty())
+    return "not computed";
+  const EndAwareScores& all = loop.end_aware[0];
+  if (all.singular_ends > 0)
+    return fmt::format("singular: {} of the loop's {} loaded rim ends have a sharp edge of interior angle above "
+                       "{:.2f} deg",
+                       all.singular_ends, loop.loaded_ends, singular_from_rad / degree);
+  const double tolerance = fem_sds.loop.tolerance;
+  std::vector<std::string> why;
+  if (!table_converged)
+    why.push_back("a node of the end table did not converge");
+  if (table_vs_direct && *table_vs_direct > end_setup.tolerance)
+    why.push_back(
+        fmt::format("the end table differs from the direct end models by {:.1f} %", 100 * *table_vs_direct));
+  if (std::abs(all.sds.sample_change()) >= tolerance)
+    why.push_back(fmt::format("halving the samples changes it by {:+.2f} %", 100 * all.sds.sample_change()));
+  if (loop.end_aware.size() > 1 && all.sds.value && loop.end_aware[1].sds.value)
+    if (const double change = *all.sds.value / *loop.end_aware[1].sds.value - 1; std::abs(change) >= tolerance)
+      why.push_back(fmt::format("halving the end table's nodes changes it by {:+.2f} %", 100 * change));
+  if (!loop.converged())
+    why.push_back("the interior FEM-SDS is not converged");
+  if (why.empty())
+    return "converged";
+  std::string text = "not converged:";
+  for (std::size_t i = 0; i < why.size(); ++i)
+    text += (i ? "; " : " ") + why[i];
+  return text;
+}
+
+RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& s)
+{
+  if (!(s.end_table_step_rad > 0) || !std::isfinite(s.end_table_step_rad))
+    throw InputError(fmt::format("rim --body: end_table_step_deg must be positive and finite, got {}",
+                                 s.end_table_step_rad / degree));
+  const auto start = std::chrono::steady_clock::now();
+  fem::ensure_petsc();
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  RimLoopResult result;
+  fem::SliceScaling slices(slice_settings(s.loop), s.loop.table_nodes_per_decade);
+  result.fem_sds = run_fem_sds(comm, s.loop, slices);
+  result.ends = direct_ends(comm, s, result.fem_sds);
+  result.end_setup = end_settings(s, s.end.radius_m, s.end.load_n_per_m, s.end.interior_angle_rad);
+  result.singular_from_rad = singular_from_angle(result.end_setup);
+
+  const LoopSds& interior = result.fem_sds.loop;
+  const double lo = std::max(interior.loaded_end_angle_min_rad, smallest_modelled_angle);
+  const double hi = std::min({interior.loaded_end_angle_max_rad, result.singular_from_rad, largest_modelled_angle});
+  std::vector<EndFactor> factors;
+  if (interior.loaded_ends > 0 && lo <= hi)
+  {
+    if (result.ends.empty())
+      throw InputError(fmt::format("rim --body: the loop loads {} rim ends, but none of the {} orientations solved "
+                                   "directly does; raise orientations",
+                                   interior.loaded_ends, s.loop.orientations));
+    std::vector<double> loads, radii;
+    for (const RimLoopEnd& e : result.ends)
+    {
+      loads.push_back(e.study.setup.load_n_per_m);
+      radii.push_back(e.study.setup.radius_m);
+    }
+    result.reference_load_n_per_m = median(loads);
+    result.reference_radius_m = median(radii);
+    for (const double angle : table_angles(lo, hi, s.end_table_step_rad))
+    {
+      EndTableNode node{angle, fem::solve_rim_end(
+                                   comm, end_settings(s, result.reference_radius_m, result.reference_load_n_per_m, angle))};
+      result.table_converged = result.table_converged && node.study.converged;
+      if (rank == 0)
+        spdlog::info("rim loop: end table at {:.2f} deg: end/interior {} ({})", angle / degree,
+                     node.study.end_to_interior ? fmt::format("{:.4f}", *node.study.end_to_interior) : "none",
+                     node.study.converged ? "converged" : "NOT converged");
+      result.table.push_back(std::move(node));
+    }
+    for (RimLoopEnd& e : result.ends)
+    {
+      e.table_ratio = end_table_ratio(result.table, 1, result.singular_from_rad, e.modelled_angle_rad);
+      if (e.table_ratio && e.study.end_to_interior && e.study.resolved && !e.study.singular)
+        result.table_vs_direct = std::max(result.table_vs_direct.value_or(0.0),
+                                          std::abs(*e.table_ratio / *e.study.end_to_interior - 1));
+    }
+    const double singular_from = result.singular_from_rad;
+    for (const int stride : {1, 2})
+      if (stride == 1 || result.table.size() >= 3)
+        factors.push_back([table = result.table, stride, singular_from](double angle) {
+          return end_table_ratio(table, stride, singular_from,
+                                 std::clamp(angle, smallest_modelled_angle, largest_modelled_angle));
+        });
+  }
+  else if (interior.loaded_ends > 0)
+    factors.push_back([](double) { return std::optional<double>(); }); // every loaded end singular
+  result.loop = score_body_loop(comm, s.loop, slices, std::move(factors)).loop;
+  result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+nlohmann::json to_json(const RimLoopResult& r)
+{
+  auto end_json = [](const fem::RimEndStudy& study) {
+    return nlohmann::json{{"load_n_per_m", study.setup.load_n_per_m},
+                          {"sheet_radius_m", study.setup.radius_m},
+                          {"half_width_m", study.half_width_m},
+                          {"hertz_peak_pa", study.hertz_peak_pa},
+                          {"singular", study.singular},
+                          {"wedge_exponent", study.wedge_exponent},
+                          {"measured_exponent", json_number(study.measured_exponent)},
+                          {"end_to_interior", study.singular || !study.resolved ? nlohmann::json(nullptr)
+                                                                                : json_number(study.end_to_interior)},
+                          {"end_change", json_number(study.end_change)},
+                          {"resolved", study.resolved},
+                          {"converged", study.converged},
+                          {"plane_strain_change", study.plane_strain_change},
+                          {"wall_s", [&] {
+                             double total = 0;
+                             for (const fem::RimEndLevel& l : study.levels)
+                               total += l.wall_s;
+                             return total;
+                           }()}};
+  };
+  nlohmann::json ends = nlohmann::json::array();
+  for (const RimLoopEnd& e : r.ends)
+  {
+    nlohmann::json j = end_json(e.study);
+    j["orientation"] = e.orientation;
+    j["end"] = e.end == 0 ? "start" : "end";
+    j["interior_angle_deg"] = e.interior_angle_rad / degree;
+    j["modelled_angle_deg"] = e.modelled_angle_rad / degree;
+    j["interior_peak_pa"] = e.interior_peak_pa;
+    j["end_peak_pa"] = json_number(e.end_peak_pa);
+    j["end_peak_over_interior_peak"]
+        = e.end_peak_pa ? json_number(*e.end_peak_pa / e.interior_peak_pa) : nlohmann::json(nullptr);
+    j["table_ratio"] = json_number(e.table_ratio);
+    ends.push_back(std::move(j));
+  }
+  nlohmann::json table = nlohmann::json::array();
+  for (const EndTableNode& n : r.table)
+  {
+    nlohmann::json j = end_json(n.study);
+    j["interior_angle_deg"] = n.interior_angle_rad / degree;
+    table.push_back(std::move(j));
+  }
+  const fem::RimEndSettings& setup = r.end_setup;
+  return {{"body", r.fem_sds.body},
+          {"loop", r.fem_sds.source},
+          {"counter_face", setup.counter_face == fem::CounterFace::rigid ? "rigid" : "steel"},
+          {"edge_radius_m", setup.edge_radius_m},
+          {"singular_from_deg", r.singular_from_rad / degree},
+          {"ends", ends},
+          {"worst_end_to_interior", json_number(r.worst_end_to_interior())},
+          {"end_table", table},
+          {"end_table_load_n_per_m", r.reference_load_n_per_m},
+          {"end_table_sheet_radius_m", r.reference_radius_m},
+          {"end_table_converged", r.table_converged},
+          {"end_table_vs_direct", json_number(r.table_vs_direct)},
+          {"end_aware_status", r.end_aware_status()},
+          {"loop_scores", to_json(r.loop)},
+          {"interior", to_json(r.fem_sds)},
+          {"wall_s", r.wall_s}};
+}
+} // namespace rollcheck::study

@@ -1,0 +1,111 @@
+#pragma once
+// The rims over a body's rolling loop (issue 14; docs/rims.md): the 3D end
+// model (fem/rim_end_contact.h) at every loaded ruling end of the
+// orientations fem-sds solves directly, and FEM-SDS and FEM-FDS over every
+// sample of the loop with the ends' pressures in them (study/loop_sds.h).
+//
+// A ruling end is loaded where the contact's load reaches a rim; its interior
+// angle is 90 deg + the rim's lean (contact/rim_overhang.h). At each such end
+// of the K orientations the end model runs at the end's own line load q and
+// radius R across the ruling: a sharp edge is singular (the wedge's exponent
+// below 0: a > 90 deg on the rigid plane, a > 77.45 deg on a steel block) or
+// has a converged end/interior ratio; a rounded edge has a converged ratio
+// when its boundary layer is resolved (fem/rim_end_contact.h).
+//
+// Over the whole loop the end's pressure is taken as the end/interior ratio
+// times the FEM pressure at the end. The ratio comes from a table over the
+// interior angle: end models at evenly spaced angles across the loop's range
+// (at the median q and R of the directly modelled ends), interpolated
+// linearly. The table is a reduction (the ratio depends on the angle and, for
+// a rounded edge, on r_e / b, which varies with q and R) and is checked
+// twice: against the direct end models at their own q and R
+// (`table_vs_direct`), and by the end-aware scores from every other node of
+// the table (the change when the table's nodes halve). A sharp edge's
+// singular ends make the end-aware scores singular: reported as such, with
+// the number of loaded ends that are.
+#include "fem/rim_end_contact.h"
+#include "study/fem_sds.h"
+#include <cstddef>
+#include <mpi.h>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <optional>
+#include <vector>
+
+namespace rollcheck::study
+{
+struct RimLoopSettings
+{
+  /// The body, its loop, the K orientations solved directly (6: the ends
+  /// of 12 loaded rulings), F and the material (which the end models share).
+  FemSdsSettings loop = [] {
+    FemSdsSettings s;
+    s.orientations = 6;
+    return s;
+  }();
+  /// The end models: counter-face, edge radius, mesh levels, tolerance. Their
+  /// radius, line load, interior angle and material are set per end.
+  fem::RimEndSettings end;
+  /// Largest spacing of the end table's nodes over the interior angle.
+  double end_table_step_rad = 10 * std::numbers::pi / 180;
+};
+
+/// One loaded ruling end of a directly solved orientation.
+struct RimLoopEnd
+{
+  std::size_t orientation = 0;       ///< FemSdsOrientation::index
+  int end = 0;                       ///< 0 the ruling's start, 1 its end
+  double interior_angle_rad = 0;     ///< 90 deg + the rim's lean
+  double modelled_angle_rad = 0;     ///< within the end model's [60, 179.5] deg
+  fem::RimEndStudy study;            ///< at the end's q and R
+  double interior_peak_pa = 0;       ///< the orientation's FEM peak along the ruling (slices)
+  /// end_to_interior times the end model's interior pressure (none: singular or not converged).
+  std::optional<double> end_peak_pa;
+  std::optional<double> table_ratio; ///< the end table's ratio at this angle (none: singular)
+};
+
+struct EndTableNode
+{
+  double interior_angle_rad = 0;
+  fem::RimEndStudy study;
+};
+
+struct RimLoopResult
+{
+  fem::RimEndSettings end_setup;     ///< the settings' end models (counter-face, edge, material)
+  FemSdsResult fem_sds;              ///< the interior: loop scores and the K orientations
+  std::vector<RimLoopEnd> ends;
+  double reference_load_n_per_m = 0, reference_radius_m = 0; ///< of the end table
+  /// Interior angles above this are singular (a sharp edge; pi when rounded).
+  double singular_from_rad = 0;
+  std::vector<EndTableNode> table;   ///< over the loop's non-singular loaded ends' angles
+  /// Largest |table / direct - 1| of the end/interior ratio over the direct ends with one.
+  std::optional<double> table_vs_direct;
+  bool table_converged = true;       ///< every node's end model converged
+  /// The loop's scores with the ends: [0] the table, [1] every other node
+  /// (absent with fewer than 3 nodes).
+  LoopSds loop;
+  double wall_s = 0;
+
+  /// Largest end/interior peak over the directly modelled ends that have one.
+  std::optional<double> worst_end_to_interior() const;
+  /// In words: singular, converged, or not converged and why.
+  std::string end_aware_status() const;
+};
+
+/// Collective on `comm` (every rank gets the result). InputError naming the
+/// setting for bad settings; ComputationError from the FEM.
+RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings);
+
+/// The table's end/interior ratio at `interior_angle_rad`, interpolating
+/// linearly between the nodes `stride` apart (held at the ends); none when
+/// the angle lies above `singular_from_rad`.
+std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, int stride, double singular_from_rad,
+                                      double interior_angle_rad);
+
+/// The smallest interior angle whose sharp edge is singular against the
+/// counter-face (bisection on the wedge exponent), pi when none is.
+double singular_from_angle(const fem::RimEndSettings& end);
+
+nlohmann::json to_json(const RimLoopResult& result);
+} // namespace rollcheck::study
