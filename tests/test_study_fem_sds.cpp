@@ -11,6 +11,7 @@
 // meet the closed form of the uniformly loaded generator,
 // p0 = sqrt((F / L) E* / (pi R)) (K. L. Johnson, "Contact Mechanics", 1985,
 // eq. 4.45), to the accuracy of tests/test_slice_contact.cpp.
+#include "fem/slice_scaling.h"
 #include "core/error.h"
 #include "geometry/body.h"
 #include "geometry/face_areas.h"
@@ -142,4 +143,52 @@ TEST(FemSds, CylinderLoopMeetsEvenContactOfItsSideAndItsSlicesMeetLineHertz)
   EXPECT_EQ(j.at("per_orientation").at(1).at("fem_peak_pa").get<double>(), result.orientations[1].fem_peak_pa);
   EXPECT_EQ(j.at("per_orientation").at(0).at("slices").size(), 3u);
   EXPECT_EQ(j.at("fem_solves").get<std::size_t>(), loop.fem_solves);
+}
+
+TEST(FemSds, CylinderEndAwareScoresFollowTheEndFactor)
+{
+  study::FemSdsSettings settings; // rolling oracle, r = 1 m, height 2 m, steel
+  settings.body.body = "cylinder";
+  settings.samples_per_loop = 512;
+  // p0 = 0.84 GPa: stress amplitudes p / 2 above the endurance limit (250 MPa), so FEM-FDS is finite.
+  settings.normal_load_n = 2e7;
+  fem::SliceScaling table(study::slice_settings(settings), settings.table_nodes_per_decade);
+  const std::vector<study::EndFactor> factors = {
+      [](double) { return std::optional<double>(0.27); }, // about the square end's on the rigid plane
+      [](double) { return std::optional<double>(1.0); },
+      [](double) { return std::optional<double>(2.0); },
+      [](double) { return std::optional<double>(); }};   // singular
+  const study::LoopSds loop = study::score_body_loop(MPI_COMM_WORLD, settings, table, factors).loop;
+
+  // Every sample stands on a generator running rim to rim: two square ends.
+  EXPECT_EQ(loop.loaded_end_samples, loop.samples);
+  EXPECT_EQ(loop.loaded_ends, 2 * loop.samples);
+  EXPECT_NEAR(loop.loaded_end_angle_min_rad, std::numbers::pi / 2, 1e-9);
+  EXPECT_NEAR(loop.loaded_end_angle_max_rad, std::numbers::pi / 2, 1e-9);
+
+  // One pressure along every generator: each face's damage is d(p) times
+  // its contacts, its pressure p times them, so FEM-FDS equals FEM-SDS.
+  ASSERT_TRUE(loop.fem_rulings.value && loop.fem_fds_rulings.value);
+  EXPECT_NEAR(*loop.fem_fds_rulings.value / *loop.fem_rulings.value, 1.0, 1e-12);
+  // So with ends at the interior's pressure (a factor 1); the face at a rim
+  // adds its sample even where no mapping point fell on it.
+  ASSERT_EQ(loop.end_aware.size(), 4u);
+  ASSERT_TRUE(loop.end_aware[1].sds.value && loop.end_aware[1].fds.value);
+  EXPECT_NEAR(*loop.end_aware[1].fds.value / *loop.end_aware[1].sds.value, 1.0, 1e-12);
+  // The largest end pressure is the factor times the interior's.
+  for (const auto& [k, factor] : {std::pair{0, 0.27}, std::pair{1, 1.0}, std::pair{2, 2.0}})
+  {
+    EXPECT_NEAR(loop.end_aware[k].peak_pa / loop.fem_peak_pa, factor, 1e-9);
+    EXPECT_EQ(loop.end_aware[k].singular_ends, 0u);
+  }
+  // Each side quad's two triangles hold the two ends of every generator
+  // crossing it, so ends at twice the interior's pressure give every face 2 p
+  // in each of its samples: the scores of a factor 1, and the peak doubled.
+  ASSERT_TRUE(loop.end_aware[2].sds.value);
+  EXPECT_NEAR(*loop.end_aware[2].sds.value / *loop.end_aware[1].sds.value, 1.0, 1e-12);
+  // Singular ends: no scores, every loaded end counted.
+  EXPECT_FALSE(loop.end_aware[3].sds.value.has_value());
+  EXPECT_FALSE(loop.end_aware[3].fds.value.has_value());
+  EXPECT_EQ(loop.end_aware[3].singular_ends, loop.loaded_ends);
+  EXPECT_EQ(loop.end_aware[3].peak_pa, 0.0);
 }

@@ -413,6 +413,7 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScali
 BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScaling& table,
                          std::vector<EndFactor> end_factors)
 {
+  fem::ensure_petsc(); // MPI too
   const Scene scene = make_scene(s, true);
   BodyLoop r;
   r.body = geometry::body_label(s.body);

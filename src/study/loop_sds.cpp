@@ -112,7 +112,9 @@ RulingSample map_ruling(std::span<const oracle::Circle> circles, const contact::
     if (!(end == 0 ? start_loaded : end_loaded))
       continue;
     const double f = end;
-    const double fractions[1] = {f};
+    // The face of the sheet at the end, not of the face beyond the rim
+    // (the cylinder's flat cap) that shares the rim point.
+    const double fractions[1] = {end == 0 ? 1e-9 : 1 - 1e-9};
     sample.ends.push_back(
         {contact::faces_along_ruling(cones, locus, fractions)[0],
          line_hertz_peak(s.normal_load_n, locus.centre_of_pressure, ruling, effective_modulus_pa, f),

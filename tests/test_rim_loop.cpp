@@ -1,0 +1,86 @@
+// The rim loop's own arithmetic (study/rim_loop.h): where a sharp edge turns
+// singular against each counter-face, and the end table's interpolation. The
+// FEM behind them is tested in test_rim_end_contact and tests/cli/rim.sh.
+#include "contact/edge_on_elastic_block_exponent.h"
+#include "contact/wedge_exponent.h"
+#include "core/error.h"
+#include "study/rim_loop.h"
+#include <gtest/gtest.h>
+#include <numbers>
+
+using namespace rollcheck;
+
+namespace
+{
+constexpr double degree = std::numbers::pi / 180;
+
+study::EndTableNode node(double angle_deg, std::optional<double> end_to_interior)
+{
+  study::EndTableNode n;
+  n.interior_angle_rad = angle_deg * degree;
+  n.study.end_to_interior = end_to_interior;
+  return n;
+}
+} // namespace
+
+TEST(RimLoop, SharpEdgeOnTheRigidPlaneTurnsSingularAtTheSquareEnd)
+{
+  fem::RimEndSettings end;
+  const double from = study::singular_from_angle(end);
+  // Williams: the mirrored wedge 2a is singular beyond 180 deg.
+  EXPECT_NEAR(from / degree, 90.0, 1e-3);
+  EXPECT_LT(contact::edge_on_rigid_plane_exponent(from + 0.01 * degree), 0);
+  EXPECT_GE(contact::edge_on_rigid_plane_exponent(from - 0.01 * degree), 0);
+}
+
+TEST(RimLoop, SharpEdgeOnSteelTurnsSingularBelowTheSquareEnd)
+{
+  fem::RimEndSettings end;
+  end.counter_face = fem::CounterFace::block;
+  const double from = study::singular_from_angle(end);
+  // docs/rims.md: for steel on steel from 77.45 deg (the square end: -0.226).
+  EXPECT_NEAR(from / degree, 77.45, 0.01);
+  const double E = end.youngs_modulus_pa, nu = end.poisson_ratio;
+  EXPECT_LT(contact::edge_on_elastic_block_exponent(from + 0.01 * degree, E, nu, E, nu), 0);
+  EXPECT_GE(contact::edge_on_elastic_block_exponent(from - 0.01 * degree, E, nu, E, nu), 0);
+}
+
+TEST(RimLoop, RoundedEdgeIsNeverSingular)
+{
+  fem::RimEndSettings end;
+  end.edge_radius_m = 1e-4;
+  EXPECT_EQ(study::singular_from_angle(end), std::numbers::pi);
+}
+
+TEST(RimLoop, EndTableInterpolatesLinearlyAndHoldsItsEnds)
+{
+  // A ratio linear in the angle, 0.2 + 0.01 (a - 90 deg): interpolation is exact.
+  const std::vector<study::EndTableNode> table
+      = {node(90, 0.2), node(100, 0.3), node(110, 0.4), node(120, 0.5), node(130, 0.6)};
+  const double singular_from = std::numbers::pi;
+  EXPECT_NEAR(*study::end_table_ratio(table, 1, singular_from, 105 * degree), 0.35, 1e-12);
+  EXPECT_NEAR(*study::end_table_ratio(table, 2, singular_from, 105 * degree), 0.35, 1e-12);
+  EXPECT_NEAR(*study::end_table_ratio(table, 1, singular_from, 80 * degree), 0.2, 1e-12);
+  EXPECT_NEAR(*study::end_table_ratio(table, 1, singular_from, 140 * degree), 0.6, 1e-12);
+}
+
+TEST(RimLoop, EveryOtherNodeSeesOnlyItsOwnNodes)
+{
+  // A kink at 100 deg that the table of every other node (90, 110) cannot see.
+  const std::vector<study::EndTableNode> table = {node(90, 0.2), node(100, 1.0), node(110, 0.2)};
+  EXPECT_NEAR(*study::end_table_ratio(table, 1, std::numbers::pi, 100 * degree), 1.0, 1e-12);
+  EXPECT_NEAR(*study::end_table_ratio(table, 2, std::numbers::pi, 100 * degree), 0.2, 1e-12);
+}
+
+TEST(RimLoop, AboveTheSingularAngleThereIsNoRatio)
+{
+  const std::vector<study::EndTableNode> table = {node(80, 0.1), node(90, 0.27)};
+  EXPECT_FALSE(study::end_table_ratio(table, 1, 90 * degree, 90.5 * degree).has_value());
+  EXPECT_TRUE(study::end_table_ratio(table, 1, 90 * degree, 90 * degree).has_value());
+}
+
+TEST(RimLoop, ANodeWithoutARatioIsAnError)
+{
+  const std::vector<study::EndTableNode> table = {node(90, 0.2), node(100, std::nullopt)};
+  EXPECT_THROW(study::end_table_ratio(table, 1, std::numbers::pi, 99 * degree), ComputationError);
+}
