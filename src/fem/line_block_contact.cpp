@@ -30,17 +30,13 @@ LineBlockResult solve_line_block(MPI_Comm comm, const LineBlockSettings& s)
   problem.set_penalty_scale([](const double*) { return 0.0; }); // no rigid plane
   problem.set_approach_profile([](const double* x) { return x[1] > 0 ? 1.0 : 0.0; });
   std::vector<NodePair> pairs = interface_node_pairs(problem, 1e-9 * W);
-  std::vector<double> along, area;
   for (NodePair& pair : pairs)
   {
-    const double x = problem.dof_coordinates()[3 * pair.upper];
-    area.push_back(pair.area_m2);
-    pair.initial_gap_m = x * x / (2 * s.radius_m);
+    pair.initial_gap_m = pair.x[0] * pair.x[0] / (2 * s.radius_m);
     pair.stiffness_pa_per_m = s.penalty_c * s.youngs_modulus_pa / h_c;
-    along.push_back(x);
   }
-  r.pairs = static_cast<int>(pairs.size());
   problem.set_node_pairs(std::move(pairs));
+  r.pairs = static_cast<int>(gather_pair_pressures(problem).size());
   r.dofs = problem.num_dofs();
   // Start: the profile's height at b as the shift, plus a line contact's approach.
   const double shift = 0.5 * b * b / s.radius_m;
@@ -48,22 +44,20 @@ LineBlockResult solve_line_block(MPI_Comm comm, const LineBlockSettings& s)
   // The force the pairs carry (both bodies' faces are "top" faces, whose
   // reactions cancel), both halves.
   auto pair_force = [&] {
-    const std::vector<double> p = problem.pair_pressures_pa();
     double force = 0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      force += p[i] * area[i];
+    for (const PairPressure& pair : gather_pair_pressures(problem))
+      force += pair.pressure_pa * pair.area_m2;
     return force * scene.symmetry_multiplicity;
   };
   const LoadControlReport load = reach_force(problem, s.load_n_per_m, shift + line.approach_m, shift, line.exponent,
                                              1e-6, spdlog::level::debug, pair_force);
   r.force_n_per_m = load.force;
-  const std::vector<double> pressure = problem.pair_pressures_pa();
   std::vector<SurfaceNode> nodes;
   double peak = 0;
-  for (std::size_t i = 0; i < pressure.size(); ++i)
+  for (const PairPressure& pair : gather_pair_pressures(problem))
   {
-    nodes.push_back({along[i], pressure[i], 0.0});
-    peak = std::max(peak, pressure[i]);
+    nodes.push_back({pair.x[0], pair.pressure_pa, 0.0});
+    peak = std::max(peak, pair.pressure_pa);
   }
   const ProfileFit fit = fit_hertz_profile(nodes, peak);
   if (fit.nodes_used < 2)

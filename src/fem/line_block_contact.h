@@ -36,6 +36,6 @@ struct LineBlockResult
   double wall_s = 0;
 };
 
-/// One process (the node pairs): InputError on a larger communicator.
+/// Collective over `comm` (pairs across processes); every process gets the result.
 LineBlockResult solve_line_block(MPI_Comm comm, const LineBlockSettings& settings);
 } // namespace rollcheck::fem

@@ -1,17 +1,22 @@
 #include "fem/penalty_contact.h"
 #include "core/error.h"
+#include "fem/all_gather.h"
 #include "fem/nodal_fields.h"
+#include <algorithm>
 #include <chrono>
 #include <map>
 #include <cmath>
 #include <dolfinx/fem/assembler.h>
 #include <dolfinx/fem/petsc.h>
+#include <dolfinx/fem/sparsitybuild.h>
+#include <dolfinx/la/SparsityPattern.h>
 #include <dolfinx/fem/utils.h>
 #include <dolfinx/la/petsc.h>
 #include <dolfinx/mesh/MeshTags.h>
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <sstream>
+#include <unordered_map>
 #include <xtensor/xarray.hpp>
 #include <xtensor/xtensor.hpp>
 
@@ -190,6 +195,7 @@ PenaltyContact::PenaltyContact(const SceneMesh& scene, Model model, int degree, 
       _top_z_dofs.push_back(b * bs + _z_component);
   _bcs.push_back(std::make_shared<const dfem::DirichletBC<T>>(
       std::shared_ptr<const dfem::Function<T>>(_top_displacement), _top_blocks));
+  _pair_map = _V->dofmap()->index_map;
 
   // Linear solver.
   _A = dfem::petsc::create_matrix(*_jacobian, "aij");
@@ -278,16 +284,27 @@ void PenaltyContact::assemble_residual(dolfinx::la::Vector<T>& b) const
   std::span<T> array = b.mutable_array();
   std::fill(array.begin(), array.end(), 0.0);
   dolfinx::fem::assemble_vector<T>(array, *_residual);
+  add_pair_forces(array);
+  b.scatter_rev(std::plus<T>());
+  // The state satisfies the Dirichlet conditions, so the increment is zero
+  // there (b may be longer than u by the pairs' extra ghosts).
+  std::span<const T> u = _u->x()->array();
+  dolfinx::fem::set_bc<T>(array.first(u.size()), _bcs, u, -1.0);
+}
+
+void PenaltyContact::add_pair_forces(std::span<T> b) const
+{
+  // Pi = kappa <-g>_+^2 A / 2: dPi/du_up = -p A, dPi/du_low_i = w_i p A.
   const int bs = _V->dofmap()->index_map_bs();
   const std::vector<double> pressure = pair_pressures_pa();
   for (std::size_t i = 0; i < _pairs.size(); ++i)
   {
-    array[_pairs[i].upper * bs + _z_component] -= pressure[i] * _pairs[i].area_m2;
-    array[_pairs[i].lower * bs + _z_component] += pressure[i] * _pairs[i].area_m2;
+    const double force = pressure[i] * _pairs[i].area_m2;
+    b[_pair_blocks[i].upper * bs + _z_component] -= force;
+    for (int k = 0; k < 3; ++k)
+      if (_pair_blocks[i].lower[k] >= 0)
+        b[_pair_blocks[i].lower[k] * bs + _z_component] += _pairs[i].weights[k] * force;
   }
-  b.scatter_rev(std::plus<T>());
-  // The state satisfies the Dirichlet conditions, so the increment is zero there.
-  dolfinx::fem::set_bc<T>(array, _bcs, _u->x()->array(), -1.0);
 }
 
 void PenaltyContact::assemble_jacobian()
@@ -298,12 +315,27 @@ void PenaltyContact::assemble_jacobian()
   const std::vector<double> pressure = pair_pressures_pa();
   // Every pair's entries, zero where open: the first final assembly freezes
   // the matrix's nonzero structure to the entries set so far.
+  // d2Pi/du du = kappa A (dg/du)(dg/du)^T where penetrating, dg/du_up = 1,
+  // dg/du_low_i = -w_i; rows another process owns go to it at assembly.
   for (std::size_t i = 0; i < _pairs.size(); ++i)
   {
-    const PetscInt rows[2] = {_pairs[i].upper * bs + _z_component, _pairs[i].lower * bs + _z_component};
+    PetscInt rows[4];
+    double dg[4];
+    int m = 0;
+    rows[m] = _pair_blocks[i].upper * bs + _z_component;
+    dg[m++] = 1.0;
+    for (int k = 0; k < 3; ++k)
+      if (_pair_blocks[i].lower[k] >= 0)
+      {
+        rows[m] = _pair_blocks[i].lower[k] * bs + _z_component;
+        dg[m++] = -_pairs[i].weights[k];
+      }
     const double k = pressure[i] > 0 ? _pairs[i].stiffness_pa_per_m * _pairs[i].area_m2 : 0.0;
-    const PetscScalar values[4] = {k, -k, -k, k};
-    MatSetValuesLocal(_A, 2, rows, 2, rows, values, ADD_VALUES);
+    PetscScalar values[16];
+    for (int r = 0; r < m; ++r)
+      for (int c = 0; c < m; ++c)
+        values[r * m + c] = k * dg[r] * dg[c];
+    MatSetValuesLocal(_A, m, rows, m, rows, values, ADD_VALUES);
   }
   MatAssemblyBegin(_A, MAT_FLUSH_ASSEMBLY);
   MatAssemblyEnd(_A, MAT_FLUSH_ASSEMBLY);
@@ -328,7 +360,8 @@ NewtonReport PenaltyContact::solve()
   NewtonReport report;
   const auto map = _V->dofmap()->index_map;
   const int bs = _V->dofmap()->index_map_bs();
-  dolfinx::la::Vector<T> b(map, bs), du(map, bs);
+  // On the pairs' map: their forces on other processes' blocks travel in its reverse scatter.
+  dolfinx::la::Vector<T> b(_pair_map, bs), du(_pair_map, bs);
   Vec b_petsc = dolfinx::la::petsc::create_vector_wrap(b);
   Vec du_petsc = dolfinx::la::petsc::create_vector_wrap(du);
   std::vector<T> u_before;
@@ -408,17 +441,10 @@ double PenaltyContact::reaction_force_n() const
   // The residual without Dirichlet rows is the internal force; at the top
   // face it is the force the loading plate exerts, equal and opposite to the
   // contact force in equilibrium.
-  const auto map = _V->dofmap()->index_map;
-  dolfinx::la::Vector<T> b(map, _V->dofmap()->index_map_bs());
+  dolfinx::la::Vector<T> b(_pair_map, _V->dofmap()->index_map_bs());
   std::span<T> array = b.mutable_array();
   dolfinx::fem::assemble_vector<T>(array, *_residual);
-  const int bs = _V->dofmap()->index_map_bs();
-  const std::vector<double> pressure = pair_pressures_pa();
-  for (std::size_t i = 0; i < _pairs.size(); ++i)
-  {
-    array[_pairs[i].upper * bs + _z_component] -= pressure[i] * _pairs[i].area_m2;
-    array[_pairs[i].lower * bs + _z_component] += pressure[i] * _pairs[i].area_m2;
-  }
+  add_pair_forces(array);
   b.scatter_rev(std::plus<T>());
   double local = 0;
   for (std::int32_t dof : _top_z_dofs)
@@ -440,60 +466,344 @@ void PenaltyContact::set_initial_gap(const std::function<double(const double* x)
 
 void PenaltyContact::set_node_pairs(std::vector<NodePair> pairs)
 {
+  const MPI_Comm comm = _scene.mesh->comm();
+  const auto map = _V->dofmap()->index_map;
+  const int bs = _V->dofmap()->index_map_bs();
+  const std::int32_t owned = map->size_local();
+  const std::int64_t first = map->local_range()[0];
   int processes = 1;
-  MPI_Comm_size(_scene.mesh->comm(), &processes);
-  if (processes > 1 && !pairs.empty())
-    throw InputError("contact between two elastic bodies (node pairs) runs on one process");
-  _pairs = std::move(pairs);
-  dolfinx::la::SparsityPattern pattern = dolfinx::fem::create_sparsity_pattern(*_jacobian);
-  for (const NodePair& pair : _pairs)
+  MPI_Comm_size(comm, &processes);
+  // Where each process's blocks start: a block's owner by bisection.
+  std::vector<std::int64_t> starts(processes);
+  MPI_Allgather(&first, 1, MPI_INT64_T, starts.data(), 1, MPI_INT64_T, comm);
+  auto owner = [&](std::int64_t g) {
+    return static_cast<int>(std::upper_bound(starts.begin(), starts.end(), g) - starts.begin()) - 1;
+  };
+  std::vector<std::int64_t> ghosts = map->ghosts();
+  std::vector<int> owners = map->owners();
+  std::unordered_map<std::int64_t, std::int32_t> ghost_local;
+  for (std::size_t j = 0; j < ghosts.size(); ++j)
+    ghost_local.emplace(ghosts[j], owned + static_cast<std::int32_t>(j));
+  // The local block of a global one: owned, a ghost, or a new ghost after them.
+  auto local = [&](std::int64_t g) {
+    if (g >= first && g < first + owned)
+      return static_cast<std::int32_t>(g - first);
+    if (g < 0 || g >= map->size_global())
+      throw InputError(fmt::format("node pairs: block {} outside the {} blocks", g, map->size_global()));
+    const auto [where, added] = ghost_local.emplace(g, owned + static_cast<std::int32_t>(ghosts.size()));
+    if (added)
+    {
+      ghosts.push_back(g);
+      owners.push_back(owner(g));
+    }
+    return where->second;
+  };
+  std::string bad;
+  std::vector<PairBlocks> blocks;
+  for (const NodePair& pair : pairs)
   {
-    const std::int32_t blocks[2] = {pair.upper, pair.lower};
-    pattern.insert(blocks, blocks);
+    double weight_sum = 0;
+    for (double w : pair.weights)
+      weight_sum += w;
+    if (!(pair.upper >= first && pair.upper < first + owned) || pair.lower[0] < 0 || std::abs(weight_sum - 1) > 1e-9
+        || !(pair.area_m2 >= 0) || !(pair.stiffness_pa_per_m > 0) || !std::isfinite(pair.initial_gap_m))
+    {
+      bad = fmt::format("node pairs: a pair must have its upper node owned here, a lower node, weights summing to 1, "
+                        "area >= 0, stiffness > 0 and a finite gap (upper {}, lower {}, weight sum {}, area {}, "
+                        "stiffness {}, gap {})",
+                        pair.upper, pair.lower[0], weight_sum, pair.area_m2, pair.stiffness_pa_per_m,
+                        pair.initial_gap_m);
+      break;
+    }
+    PairBlocks b{local(pair.upper), {-1, -1, -1}};
+    for (int k = 0; k < 3; ++k)
+      if (pair.lower[k] >= 0)
+        b.lower[k] = local(pair.lower[k]);
+    blocks.push_back(b);
+  }
+  // Every process throws, or none (the rest is collective).
+  int failed = bad.empty() ? 0 : 1;
+  MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MAX, comm);
+  if (failed)
+    throw InputError(bad.empty() ? "node pairs: a bad pair on another process" : bad);
+  spdlog::debug("node pairs: {} on this process, {} blocks of other processes added as ghosts", pairs.size(),
+                ghosts.size() - map->ghosts().size());
+  _pairs = std::move(pairs);
+  _pair_blocks = std::move(blocks);
+  _pair_map = std::make_shared<const dolfinx::common::IndexMap>(comm, owned, ghosts, owners);
+  _pair_u = std::make_unique<dolfinx::la::Vector<T>>(_pair_map, bs);
+
+  // The form's cell couplings (the space's local blocks are the pair map's
+  // first ones) and every pair's.
+  dolfinx::la::SparsityPattern pattern(comm, {_pair_map, _pair_map}, {bs, bs});
+  dolfinx::fem::sparsitybuild::cells(pattern, _scene.mesh->topology(), {*_V->dofmap(), *_V->dofmap()});
+  for (const PairBlocks& b : _pair_blocks)
+  {
+    std::vector<std::int32_t> joined = {b.upper};
+    for (std::int32_t l : b.lower)
+      if (l >= 0)
+        joined.push_back(l);
+    pattern.insert(joined, joined);
   }
   pattern.assemble();
   MatDestroy(&_A);
-  _A = dolfinx::la::petsc::create_matrix(_scene.mesh->comm(), pattern, "aij");
+  _A = dolfinx::la::petsc::create_matrix(comm, pattern, "aij");
   MatSetNearNullSpace(_A, _near_nullspace);
 }
 
 std::vector<double> PenaltyContact::pair_pressures_pa() const
 {
+  if (!_pair_u)
+    return {};
+  // The displacements of the pairs' blocks on other processes: a forward
+  // scatter on the pair map (collective: every process calls this).
   const std::span<const T> u = _u->x()->array();
   const int bs = _V->dofmap()->index_map_bs();
+  std::span<T> w = _pair_u->mutable_array();
+  std::copy_n(u.begin(), _V->dofmap()->index_map->size_local() * bs, w.begin());
+  _pair_u->scatter_fwd();
   std::vector<double> pressure(_pairs.size());
   for (std::size_t i = 0; i < _pairs.size(); ++i)
   {
     const NodePair& pair = _pairs[i];
-    const double gap = pair.initial_gap_m + u[pair.upper * bs + _z_component] - u[pair.lower * bs + _z_component];
+    double gap = pair.initial_gap_m + w[_pair_blocks[i].upper * bs + _z_component];
+    for (int k = 0; k < 3; ++k)
+      if (_pair_blocks[i].lower[k] >= 0)
+        gap -= pair.weights[k] * w[_pair_blocks[i].lower[k] * bs + _z_component];
     pressure[i] = gap < 0 ? -pair.stiffness_pa_per_m * gap : 0.0;
   }
   return pressure;
 }
 
-std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double tol)
+std::vector<PairPressure> gather_pair_pressures(const PenaltyContact& problem)
 {
-  const std::vector<double>& x = problem.dof_coordinates();
-  const std::vector<double> area = recover_nodal_fields(problem).contact_weight;
-  const int up = problem.mesh()->geometry().dim() - 1;
-  std::map<std::pair<double, double>, std::vector<std::int32_t>> at_interface;
-  for (std::size_t i = 0; i < x.size() / 3; ++i)
-    if (std::abs(x[3 * i + up]) < tol)
-      at_interface[{std::round(x[3 * i] / tol), std::round(x[3 * i + 1] / tol)}].push_back(
-          static_cast<std::int32_t>(i));
-  std::vector<NodePair> pairs;
-  for (const auto& [where, blocks] : at_interface)
+  const std::vector<double> pressure = problem.pair_pressures_pa();
+  const std::vector<NodePair>& pairs = problem.node_pairs();
+  std::vector<double> local;
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    local.insert(local.end(), {pairs[i].x[0], pairs[i].x[1], pairs[i].x[2], pressure[i], pairs[i].area_m2,
+                               pairs[i].initial_gap_m});
+  const std::vector<double> all = all_gather(problem.mesh()->comm(), local);
+  std::vector<PairPressure> gathered;
+  for (std::size_t i = 0; i < all.size(); i += 6)
+    gathered.push_back({{all[i], all[i + 1], all[i + 2]}, all[i + 3], all[i + 4], all[i + 5]});
+  return gathered;
+}
+
+namespace
+{
+/// A facet of the lower body's interface: its nodes' global blocks (-1:
+/// unused, 2D) and horizontal coordinates (x, and y in 3D).
+struct InterfaceFacet
+{
+  std::array<std::int64_t, 3> node{-1, -1, -1};
+  std::array<std::array<double, 2>, 3> x{};
+};
+
+/// Barycentric weights of the horizontal point p in the facet (a segment of
+/// `n` = 2 nodes or a triangle of 3), and the smallest of them (< 0: outside).
+std::pair<std::array<double, 3>, double> barycentric(const InterfaceFacet& f, int n, const double* p)
+{
+  std::array<double, 3> w{0.0, 0.0, 0.0};
+  if (n == 2)
   {
-    const bool first_upper = area[blocks[0]] > 0;
-    if (blocks.size() == 1 && !first_upper)
-      continue; // on the lower body's free face beyond the upper one
-    if (blocks.size() != 2)
-      throw ComputationError(fmt::format("node pairs: {} interface nodes at one place, not a pair", blocks.size()));
-    if (!first_upper && !(area[blocks[1]] > 0))
-      continue; // on the edge of the upper body's face, without contact area
-    const std::int32_t upper = first_upper ? blocks[0] : blocks[1], lower = first_upper ? blocks[1] : blocks[0];
-    pairs.push_back({upper, lower, area[upper], 0.0, 0.0});
+    w[1] = (p[0] - f.x[0][0]) / (f.x[1][0] - f.x[0][0]);
+    w[0] = 1 - w[1];
+    return {w, std::min(w[0], w[1])};
   }
+  auto cross = [](const std::array<double, 2>& o, const std::array<double, 2>& a, const std::array<double, 2>& b) {
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  };
+  const std::array<double, 2> q{p[0], p[1]};
+  const double area = cross(f.x[0], f.x[1], f.x[2]);
+  w[1] = cross(f.x[0], q, f.x[2]) / area;
+  w[2] = cross(f.x[0], f.x[1], q) / area;
+  w[0] = 1 - w[1] - w[2];
+  return {w, std::min({w[0], w[1], w[2]})};
+}
+} // namespace
+
+std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double tol,
+                                           const std::function<bool(const double* x)>& to_surface)
+{
+  const MPI_Comm comm = problem.mesh()->comm();
+  const auto& V = *problem.displacement()->function_space();
+  const auto map = V.dofmap()->index_map;
+  const std::int32_t owned = map->size_local();
+  const std::int64_t first = map->local_range()[0];
+  const std::vector<double>& x = problem.dof_coordinates();
+  const std::vector<double> area = recover_nodal_fields(problem).contact_weight; // owned blocks
+  const int gdim = problem.mesh()->geometry().dim();
+  const int up = gdim - 1;
+  auto global = [&](std::int32_t i) { return i < owned ? first + i : map->ghosts()[i - owned]; };
+
+  // Every process's interface nodes (x, y, block, area), gathered: twins may
+  // lie on different processes.
+  std::vector<double> local;
+  for (std::int32_t i = 0; i < owned; ++i)
+    if (std::abs(x[3 * i + up]) < tol)
+      local.insert(local.end(), {x[3 * i], x[3 * i + 1], static_cast<double>(first + i), area[i]});
+  const std::vector<double> all = all_gather(comm, local);
+  std::map<std::pair<double, double>, std::vector<std::pair<std::int64_t, double>>> at_interface;
+  for (std::size_t i = 0; i < all.size(); i += 4)
+    at_interface[{std::round(all[i] / tol), std::round(all[i + 1] / tol)}].push_back(
+        {static_cast<std::int64_t>(all[i + 2]), all[i + 3]});
+  std::vector<NodePair> pairs;
+  for (const auto& [where, nodes] : at_interface)
+  {
+    const bool first_upper = nodes[0].second > 0;
+    if (nodes.size() == 1 && !first_upper)
+      continue; // on the lower body's free face beyond the upper one
+    if (nodes.size() != 2)
+      throw ComputationError(fmt::format("node pairs: {} interface nodes at one place, not a pair", nodes.size()));
+    if (!first_upper && !(nodes[1].second > 0))
+      continue; // on the edge of the upper body's face, without contact area
+    const auto& [upper, upper_area] = first_upper ? nodes[0] : nodes[1];
+    const std::int64_t lower = first_upper ? nodes[1].first : nodes[0].first;
+    if (upper < first || upper >= first + owned)
+      continue; // another process's
+    const double* p = &x[3 * (upper - first)];
+    NodePair pair;
+    pair.upper = upper;
+    pair.lower = {lower, -1, -1};
+    pair.x = {p[0], p[1], p[2]};
+    pair.area_m2 = upper_area;
+    pairs.push_back(pair);
+  }
+  if (!to_surface)
+    return pairs;
+
+  // Node to surface: the upper body's contact nodes above the interface that
+  // `to_surface` selects, and the lower body's interface facets beneath their
+  // horizontal bounding box, gathered from every process.
+  const int hdim = gdim - 1; // horizontal coordinates
+  std::vector<std::int32_t> candidates;
+  std::array<double, 4> box{1e300, 1e300, -1e300, -1e300}; // min x, min y, -max x, -max y
+  for (std::int32_t i = 0; i < owned; ++i)
+    if (area[i] > 0 && x[3 * i + up] >= tol && to_surface(&x[3 * i]))
+    {
+      candidates.push_back(i);
+      for (int d = 0; d < hdim; ++d)
+      {
+        box[d] = std::min(box[d], x[3 * i + d]);
+        box[2 + d] = std::min(box[2 + d], -x[3 * i + d]);
+      }
+    }
+  MPI_Allreduce(MPI_IN_PLACE, box.data(), 4, MPI_DOUBLE, MPI_MIN, comm);
+  auto overlaps = [&](const double lo[2], const double hi[2]) {
+    for (int d = 0; d < hdim; ++d)
+      if (hi[d] < box[d] - tol || lo[d] > -box[2 + d] + tol)
+        return false;
+    return true;
+  };
+  const auto& dofmap = *V.dofmap();
+  const int tdim = problem.mesh()->topology().dim();
+  const std::int32_t cells = problem.mesh()->topology().index_map(tdim)->size_local();
+  local.clear();
+  for (std::int32_t c = 0; c < cells; ++c)
+  {
+    const auto dofs = dofmap.cell_dofs(c);
+    std::vector<std::int32_t> on;
+    double below = 0;
+    for (std::int32_t d : dofs)
+    {
+      if (std::abs(x[3 * d + up]) < tol)
+        on.push_back(d);
+      else
+        below = x[3 * d + up];
+    }
+    // A lower cell with a whole facet on the interface (the free part of the
+    // lower face and the conforming part alike).
+    if (static_cast<int>(on.size()) != gdim || !(below < 0))
+      continue;
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (std::int32_t d : on)
+      for (int k = 0; k < hdim; ++k)
+      {
+        lo[k] = std::min(lo[k], x[3 * d + k]);
+        hi[k] = std::max(hi[k], x[3 * d + k]);
+      }
+    if (!overlaps(lo, hi))
+      continue;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (k < gdim)
+        local.insert(local.end(), {static_cast<double>(global(on[k])), x[3 * on[k]], x[3 * on[k] + 1]});
+      else
+        local.insert(local.end(), {-1.0, 0.0, 0.0});
+    }
+  }
+  const std::vector<double> gathered = all_gather(comm, local);
+  std::vector<InterfaceFacet> facets(gathered.size() / 9);
+  for (std::size_t f = 0; f < facets.size(); ++f)
+    for (int k = 0; k < 3; ++k)
+    {
+      facets[f].node[k] = static_cast<std::int64_t>(gathered[9 * f + 3 * k]);
+      facets[f].x[k] = {gathered[9 * f + 3 * k + 1], gathered[9 * f + 3 * k + 2]};
+    }
+  // Buckets over the candidates' box, n per horizontal direction.
+  const int n = std::max(1, static_cast<int>(hdim == 1 ? facets.size() : std::sqrt(facets.size())));
+  auto bucket = [&](double v, int d) {
+    const double span = -box[2 + d] - box[d];
+    const int b = span > 0 ? static_cast<int>((v - box[d]) / span * n) : 0;
+    return std::clamp(b, 0, n - 1);
+  };
+  const int ny = hdim == 2 ? n : 1;
+  std::vector<std::vector<std::int32_t>> buckets(static_cast<std::size_t>(n) * ny);
+  for (std::size_t f = 0; f < facets.size(); ++f)
+  {
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (int k = 0; k < gdim; ++k)
+      for (int d = 0; d < hdim; ++d)
+      {
+        lo[d] = std::min(lo[d], facets[f].x[k][d]);
+        hi[d] = std::max(hi[d], facets[f].x[k][d]);
+      }
+    for (int i = bucket(lo[0], 0); i <= bucket(hi[0], 0); ++i)
+      for (int j = hdim == 2 ? bucket(lo[1], 1) : 0; j <= (hdim == 2 ? bucket(hi[1], 1) : 0); ++j)
+        buckets[static_cast<std::size_t>(i) * ny + j].push_back(static_cast<std::int32_t>(f));
+  }
+  int missing = 0;
+  for (std::int32_t i : candidates)
+  {
+    const double* p = &x[3 * i];
+    const auto& near = buckets[static_cast<std::size_t>(bucket(p[0], 0)) * ny + (hdim == 2 ? bucket(p[1], 1) : 0)];
+    // The facet that contains p best (on a shared edge either does).
+    std::int32_t best = -1;
+    std::array<double, 3> weights{};
+    double best_min = -1e-9;
+    for (std::int32_t f : near)
+    {
+      const auto [w, smallest] = barycentric(facets[f], gdim, p);
+      if (smallest > best_min)
+      {
+        best = f;
+        weights = w;
+        best_min = smallest;
+      }
+    }
+    if (best < 0)
+    {
+      ++missing;
+      continue;
+    }
+    double sum = 0;
+    for (double& w : weights)
+      sum += (w = std::max(w, 0.0));
+    NodePair pair;
+    pair.upper = global(i);
+    pair.lower = facets[best].node;
+    for (int k = 0; k < 3; ++k)
+      pair.weights[k] = pair.lower[k] >= 0 ? weights[k] / sum : 0.0;
+    pair.x = {p[0], p[1], p[2]};
+    pair.area_m2 = area[i];
+    pairs.push_back(pair);
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &missing, 1, MPI_INT, MPI_SUM, comm);
+  if (missing > 0)
+    throw ComputationError(fmt::format("node pairs: {} upper contact nodes above the interface have no lower "
+                                       "facet beneath them",
+                                       missing));
   return pairs;
 }
 } // namespace rollcheck::fem

@@ -21,7 +21,10 @@
 #include <dolfinx/fem/Function.h>
 #include <dolfinx/fem/FunctionSpace.h>
 #include <dolfinx/la/Vector.h>
+#include <array>
 #include <functional>
+#include <memory>
+#include <span>
 #include <petscksp.h>
 
 namespace rollcheck::fem
@@ -36,28 +39,57 @@ struct NewtonReport
   double solve_s = 0;
 };
 
-/// Frictionless contact between two elastic bodies meshed together, node to
-/// node: a node of the upper body's contact face and its twin of the lower
-/// body's at the same place (the mesh carries the interface flattened, the
-/// bodies' profile in `initial_gap_m`). Gap g = g0 + u_z(upper) - u_z(lower),
-/// pressure p = kappa <-g>_+, the force p A on each, opposite
-/// (P. Wriggers, Computational Contact Mechanics, 2nd ed., 2006, sec. 4.1:
-/// the node-to-node penalty, exact for matching meshes and small slip).
+/// Frictionless contact between two elastic bodies meshed together: a node
+/// of the upper body's contact face against a point of the lower body's
+/// interface directly below it (the mesh carries the interface flattened at
+/// height 0, the bodies' profile in `initial_gap_m`). The point is either the
+/// node's twin (node to node, where the two bodies' faces are conforming:
+/// weights {1, 0, 0}) or a point of the lower body's interface facet below
+/// the node (node to surface, where the upper body's face has lifted off the
+/// interface, e.g. a fillet: barycentric weights over the facet's 3 nodes in
+/// 3D, 2 in 2D). Gap g = g0 + u_z(upper) - sum_i w_i u_z(lower_i), pressure
+/// p = kappa <-g>_+, force p A up on the lower nodes (shared by w_i) and down
+/// on the upper node; energy kappa <-g>_+^2 A / 2. P. Wriggers,
+/// Computational Contact Mechanics, 2nd ed., 2006, sec. 4.1 (node to node:
+/// exact for matching meshes and small slip) and sec. 4.2 / 9.1 (node to
+/// segment, slave node on master segment, here with the master's normal the
+/// interface's vertical: frictionless, small slip, the lower face flat).
+/// Indices are global dof blocks, so a pair may join nodes of different
+/// processes; a pair lives on the process that owns its upper node.
 struct NodePair
 {
-  std::int32_t upper, lower;     ///< local dof blocks (one process)
-  double area_m2;                ///< the upper node's lumped contact area
-  double initial_gap_m;          ///< g0
-  double stiffness_pa_per_m;     ///< kappa
+  std::int64_t upper = -1;                   ///< global dof block of the upper body's node
+  std::array<std::int64_t, 3> lower{-1, -1, -1}; ///< global dof blocks of the lower side (-1: unused)
+  std::array<double, 3> weights{1.0, 0.0, 0.0};   ///< w_i, summing to 1
+  std::array<double, 3> x{0.0, 0.0, 0.0};         ///< the upper node's position
+  double area_m2 = 0;            ///< the upper node's lumped contact area (length in 2D)
+  double initial_gap_m = 0;      ///< g0
+  double stiffness_pa_per_m = 0; ///< kappa
+};
+
+/// A pair's place and state, as gathered from every process.
+struct PairPressure
+{
+  std::array<double, 3> x;
+  double pressure_pa, area_m2, initial_gap_m;
 };
 
 class PenaltyContact;
 
-/// The upper body's interface nodes (those with contact area: on its contact
-/// facets, at height 0) paired with their twins of the lower body at the
-/// same place (coordinates equal to `tol`); gaps and stiffnesses are left
-/// for the caller. ComputationError where a contact node has no twin.
-std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double tol);
+/// The upper body's contact nodes owned by this process (those with contact
+/// area, on its contact facets), paired with the lower body: at the
+/// interface (height within `tol` of 0) with their twins at the same place
+/// (coordinates equal to `tol`); above it, where `to_surface(x)` is true
+/// (none without it), with the point of the lower body's interface facet
+/// directly below. Twins and facets are found across processes. Gaps and
+/// stiffnesses are left for the caller. Collective; ComputationError where
+/// an interface node has no twin or a node above has no facet below it.
+std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double tol,
+                                           const std::function<bool(const double* x)>& to_surface = {});
+
+/// Every process's pairs (position, pressure at the current state, area,
+/// initial gap), on every process in rank order. Collective.
+std::vector<PairPressure> gather_pair_pressures(const PenaltyContact& problem);
 
 class PenaltyContact
 {
@@ -93,10 +125,16 @@ public:
   void set_initial_gap(const std::function<double(const double* x)>& gap);
 
   /// Contact between two bodies by node pairs, besides (or instead of: set
-  /// the penalty scale to 0) the rigid plane's. The Jacobian's sparsity is
-  /// rebuilt to hold the pairs. One process only (the twins must both be local).
+  /// the penalty scale to 0) the rigid plane's; each process passes the
+  /// pairs whose upper node it owns. Collective. The lower blocks another
+  /// process owns become extra ghosts of the pairs' index map (their
+  /// displacements come by a forward scatter, their forces go back by a
+  /// reverse one), and the Jacobian's sparsity is rebuilt to hold the pairs
+  /// (off-process rows are sent to their owners at assembly).
   void set_node_pairs(std::vector<NodePair> pairs);
-  /// p = kappa <-g>_+ of each pair at the current state.
+  /// This process's pairs, as set.
+  const std::vector<NodePair>& node_pairs() const { return _pairs; }
+  /// p = kappa <-g>_+ of each of this process's pairs at the current state.
   std::vector<double> pair_pressures_pa() const;
 
   /// Newton to convergence at the current approach; throws ComputationError
@@ -132,6 +170,8 @@ public:
 
 private:
   void assemble_residual(dolfinx::la::Vector<T>& b) const;
+  /// Adds the pairs' forces (the residual's part) to b, on _pair_map.
+  void add_pair_forces(std::span<T> b) const;
   void assemble_jacobian();
   double energy() const;
 
@@ -142,6 +182,16 @@ private:
   std::shared_ptr<dolfinx::fem::Function<T>> _penalty_scale; ///< DG0
   std::shared_ptr<dolfinx::fem::Function<T>> _initial_gap;   ///< P1
   std::vector<NodePair> _pairs;
+  /// The space's owned blocks and ghosts, then the pairs' blocks owned elsewhere
+  /// (the space's own map while there are no pairs).
+  std::shared_ptr<const dolfinx::common::IndexMap> _pair_map;
+  struct PairBlocks
+  {
+    std::int32_t upper;
+    std::array<std::int32_t, 3> lower; ///< -1: unused
+  };
+  std::vector<PairBlocks> _pair_blocks;          ///< local blocks of _pair_map, per pair
+  mutable std::unique_ptr<dolfinx::la::Vector<T>> _pair_u; ///< u on _pair_map
   std::vector<double> _dof_coordinates;
   std::map<std::string, std::shared_ptr<const dolfinx::fem::Function<T>>> _coefficients;
   std::shared_ptr<dolfinx::fem::Function<T>> _top_displacement; ///< the top face's prescribed values

@@ -632,7 +632,17 @@ SceneMesh build_rim_block_mesh(MPI_Comm comm, const RimEndGeometry& g, const Rim
   parts.curved = [](double, double, double) { return false; };
   parts.in_plane = [](double, double, double) { return true; };
   tag_parts(scene, parts);
-  upper_interface_facets(scene, [=](double x, double, double z) { return std::abs(z) < tol && x < tol; }, 2);
+  // The body's face on the interface and, rounded, its fillet (which lifts
+  // off the block's top: node to surface), the cylinder of radius r_e about
+  // the line (-x_t, y, r_e), x_t = r_e tan((180 deg - a) / 2).
+  const double r_e = g.edge_radius_m, x_t = r_e * std::tan((std::numbers::pi - g.interior_angle_rad) / 2);
+  upper_interface_facets(
+      scene,
+      [=](double x, double, double z) {
+        return (std::abs(z) < tol && x < tol)
+               || (r_e > 0 && x > -x_t - tol && z < r_e && std::abs(std::hypot(x + x_t, z - r_e) - r_e) < 1e-6 * r_e);
+      },
+      2);
   scene.symmetry_multiplicity = 2;
   scene.wall_s = seconds_since(start);
   return scene;

@@ -142,7 +142,11 @@ SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& geometry, cons
 /// separate bodies: each interface node has a twin of the block's at the
 /// same place (PenaltyContact::set_node_pairs). Top facets: the body's top
 /// z = H and the block's bottom z = -H; symmetry planes through both; the
-/// contact facets are the body's on the interface.
+/// contact facets are the body's on the interface and its fillet. A rounded
+/// edge's fillet leaves the interface at x = -x_t and lifts off the block's
+/// top, which stays one flat face: conforming with the body up to x = -x_t,
+/// free beyond it and graded under the fillet's start as the body is (the
+/// sizes mirrored in z = 0), for node-to-surface pairs there.
 SceneMesh build_rim_block_mesh(MPI_Comm comm, const RimEndGeometry& geometry, const RimEndSizes& sizes);
 
 /// Two elastic bodies pressed together in plane strain, for line Hertz

@@ -1,0 +1,99 @@
+// `rollcheck whole-body`: issue 14's fuller check at small scale
+// (study/whole_body_check.h): one orientation of the body meshed whole and
+// pressed on the rigid plane in 3D, against the plane-strain slices along
+// the ruling and the end models at its loaded ends; pass or fail against the
+// tolerance (3 %). Also the scene "whole-body" of case files. Exit 0 when
+// the check ran (its verdict is in the output), 1 when a solve failed.
+// Built for both executables (src/cli/CMakeLists.txt): only rollcheck-fem
+// (ROLLCHECK_FEM) has the subcommand; rollcheck hands the command line over.
+#include "cli/cli.h"
+#ifdef ROLLCHECK_FEM
+#include "cli/scenes.h"
+#include "fem/petsc_session.h"
+#include "study/whole_body_check.h"
+#include <mpi.h>
+#include <spdlog/spdlog.h>
+#endif
+
+namespace rollcheck::cli
+{
+#ifdef ROLLCHECK_FEM
+namespace
+{
+const io::BoundSchema<study::WholeBodyCheckSettings>& whole_body_schema()
+{
+  using study::WholeBodyCheckSettings;
+  static const io::BoundSchema<WholeBodyCheckSettings> schema = [] {
+    io::BoundSchema<WholeBodyCheckSettings> s("whole-body");
+    s.include(body_schema(), &WholeBodyCheckSettings::body)
+        .real("direction_deg", "--direction", &WholeBodyCheckSettings::direction_deg, "deg",
+              "The orientation: the ground's normal (body frame) nearest to (cos a, sin a, 0) on the body's contact "
+              "curve; the cylinder's axis is the body's z, so every a is a generator",
+              io::Bounds{-360, 360});
+    add_material(s, &WholeBodyCheckSettings::youngs_modulus_pa, &WholeBodyCheckSettings::poisson_ratio);
+    s.real("normal_load_n", "--load", &WholeBodyCheckSettings::normal_load_n, "N",
+           "Force F pressing the body onto the rigid plane along the vertical through its centre of mass (the "
+           "preprint's 100 N)",
+           io::positive)
+        .integer("contact_elements", "--contact-elements", &WholeBodyCheckSettings::contact_elements, "",
+                 "Whole body: elements across the contact half-width b in the strip along the ruling",
+                 io::Bounds{2, 40})
+        .real("strip_over_half_width", "--strip", &WholeBodyCheckSettings::strip_over_half_width, "",
+              "Whole body: half-width of the fine strip along the ruling, in units of b", io::Bounds{1, 20})
+        .real("section_growth", "--section-growth", &WholeBodyCheckSettings::section_growth, "",
+              "Whole body: element size per distance beyond the strip, in the section across the ruling",
+              io::Bounds{0.05, 1})
+        .real("layer_growth", "--layer-growth", &WholeBodyCheckSettings::layer_growth, "",
+              "Whole body: thickness ratio of neighbouring layers along the ruling, from the ends to the middle",
+              io::Bounds{1, 3})
+        .integer("layers_across_length", "--layers", &WholeBodyCheckSettings::layers_across_length, "",
+                 "Whole body: the thickest layer (in the middle of the ruling) is L / this", io::Bounds{2, 10000})
+        .real("penalty_c", "--penalty-c", &WholeBodyCheckSettings::penalty_c, "",
+              "Whole body: penalty kappa = c E / h_c, h_c the strip's element size (the slices' 100)", io::positive)
+        .integer("stations", "--stations", &WholeBodyCheckSettings::stations, "",
+                 "Plane-strain slices along the loaded ruling, compared with the whole body's peak there",
+                 io::Bounds{2, 200})
+        .real("crease_margin", "--crease-margin", &WholeBodyCheckSettings::crease_margin, "",
+              "Fraction of the ruling kept clear inside each loaded end for the stations (fem-sds's 5 %)",
+              io::Bounds{0, 0.25, true, true})
+        .integer("slice_refine", "--refine", &WholeBodyCheckSettings::slice_refine, "",
+                 "The slices' mesh level (-1: the plane-strain default)", io::Bounds{-1, 8})
+        .integer("end_levels", "--end-levels", &WholeBodyCheckSettings::end_levels, "",
+                 "The end models' edge mesh levels (rollcheck rim --levels); the whole body's end layers are as thin "
+                 "as their last edge elements",
+                 io::Bounds{1, 6})
+        .real("end_edge_element", "--end-edge-element", &WholeBodyCheckSettings::end_edge_element, "",
+              "The end models' first edge element h_e / b (rollcheck rim --edge-element); each level halves it",
+              io::Bounds{1e-3, 1, false, true})
+        .real("tolerance", "--tolerance", &WholeBodyCheckSettings::tolerance, "",
+              "Largest relative difference of the whole body's pressure from the reduced models' that passes "
+              "(issue 14: 3 %)",
+              io::Bounds{0, 1, true, true});
+    return s;
+  }();
+  return schema;
+}
+
+nlohmann::json run_whole_body(const io::Parameters& p)
+{
+  const study::WholeBodyCheck check = study::run_whole_body_check(MPI_COMM_WORLD, whole_body_schema().bind(p));
+  // Tables go to the log (stderr), so that `--json -` stays JSON alone.
+  if (fem::world_rank() == 0)
+    spdlog::info("\nwhole-body check, {}:\n\n{}\n{}\n", check.body, study::markdown_table(check), check.verdict);
+  return study::to_json(check);
+}
+} // namespace
+
+void add_whole_body_command(CLI::App& app)
+{
+  add_scene_command(app, "whole-body",
+                    "Issue 14's whole-body check: one orientation of the body (r1 = 10 mm) meshed whole (gmsh "
+                    "OpenCASCADE, layers along the ruling) and pressed on the rigid plane in 3D under F through its "
+                    "centre of mass, against the plane-strain slices along the ruling and the end models (rollcheck "
+                    "rim) at its loaded ends; PASS or FAIL against --tolerance",
+                    whole_body_schema().schema(), run_whole_body);
+}
+#else
+void add_whole_body_command(CLI::App&) {}
+#endif
+} // namespace rollcheck::cli

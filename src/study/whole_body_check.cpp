@@ -1,0 +1,377 @@
+// Issue 14's whole-body check (study/whole_body_check.h): the locus of one
+// orientation, its slices and end models, the whole body, the comparison.
+#include "study/whole_body_check.h"
+#include "contact/hertz.h"
+#include "contact/rim_overhang.h"
+#include "core/error.h"
+#include "core/json_number.h"
+#include "fem/all_gather.h"
+#include "fem/load_control.h"
+#include "fem/petsc_session.h"
+#include "oracle/contact_density.h"
+#include "oracle/rolling_dynamics.h"
+#include "oracle/rolling_study.h"
+#include "study/fem_sds.h"
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <numbers>
+#include <spdlog/spdlog.h>
+
+namespace rollcheck::study
+{
+namespace
+{
+constexpr double deg = std::numbers::pi / 180;
+
+void check_settings(const WholeBodyCheckSettings& s)
+{
+  if (s.body.body != "cylinder")
+    throw InputError(fmt::format(
+        "body '{}': the whole-body check meshes the cylinder; the oloid's whole-body mesh (its developable surface "
+        "with elements long along the ruling) is not built yet (docs/whole-body.md)",
+        s.body.body));
+  if (!s.body.mesh_file.empty())
+    throw InputError("the whole-body check needs the exact body, not a mesh file");
+  auto require = [](bool ok, const std::string& what) {
+    if (!ok)
+      throw InputError(what);
+  };
+  require(s.body.radius_m > 0 && s.body.height_m > 0, "radius_m and height_m must be positive");
+  require(s.normal_load_n > 0, fmt::format("normal_load_n must be positive, got {}", s.normal_load_n));
+  require(s.youngs_modulus_pa > 0, "youngs_modulus_pa must be positive");
+  require(s.poisson_ratio >= 0 && s.poisson_ratio < 0.5, "poisson_ratio must lie in [0, 0.5)");
+  require(s.contact_elements >= 2 && s.contact_elements <= 40, "contact_elements must lie in [2, 40]");
+  require(s.strip_over_half_width >= 1, "strip_over_half_width must be at least 1");
+  require(s.section_growth > 0 && s.section_growth <= 1, "section_growth must lie in (0, 1]");
+  require(s.layer_growth >= 1 && s.layer_growth <= 3, "layer_growth must lie in [1, 3]");
+  require(s.layers_across_length >= 2, "layers_across_length must be at least 2");
+  require(s.penalty_c > 0, "penalty_c must be positive");
+  require(s.stations >= 2, "stations must be at least 2");
+  require(s.crease_margin > 0 && s.crease_margin < 0.25, "crease_margin must lie in (0, 0.25)");
+  require(s.end_levels >= 1 && s.end_levels <= 6, "end_levels must lie in [1, 6]");
+  require(s.end_edge_element > 0 && s.end_edge_element <= 1, "end_edge_element must lie in (0, 1]");
+  require(s.tolerance > 0 && s.tolerance < 1, "tolerance must lie in (0, 1)");
+}
+
+double half_width(double q, double R, double E_star) { return std::sqrt(4 * q * R / (std::numbers::pi * E_star)); }
+} // namespace
+
+WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings& s)
+{
+  check_settings(s);
+  const auto start = std::chrono::steady_clock::now();
+  fem::ensure_petsc();
+  const bool log = fem::world_rank() == 0;
+  WholeBodyCheck r;
+  r.settings = s;
+  r.body = geometry::body_label(s.body);
+  const double F = s.normal_load_n, E_star = contact::effective_modulus(s.youngs_modulus_pa, s.poisson_ratio, false);
+  r.effective_modulus_pa = E_star;
+
+  // The orientation's locus: ruling, radii, centre of pressure, loaded part.
+  const std::vector<oracle::Circle> circles = oracle::line_contact_circles(s.body);
+  const oracle::TwoCircleBody two = oracle::two_circle_body(circles);
+  const oracle::MassModel mass = oracle::mass_model_of_mesh(geometry::make_body(s.body), 1.0);
+  const Eigen::Vector3d hint(std::cos(s.direction_deg * deg), std::sin(s.direction_deg * deg), 0.0);
+  const oracle::Ruling ruling = oracle::ruling_at(two, oracle::contact_curve_point(two, hint));
+  const double L = ruling.length_m;
+  r.length_m = L;
+  r.start_radius_m = ruling.start_radius_m;
+  r.end_radius_m = ruling.end_radius_m;
+  const Eigen::Vector3d G = mass.centre_of_mass_m;
+  const double c = (G - ruling.start_m).dot(ruling.axis) / L;
+  r.centre_of_pressure = c;
+  r.centre_of_mass_height_m = (ruling.start_m - G).dot(ruling.direction);
+  if (!(c > 0 && c < 1))
+    throw InputError(fmt::format("direction {} deg: the centre of mass's foot lies outside the ruling (c = {:.4f}): "
+                                 "the body tips, no line contact in equilibrium",
+                                 s.direction_deg, c));
+  r.loaded_from = c < 1.0 / 3 ? 0.0 : c > 2.0 / 3 ? 1 - 3 * (1 - c) : 0.0;
+  r.loaded_to = c < 1.0 / 3 ? 3 * c : 1.0;
+  r.rim_overhang_rad = contact::rim_overhang(circles, 0, 1, ruling);
+  auto radius_at = [&](double f) { return (1 - f) * ruling.start_radius_m + f * ruling.end_radius_m; };
+  auto load_at = [&](double f) { return oracle::line_load(F, c, L, f); };
+  r.half_width_m = half_width(load_at(c), radius_at(c), E_star);
+  if (log)
+    spdlog::info("whole-body check, {}: ruling L = {:.5g} m, R = {:.5g}..{:.5g} m, c = {:.4f}, loaded {:.3f}..{:.3f}, "
+                 "rim leans {:.2f}, {:.2f} deg, b = {:.4g} m (b / L = {:.3g})",
+                 r.body, L, ruling.start_radius_m, ruling.end_radius_m, c, r.loaded_from, r.loaded_to,
+                 r.rim_overhang_rad[0] / deg, r.rim_overhang_rad[1] / deg, r.half_width_m, r.half_width_m / L);
+
+  // Slices at the stations and at both loaded ends.
+  const std::vector<double> fractions = slice_fractions(r.loaded_from, r.loaded_to, s.crease_margin, s.stations);
+  std::vector<fem::SliceLoad> loads;
+  for (const double f : fractions)
+    loads.push_back({f * L, radius_at(f), load_at(f)});
+  const std::array<double, 2> end_fractions{r.loaded_from, r.loaded_to};
+  std::vector<int> loaded_ends;
+  for (int e = 0; e < 2; ++e)
+    if (load_at(end_fractions[e]) > 0)
+    {
+      loaded_ends.push_back(e);
+      loads.push_back({end_fractions[e] * L, radius_at(end_fractions[e]), load_at(end_fractions[e])});
+    }
+  fem::SliceSettings slice;
+  slice.youngs_modulus_pa = s.youngs_modulus_pa;
+  slice.poisson_ratio = s.poisson_ratio;
+  slice.refine = s.slice_refine;
+  auto clock = std::chrono::steady_clock::now();
+  const std::vector<fem::SliceFem> slices = fem::solve_slices(comm, loads, slice);
+  r.slices_s = fem::wall_seconds_since(comm, clock);
+  if (log)
+    spdlog::info("slices: {} solved in {:.1f} s", slices.size(), r.slices_s);
+
+  // The end models at the loaded ends.
+  clock = std::chrono::steady_clock::now();
+  double smallest_end_b = INFINITY;
+  for (std::size_t k = 0; k < loaded_ends.size(); ++k)
+  {
+    const int e = loaded_ends[k];
+    EndComparison end;
+    end.position_m = end_fractions[e] * L;
+    end.radius_m = radius_at(end_fractions[e]);
+    end.load_n_per_m = load_at(end_fractions[e]);
+    end.half_width_m = half_width(end.load_n_per_m, end.radius_m, E_star);
+    end.interior_angle_deg = 90 + r.rim_overhang_rad[e] / deg;
+    end.slice_peak_pa = slices[fractions.size() + k].peak_pressure_pa;
+    fem::RimEndSettings rim;
+    rim.radius_m = end.radius_m;
+    rim.load_n_per_m = end.load_n_per_m;
+    rim.interior_angle_rad = end.interior_angle_deg * deg;
+    rim.youngs_modulus_pa = s.youngs_modulus_pa;
+    rim.poisson_ratio = s.poisson_ratio;
+    rim.levels = s.end_levels;
+    rim.edge_element_over_half_width = s.end_edge_element;
+    rim.tolerance = s.tolerance;
+    end.end_model = fem::solve_rim_end(comm, rim);
+    if (!end.end_model.singular && end.end_model.converged && end.end_model.end_to_interior)
+      end.predicted_edge_pa = *end.end_model.end_to_interior * end.slice_peak_pa;
+    if (log)
+      spdlog::info("end model at {} (a = {:.2f} deg): {}", e == 0 ? "the start" : "the end", end.interior_angle_deg,
+                   end.end_model.singular ? "singular"
+                   : end.end_model.end_to_interior
+                       ? fmt::format("edge / interior {:.4f}{}", *end.end_model.end_to_interior,
+                                     end.end_model.converged ? "" : " (NOT converged)")
+                       : std::string("no ratio"));
+    smallest_end_b = std::min(smallest_end_b, end.half_width_m);
+    r.ends.push_back(std::move(end));
+  }
+  r.ends_s = fem::wall_seconds_since(comm, clock);
+
+  // The whole body, sized from b along the loaded ruling.
+  clock = std::chrono::steady_clock::now();
+  double smallest_b = INFINITY, largest_b = 0;
+  for (const fem::SliceLoad& l : loads)
+  {
+    smallest_b = std::min(smallest_b, half_width(l.load_n_per_m, l.radius_m, E_star));
+    largest_b = std::max(largest_b, half_width(l.load_n_per_m, l.radius_m, E_star));
+  }
+  if (!std::isfinite(smallest_end_b))
+    smallest_end_b = smallest_b;
+  const double radius = s.body.radius_m;
+  fem::WholeBodySizes& sizes = r.sizes;
+  sizes.contact_m = smallest_b / s.contact_elements;
+  sizes.strip_half_width_m = s.strip_over_half_width * largest_b;
+  sizes.growth = s.section_growth;
+  sizes.far_m = radius / 8;
+  sizes.end_layer_m = s.end_edge_element * std::pow(0.5, s.end_levels - 1) * smallest_end_b;
+  sizes.layer_growth = s.layer_growth;
+  sizes.largest_layer_m = L / s.layers_across_length;
+  const fem::WholeBodyMesh mesh
+      = fem::build_cylinder_body_mesh(comm, {radius, L, r.centre_of_mass_height_m}, sizes);
+  r.node_planes = mesh.planes_m.size();
+  r.section_nodes = mesh.section_nodes;
+  r.gmsh_s = mesh.gmsh_s;
+  if (log)
+    spdlog::info("whole-body mesh: {} node planes, {} nodes per section, contact elements {:.3g} m (b / {:.3g}), end "
+                 "layers {:.3g} m, gmsh {:.1f} s",
+                 r.node_planes, r.section_nodes, sizes.contact_m, r.half_width_m / sizes.contact_m, sizes.end_layer_m,
+                 r.gmsh_s);
+  fem::WholeBodyLoad load;
+  load.force_n = F;
+  load.centre_of_mass_along_m = c * L;
+  load.youngs_modulus_pa = s.youngs_modulus_pa;
+  load.poisson_ratio = s.poisson_ratio;
+  load.penalty_c = s.penalty_c;
+  load.contact_element_m = sizes.contact_m;
+  // The line-contact estimate of the approach of a section's top at height
+  // R (fem/load_control.h) starts load control; the body starts shifted down
+  // by the height of its surface at the contact's edge (the slab's start).
+  const fem::LineApproach estimate = fem::line_contact_approach(load_at(c), radius_at(c), r.half_width_m, E_star);
+  load.first_approach_m = estimate.approach_m;
+  load.approach_exponent = estimate.exponent;
+  load.first_shift_m = 0.5 * r.half_width_m * r.half_width_m / radius_at(c);
+  load.edge_half_width_m = 0.5 * smallest_end_b;
+  r.fem = fem::solve_whole_body(comm, mesh, load);
+  r.body_s = fem::wall_seconds_since(comm, clock);
+
+  // The comparison.
+  for (std::size_t k = 0; k < fractions.size(); ++k)
+  {
+    StationComparison st;
+    st.position_m = loads[k].position_m;
+    st.radius_m = loads[k].radius_m;
+    st.locus_load_n_per_m = loads[k].load_n_per_m;
+    st.slice_peak_pa = slices[k].peak_pressure_pa;
+    st.hertz_peak_pa = slices[k].hertz_peak_pressure_pa;
+    st.body_peak_pa = fem::interpolate_planes(r.fem.plane_x_m, r.fem.plane_peak_pa, st.position_m);
+    st.body_load_n_per_m = fem::interpolate_planes(r.fem.plane_x_m, r.fem.plane_load_n_per_m, st.position_m);
+    r.worst_along = std::max(r.worst_along, std::abs(st.peak_difference()));
+    r.worst_load = std::max(r.worst_load, std::abs(st.load_difference()));
+    r.stations.push_back(st);
+  }
+  bool ends_compared = true;
+  double worst_end = 0;
+  for (EndComparison& end : r.ends)
+  {
+    const bool at_start = end.position_m < 0.5 * L;
+    end.body_edge_pa = r.fem.edge_pressure_pa[at_start ? 0 : 1];
+    end.body_interior_pa = at_start ? r.stations.front().body_peak_pa : r.stations.back().body_peak_pa;
+    if (end.predicted_edge_pa)
+    {
+      end.difference = end.body_edge_pa / *end.predicted_edge_pa - 1;
+      worst_end = std::max(worst_end, std::abs(*end.difference));
+    }
+    else
+      ends_compared = false;
+  }
+  if (ends_compared && !r.ends.empty())
+    r.worst_end = worst_end;
+  const bool along_ok = r.worst_along <= s.tolerance;
+  const bool ends_ok = r.worst_end && *r.worst_end <= s.tolerance;
+  r.pass = along_ok && ends_ok;
+  r.verdict = fmt::format(
+      "{}: along the ruling the whole body's peak is within {:.2f} % of the slices' ({} stations); at the ends {}; "
+      "tolerance {:.1f} %",
+      r.pass ? "PASS" : "FAIL", 100 * r.worst_along, r.stations.size(),
+      r.worst_end ? fmt::format("within {:.2f} % of the end models' edge pressure", 100 * *r.worst_end)
+      : r.ends.empty() ? std::string("no loaded end")
+                       : std::string("not compared: an end model is singular or did not converge (no edge value)"),
+      100 * s.tolerance);
+  r.wall_s = fem::wall_seconds_since(comm, start);
+  if (log)
+    spdlog::info("{} ({:.1f} s: slices {:.1f}, end models {:.1f}, whole body {:.1f})", r.verdict, r.wall_s, r.slices_s,
+                 r.ends_s, r.body_s);
+  return r;
+}
+
+nlohmann::json to_json(const WholeBodyCheck& r)
+{
+  nlohmann::json stations = nlohmann::json::array();
+  for (const StationComparison& st : r.stations)
+    stations.push_back({{"position_m", st.position_m},
+                        {"radius_m", st.radius_m},
+                        {"locus_load_n_per_m", st.locus_load_n_per_m},
+                        {"hertz_peak_pa", st.hertz_peak_pa},
+                        {"slice_peak_pa", st.slice_peak_pa},
+                        {"body_peak_pa", st.body_peak_pa},
+                        {"body_load_n_per_m", st.body_load_n_per_m},
+                        {"peak_difference", json_number(st.peak_difference())},
+                        {"load_difference", json_number(st.load_difference())}});
+  nlohmann::json ends = nlohmann::json::array();
+  for (const EndComparison& e : r.ends)
+  {
+    nlohmann::json levels = nlohmann::json::array();
+    for (const fem::RimEndLevel& l : e.end_model.levels)
+      levels.push_back({{"edge_element_m", l.edge_element_m},
+                        {"dofs", l.dofs},
+                        {"far_peak_pa", l.far_peak_pa},
+                        {"edge_pressure_pa", l.edge_pressure_pa},
+                        {"wall_s", l.wall_s}});
+    ends.push_back({{"position_m", e.position_m},
+                    {"radius_m", e.radius_m},
+                    {"load_n_per_m", e.load_n_per_m},
+                    {"half_width_m", e.half_width_m},
+                    {"interior_angle_deg", e.interior_angle_deg},
+                    {"end_model_singular", e.end_model.singular},
+                    {"end_model_converged", e.end_model.converged},
+                    {"end_model_end_to_interior", json_number(e.end_model.end_to_interior)},
+                    {"end_model_change", json_number(e.end_model.end_change)},
+                    {"end_model_levels", levels},
+                    {"slice_peak_pa", e.slice_peak_pa},
+                    {"predicted_edge_pa", json_number(e.predicted_edge_pa)},
+                    {"body_edge_pa", e.body_edge_pa},
+                    {"body_interior_pa", e.body_interior_pa},
+                    {"body_edge_to_interior", e.body_edge_pa / e.body_interior_pa},
+                    {"difference", json_number(e.difference)}});
+  }
+  nlohmann::json planes = nlohmann::json::array();
+  for (std::size_t k = 0; k < r.fem.plane_x_m.size(); ++k)
+    planes.push_back({r.fem.plane_x_m[k], r.fem.plane_peak_pa[k], r.fem.plane_load_n_per_m[k]});
+  const WholeBodyCheckSettings& s = r.settings;
+  return {{"body", r.body},
+          {"direction_deg", s.direction_deg},
+          {"normal_load_n", s.normal_load_n},
+          {"youngs_modulus_pa", s.youngs_modulus_pa},
+          {"poisson_ratio", s.poisson_ratio},
+          {"effective_modulus_pa", r.effective_modulus_pa},
+          {"ruling",
+           {{"length_m", r.length_m},
+            {"start_radius_m", r.start_radius_m},
+            {"end_radius_m", r.end_radius_m},
+            {"centre_of_pressure", r.centre_of_pressure},
+            {"loaded_from", r.loaded_from},
+            {"loaded_to", r.loaded_to},
+            {"rim_overhang_deg", {r.rim_overhang_rad[0] / deg, r.rim_overhang_rad[1] / deg}},
+            {"half_width_m", r.half_width_m},
+            {"half_width_over_length", r.half_width_m / r.length_m}}},
+          {"mesh",
+           {{"contact_element_m", r.sizes.contact_m},
+            {"strip_half_width_m", r.sizes.strip_half_width_m},
+            {"section_growth", r.sizes.growth},
+            {"far_element_m", r.sizes.far_m},
+            {"end_layer_m", r.sizes.end_layer_m},
+            {"layer_growth", r.sizes.layer_growth},
+            {"largest_layer_m", r.sizes.largest_layer_m},
+            {"node_planes", r.node_planes},
+            {"section_nodes", r.section_nodes},
+            {"dofs", r.fem.dofs},
+            {"cut_height_m", r.centre_of_mass_height_m},
+            {"gmsh_s", r.gmsh_s}}},
+          {"whole_body",
+           {{"force_n", r.fem.force_n},
+            {"reaction_n", r.fem.reaction_n},
+            {"centre_of_pressure", r.fem.centre_of_pressure_m / r.length_m},
+            {"approach_m", r.fem.approach_m},
+            {"tilt_rad", r.fem.tilt_rad},
+            {"load_steps", r.fem.load_steps},
+            {"newton_iterations", r.fem.newton_iterations},
+            {"edge_pressure_pa", {r.fem.edge_pressure_pa[0], r.fem.edge_pressure_pa[1]}},
+            {"planes_x_m_peak_pa_load_n_per_m", planes},
+            {"solve_s", r.fem.solve_s}}},
+          {"stations", stations},
+          {"ends", ends},
+          {"worst_along", r.worst_along},
+          {"worst_end", json_number(r.worst_end)},
+          {"worst_load", r.worst_load},
+          {"tolerance", s.tolerance},
+          {"pass", r.pass},
+          {"verdict", r.verdict},
+          {"wall_s", {{"slices", r.slices_s}, {"end_models", r.ends_s}, {"whole_body", r.body_s}, {"total", r.wall_s}}}};
+}
+
+std::string markdown_table(const WholeBodyCheck& r)
+{
+  std::string t = "| station s / L | R (m) | q locus (N/m) | q body / locus - 1 | slice p (MPa) | body p (MPa) | body / "
+                  "slice - 1 |\n|---|---|---|---|---|---|---|\n";
+  for (const StationComparison& st : r.stations)
+    t += fmt::format("| {:.4f} | {:.5g} | {:.5g} | {:+.2f} % | {:.5g} | {:.5g} | {:+.2f} % |\n", st.position_m / r.length_m,
+                     st.radius_m, st.locus_load_n_per_m, 100 * st.load_difference(), st.slice_peak_pa / 1e6,
+                     st.body_peak_pa / 1e6, 100 * st.peak_difference());
+  t += "\n| end | interior angle (deg) | end model | end model edge / interior | predicted edge (MPa) | body edge "
+       "(MPa) | body edge / its interior | body / predicted - 1 |\n|---|---|---|---|---|---|---|---|\n";
+  for (const EndComparison& e : r.ends)
+    t += fmt::format("| {:.4f} | {:.2f} | {} | {} | {} | {:.5g} | {:.4f} | {} |\n", e.position_m / r.length_m,
+                     e.interior_angle_deg,
+                     e.end_model.singular ? "singular"
+                     : e.end_model.converged ? "converged"
+                                             : "NOT converged",
+                     e.end_model.end_to_interior ? fmt::format("{:.4f}", *e.end_model.end_to_interior) : "-",
+                     e.predicted_edge_pa ? fmt::format("{:.5g}", *e.predicted_edge_pa / 1e6) : "-",
+                     e.body_edge_pa / 1e6, e.body_edge_pa / e.body_interior_pa,
+                     e.difference ? fmt::format("{:+.2f} %", 100 * *e.difference) : "-");
+  return t;
+}
+} // namespace rollcheck::study

@@ -1,0 +1,129 @@
+#pragma once
+// Issue 14's fuller check at small scale: one orientation of a body (r1 =
+// 10 mm, b / L about 1e-3 at the preprint's F = 100 N on steel) meshed
+// whole and pressed on the rigid plane in 3D (fem/whole_body_mesh.h,
+// fem/whole_body_contact.h), against the reduced models fem-sds and rim use:
+//  - along the ruling: the plane-strain slices (fem/slice_contact.h) at
+//    stations between the crease margins, each under the contact locus's
+//    line load q(s) and radius R(s) (contact/contact_locus.h: F through the
+//    centre of mass, the no-tension linear rule); the whole body's peak
+//    across the ruling at each station (its node planes interpolated)
+//    against the slice's peak;
+//  - at both loaded ends: the end model (fem/rim_end_contact.h) under the
+//    end's q and R at its interior angle 90 deg + the rim's lean
+//    (contact/rim_overhang.h). Not singular (square or acute on the rigid
+//    plane): its converged edge pressure over its plane-strain interior,
+//    times the slice's peak at the end's q and R, is the reduced models'
+//    edge pressure, against the whole body's (mean nodal pressure of the end
+//    plane's nodes with |y| <= b / 2, at the end model's finest edge element
+//    as the whole body's end layer). Singular (obtuse): no number is
+//    compared; the check reports the end singular and does not pass.
+//  - the load distribution: the whole body's line load at each station
+//    against the locus's q(s), and its centre of pressure (held at the
+//    centre of mass's foot by the solver).
+// Passes when every station and both ends agree within `tolerance` (3 %).
+//
+// Bodies: the cylinder. The oloid needs a whole-body mesh of its developable
+// surface that keeps the elements long along the ruling (docs/whole-body.md,
+// "Not built"); asking for it is an InputError that says so.
+#include "fem/rim_end_contact.h"
+#include "fem/slice_contact.h"
+#include "fem/whole_body_contact.h"
+#include "geometry/body.h"
+#include <array>
+#include <mpi.h>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rollcheck::study
+{
+struct WholeBodyCheckSettings
+{
+  /// The body: its r1 (radius_m), the cylinder's height (2 r1 by default).
+  geometry::BodySpec body = [] {
+    geometry::BodySpec b;
+    b.body = "cylinder";
+    b.radius_m = 0.01;
+    b.height_m = 0.02;
+    return b;
+  }();
+  /// The orientation: the ground's normal u (body frame, pointing into the
+  /// ground) nearest to (cos a, sin a, 0) on the body's contact curve.
+  double direction_deg = 0;
+  double normal_load_n = 100;       ///< F (the preprint's)
+  double youngs_modulus_pa = 200e9; ///< steel (the preprint's)
+  double poisson_ratio = 0.3;       ///< steel (the preprint's)
+  int contact_elements = 6;         ///< across b in the strip (the whole body)
+  double strip_over_half_width = 1.5; ///< the strip |y| < this b
+  double section_growth = 0.3;      ///< element size per distance beyond the strip
+  double layer_growth = 1.5;        ///< neighbouring layers along the ruling
+  int layers_across_length = 24;    ///< the largest layer is L / this
+  double penalty_c = 100;           ///< the whole body's kappa = c E / h_c (the slices' c)
+  int stations = 9;                 ///< slices along the ruling
+  double crease_margin = 0.05;      ///< stations this fraction of the ruling inside its loaded ends (fem-sds's)
+  int slice_refine = -1;            ///< the slices' level (SliceSettings::refine)
+  int end_levels = 3;               ///< the end models' edge levels
+  double end_edge_element = 0.125;  ///< their first h_e / b; the whole body's end layer is their last
+  double tolerance = 0.03;          ///< largest relative difference that passes
+};
+
+struct StationComparison
+{
+  double position_m = 0, radius_m = 0;
+  double locus_load_n_per_m = 0;    ///< q(s) of the locus
+  double slice_peak_pa = 0;         ///< plane strain under q(s)
+  double hertz_peak_pa = 0;         ///< line Hertz under q(s)
+  double body_peak_pa = 0;          ///< the whole body's peak across the ruling
+  double body_load_n_per_m = 0;     ///< the whole body's line load
+  double peak_difference() const { return body_peak_pa / slice_peak_pa - 1; }
+  double load_difference() const { return body_load_n_per_m / locus_load_n_per_m - 1; }
+};
+
+struct EndComparison
+{
+  double position_m = 0, radius_m = 0, load_n_per_m = 0, half_width_m = 0;
+  double interior_angle_deg = 90;
+  fem::RimEndStudy end_model;            ///< its levels, exponent, ratio
+  double slice_peak_pa = 0;              ///< plane strain at the end's q and R
+  std::optional<double> predicted_edge_pa; ///< end_to_interior x slice_peak (not singular, converged)
+  double body_edge_pa = 0;               ///< the whole body's
+  double body_interior_pa = 0;           ///< the whole body's peak at the nearest station
+  std::optional<double> difference;      ///< body / predicted - 1
+};
+
+struct WholeBodyCheck
+{
+  WholeBodyCheckSettings settings;
+  std::string body;                      ///< geometry::body_label
+  double length_m = 0, start_radius_m = 0, end_radius_m = 0;
+  double centre_of_pressure = 0;         ///< the locus's c (fraction of L)
+  double centre_of_mass_height_m = 0;    ///< where the body is cut and held
+  double loaded_from = 0, loaded_to = 0; ///< fractions of L
+  std::array<double, 2> rim_overhang_rad{};
+  double effective_modulus_pa = 0;       ///< E / (1 - nu^2), the rigid plane
+  double half_width_m = 0;               ///< line Hertz's b at the centre of mass's foot
+  fem::WholeBodySizes sizes;
+  std::int64_t section_nodes = 0;
+  std::size_t node_planes = 0;
+  double gmsh_s = 0;
+  fem::WholeBodyFem fem;
+  std::vector<StationComparison> stations;
+  std::vector<EndComparison> ends;       ///< the loaded ends
+  double worst_along = 0;                ///< largest |peak_difference| over the stations
+  std::optional<double> worst_end;       ///< largest |difference| over the ends (none if one is singular)
+  double worst_load = 0;                 ///< largest |load_difference| over the stations
+  bool pass = false;
+  std::string verdict;
+  double slices_s = 0, ends_s = 0, body_s = 0, wall_s = 0; ///< body_s: mesh + solve of the whole body
+};
+
+/// Every rank gets the result; rank 0 logs progress. InputError for bad
+/// settings or a body without a whole-body mesh; ComputationError from the FEM.
+WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings& settings);
+
+nlohmann::json to_json(const WholeBodyCheck& check);
+/// The comparison as a Markdown table (stations, then ends).
+std::string markdown_table(const WholeBodyCheck& check);
+} // namespace rollcheck::study
