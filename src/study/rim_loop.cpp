@@ -1,6 +1,7 @@
 // The rims over a body's rolling loop (study/rim_loop.h).
 #include "study/rim_loop.h"
 #include "contact/edge_on_elastic_block_exponent.h"
+#include "contact/hertz.h"
 #include "contact/wedge_exponent.h"
 #include "core/error.h"
 #include "core/json_number.h"
@@ -49,6 +50,16 @@ fem::RimEndSettings end_settings(const RimLoopSettings& s, double radius_m, doub
   e.youngs_modulus_pa = s.loop.youngs_modulus_pa;
   e.poisson_ratio = s.loop.poisson_ratio;
   e.xdmf_path.clear(); // one end's fields, not the loop's
+  // The fillet must stay small against the block (fem/rim_end_contact.h:
+  // r_e < H / 10), and b varies from end to end: deepen the block where the
+  // setting's H / b would be too shallow for this end's b.
+  if (e.edge_radius_m > 0)
+  {
+    const double modulus = contact::effective_modulus(e.youngs_modulus_pa, e.poisson_ratio,
+                                                      e.counter_face == fem::CounterFace::block);
+    const double half_width = std::sqrt(4 * load_n_per_m * radius_m / (std::numbers::pi * modulus));
+    e.depth_over_half_width = std::max(e.depth_over_half_width, 10.5 * e.edge_radius_m / half_width);
+  }
   return e;
 }
 
@@ -258,6 +269,7 @@ nlohmann::json to_json(const RimLoopResult& r)
   auto end_json = [](const fem::RimEndStudy& study) {
     return nlohmann::json{{"load_n_per_m", study.setup.load_n_per_m},
                           {"sheet_radius_m", study.setup.radius_m},
+                          {"depth_over_half_width", study.setup.depth_over_half_width},
                           {"half_width_m", study.half_width_m},
                           {"hertz_peak_pa", study.hertz_peak_pa},
                           {"singular", study.singular},

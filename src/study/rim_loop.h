@@ -44,7 +44,8 @@ struct RimLoopSettings
     return s;
   }();
   /// The end models: counter-face, edge radius, mesh levels, tolerance. Their
-  /// radius, line load, interior angle and material are set per end.
+  /// radius, line load, interior angle and material are set per end, and
+  /// with a rounded edge the depth H / b at least 10.5 r_e / b of the end.
   fem::RimEndSettings end;
   /// Largest spacing of the end table's nodes over the interior angle.
   double end_table_step_rad = 10 * std::numbers::pi / 180;

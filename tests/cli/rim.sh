@@ -29,7 +29,7 @@ check_json "steel block: the square end singular with the elastic wedge's expone
    and .half_width_m > 3.40e-5 and .half_width_m < 3.41e-5 and .end_to_interior == null' "$tmp/steel.json"
 "$bin" -q rim --counter-face steel --edge-radius 1e-5 > "$tmp/bad.log" 2>&1
 check '[[ $? -eq 2 ]] && grep -q "sharp edges" "$tmp/bad.log"' "steel with a fillet exits 2 saying the block models sharp edges"
-for args in "--interior-angle 180:interior_angle_deg" "--interior-angle 50:interior_angle_deg" "--radius -1:radius_m" \
+for args in "--interior-angle 180:interior_angle_deg" "--interior-angle 50:interior_angle_deg" "--sheet-radius -1:sheet_radius_m" \
             "--load-per-length nan:load_n_per_m" "--levels 0:levels" "--xdmf $tmp/f.vtu:--xdmf" \
             "--edge-radius 1e-3:edge_radius_m"; do
   "$bin" -q rim ${args%%:*} --json "$tmp/bad.json" > "$tmp/bad.log" 2>&1; rc=$?

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# rollcheck rim --body: every loaded rim end of a body's loop. The cylinder's
+# generators run rim to rim, so every sample loads two square ends
+# (90 deg): on the rigid plane not singular, each direct end's ratio agrees
+# with the end table's (the same q and R), and the end-aware FEM-SDS is a
+# number; bad settings exit 2 and write nothing.
+set -u
+source "$(dirname "$0")/lib.sh"
+bin=$1; here=$2; tmp=$3
+rm -rf "$tmp"; mkdir -p "$tmp"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
+mpirun -n 2 --oversubscribe "$bin" -q rim --body cylinder --orientations 1 --samples 256 \
+  --json "$tmp/cylinder.json" > "$tmp/cylinder.log" 2>&1 \
+  || { echo "FAIL: rim --body cylinder"; cat "$tmp/cylinder.log"; exit 1; }
+check_json "two loaded square ends per sample, none singular on the rigid plane" \
+  '.loop_scores.loaded_ends == 512 and .loop_scores.loaded_end_samples == 256 and .singular_from_deg > 89.999
+   and (.ends | length) == 2 and all(.ends[]; .singular == false and (.interior_angle_deg - 90 | fabs) < 1e-6)' \
+  "$tmp/cylinder.json"
+check_json "the square ends converge below the interior, and the table (same q, R) agrees with them within 3 %" \
+  'all(.ends[]; .converged and .end_to_interior < 0.5 and .end_peak_over_interior_peak < 0.5)
+   and (.end_table | length) == 1 and .end_table_vs_direct < 0.03' "$tmp/cylinder.json"
+check_json "end-aware FEM-SDS is a number with its status, beside the interior's" \
+  '(.loop_scores.end_aware[0].fem_sds.value | type) == "number" and (.loop_scores.fem_sds_rulings.value | type) == "number"
+   and (.end_aware_status | type) == "string"' "$tmp/cylinder.json"
+for args in "--body sphere:fem-sds covers" "--body cylinder --end-table-step 0:end_table_step_deg" \
+            "--body cylinder --orientations 0:orientations"; do
+  "$bin" -q rim ${args%%:*} --json "$tmp/bad.json" > "$tmp/bad.log" 2>&1; rc=$?
+  if [[ $rc -ne 2 ]] || ! grep -q -- "${args#*:}" "$tmp/bad.log" || [[ -e "$tmp/bad.json" ]]; then
+    echo "FAIL: rim ${args%%:*} gave exit $rc without '${args#*:}' (or wrote a result):"; cat "$tmp/bad.log"; fail=1
+  fi
+done
+exit $fail
