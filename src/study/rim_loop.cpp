@@ -23,8 +23,8 @@ constexpr double degree = std::numbers::pi / 180;
 /// The end model's range of interior angles (fem/rim_end_contact.h), 180 deg open.
 constexpr double smallest_modelled_angle = 60 * degree, largest_modelled_angle = 179.5 * degree;
 
-/// An exponent this close to 0 is not a singularity any refinement could show.
-constexpr double exponent_floor = 1e-6;
+/// The bisection's tolerance on the angle where sharp edges turn singular.
+constexpr double singular_angle_tolerance = 1e-10;
 
 double sharp_edge_exponent(const fem::RimEndSettings& end, double interior_angle_rad)
 {
@@ -113,13 +113,14 @@ double singular_from_angle(const fem::RimEndSettings& end)
 {
   if (end.edge_radius_m > 0)
     return std::numbers::pi;
-  auto singular = [&](double a) { return sharp_edge_exponent(end, a) < -exponent_floor; };
+  // Singular as the end model calls it (fem/rim_end_contact.h): any negative exponent.
+  auto singular = [&](double a) { return sharp_edge_exponent(end, a) < 0; };
   double lo = smallest_modelled_angle, hi = largest_modelled_angle;
   if (singular(lo))
     return lo;
   if (!singular(hi))
     return std::numbers::pi;
-  while (hi - lo > 1e-10)
+  while (hi - lo > singular_angle_tolerance)
   {
     const double mid = 0.5 * (lo + hi);
     (singular(mid) ? hi : lo) = mid;
@@ -215,9 +216,12 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& s)
 
   const LoopSds& interior = result.fem_sds.loop;
   const double lo = std::max(interior.loaded_end_angle_min_rad, smallest_modelled_angle);
-  const double hi = std::min({interior.loaded_end_angle_max_rad, result.singular_from_rad, largest_modelled_angle});
+  // The table's last node just below the singular angle, where the end model
+  // still finds a (square) edge.
+  const double hi = std::min({interior.loaded_end_angle_max_rad,
+                              result.singular_from_rad - 10 * singular_angle_tolerance, largest_modelled_angle});
   std::vector<EndFactor> factors;
-  if (interior.loaded_ends > 0 && lo <= hi)
+  if (interior.loaded_ends > 0 && interior.loaded_end_angle_min_rad <= result.singular_from_rad)
   {
     if (result.ends.empty())
       throw InputError(fmt::format("rim --body: the loop loads {} rim ends, but none of the {} orientations solved "
@@ -231,7 +235,7 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& s)
     }
     result.reference_load_n_per_m = median(loads);
     result.reference_radius_m = median(radii);
-    for (const double angle : table_angles(lo, hi, s.end_table_step_rad))
+    for (const double angle : table_angles(std::min(lo, hi), hi, s.end_table_step_rad))
     {
       EndTableNode node{angle, fem::solve_rim_end(
                                    comm, end_settings(s, result.reference_radius_m, result.reference_load_n_per_m, angle))};
