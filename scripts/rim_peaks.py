@@ -1,0 +1,96 @@
+#!/usr/bin/python3
+"""Peak-stress comparison at the rims (issue 14): `rollcheck rim --body` for
+the true oloid, the preprint's body, the cylinder and the family's best
+bodies (the FEM-SDS optimum and the real-rolling U optimum of
+`rollcheck optimize --family centre-line`, docs/optimize.md), on one
+counter-face and edge, and one Markdown table of what each run printed.
+
+    scripts/rim_peaks.py BUILD_DIR [--counter-face rigid|steel] [--ranks 2]
+                         [--out FILE.md] [--json-dir DIR] [-- RIM OPTIONS...]
+
+Options after `--` go to every `rollcheck rim` call (e.g. --edge-radius 2e-4
+--radius 0.01 --load 5000 --depth 25 --edge-element 0.03125 --levels 4).
+A run's JSON is kept in --json-dir (default: a temporary folder).
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+BODIES = [
+    ("oloid", ["--body", "oloid"]),
+    ("paper-oloid", ["--body", "paper-oloid"]),
+    ("cylinder", ["--body", "cylinder"]),
+    ("FEM-SDS optimum (112.7, 1.000, 0.999)",
+     ["--body", "roller", "--family", "centre-line", "--theta", "112.7", "--offset", "1.000", "--ratio", "0.999"]),
+    ("U optimum (74.1, 0.757, 1.071)",
+     ["--body", "roller", "--family", "centre-line", "--theta", "74.1", "--offset", "0.757", "--ratio", "1.071"]),
+]
+
+
+def score(entry):
+    value = entry["value"]
+    if value is None:
+        return "singular"
+    if value == "inf" or (isinstance(value, float) and value == float("inf")):
+        return "inf"
+    return f"{value:.4g}"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("build", help="build folder holding src/cli/rollcheck")
+    parser.add_argument("--counter-face", default="rigid", choices=["rigid", "steel"])
+    parser.add_argument("--ranks", type=int, default=2, help="MPI ranks of each rollcheck call")
+    parser.add_argument("--out", help="also write the table to this Markdown file")
+    parser.add_argument("--json-dir", help="keep each body's JSON here")
+    parser.add_argument("--only", help="comma-separated body labels to run (default: all)")
+    parser.add_argument("rim_options", nargs=argparse.REMAINDER, help="-- then options for every rollcheck rim")
+    args = parser.parse_args()
+    extra = [a for a in args.rim_options if a != "--"]
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    rollcheck = os.path.join(args.build, "src", "cli", "rollcheck")
+    mpi = ["mpirun", "-n", str(args.ranks)] if args.ranks > 1 else []
+    folder = args.json_dir or tempfile.mkdtemp(prefix="rim_peaks_")
+    os.makedirs(folder, exist_ok=True)
+    rows = ["| body | loaded rim ends (samples) | singular ends | worst end / orientation peak (direct ends) "
+            "| FEM-SDS | with the ends | FEM-FDS | with the ends | end table vs direct | status | s |",
+            "|---|---|---|---|---|---|---|---|---|---|---|"]
+    wanted = set(args.only.split(",")) if args.only else None
+    for label, body in BODIES:
+        if wanted and label.split(" ")[0] not in wanted and label not in wanted:
+            continue
+        path = os.path.join(folder, label.split(" ")[0] + f"_{args.counter_face}.json")
+        command = mpi + [rollcheck, "-q", "rim"] + body + ["--counter-face", args.counter_face] + extra
+        done = subprocess.run(command + ["--json", path], env=env, stdout=subprocess.DEVNULL,
+                              stderr=subprocess.PIPE, text=True)
+        if done.returncode != 0:
+            sys.exit(f"rim_peaks: {' '.join(command)} failed ({done.returncode}):\n{done.stderr[-2000:]}")
+        with open(path) as f:
+            j = json.load(f)
+        loop = j["loop_scores"]
+        aware = loop.get("end_aware", [{}])[0] if loop.get("end_aware") else None
+        singular = aware["singular_ends"] if aware else 0
+        worst = j["worst_end_to_interior"]
+        table = j["end_table_vs_direct"]
+        rows.append(
+            f"| {label} | {loop['loaded_ends']} ({loop['loaded_end_samples']} of {loop['samples']}) "
+            f"| {singular} ({100 * singular / max(loop['loaded_ends'], 1):.0f} %) "
+            f"| {'-' if worst is None else f'{worst:.3f}'} "
+            f"| {score(loop['fem_sds_rulings'])} | {score(aware['fem_sds']) if aware else '-'} "
+            f"| {score(loop['fem_fds_rulings'])} | {score(aware['fem_fds']) if aware else '-'} "
+            f"| {'-' if table is None else f'{100 * table:.1f} %'} | {j['end_aware_status']} | {j['wall_s']:.0f} |")
+        print(rows[-1], flush=True)
+    table = "\n".join(rows)
+    print(f"\ncounter-face {args.counter_face}, rim options: {' '.join(extra) or '(defaults)'}\n")
+    print(table)
+    if args.out:
+        with open(args.out + ".tmp", "w") as f:
+            f.write(table + "\n")
+        os.replace(args.out + ".tmp", args.out)
+
+
+if __name__ == "__main__":
+    main()
