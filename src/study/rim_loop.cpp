@@ -250,8 +250,11 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& s)
     {
       e.table_ratio = end_table_ratio(result.table, 1, result.singular_from_rad, e.modelled_angle_rad);
       if (e.table_ratio && e.study.end_to_interior && e.study.resolved && !e.study.singular)
-        result.table_vs_direct = std::max(result.table_vs_direct.value_or(0.0),
-                                          std::abs(*e.table_ratio / *e.study.end_to_interior - 1));
+        // Over the larger of the end's and the interior's pressure, as the end
+        // model's own change: an acute end's ratio tends to 0.
+        result.table_vs_direct
+            = std::max(result.table_vs_direct.value_or(0.0),
+                       std::abs(*e.table_ratio - *e.study.end_to_interior) / std::max(*e.study.end_to_interior, 1.0));
     }
     const double singular_from = result.singular_from_rad;
     for (const int stride : {1, 2})

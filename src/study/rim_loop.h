@@ -80,7 +80,8 @@ struct RimLoopResult
   /// Interior angles above this are singular (a sharp edge; pi when rounded).
   double singular_from_rad = 0;
   std::vector<EndTableNode> table;   ///< over the loop's non-singular loaded ends' angles
-  /// Largest |table / direct - 1| of the end/interior ratio over the direct ends with one.
+  /// Largest |table - direct| of the end/interior ratio over the direct ends
+  /// with one, over the larger of the direct ratio and 1 (the interior).
   std::optional<double> table_vs_direct;
   bool table_converged = true;       ///< every node's end model converged
   /// The loop's scores with the ends: [0] the table, [1] every other node
