@@ -31,6 +31,7 @@
 #include "fem/whole_body_contact.h"
 #include "geometry/body.h"
 #include <array>
+#include <cmath>
 #include <mpi.h>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -79,6 +80,13 @@ struct StationComparison
   double body_load_n_per_m = 0;     ///< the whole body's line load
   double peak_difference() const { return body_peak_pa / slice_peak_pa - 1; }
   double load_difference() const { return body_load_n_per_m / locus_load_n_per_m - 1; }
+  /// The whole body's peak against the slice's scaled to the whole body's
+  /// own line load there, p ~ sqrt(q) (line Hertz at fixed R): what is left
+  /// when the load distribution's difference is taken out.
+  double peak_difference_at_body_load() const
+  {
+    return body_peak_pa / (slice_peak_pa * std::sqrt(body_load_n_per_m / locus_load_n_per_m)) - 1;
+  }
 };
 
 struct EndComparison
