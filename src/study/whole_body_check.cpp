@@ -52,6 +52,8 @@ void check_settings(const WholeBodyCheckSettings& s)
   require(s.crease_margin > 0 && s.crease_margin < 0.25, "crease_margin must lie in (0, 0.25)");
   require(s.end_levels >= 1 && s.end_levels <= 6, "end_levels must lie in [1, 6]");
   require(s.end_edge_element > 0 && s.end_edge_element <= 1, "end_edge_element must lie in (0, 1]");
+  require(s.end_zone_over_half_width > 0 && s.end_zone_over_half_width <= 20,
+          "end_zone_over_half_width must lie in (0, 20]");
   require(s.tolerance > 0 && s.tolerance < 1, "tolerance must lie in (0, 1)");
 }
 
@@ -182,6 +184,11 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
   sizes.growth = s.section_growth;
   sizes.far_m = radius / 8;
   sizes.end_layer_m = s.end_edge_element * std::pow(0.5, s.end_levels - 1) * smallest_end_b;
+  if (!s.end_layers_only)
+  {
+    sizes.edge_m = sizes.end_layer_m;
+    sizes.edge_zone_m = s.end_zone_over_half_width * largest_b;
+  }
   sizes.layer_growth = s.layer_growth;
   sizes.largest_layer_m = L / s.layers_across_length;
   const fem::WholeBodyMesh mesh
@@ -331,6 +338,8 @@ nlohmann::json to_json(const WholeBodyCheck& r)
             {"end_layer_m", r.sizes.end_layer_m},
             {"layer_growth", r.sizes.layer_growth},
             {"largest_layer_m", r.sizes.largest_layer_m},
+            {"section_edge_element_m", r.sizes.edge_m},
+            {"section_edge_zone_m", r.sizes.edge_zone_m},
             {"node_planes", r.node_planes},
             {"section_nodes", r.section_nodes},
             {"dofs", r.fem.dofs},

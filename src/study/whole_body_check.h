@@ -65,8 +65,15 @@ struct WholeBodyCheckSettings
   int stations = 9;                 ///< slices along the ruling
   double crease_margin = 0.05;      ///< stations this fraction of the ruling inside its loaded ends (fem-sds's)
   int slice_refine = -1;            ///< the slices' level (SliceSettings::refine)
-  int end_levels = 3;               ///< the end models' edge levels
+  int end_levels = 2;               ///< the end models' edge levels
   double end_edge_element = 0.125;  ///< their first h_e / b; the whole body's end layer is their last
+  /// Unless set, the whole body's section is refined to the end layer's
+  /// size within end_zone_over_half_width b of the contact line, so that its
+  /// elements at the ends are isotropic (as the end model's at its edge).
+  /// Set, only the end layers are thin: the edge pressure then is a number of
+  /// the mesh (docs/whole-body.md), kept to show it.
+  bool end_layers_only = false;
+  double end_zone_over_half_width = 1.0;
   double tolerance = 0.03;          ///< largest relative difference that passes
 };
 
