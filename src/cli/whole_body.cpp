@@ -65,6 +65,13 @@ const io::BoundSchema<study::WholeBodyCheckSettings>& whole_body_schema()
         .real("end_edge_element", "--end-edge-element", &WholeBodyCheckSettings::end_edge_element, "",
               "The end models' first edge element h_e / b (rollcheck rim --edge-element); each level halves it",
               io::Bounds{1e-3, 1, false, true})
+        .flag("end_layers_only", "--end-layers-only", &WholeBodyCheckSettings::end_layers_only,
+              "Whole body: do not refine the section near the contact line to the end layers' size (by default the "
+              "elements at the ends are as small across and in depth as along the ruling, as the end model's "
+              "isotropic edge elements); only the end layers are then thin and the edge pressure is a number of "
+              "the mesh")
+        .real("end_zone_over_half_width", "--end-zone", &WholeBodyCheckSettings::end_zone_over_half_width, "",
+              "Whole body: radius of that refinement about the contact line, in units of b", io::Bounds{0, 20, false, true})
         .real("tolerance", "--tolerance", &WholeBodyCheckSettings::tolerance, "",
               "Largest relative difference of the whole body's pressure from the reduced models' that passes "
               "(issue 14: 3 %)",

@@ -12,7 +12,8 @@
 //
 // Linear solver: KSP with options prefix "hertz_". Defaults, overridable by
 // PETSC_OPTIONS or HertzSettings::petsc_options: 2D MUMPS LU; 3D GMRES (rtol
-// 1e-10) with GAMG on an aij matrix with the rigid-body near-nullspace.
+// 1e-10) with GAMG on an aij matrix with the rigid-body near-nullspace, or,
+// once node pairs join two bodies, with hypre BoomerAMG (set_node_pairs).
 #include "fem/contact_forms.h"
 #include "fem/scene_mesh.h"
 #include <dolfinx/fem/Constant.h>
@@ -172,6 +173,8 @@ private:
   void assemble_residual(dolfinx::la::Vector<T>& b) const;
   /// Adds the pairs' forces (the residual's part) to b, on _pair_map.
   void add_pair_forces(std::span<T> b) const;
+  /// 3D with node pairs: GMRES + hypre BoomerAMG unless -hertz_pc_type is given.
+  void use_pair_solver_defaults();
   void assemble_jacobian();
   double energy() const;
 
@@ -205,6 +208,7 @@ private:
   std::vector<std::shared_ptr<const dolfinx::fem::DirichletBC<T>>> _bcs;
   std::vector<std::int32_t> _top_z_dofs; ///< owned, unrolled
   int _z_component;
+  Model _model;
   Mat _A = nullptr;
   KSP _ksp = nullptr;
   MatNullSpace _near_nullspace = nullptr;

@@ -284,9 +284,12 @@ RawMesh mesh_with_gmsh(int dim, const std::function<double()>& add_geometry_and_
   }
   catch (...)
   {
-    // gmsh 4.8 throws std::string from some algorithms.
+    // gmsh 4.8 throws std::string from some algorithms; its last error
+    // message says which.
+    std::string last;
+    gmsh::logger::getLastError(last);
     gmsh::finalize();
-    throw ComputationError("gmsh failed to mesh the scene");
+    throw ComputationError("gmsh failed to mesh the scene" + (last.empty() ? std::string() : ": " + last));
   }
   gmsh::finalize();
   return raw;

@@ -76,7 +76,19 @@ RawMesh mesh_extruded_segment(double r, double c, const std::vector<double>& pla
     field::setNumber(threshold, "DistMin", sizes.strip_half_width_m);
     field::setNumber(threshold, "DistMax",
                      sizes.strip_half_width_m + (sizes.far_m - sizes.contact_m) / sizes.growth);
-    field::setAsBackgroundMesh(threshold);
+    int background = threshold;
+    if (sizes.edge_m > 0)
+    {
+      const int edge = field::add("Threshold");
+      field::setNumber(edge, "InField", distance);
+      field::setNumber(edge, "SizeMin", sizes.edge_m);
+      field::setNumber(edge, "SizeMax", sizes.far_m);
+      field::setNumber(edge, "DistMin", sizes.edge_zone_m);
+      field::setNumber(edge, "DistMax", sizes.edge_zone_m + (sizes.far_m - sizes.edge_m) / sizes.growth);
+      background = field::add("Min");
+      field::setNumbers(background, "FieldsList", {static_cast<double>(threshold), static_cast<double>(edge)});
+    }
+    field::setAsBackgroundMesh(background);
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
     gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
     gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);

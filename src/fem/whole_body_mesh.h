@@ -21,8 +21,9 @@
 // b / 6 along a 20 mm ruling at b = 20 um would be 6000 per row of the strip
 // (millions of tetrahedra), which no 10-minute run solves.
 //
-// Grading: in the section, h(d) = min(far, contact + growth max(0, d - strip))
-// with d the distance from the contact line (gmsh Distance + Threshold);
+// Grading: in the section, h(d) = min(far, contact + growth max(0, d - strip),
+// edge + growth max(0, d - edge_zone)) with d the distance from the contact
+// line (gmsh Distance + Threshold + Min);
 // along the ruling, layers of end_layer at x = 0 and x = L growing by
 // layer_growth towards the middle, up to largest_layer.
 #include "fem/scene_mesh.h"
@@ -37,6 +38,12 @@ struct WholeBodySizes
   double strip_half_width_m = 0; ///< the strip |y| < this along the ruling (1.5 b)
   double growth = 0.3;          ///< section element size per distance beyond the strip
   double far_m = 0;             ///< largest section element
+  /// The section also refined to edge_m within edge_zone_m of the contact
+  /// line (0: not), so that the end layers' elements are as small across and
+  /// in depth as along the ruling there (isotropic at the ends, as the end
+  /// model's edge elements): growth as above.
+  double edge_m = 0;
+  double edge_zone_m = 0;
   double end_layer_m = 0;       ///< thickness of the layers at x = 0 and x = L
   double layer_growth = 1.5;    ///< ratio of neighbouring layers' thicknesses
   double largest_layer_m = 0;   ///< in the middle of the ruling

@@ -31,6 +31,7 @@
 #include "fem/whole_body_contact.h"
 #include "geometry/body.h"
 #include <array>
+#include <cmath>
 #include <mpi.h>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -64,8 +65,15 @@ struct WholeBodyCheckSettings
   int stations = 9;                 ///< slices along the ruling
   double crease_margin = 0.05;      ///< stations this fraction of the ruling inside its loaded ends (fem-sds's)
   int slice_refine = -1;            ///< the slices' level (SliceSettings::refine)
-  int end_levels = 3;               ///< the end models' edge levels
+  int end_levels = 2;               ///< the end models' edge levels
   double end_edge_element = 0.125;  ///< their first h_e / b; the whole body's end layer is their last
+  /// Unless set, the whole body's section is refined to the end layer's
+  /// size within end_zone_over_half_width b of the contact line, so that its
+  /// elements at the ends are isotropic (as the end model's at its edge).
+  /// Set, only the end layers are thin: the edge pressure then is a number of
+  /// the mesh (docs/whole-body.md), kept to show it.
+  bool end_layers_only = false;
+  double end_zone_over_half_width = 1.0;
   double tolerance = 0.03;          ///< largest relative difference that passes
 };
 
@@ -79,6 +87,13 @@ struct StationComparison
   double body_load_n_per_m = 0;     ///< the whole body's line load
   double peak_difference() const { return body_peak_pa / slice_peak_pa - 1; }
   double load_difference() const { return body_load_n_per_m / locus_load_n_per_m - 1; }
+  /// The whole body's peak against the slice's scaled to the whole body's
+  /// own line load there, p ~ sqrt(q) (line Hertz at fixed R): what is left
+  /// when the load distribution's difference is taken out.
+  double peak_difference_at_body_load() const
+  {
+    return body_peak_pa / (slice_peak_pa * std::sqrt(body_load_n_per_m / locus_load_n_per_m)) - 1;
+  }
 };
 
 struct EndComparison

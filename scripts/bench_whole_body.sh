@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Benchmark (not a test) of `rollcheck whole-body` (issue 14's fuller check at
+# small scale) against its budget of 10 minutes, on 2 ranks: the wall time of
+# each check and of its parts (slices, end models, whole body), the whole
+# body's DOFs, and the ratio to the budget; beside them the largest
+# differences along the ruling and at the ends, against 3 %.
+#   bash scripts/bench_whole_body.sh [ROLLCHECK] [-- extra whole-body options]
+# Default: the 10 mm cylinder (F = 100 N, steel).
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+bin=$here/build/src/cli/rollcheck
+if [[ $# -gt 0 && $1 != -- ]]; then bin=$1; shift; fi
+[[ ${1:-} == -- ]] && shift
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+run() { # NAME COMMAND...: the check's JSON in $tmp/NAME.json, its wall seconds in $tmp/NAME.s
+  local name=$1 start end; shift
+  start=$(date +%s.%N); "$@" --json "$tmp/$name.json" > /dev/null 2> "$tmp/log" || { cat "$tmp/log"; exit 1; }
+  end=$(date +%s.%N); echo "$end - $start" | bc -l > "$tmp/$name.s"
+}
+run cylinder mpirun -n 2 "$bin" whole-body --body cylinder --radius 0.01 "$@"
+/usr/bin/python3 - "$tmp" <<'PY'
+import json, sys
+tmp = sys.argv[1]
+budget = 600.0
+print("| check | DOFs | node planes x section nodes | slices s | end models s | whole body s | total s | total / 10 min | worst along | worst end | verdict |")
+print("|---|---|---|---|---|---|---|---|---|---|---|")
+for name in ["cylinder"]:
+    r = json.load(open(f"{tmp}/{name}.json"))
+    total = float(open(f"{tmp}/{name}.s").read())
+    w, m = r["wall_s"], r["mesh"]
+    end = "-" if r["worst_end"] is None else f"{100 * r['worst_end']:.2f} %"
+    print(f"| {name} | {m['dofs']} | {m['node_planes']} x {m['section_nodes']} | {w['slices']:.1f} | {w['end_models']:.1f} "
+          f"| {w['whole_body']:.1f} | {total:.1f} | {total / budget:.2f} | {100 * r['worst_along']:.2f} % | {end} "
+          f"| {'PASS' if r['pass'] else 'FAIL'} |")
+PY
