@@ -5,7 +5,7 @@
 #  - square end, rigid plane, 3 levels (2 ranks);
 #  - 120 deg sharp rim, rigid plane, 4 levels (2 ranks): the exponent's fit;
 #  - 120 deg rim rounded (2 b), 2.0 GPa, 4 levels (2 ranks): resolved;
-#  - square end on the steel block, 4 levels (one process: the node pairs).
+#  - square end on the steel block, 4 levels (2 ranks).
 #   bash scripts/bench_rim.sh [ROLLCHECK]
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -21,7 +21,7 @@ run() { # NAME COMMAND...: the study's JSON in $tmp/NAME.json, its wall seconds 
 run square mpirun -n 2 "$bin" rim
 run sharp120 mpirun -n 2 "$bin" run "$here/cases/rim_obtuse_sharp.toml"
 run rounded120 mpirun -n 2 "$bin" run "$here/cases/rim_obtuse_rounded.toml"
-run steel "$bin" rim --counter-face steel --levels 4
+run steel mpirun -n 2 "$bin" rim --counter-face steel --levels 4
 /usr/bin/python3 - "$tmp" <<'PY'
 import json, sys
 tmp = sys.argv[1]

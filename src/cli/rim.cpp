@@ -69,7 +69,8 @@ const io::BoundSchema<RimCommand>& rim_schema()
               io::Bounds{0, 1, false, false});
     s.choice("counter_face", "--counter-face", end(&RimEndSettings::counter_face),
              "What the body presses on: rigid (the frictionless rigid plane) or steel (a block of the body's own "
-             "material, a second elastic body, frictionless; sharp edges, one process)",
+             "material, a second elastic body, frictionless; sharp or rounded edges, any number of processes; a rounded "
+             "edge meshes down to h_e of about 2 um for now)",
              {{"rigid", fem::CounterFace::rigid}, {"steel", fem::CounterFace::block}});
     add_material(s, end(&RimEndSettings::youngs_modulus_pa), end(&RimEndSettings::poisson_ratio));
     s.real("depth_over_half_width", "--depth", end(&RimEndSettings::depth_over_half_width), "",
@@ -78,7 +79,8 @@ const io::BoundSchema<RimCommand>& rim_schema()
               "L / H: the contact modelled from the far side (plane strain) to the edge", io::Bounds{1, 20})
         .choice("sheet", "--sheet", end(&RimEndSettings::sheet),
                 "The contact sheet as a cylinder, or flattened onto z = 0 with its height in the contact's initial "
-                "gap (half-space theory's profile); auto: flat where R >= 20 H",
+                "gap (half-space theory's profile); auto: flat where R >= 20 H; the steel counter-face is always flat "
+                "(the sheet's profile in the pairs' gap; needs R >= H)",
                 {{"auto", fem::SheetModel::automatic}, {"cylinder", fem::SheetModel::cylinder},
                  {"flat", fem::SheetModel::flat}})
         .integer("contact_elements", "--contact-elements", end(&RimEndSettings::contact_elements), "",

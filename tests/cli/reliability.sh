@@ -14,8 +14,6 @@ expect 2 "too small" -- "$bin" crease --load-per-length 3
 expect 2 "too small" -- "$bin" hertz --model plane-strain --load 1e-7
 expect 2 "too small" -- "$bin" hertz --load 1e-15
 expect 2 "too small" -- mpirun -n 2 "$bin" hertz --model plane-strain --load 1e-7
-# The steel counter-face's node pairs need both twins on one process.
-expect 2 "runs on one process" -- mpirun -n 2 "$bin" rim --counter-face steel --levels 1
 # A small load the model can represent is valid physics: it solves.
 expect 0 "p0" -- "$bin" hertz --load 1e-9 --json -
 # Integers are range-checked before narrowing.
