@@ -1,3 +1,4 @@
+#include "fem/on_rank_zero.h"
 #include "fem/scene_mesh.h"
 #include "core/error.h"
 #include <fmt/format.h>
@@ -328,38 +329,7 @@ SceneMesh distribute(MPI_Comm comm, int gdim, const std::function<RawMesh()>& ma
   const int nodes_per_cell = gdim + 1;
 
   // gmsh runs on rank 0 only; the other ranks enter create_mesh empty-handed.
-  RawMesh raw;
-  int failed = 0;
-  std::string message;
-  if (rank == 0)
-  {
-    try
-    {
-      raw = make_raw();
-    }
-    catch (const InputError& e)
-    {
-      failed = 2;
-      message = e.what();
-    }
-    catch (const std::exception& e)
-    {
-      failed = 1;
-      message = e.what();
-    }
-  }
-  // Every rank raises rank 0's error, of its kind and with its message.
-  MPI_Bcast(&failed, 1, MPI_INT, 0, comm);
-  if (failed)
-  {
-    int length = static_cast<int>(message.size());
-    MPI_Bcast(&length, 1, MPI_INT, 0, comm);
-    message.resize(length);
-    MPI_Bcast(message.data(), length, MPI_CHAR, 0, comm);
-    if (failed == 2)
-      throw InputError(message);
-    throw ComputationError(message);
-  }
+  const RawMesh raw = on_rank_zero<RawMesh>(comm, make_raw);
 
   const std::size_t num_cells = raw.cells.size() / nodes_per_cell;
   const std::vector<std::uint8_t> perm = dolfinx::io::cells::perm_gmsh(cell_type, nodes_per_cell);

@@ -1,5 +1,6 @@
 // The whole body's mesh (fem/whole_body_mesh.h): gmsh OpenCASCADE on rank 0,
 // structured layers along the ruling, distributed by DOLFINx.
+#include "fem/on_rank_zero.h"
 #include "fem/whole_body_mesh.h"
 #include "core/error.h"
 #include <algorithm>
@@ -144,39 +145,7 @@ RawMesh mesh_extruded_segment(double r, double c, const std::vector<double>& pla
 std::shared_ptr<dolfinx::mesh::Mesh> distribute(MPI_Comm comm, const std::function<RawMesh()>& make_raw,
                                                 double& gmsh_s)
 {
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  RawMesh raw;
-  int failed = 0;
-  std::string message;
-  if (rank == 0)
-  {
-    try
-    {
-      raw = make_raw();
-    }
-    catch (const InputError& e)
-    {
-      failed = 2;
-      message = e.what();
-    }
-    catch (const std::exception& e)
-    {
-      failed = 1;
-      message = e.what();
-    }
-  }
-  MPI_Bcast(&failed, 1, MPI_INT, 0, comm);
-  if (failed)
-  {
-    int length = static_cast<int>(message.size());
-    MPI_Bcast(&length, 1, MPI_INT, 0, comm);
-    message.resize(length);
-    MPI_Bcast(message.data(), length, MPI_CHAR, 0, comm);
-    if (failed == 2)
-      throw InputError(message);
-    throw ComputationError(message);
-  }
+  const RawMesh raw = on_rank_zero<RawMesh>(comm, make_raw);
   gmsh_s = raw.gmsh_s;
   MPI_Bcast(&gmsh_s, 1, MPI_DOUBLE, 0, comm);
   const auto cell_type = dolfinx::mesh::CellType::tetrahedron;
