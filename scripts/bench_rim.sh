@@ -10,14 +10,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 bin=${1:-$here/build/src/cli/rollcheck}
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-run() { # NAME COMMAND...: the study's JSON in $tmp/NAME.json, its wall seconds in $tmp/NAME.s
-  local name=$1 start end; shift
-  start=$(date +%s.%N); "$@" --json "$tmp/$name.json" > /dev/null 2> "$tmp/log" || { cat "$tmp/log"; exit 1; }
-  end=$(date +%s.%N); echo "$end - $start" | bc -l > "$tmp/$name.s"
-}
+source "$here/scripts/bench_lib.sh"
 run square mpirun -n 2 "$bin" rim
 run sharp120 mpirun -n 2 "$bin" run "$here/cases/rim_obtuse_sharp.toml"
 run rounded120 mpirun -n 2 "$bin" run "$here/cases/rim_obtuse_rounded.toml"

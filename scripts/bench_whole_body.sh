@@ -11,14 +11,7 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 bin=$here/build/src/cli/rollcheck
 if [[ $# -gt 0 && $1 != -- ]]; then bin=$1; shift; fi
 [[ ${1:-} == -- ]] && shift
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-run() { # NAME COMMAND...: the check's JSON in $tmp/NAME.json, its wall seconds in $tmp/NAME.s
-  local name=$1 start end; shift
-  start=$(date +%s.%N); "$@" --json "$tmp/$name.json" > /dev/null 2> "$tmp/log" || { cat "$tmp/log"; exit 1; }
-  end=$(date +%s.%N); echo "$end - $start" | bc -l > "$tmp/$name.s"
-}
+source "$here/scripts/bench_lib.sh"
 run cylinder mpirun -n 2 "$bin" whole-body --body cylinder --radius 0.01 "$@"
 /usr/bin/python3 - "$tmp" <<'PY'
 import json, sys

@@ -216,9 +216,6 @@ nlohmann::json run_loop(study::RimLoopSettings settings)
                      "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const study::RimLoopEnd& e : r.ends)
   {
-    double seconds = 0;
-    for (const fem::RimEndLevel& l : e.study.levels)
-      seconds += l.wall_s;
     ends += fmt::format("| {} | {} | {:.1f}{} | {:.4g} | {:.3g} | {:.3g} | {:.3f} | {} | {} | {} | {:.0f} |\n",
                         e.orientation, e.end == 0 ? "start" : "end", e.interior_angle_rad / degree,
                         e.modelled_angle_rad != e.interior_angle_rad
@@ -227,7 +224,7 @@ nlohmann::json run_loop(study::RimLoopSettings settings)
                         e.study.setup.load_n_per_m, e.study.setup.radius_m * 1e3, e.study.half_width_m * 1e6,
                         e.study.wedge_exponent, end_verdict(e.study),
                         e.end_peak_pa ? fmt::format("{:.3f}", *e.end_peak_pa / e.interior_peak_pa) : "-",
-                        e.table_ratio ? fmt::format("{:.3f}", *e.table_ratio) : "-", seconds);
+                        e.table_ratio ? fmt::format("{:.3f}", *e.table_ratio) : "-", e.study.wall_s());
   }
   auto score = [](const study::ConvergedScore& c) {
     if (!c.value)

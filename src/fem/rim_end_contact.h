@@ -170,6 +170,14 @@ struct RimEndStudy
   double plane_strain_change = 0;    ///< |p(-L/2) / p(-L) - 1| at the last level
   double plane_strain_noise = 0;     ///< its standard error (the nodal pressures' scatter)
   std::vector<RimEndLevel> levels;
+  /// The wall time of every level together.
+  double wall_s() const
+  {
+    double total = 0;
+    for (const RimEndLevel& l : levels)
+      total += l.wall_s;
+    return total;
+  }
 };
 
 /// Every rank gets the study. InputError for bad settings (naming the

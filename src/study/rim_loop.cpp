@@ -288,12 +288,7 @@ nlohmann::json to_json(const RimLoopResult& r)
                           {"resolved", study.resolved},
                           {"converged", study.converged},
                           {"plane_strain_change", study.plane_strain_change},
-                          {"wall_s", [&] {
-                             double total = 0;
-                             for (const fem::RimEndLevel& l : study.levels)
-                               total += l.wall_s;
-                             return total;
-                           }()}};
+                          {"wall_s", study.wall_s()}};
   };
   nlohmann::json ends = nlohmann::json::array();
   for (const RimLoopEnd& e : r.ends)
