@@ -10,7 +10,8 @@ counter-face and edge, and one Markdown table of what each run printed.
 
 Options after `--` go to every `rollcheck rim` call (e.g. --edge-radius 2e-4
 --radius 0.01 --load 5000 --depth 25 --edge-element 0.03125 --levels 4).
-A run's JSON is kept in --json-dir (default: a temporary folder).
+A run's JSON and log (with its per-end table) are kept in --json-dir (default:
+a temporary folder).
 """
 import argparse
 import json
@@ -63,9 +64,12 @@ def main():
         if wanted and label.split(" ")[0] not in wanted and label not in wanted:
             continue
         path = os.path.join(folder, label.split(" ")[0] + f"_{args.counter_face}.json")
-        command = mpi + [rollcheck, "-q", "rim"] + body + ["--counter-face", args.counter_face] + extra
+        command = mpi + [rollcheck, "rim"] + body + ["--counter-face", args.counter_face] + extra
         done = subprocess.run(command + ["--json", path], env=env, stdout=subprocess.DEVNULL,
                               stderr=subprocess.PIPE, text=True)
+        # The log holds the run's per-end table.
+        with open(path[:-len(".json")] + ".log", "w") as log:
+            log.write(" ".join(command) + "\n" + done.stderr)
         if done.returncode != 0:
             sys.exit(f"rim_peaks: {' '.join(command)} failed ({done.returncode}):\n{done.stderr[-2000:]}")
         with open(path) as f:

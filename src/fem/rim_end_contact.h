@@ -152,7 +152,8 @@ struct RimEndLevel
   double edge_pressure_pa = 0;
   std::vector<CentreLineNode> centre_line;
   std::int64_t dofs = 0;
-  int newton_iterations = 0, krylov_iterations = 0;
+  double approach_m = 0;             ///< the top's approach that carries q_far
+  int load_steps = 0, newton_iterations = 0, krylov_iterations = 0;
   double wall_s = 0;
 };
 
