@@ -48,9 +48,10 @@ def main():
     parser.add_argument("--out", help="also write the table to this Markdown file")
     parser.add_argument("--json-dir", help="keep each body's JSON here")
     parser.add_argument("--only", help="comma-separated body labels to run (default: all)")
-    parser.add_argument("rim_options", nargs=argparse.REMAINDER, help="-- then options for every rollcheck rim")
-    args = parser.parse_args()
-    extra = [a for a in args.rim_options if a != "--"]
+    argv = sys.argv[1:]
+    split = argv.index("--") if "--" in argv else len(argv)
+    args = parser.parse_args(argv[:split])
+    extra = argv[split + 1:]
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     rollcheck = os.path.join(args.build, "src", "cli", "rollcheck")
     mpi = ["mpirun", "-n", str(args.ranks)] if args.ranks > 1 else []

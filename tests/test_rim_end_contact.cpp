@@ -3,6 +3,7 @@
 // exponent of Williams's mirrored wedge, a rounded obtuse rim converges.
 #include "contact/wedge_exponent.h"
 #include "fem/rim_end_contact.h"
+#include "fem/petsc_session.h"
 #include "fem/scene_mesh.h"
 #include <algorithm>
 #include <dolfinx/mesh/utils.h>
@@ -80,6 +81,7 @@ TEST(RimEndContact, OnlyFacesFacingThePlaneAreContactFacets)
   // facets been contact facets, the edge nodes' recovered pressure would
   // average in their zero pressure (the square end read 0.27 instead of
   // 0.51). An obtuse end's other face faces the plane and may touch it.
+  fem::ensure_petsc(); // MPI, before the mesh is distributed
   const double b = 2.4e-5, H = 10 * b;
   fem::RimEndSizes sizes;
   sizes.contact_m = b / 6;
