@@ -150,6 +150,8 @@ TEST(FemSds, CylinderEndAwareScoresFollowTheEndFactor)
   study::FemSdsSettings settings; // rolling oracle, r = 1 m, height 2 m, steel
   settings.body.body = "cylinder";
   settings.samples_per_loop = 512;
+  settings.orientations = 1;
+  settings.fem_slices = 2;
   // p0 = 0.84 GPa: stress amplitudes p / 2 above the endurance limit (250 MPa), so FEM-FDS is finite.
   settings.normal_load_n = 2e7;
   fem::SliceScaling table(study::slice_settings(settings), settings.table_nodes_per_decade);
@@ -158,7 +160,10 @@ TEST(FemSds, CylinderEndAwareScoresFollowTheEndFactor)
       [](double) { return std::optional<double>(1.0); },
       [](double) { return std::optional<double>(2.0); },
       [](double) { return std::optional<double>(); }};   // singular
-  const study::LoopSds loop = study::score_body_loop(MPI_COMM_WORLD, settings, table, factors).loop;
+  study::FemSdsResult result = study::run_fem_sds(MPI_COMM_WORLD, settings, table);
+  study::LoopSds& loop = result.loop;
+  loop.end_aware = study::end_aware_scores(MPI_COMM_WORLD, result.loop_samples, table, study::loop_settings(settings),
+                                           factors);
 
   // Every sample stands on a generator running rim to rim: two square ends.
   EXPECT_EQ(loop.loaded_end_samples, loop.samples);

@@ -1,3 +1,4 @@
+#include "fem/gmsh_raw_mesh.h"
 #include "fem/on_rank_zero.h"
 #include "fem/scene_mesh.h"
 #include "core/error.h"
@@ -13,7 +14,6 @@
 #include <functional>
 #include <gmsh.h>
 #include <numbers>
-#include <unordered_map>
 #include <xtensor/xtensor.hpp>
 #include <xtensor/xview.hpp>
 
@@ -21,13 +21,6 @@ namespace rollcheck::fem
 {
 namespace
 {
-/// Nodes and cells of a gmsh mesh in DOLFINx input form.
-struct RawMesh
-{
-  std::vector<double> x;        ///< row-major, gdim columns
-  std::vector<std::int64_t> cells;
-};
-
 /// The gmsh point entity at the origin (the first point of contact).
 int point_at_origin(double radius)
 {
@@ -203,7 +196,7 @@ void require_meshable(double smallest_size_m)
 
 /// Runs gmsh on the geometry `add_geometry` builds, whose element sizes (and
 /// any other meshing option) it sets too; it returns the smallest size.
-/// Nodes with `dim` coordinates, cells of the simplex of dimension `dim`.
+/// The mesh as read_gmsh_mesh(dim) reads it.
 RawMesh mesh_with_gmsh(int dim, const std::function<double()>& add_geometry_and_sizes)
 {
   gmsh::initialize();
@@ -218,60 +211,7 @@ RawMesh mesh_with_gmsh(int dim, const std::function<double()>& add_geometry_and_
     gmsh::option::setNumber("Mesh.Optimize", 1);
     require_meshable(add_geometry_and_sizes());
     gmsh::model::mesh::generate(dim);
-
-    std::vector<std::size_t> node_tags;
-    std::vector<double> coords, parametric;
-    gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
-    std::unordered_map<std::size_t, std::int64_t> index;
-    index.reserve(node_tags.size());
-    for (std::size_t i = 0; i < node_tags.size(); ++i)
-      index[node_tags[i]] = static_cast<std::int64_t>(i);
-    raw.x.reserve(node_tags.size() * dim);
-    for (std::size_t i = 0; i < node_tags.size(); ++i)
-      for (int j = 0; j < dim; ++j)
-        raw.x.push_back(coords[3 * i + j]);
-
-    // Cells volume by volume (surface by surface in 2D), highest first: a
-    // node shared with a volume met before is given a twin of its own, so
-    // that the volumes are separate bodies touching at their shared faces.
-    const int gmsh_type = dim == 3 ? 4 : 2; // 4-node tetrahedron, 3-node triangle
-    gmsh::vectorpair volumes;
-    gmsh::model::getEntities(volumes, dim);
-    std::vector<std::pair<double, int>> by_height;
-    for (const auto& [d, tag] : volumes)
-    {
-      double x0, y0, z0, x1, y1, z1;
-      gmsh::model::getBoundingBox(d, tag, x0, y0, z0, x1, y1, z1);
-      by_height.push_back({-(dim == 3 ? z1 : y1), tag});
-    }
-    std::sort(by_height.begin(), by_height.end());
-    std::unordered_map<std::size_t, int> owner; // node tag -> the volume that met it first
-    for (const auto& [height, volume] : by_height)
-    {
-      std::vector<std::size_t> element_tags, element_nodes;
-      gmsh::model::mesh::getElementsByType(gmsh_type, element_tags, element_nodes, volume);
-      std::unordered_map<std::size_t, std::int64_t> twin;
-      for (std::size_t tag : element_nodes)
-      {
-        const int first = owner.emplace(tag, volume).first->second;
-        if (first == volume)
-        {
-          raw.cells.push_back(index.at(tag));
-          continue;
-        }
-        auto [entry, inserted] = twin.emplace(tag, static_cast<std::int64_t>(raw.x.size() / dim));
-        if (inserted)
-        {
-          const std::int64_t original = index.at(tag);
-          for (int j = 0; j < dim; ++j)
-          {
-            const double coordinate = raw.x[original * dim + j]; // push_back may move raw.x
-            raw.x.push_back(coordinate);
-          }
-        }
-        raw.cells.push_back(entry->second);
-      }
-    }
+    raw = read_gmsh_mesh(dim);
   }
   catch (const InputError&)
   {

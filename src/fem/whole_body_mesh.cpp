@@ -1,5 +1,6 @@
 // The whole body's mesh (fem/whole_body_mesh.h): gmsh OpenCASCADE on rank 0,
 // structured layers along the ruling, distributed by DOLFINx.
+#include "fem/gmsh_raw_mesh.h"
 #include "fem/on_rank_zero.h"
 #include "fem/whole_body_mesh.h"
 #include "core/error.h"
@@ -15,21 +16,12 @@
 #include <fmt/format.h>
 #include <functional>
 #include <gmsh.h>
-#include <unordered_map>
 #include <xtensor/xtensor.hpp>
 
 namespace rollcheck::fem
 {
 namespace
 {
-/// Nodes (x, y, z) and 4-node tetrahedra in gmsh's node order.
-struct RawMesh
-{
-  std::vector<double> x;
-  std::vector<std::int64_t> cells;
-  double gmsh_s = 0;
-};
-
 double seconds_since(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -40,7 +32,6 @@ double seconds_since(std::chrono::steady_clock::time_point start)
 /// point, extruded along gmsh z through the given planes, meshed.
 RawMesh mesh_extruded_segment(double r, double c, const std::vector<double>& planes, const WholeBodySizes& sizes)
 {
-  const auto start = std::chrono::steady_clock::now();
   namespace occ = gmsh::model::occ;
   namespace field = gmsh::model::mesh::field;
   gmsh::initialize();
@@ -95,29 +86,10 @@ RawMesh mesh_extruded_segment(double r, double c, const std::vector<double>& pla
     gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
     gmsh::model::mesh::generate(3);
 
-    std::vector<std::size_t> node_tags;
-    std::vector<double> coords, parametric;
-    gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
-    std::unordered_map<std::size_t, std::int64_t> index;
-    index.reserve(node_tags.size());
-    raw.x.reserve(coords.size());
-    for (std::size_t i = 0; i < node_tags.size(); ++i)
-    {
-      index[node_tags[i]] = static_cast<std::int64_t>(i);
-      // gmsh (across, up, along) -> (along, across, up)
-      raw.x.insert(raw.x.end(), {coords[3 * i + 2], coords[3 * i], coords[3 * i + 1]});
-    }
-    std::vector<int> types;
-    std::vector<std::vector<std::size_t>> element_tags, element_nodes;
-    gmsh::model::mesh::getElements(types, element_tags, element_nodes, 3, -1);
-    for (std::size_t t = 0; t < types.size(); ++t)
-    {
-      if (types[t] != 4)
-        throw ComputationError(fmt::format("whole-body mesh: gmsh made volume elements of type {}, not tetrahedra",
-                                           types[t]));
-      for (std::size_t tag : element_nodes[t])
-        raw.cells.push_back(index.at(tag));
-    }
+    raw = read_gmsh_mesh(3);
+    // gmsh (across, up, along) -> (along, across, up)
+    for (std::size_t i = 0; i < raw.x.size(); i += 3)
+      std::rotate(raw.x.begin() + i, raw.x.begin() + i + 2, raw.x.begin() + i + 3);
     // The extruded tetrahedra of gmsh keep the orientation of the section's
     // triangles, which may be either; DOLFINx needs none in particular.
   }
@@ -137,16 +109,17 @@ RawMesh mesh_extruded_segment(double r, double c, const std::vector<double>& pla
     throw ComputationError("gmsh failed to mesh the whole body");
   }
   gmsh::finalize();
-  raw.gmsh_s = seconds_since(start);
   return raw;
 }
 
-/// Rank 0's raw mesh distributed over `comm`; rank 0's error raised on every rank.
+/// Rank 0's raw mesh distributed over `comm`; rank 0's error raised on every
+/// rank. `gmsh_s`: rank 0's time making it.
 std::shared_ptr<dolfinx::mesh::Mesh> distribute(MPI_Comm comm, const std::function<RawMesh()>& make_raw,
                                                 double& gmsh_s)
 {
+  const auto start = std::chrono::steady_clock::now();
   const RawMesh raw = on_rank_zero<RawMesh>(comm, make_raw);
-  gmsh_s = raw.gmsh_s;
+  gmsh_s = seconds_since(start);
   MPI_Bcast(&gmsh_s, 1, MPI_DOUBLE, 0, comm);
   const auto cell_type = dolfinx::mesh::CellType::tetrahedron;
   const std::size_t num_cells = raw.cells.size() / 4;

@@ -151,17 +151,6 @@ Scene make_scene(const FemSdsSettings& s, bool with_uniformity)
   return scene;
 }
 
-LoopSdsSettings loop_settings_of(const FemSdsSettings& s, const Models& m)
-{
-  LoopSdsSettings loop;
-  loop.normal_load_n = s.normal_load_n;
-  loop.crease_margin = s.crease_margin;
-  loop.map_points = s.map_points;
-  loop.locus = m.locus;
-  loop.tolerance = s.tolerance;
-  return loop;
-}
-
 /// The slices' FEM along the loaded ruling and their peaks, and the line
 /// Hertz at its loaded ends.
 void solve_slices_along(MPI_Comm comm, FemSdsOrientation& r, const FemSdsSettings& s, const Models& m,
@@ -373,7 +362,10 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScali
     spdlog::info("fem-sds {}: {}; every sample scored, {} orientations solved directly (seed {})", result.body,
                  source.description, s.orientations, s.seed);
 
-  result.loop = loop_sds(comm, source, body, pressure.peak_pressure_pa, scene.cones, table, loop_settings_of(s, m));
+  const LoopSdsSettings loop = loop_settings(s);
+  result.loop_samples = map_loop_samples(comm, source, body, pressure.peak_pressure_pa, scene.cones,
+                                         table.effective_modulus_pa(), loop);
+  result.loop = loop_sds(comm, result.loop_samples, table, loop);
   if (rank == 0)
     log_loop(result.loop, table);
 
@@ -410,8 +402,7 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScali
   return result;
 }
 
-BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScaling& table,
-                         std::vector<EndFactor> end_factors)
+BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScaling& table)
 {
   fem::ensure_petsc(); // MPI too
   const Scene scene = make_scene(s, true);
@@ -421,11 +412,24 @@ BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScali
   r.contact_held = scene.contact_held;
   r.n_faces = static_cast<std::int64_t>(scene.mesh.faces.rows());
   r.uniformity = scene.uniformity;
-  LoopSdsSettings loop = loop_settings_of(s, scene.models);
-  loop.end_factors = std::move(end_factors);
-  r.loop = loop_sds(comm, scene.source, scene.body, scene.pressure.peak_pressure_pa, scene.cones, table, loop);
+  const LoopSdsSettings loop = loop_settings(s);
+  r.loop = loop_sds(comm,
+                    map_loop_samples(comm, scene.source, scene.body, scene.pressure.peak_pressure_pa, scene.cones,
+                                     table.effective_modulus_pa(), loop),
+                    table, loop);
   return r;
 }
 
 fem::SliceSettings slice_settings(const FemSdsSettings& s) { return models_of(s).slice; }
+
+LoopSdsSettings loop_settings(const FemSdsSettings& s)
+{
+  LoopSdsSettings loop;
+  loop.normal_load_n = s.normal_load_n;
+  loop.crease_margin = s.crease_margin;
+  loop.map_points = s.map_points;
+  loop.locus = models_of(s).locus;
+  loop.tolerance = s.tolerance;
+  return loop;
+}
 } // namespace rollcheck::study

@@ -115,6 +115,9 @@ struct FemSdsResult
   std::vector<FemSdsOrientation> orientations;
   std::size_t fem_solved = 0, reaching_crease = 0, standing_on_crease = 0, reaching_obtuse_rim = 0;
   LoopSds loop;                            ///< the scores over every sample of the loop
+  /// The loop's samples as mapped for `loop` (this rank's share of the
+  /// rulings; not in the JSON): end-aware scores reuse them (study/rim_loop.h).
+  LoopSamples loop_samples;
   bool contact_held = true;                ///< rolling: false when a rim lifted before the loop closed
   std::vector<fem::SliceScaling::Node> table; ///< the FEM solves every sample's pressures come from
   double table_wall_s = 0;                 ///< FEM time of the table
@@ -142,15 +145,16 @@ struct BodyLoop
   LoopSds loop;
   std::optional<double> uniformity; ///< U (oracle/uniformity_score.h), rolling oracle only
 };
-/// `end_factors`: end-aware scores of the loop (study/loop_sds.h).
-BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& settings, fem::SliceScaling& table,
-                         std::vector<EndFactor> end_factors = {});
+BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& settings, fem::SliceScaling& table);
 
 /// The slices' FEM settings of `settings`: what a shared table is built with.
 fem::SliceSettings slice_settings(const FemSdsSettings& settings);
+/// The loop's scoring settings of `settings`: what its samples are mapped
+/// and scored with (end_aware_scores of FemSdsResult::loop_samples too).
+LoopSdsSettings loop_settings(const FemSdsSettings& settings);
 
-/// Runs the method on the ranks of `comm` (every rank gets the whole result;
-/// rank 0 logs each orientation). InputError naming the setting for a mesh
+/// Runs the method on the ranks of `comm` (every rank gets the whole result
+/// but for its share of loop_samples; rank 0 logs each orientation). InputError naming the setting for a mesh
 /// file or a body that is not a hull of circles; ComputationError from the FEM.
 FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& settings);
 /// The same with the caller's FEM table (extended as needed), to share it.

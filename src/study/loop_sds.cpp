@@ -16,40 +16,6 @@ namespace rollcheck::study
 {
 namespace
 {
-/// A point along a sample's loaded ruling, as both pressure models need it.
-struct MappedPoint
-{
-  int face = 0;
-  double line_hertz_pa = 0;
-  double load_ratio = 0;
-};
-
-/// A loaded rim end of a ruling sample: the face at the end, the line-Hertz
-/// pressure and load ratio of the end itself, and the rim's interior angle.
-struct LoadedEnd
-{
-  int face = 0;
-  double line_hertz_pa = 0;
-  double load_ratio = 0;
-  double interior_angle_rad = 0;
-};
-
-struct RulingSample
-{
-  std::vector<MappedPoint> points;
-  std::vector<LoadedEnd> ends;
-  bool even = false;
-};
-
-/// One rank's share of the samples: the accumulators the scores need.
-struct SampleShare
-{
-  Eigen::VectorXd point_all, point_even, line_all, line_even;
-  std::vector<RulingSample> rulings;
-  std::array<std::size_t, 4> by_contact{};
-  double lambda_min = std::numeric_limits<double>::infinity(), lambda_max = 0;
-};
-
 SampleContact classify(const contact::ContactLocus& locus)
 {
   if (locus.ruling)
@@ -123,7 +89,8 @@ RulingSample map_ruling(std::span<const oracle::Circle> circles, const contact::
   return sample;
 }
 
-SampleShare share_of_samples(MPI_Comm comm, const LoopSource& source, const oracle::RollingBody& body,
+/// This rank's share of the samples: their sums not yet summed over the ranks.
+LoopSamples share_of_samples(MPI_Comm comm, const LoopSource& source, const oracle::RollingBody& body,
                              const Eigen::VectorXd& face_peak_pressure_pa, const oracle::FaceCones& cones,
                              double effective_modulus_pa, const LoopSdsSettings& s)
 {
@@ -131,8 +98,11 @@ SampleShare share_of_samples(MPI_Comm comm, const LoopSource& source, const orac
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
   const auto n_faces = body.face_areas.size();
-  SampleShare share{Eigen::VectorXd::Zero(n_faces), Eigen::VectorXd::Zero(n_faces), Eigen::VectorXd::Zero(n_faces),
-                    Eigen::VectorXd::Zero(n_faces), {}, {}};
+  LoopSamples share;
+  share.samples = source.rotations.size();
+  share.face_areas = body.face_areas;
+  share.point_all = share.point_even = share.line_all = share.line_even = Eigen::VectorXd::Zero(n_faces);
+  share.load_ratio_min = std::numeric_limits<double>::infinity();
   for (std::size_t j = static_cast<std::size_t>(rank); j < source.rotations.size(); j += static_cast<std::size_t>(size))
   {
     const std::vector<int>* counted = source.oracle_faces.empty() ? nullptr : &source.oracle_faces[j];
@@ -153,8 +123,8 @@ SampleShare share_of_samples(MPI_Comm comm, const LoopSource& source, const orac
     std::vector<std::pair<int, double>> line_hertz;
     for (const MappedPoint& p : ruling.points)
     {
-      share.lambda_min = std::min(share.lambda_min, p.load_ratio);
-      share.lambda_max = std::max(share.lambda_max, p.load_ratio);
+      share.load_ratio_min = std::min(share.load_ratio_min, p.load_ratio);
+      share.load_ratio_max = std::max(share.load_ratio_max, p.load_ratio);
       line_hertz.emplace_back(p.face, p.line_hertz_pa);
     }
     add_face_peaks(line_hertz, even, [](double p) { return p; }, share.line_all, share.line_even);
@@ -168,33 +138,34 @@ void sum_over_ranks(MPI_Comm comm, Eigen::VectorXd& v)
   MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_DOUBLE, MPI_SUM, comm);
 }
 
-/// The SDS of a summed accumulator pair.
-ConvergedScore score_pair(MPI_Comm comm, Eigen::VectorXd all, Eigen::VectorXd even, const Eigen::VectorXd& areas,
+/// The SDS of per-face sums over every sample and over the even ones.
+ConvergedScore score_sums(const Eigen::VectorXd& all, const Eigen::VectorXd& even, const Eigen::VectorXd& areas,
                           bool any)
 {
-  sum_over_ranks(comm, all);
-  sum_over_ranks(comm, even);
   if (!any)
     return {};
   return {oracle::distribution_score(all, areas), oracle::distribution_score(even, areas)};
 }
 
+/// The SDS of an accumulator pair summed over the ranks.
+ConvergedScore score_pair(MPI_Comm comm, Eigen::VectorXd all, Eigen::VectorXd even, const Eigen::VectorXd& areas,
+                          bool any)
+{
+  sum_over_ranks(comm, all);
+  sum_over_ranks(comm, even);
+  return score_sums(all, even, areas, any);
+}
+
 /// The load ratio the table is read at: held at its least (slice_scaling.h).
 double tabulated(double load_ratio) { return std::max(load_ratio, fem::SliceScaling::smallest_load_ratio); }
 
-/// The load ratio the table is read at for a loaded end: held within the
-/// range the table covers for the ruling points.
-struct TableRange
-{
-  double lo, hi;
-};
-
 /// FEM-SDS and FEM-FDS over the ruling samples with the table of `stride`,
-/// and with their loaded ends' pressures if `end_factor` is given.
-EndAwareScores fem_scores(MPI_Comm comm, const SampleShare& share, const fem::SliceScaling& table, int stride,
-                          const Eigen::VectorXd& areas, bool any, const LoopSdsSettings& s, TableRange range,
-                          const EndFactor* end_factor)
+/// and with their loaded ends' pressures if `end_factor` is given: the load
+/// ratio of an end held within the range the table covers for the points.
+EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::SliceScaling& table, int stride,
+                          const LoopSdsSettings& s, const EndFactor* end_factor)
 {
+  const Eigen::VectorXd& areas = samples.face_areas;
   EndAwareScores out;
   Eigen::VectorXd sds_all = Eigen::VectorXd::Zero(areas.size()), sds_even = sds_all, fds_all = sds_all,
                   fds_even = sds_all;
@@ -203,7 +174,7 @@ EndAwareScores fem_scores(MPI_Comm comm, const SampleShare& share, const fem::Sl
   };
   // The preprint's amplitude of a contact stress cycle, corrected: p / 2.
   auto damage = [&](double p) { return contact::miner_damage_per_cycle(p / 2, s.fatigue); };
-  for (const RulingSample& ruling : share.rulings)
+  for (const RulingSample& ruling : samples.rulings)
   {
     std::vector<std::pair<int, double>> points;
     for (const MappedPoint& p : ruling.points)
@@ -217,7 +188,8 @@ EndAwareScores fem_scores(MPI_Comm comm, const SampleShare& share, const fem::Sl
           ++out.singular_ends;
           continue;
         }
-        const double p = *factor * fem_pressure(end.line_hertz_pa, std::clamp(end.load_ratio, range.lo, range.hi));
+        const double p = *factor * fem_pressure(end.line_hertz_pa, std::clamp(end.load_ratio, samples.load_ratio_min,
+                                                                               samples.load_ratio_max));
         out.peak_pa = std::max(out.peak_pa, p);
         points.emplace_back(end.face, p);
       }
@@ -226,7 +198,7 @@ EndAwareScores fem_scores(MPI_Comm comm, const SampleShare& share, const fem::Sl
   }
   MPI_Allreduce(MPI_IN_PLACE, &out.singular_ends, 1, MPI_UNSIGNED_LONG, MPI_SUM, comm);
   MPI_Allreduce(MPI_IN_PLACE, &out.peak_pa, 1, MPI_DOUBLE, MPI_MAX, comm);
-  const bool finite = any && out.singular_ends == 0;
+  const bool finite = out.singular_ends == 0;
   if (!finite)
     out.peak_pa = 0;
   out.sds = score_pair(comm, std::move(sds_all), std::move(sds_even), areas, finite);
@@ -312,50 +284,56 @@ double held_fraction(double f, double loaded_from, double loaded_to, double crea
   return lo <= hi ? std::clamp(f, lo, hi) : 0.5 * (loaded_from + loaded_to);
 }
 
-LoopSds loop_sds(MPI_Comm comm, const LoopSource& source, const oracle::RollingBody& body,
-                 const Eigen::VectorXd& face_peak_pressure_pa, const oracle::FaceCones& cones,
-                 fem::SliceScaling& table, const LoopSdsSettings& s)
+LoopSamples map_loop_samples(MPI_Comm comm, const LoopSource& source, const oracle::RollingBody& body,
+                             const Eigen::VectorXd& face_peak_pressure_pa, const oracle::FaceCones& cones,
+                             double effective_modulus_pa, const LoopSdsSettings& s)
 {
   if (source.rotations.empty())
     throw ComputationError("loop SDS: the loop has no samples");
   const auto start = std::chrono::steady_clock::now();
-  SampleShare share
-      = share_of_samples(comm, source, body, face_peak_pressure_pa, cones, table.effective_modulus_pa(), s);
+  LoopSamples samples = share_of_samples(comm, source, body, face_peak_pressure_pa, cones, effective_modulus_pa, s);
+  MPI_Allreduce(MPI_IN_PLACE, samples.by_contact.data(), 4, MPI_UNSIGNED_LONG, MPI_SUM, comm);
+  for (Eigen::VectorXd* sums : {&samples.point_all, &samples.point_even, &samples.line_all, &samples.line_even})
+    sum_over_ranks(comm, *sums);
+  MPI_Allreduce(MPI_IN_PLACE, &samples.load_ratio_min, 1, MPI_DOUBLE, MPI_MIN, comm);
+  MPI_Allreduce(MPI_IN_PLACE, &samples.load_ratio_max, 1, MPI_DOUBLE, MPI_MAX, comm);
+  if (samples.ruling_count() == 0)
+    samples.load_ratio_min = samples.load_ratio_max = 0;
+  samples.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  MPI_Allreduce(MPI_IN_PLACE, &samples.wall_s, 1, MPI_DOUBLE, MPI_MAX, comm);
+  return samples;
+}
+
+LoopSds loop_sds(MPI_Comm comm, const LoopSamples& samples, fem::SliceScaling& table, const LoopSdsSettings& s)
+{
   LoopSds r;
-  r.samples = source.rotations.size();
+  r.samples = samples.samples;
   r.tolerance = s.tolerance;
-  MPI_Allreduce(MPI_IN_PLACE, share.by_contact.data(), 4, MPI_UNSIGNED_LONG, MPI_SUM, comm);
-  for (std::size_t c = 0; c < share.by_contact.size(); ++c)
-    if (share.by_contact[c] > 0)
-      r.samples_by_contact[sample_contact_name(static_cast<SampleContact>(c))] = share.by_contact[c];
-  const std::size_t rulings = share.by_contact[static_cast<std::size_t>(SampleContact::ruling)];
+  for (std::size_t c = 0; c < samples.by_contact.size(); ++c)
+    if (samples.by_contact[c] > 0)
+      r.samples_by_contact[sample_contact_name(static_cast<SampleContact>(c))] = samples.by_contact[c];
+  const std::size_t rulings = samples.ruling_count();
   r.singular_samples = r.samples - rulings;
-  const Eigen::VectorXd& areas = body.face_areas;
-  r.point_hertz = score_pair(comm, share.point_all, share.point_even, areas, true);
-  r.line_hertz_rulings = score_pair(comm, share.line_all, share.line_even, areas, rulings > 0);
-  MPI_Allreduce(MPI_IN_PLACE, &share.lambda_min, 1, MPI_DOUBLE, MPI_MIN, comm);
-  MPI_Allreduce(MPI_IN_PLACE, &share.lambda_max, 1, MPI_DOUBLE, MPI_MAX, comm);
-  r.samples_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  MPI_Allreduce(MPI_IN_PLACE, &r.samples_wall_s, 1, MPI_DOUBLE, MPI_MAX, comm);
+  const Eigen::VectorXd& areas = samples.face_areas;
+  r.point_hertz = score_sums(samples.point_all, samples.point_even, areas, true);
+  r.line_hertz_rulings = score_sums(samples.line_all, samples.line_even, areas, rulings > 0);
+  r.samples_wall_s = samples.wall_s;
   if (rulings > 0)
   {
-    r.load_ratio_min = share.lambda_min;
-    r.load_ratio_max = share.lambda_max;
-    const TableRange range{share.lambda_min, share.lambda_max};
+    r.load_ratio_min = samples.load_ratio_min;
+    r.load_ratio_max = samples.load_ratio_max;
     while (true)
     {
-      table.cover(comm, tabulated(share.lambda_min), tabulated(share.lambda_max));
-      const EndAwareScores interior = fem_scores(comm, share, table, 1, areas, true, s, range, nullptr);
+      table.cover(comm, tabulated(samples.load_ratio_min), tabulated(samples.load_ratio_max));
+      const EndAwareScores interior = fem_scores(comm, samples, table, 1, s, nullptr);
       r.fem_rulings = interior.sds;
       r.fem_fds_rulings = interior.fds;
-      r.fem_half_table = fem_scores(comm, share, table, 2, areas, true, s, range, nullptr).sds.value;
+      r.fem_half_table = fem_scores(comm, samples, table, 2, s, nullptr).sds.value;
       if (std::abs(r.table_change()) < s.tolerance || 2 * table.nodes_per_decade() > s.max_nodes_per_decade)
         break;
       table.double_nodes();
     }
-    for (const EndFactor& factor : s.end_factors)
-      r.end_aware.push_back(fem_scores(comm, share, table, 1, areas, true, s, range, &factor));
-    for (const RulingSample& ruling : share.rulings)
+    for (const RulingSample& ruling : samples.rulings)
       for (const MappedPoint& p : ruling.points)
       {
         r.line_hertz_peak_pa = std::max(r.line_hertz_peak_pa, p.line_hertz_pa);
@@ -370,7 +348,7 @@ LoopSds loop_sds(MPI_Comm comm, const LoopSource& source, const oracle::RollingB
     r.nodes_per_decade = table.nodes_per_decade();
     r.loaded_end_angle_min_rad = std::numeric_limits<double>::infinity();
     r.loaded_end_angle_max_rad = -r.loaded_end_angle_min_rad;
-    for (const RulingSample& ruling : share.rulings)
+    for (const RulingSample& ruling : samples.rulings)
     {
       r.loaded_end_samples += !ruling.ends.empty();
       r.loaded_ends += ruling.ends.size();
@@ -386,7 +364,7 @@ LoopSds loop_sds(MPI_Comm comm, const LoopSource& source, const oracle::RollingB
     MPI_Allreduce(MPI_IN_PLACE, &r.loaded_end_angle_max_rad, 1, MPI_DOUBLE, MPI_MAX, comm);
     if (r.loaded_ends == 0)
       r.loaded_end_angle_min_rad = r.loaded_end_angle_max_rad = 0;
-    const double lo = tabulated(share.lambda_min), hi = tabulated(share.lambda_max);
+    const double lo = tabulated(samples.load_ratio_min), hi = tabulated(samples.load_ratio_max);
     r.fem_solves = nodes_used(table, lo, hi, 1, r.worst_refinement_change);
     r.fem_solves_half_table = nodes_used(table, lo, hi, 2, r.worst_refinement_change);
   }
@@ -396,6 +374,18 @@ LoopSds loop_sds(MPI_Comm comm, const LoopSource& source, const oracle::RollingB
     r.fem = r.fem_rulings;
   }
   return r;
+}
+
+std::vector<EndAwareScores> end_aware_scores(MPI_Comm comm, const LoopSamples& samples,
+                                             const fem::SliceScaling& table, const LoopSdsSettings& s,
+                                             std::span<const EndFactor> end_factors)
+{
+  std::vector<EndAwareScores> scores;
+  if (samples.ruling_count() == 0)
+    return scores;
+  for (const EndFactor& factor : end_factors)
+    scores.push_back(fem_scores(comm, samples, table, 1, s, &factor));
+  return scores;
 }
 
 nlohmann::json to_json(const LoopSds& loop)

@@ -39,6 +39,11 @@
 // table's range), and the face at the end adds it as one more point; a
 // factor of none marks a singular end, which makes those scores singular.
 //
+// The samples are located and mapped once (map_loop_samples: the contact
+// locus of every sample, the costly part) and scored from what that keeps:
+// loop_sds for the scores above, end_aware_scores for the end-aware ones,
+// whose factors the caller may know only after loop_sds (study/rim_loop.h).
+//
 // Convergence, both reported: the samples (every sample against every other
 // one) and the FEM table (its nodes against every other node: K and 2K
 // solves); the table is refined, doubling its nodes per decade, until the
@@ -49,11 +54,13 @@
 #include "oracle/contact_density.h"
 #include "oracle/rolling_body.h"
 #include <Eigen/Core>
+#include <array>
 #include <functional>
 #include <map>
 #include <mpi.h>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -93,9 +100,47 @@ struct LoopSdsSettings
   double tolerance = 0.01;             ///< relative change that counts as converged
   int max_nodes_per_decade = 64;       ///< the FEM table's refinement stops here
   contact::FatigueParameters fatigue;  ///< FEM-FDS's S-N law (its load_n is not used: F is)
-  /// One set of end-aware scores per factor (e.g. an end table and its every
-  /// other node); none: no end-aware scores.
-  std::vector<EndFactor> end_factors;
+};
+
+/// A point along a ruling sample's loaded part, as both pressure models need it.
+struct MappedPoint
+{
+  int face = 0;
+  double line_hertz_pa = 0;
+  double load_ratio = 0;
+};
+
+/// A loaded rim end of a ruling sample: the face at the end, the line-Hertz
+/// pressure and load ratio of the end itself, and the rim's interior angle.
+struct LoadedEnd
+{
+  int face = 0;
+  double line_hertz_pa = 0;
+  double load_ratio = 0;
+  double interior_angle_rad = 0;
+};
+
+struct RulingSample
+{
+  std::vector<MappedPoint> points;
+  std::vector<LoadedEnd> ends;
+  bool even = false;
+};
+
+/// A loop's samples located and mapped onto the faces: the counts and sums
+/// of every rank, and this rank's share of the ruling samples.
+struct LoopSamples
+{
+  std::size_t samples = 0;
+  std::array<std::size_t, 4> by_contact{}; ///< indexed by SampleContact
+  Eigen::VectorXd face_areas;
+  /// Per face, the point-Hertz and line-Hertz pressures summed over the
+  /// samples and over the even-numbered ones.
+  Eigen::VectorXd point_all, point_even, line_all, line_even;
+  std::vector<RulingSample> rulings;       ///< this rank's share
+  double load_ratio_min = 0, load_ratio_max = 0; ///< lambda over the mapped points
+  double wall_s = 0;                       ///< loci and mapping
+  std::size_t ruling_count() const { return by_contact[static_cast<std::size_t>(SampleContact::ruling)]; }
 };
 
 /// An SDS over the loop's samples and over every other sample.
@@ -127,7 +172,7 @@ struct LoopSds
   /// range of those ends' interior angles (rad).
   std::size_t loaded_end_samples = 0, loaded_ends = 0;
   double loaded_end_angle_min_rad = 0, loaded_end_angle_max_rad = 0;
-  std::vector<EndAwareScores> end_aware; ///< one per LoopSdsSettings::end_factors
+  std::vector<EndAwareScores> end_aware; ///< one per end factor (end_aware_scores); none: not scored
   /// FEM-SDS (over the rulings) from the table with every other node: K solves.
   std::optional<double> fem_half_table;
   std::size_t fem_solves = 0;          ///< 2K: table nodes within the loop's range of lambda
@@ -149,13 +194,25 @@ struct LoopSds
   std::string status() const;
 };
 
-/// The scores of `source` on `body` (the mesh the faces belong to, with its
-/// cones and the preprint's per-face point-Hertz pressures), extending and
+/// The samples of `source` on `body` (the mesh the faces belong to, with its
+/// cones and the preprint's per-face point-Hertz pressures), located and
+/// mapped with the slices' E*. Collective on `comm`: the ranks share the
+/// samples.
+LoopSamples map_loop_samples(MPI_Comm comm, const LoopSource& source, const oracle::RollingBody& body,
+                             const Eigen::VectorXd& face_peak_pressure_pa, const oracle::FaceCones& cones,
+                             double effective_modulus_pa, const LoopSdsSettings& settings);
+
+/// The scores of the samples (with no end-aware ones), extending and
 /// refining `table` as needed. Collective on `comm`: the ranks share the
-/// samples and the table's nodes; every rank gets the result.
-LoopSds loop_sds(MPI_Comm comm, const LoopSource& source, const oracle::RollingBody& body,
-                 const Eigen::VectorXd& face_peak_pressure_pa, const oracle::FaceCones& cones,
-                 fem::SliceScaling& table, const LoopSdsSettings& settings);
+/// table's nodes; every rank gets the result.
+LoopSds loop_sds(MPI_Comm comm, const LoopSamples& samples, fem::SliceScaling& table, const LoopSdsSettings& settings);
+
+/// One set of end-aware scores per factor (e.g. an end table and its every
+/// other node), from `table` as loop_sds left it; none when the loop has no
+/// ruling sample. Collective on `comm`.
+std::vector<EndAwareScores> end_aware_scores(MPI_Comm comm, const LoopSamples& samples,
+                                             const fem::SliceScaling& table, const LoopSdsSettings& settings,
+                                             std::span<const EndFactor> end_factors);
 
 /// Fractions of the ruling mapped onto the faces: the midpoints of `points`
 /// equal parts of [loaded_from, loaded_to].

@@ -266,7 +266,9 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& s)
   }
   else if (interior.loaded_ends > 0)
     factors.push_back([](double) { return std::optional<double>(); }); // every loaded end singular
-  result.loop = score_body_loop(comm, s.loop, slices, std::move(factors)).loop;
+  // The interior's scores with the ends', from the samples it mapped.
+  result.loop = result.fem_sds.loop;
+  result.loop.end_aware = end_aware_scores(comm, result.fem_sds.loop_samples, slices, loop_settings(s.loop), factors);
   result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -84,8 +84,8 @@ struct RimLoopResult
   /// with one, over the larger of the direct ratio and 1 (the interior).
   std::optional<double> table_vs_direct;
   bool table_converged = true;       ///< every node's end model converged
-  /// The loop's scores with the ends: [0] the table, [1] every other node
-  /// (absent with fewer than 3 nodes).
+  /// The loop's scores (fem_sds.loop's) with the end-aware ones: [0] the
+  /// table, [1] every other node (absent with fewer than 3 nodes).
   LoopSds loop;
   double wall_s = 0;
 

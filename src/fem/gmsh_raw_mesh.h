@@ -1,0 +1,25 @@
+#pragma once
+// The mesh gmsh holds, read into the arrays DOLFINx builds a mesh from:
+// shared by the scene meshes (fem/scene_mesh.h) and the whole-body mesh
+// (fem/whole_body_mesh.h), which run gmsh on rank 0 (fem/on_rank_zero.h).
+#include <cstdint>
+#include <vector>
+
+namespace rollcheck::fem
+{
+/// Nodes and cells of a gmsh mesh in DOLFINx input form.
+struct RawMesh
+{
+  std::vector<double> x;           ///< row-major, gdim columns
+  std::vector<std::int64_t> cells; ///< rows into x, in gmsh's node order
+};
+
+/// The current gmsh model's mesh: its nodes with their first `dim`
+/// coordinates, in gmsh's order, and its simplices of dimension `dim`
+/// (tetrahedra, or triangles in 2D), volume by volume (surface by surface
+/// in 2D), highest first. A node shared with a volume met before is given a
+/// twin of its own, so that the volumes are separate bodies touching at their
+/// shared faces. ComputationError for an element of dimension `dim` that is
+/// not that simplex.
+RawMesh read_gmsh_mesh(int dim);
+} // namespace rollcheck::fem
