@@ -40,6 +40,17 @@ def score(entry):
     return f"{value:.4g}"
 
 
+def run(command, path, env):
+    """One `rollcheck rim` run: its JSON at path, its log (with the per-end
+    table) beside it."""
+    done = subprocess.run(command + ["--json", path], env=env, stdout=subprocess.DEVNULL,
+                          stderr=subprocess.PIPE, text=True)
+    with open(path[:-len(".json")] + ".log", "w") as log:
+        log.write(" ".join(command) + "\n" + done.stderr)
+    if done.returncode != 0:
+        sys.exit(f"rim_peaks: {' '.join(command)} failed ({done.returncode}):\n{done.stderr[-2000:]}")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("build", help="build folder holding src/cli/rollcheck")
@@ -48,6 +59,8 @@ def main():
     parser.add_argument("--out", help="also write the table to this Markdown file")
     parser.add_argument("--json-dir", help="keep each body's JSON here")
     parser.add_argument("--only", help="comma-separated body labels to run (default: all)")
+    parser.add_argument("--tabulate", action="store_true",
+                        help="only tabulate the JSON already in --json-dir (no runs)")
     argv = sys.argv[1:]
     split = argv.index("--") if "--" in argv else len(argv)
     args = parser.parse_args(argv[:split])
@@ -66,13 +79,8 @@ def main():
             continue
         path = os.path.join(folder, label.split(" ")[0] + f"_{args.counter_face}.json")
         command = mpi + [rollcheck, "rim"] + body + ["--counter-face", args.counter_face] + extra
-        done = subprocess.run(command + ["--json", path], env=env, stdout=subprocess.DEVNULL,
-                              stderr=subprocess.PIPE, text=True)
-        # The log holds the run's per-end table.
-        with open(path[:-len(".json")] + ".log", "w") as log:
-            log.write(" ".join(command) + "\n" + done.stderr)
-        if done.returncode != 0:
-            sys.exit(f"rim_peaks: {' '.join(command)} failed ({done.returncode}):\n{done.stderr[-2000:]}")
+        if not args.tabulate:
+            run(command, path, env)
         with open(path) as f:
             j = json.load(f)
         loop = j["loop_scores"]
@@ -86,7 +94,8 @@ def main():
             f"| {'-' if worst is None else f'{worst:.3f}'} "
             f"| {score(loop['fem_sds_rulings'])} | {score(aware['fem_sds']) if aware else '-'} "
             f"| {score(loop['fem_fds_rulings'])} | {score(aware['fem_fds']) if aware else '-'} "
-            f"| {'-' if table is None else f'{100 * table:.1f} %'} | {j['end_aware_status']} | {j['wall_s']:.0f} |")
+            f"| {'-' if table is None else f'{100 * table:.1f} %'} | {j['end_aware_status'].split(':')[0]} "
+            f"| {j['wall_s']:.0f} |")
         print(rows[-1], flush=True)
     table = "\n".join(rows)
     print(f"\ncounter-face {args.counter_face}, rim options: {' '.join(extra) or '(defaults)'}\n")
