@@ -70,9 +70,9 @@ def main():
     mpi = ["mpirun", "-n", str(args.ranks)] if args.ranks > 1 else []
     folder = args.json_dir or tempfile.mkdtemp(prefix="rim_peaks_")
     os.makedirs(folder, exist_ok=True)
-    rows = ["| body | loaded rim ends (samples) | singular ends | worst end / orientation peak (direct ends) "
+    rows = ["| body | faces | loaded rim ends (samples) | singular ends | worst end / orientation peak (direct ends) "
             "| FEM-SDS | with the ends | FEM-FDS | with the ends | end table vs direct | status | s |",
-            "|---|---|---|---|---|---|---|---|---|---|---|"]
+            "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     wanted = set(args.only.split(",")) if args.only else None
     for label, body in BODIES:
         if wanted and label.split(" ")[0] not in wanted and label not in wanted:
@@ -89,7 +89,7 @@ def main():
         worst = j["worst_end_to_interior"]
         table = j["end_table_vs_direct"]
         rows.append(
-            f"| {label} | {loop['loaded_ends']} ({loop['loaded_end_samples']} of {loop['samples']}) "
+            f"| {label} | {j['interior']['n_faces']} | {loop['loaded_ends']} ({loop['loaded_end_samples']} of {loop['samples']}) "
             f"| {singular} ({100 * singular / max(loop['loaded_ends'], 1):.0f} %) "
             f"| {'-' if worst is None else f'{worst:.3f}'} "
             f"| {score(loop['fem_sds_rulings'])} | {score(aware['fem_sds']) if aware else '-'} "
