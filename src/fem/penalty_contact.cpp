@@ -692,22 +692,13 @@ std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double
     at_interface[{std::round(all[i] / tol), std::round(all[i + 1] / tol)}].push_back(
         {static_cast<std::int64_t>(all[i + 2]), all[i + 3]});
   std::vector<NodePair> pairs;
-  // The upper body's contact nodes paired node to surface (owned, local).
-  std::vector<std::int32_t> candidates;
   for (const auto& [where, nodes] : at_interface)
   {
     const bool first_upper = nodes[0].second > 0;
     if (nodes.size() == 1 && !first_upper)
-      continue; // on the lower body's face, no upper node there
-    if (nodes.size() > 2)
+      continue; // on the lower body's free face beyond the upper one
+    if (nodes.size() != 2)
       throw ComputationError(fmt::format("node pairs: {} interface nodes at one place, not a pair", nodes.size()));
-    if (nodes.size() == 1)
-    {
-      // An upper node without a twin: the faces do not conform here.
-      if (nodes[0].first >= first && nodes[0].first < first + owned)
-        candidates.push_back(static_cast<std::int32_t>(nodes[0].first - first));
-      continue;
-    }
     if (!first_upper && !(nodes[1].second > 0))
       continue; // on the edge of the upper body's face, without contact area
     const auto& [upper, upper_area] = first_upper ? nodes[0] : nodes[1];
@@ -722,25 +713,26 @@ std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double
     pair.area_m2 = upper_area;
     pairs.push_back(pair);
   }
-  // Node to surface: the upper body's contact nodes at the interface
-  // without a twin and those above it that `to_surface` selects, and the
-  // lower body's interface facets beneath their horizontal bounding box,
-  // gathered from every process.
-  if (to_surface)
-    for (std::int32_t i = 0; i < owned; ++i)
-      if (area[i] > 0 && x[3 * i + up] >= tol && to_surface(&x[3 * i]))
-        candidates.push_back(i);
+  if (!to_surface)
+    return pairs;
+
+  // Node to surface: the upper body's contact nodes above the interface that
+  // `to_surface` selects, and the lower body's interface facets beneath their
+  // horizontal bounding box, gathered from every process.
   const int hdim = gdim - 1; // horizontal coordinates
+  std::vector<std::int32_t> candidates;
   std::array<double, 4> box{1e300, 1e300, 1e300, 1e300}; // min x, min y, -max x, -max y
-  for (std::int32_t i : candidates)
-    for (int d = 0; d < hdim; ++d)
+  for (std::int32_t i = 0; i < owned; ++i)
+    if (area[i] > 0 && x[3 * i + up] >= tol && to_surface(&x[3 * i]))
     {
-      box[d] = std::min(box[d], x[3 * i + d]);
-      box[2 + d] = std::min(box[2 + d], -x[3 * i + d]);
+      candidates.push_back(i);
+      for (int d = 0; d < hdim; ++d)
+      {
+        box[d] = std::min(box[d], x[3 * i + d]);
+        box[2 + d] = std::min(box[2 + d], -x[3 * i + d]);
+      }
     }
   MPI_Allreduce(MPI_IN_PLACE, box.data(), 4, MPI_DOUBLE, MPI_MIN, comm);
-  if (box[0] == 1e300)
-    return pairs; // no candidate on any process
   auto overlaps = [&](const double lo[2], const double hi[2]) {
     for (int d = 0; d < hdim; ++d)
       if (hi[d] < box[d] - tol || lo[d] > -box[2 + d] + tol)

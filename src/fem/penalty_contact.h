@@ -46,9 +46,9 @@ struct NewtonReport
 /// height 0, the bodies' profile in `initial_gap_m`). The point is either the
 /// node's twin (node to node, where the two bodies' faces are conforming:
 /// weights {1, 0, 0}) or a point of the lower body's interface facet below
-/// the node (node to surface, where the faces do not conform or the upper
-/// one has lifted off the interface, e.g. a fillet: barycentric weights over
-/// the facet's 3 nodes in 3D, 2 in 2D). Gap g = g0 + u_z(upper) - sum_i w_i u_z(lower_i), pressure
+/// the node (node to surface, where the upper body's face has lifted off the
+/// interface, e.g. a fillet: barycentric weights over the facet's 3 nodes in
+/// 3D, 2 in 2D). Gap g = g0 + u_z(upper) - sum_i w_i u_z(lower_i), pressure
 /// p = kappa <-g>_+, force p A up on the lower nodes (shared by w_i) and down
 /// on the upper node; energy kappa <-g>_+^2 A / 2. P. Wriggers,
 /// Computational Contact Mechanics, 2nd ed., 2006, sec. 4.1 (node to node:
@@ -80,13 +80,11 @@ class PenaltyContact;
 /// The upper body's contact nodes owned by this process (those with contact
 /// area, on its contact facets), paired with the lower body: at the
 /// interface (height within `tol` of 0) with their twins at the same place
-/// (coordinates equal to `tol`) where the two faces conform, and otherwise,
-/// as above the interface where `to_surface(x)` is true (none without it),
-/// with the point of the lower body's interface facet directly below (two
-/// bodies meshed apart: every node to surface but where nodes happen to
-/// coincide). Twins and facets are found across processes. Gaps and
+/// (coordinates equal to `tol`); above it, where `to_surface(x)` is true
+/// (none without it), with the point of the lower body's interface facet
+/// directly below. Twins and facets are found across processes. Gaps and
 /// stiffnesses are left for the caller. Collective; ComputationError where
-/// a node has no twin and no facet below it.
+/// an interface node has no twin or a node above has no facet below it.
 std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double tol,
                                            const std::function<bool(const double* x)>& to_surface = {});
 

@@ -38,26 +38,24 @@
 // last level, and converged only when resolved.
 //
 // Steel counter-face (CounterFace::block): the body and a block of its own
-// material, each meshed alone and joined with disjoint nodes, meet on the
-// flat interface z = 0 (the sheet flattened, its height R - sqrt(R^2 - y^2)
-// in each pair's initial gap: half-space theory's reduction for two
-// bodies, used whatever R / H, since the flattened geometry differs from
-// the cylinder only away from the contact strip) and E* = E / (2 (1 -
-// nu^2)) in b and p0. Frictionless penalty contact by node pairs
-// (fem/penalty_contact.h NodePair; P. Wriggers, Computational Contact
-// Mechanics, 2nd ed., 2006, sec. 4.2): every body node on the interface,
-// and a rounded edge's fillet nodes less than r_e / 8 above the block's top
-// (the fillet lifts off it beyond x = -x_t; within about r_e / 2 of the
-// fillet's start, some 20 s at a bearing's load), is paired node to
+// material are meshed together, each volume tetrahedralised alone on one
+// surface mesh (together, gmsh failed below edge elements of about 2 um
+// where a fillet lifts off the block), with the flat interface z = 0 (the sheet
+// flattened, its height R - sqrt(R^2 - y^2) in each pair's initial gap:
+// half-space theory's reduction for two bodies, used whatever R / H, since
+// the flattened geometry differs from the cylinder only away from the
+// contact strip) and E* = E / (2 (1 - nu^2)) in b and p0. Frictionless
+// penalty contact by node pairs (fem/penalty_contact.h NodePair; P.
+// Wriggers, Computational Contact Mechanics, 2nd ed., 2006, sec. 4.1 and
+// 4.2): node to node across the conforming part, where each body node has
+// a twin; a rounded edge's fillet lifts off the block's top beyond x = -x_t,
+// and its nodes less than r_e / 8 above it (within about r_e / 2 of the
+// fillet's start, some 20 s at a bearing's load) are paired node to
 // surface with the point of the block's top triangle directly below (its 3
 // nodes' barycentric weights), g0 the node's exact height on the fillet
 // plus the sheet's; a contact that reached above r_e / 16 would raise
-// ComputationError. The block's top is graded as the body's face is, under
-// the fillet's start too. Meshed together instead (a conforming interface,
-// node to node), gmsh failed below edge elements of about 2 um where the
-// fillet lifts off the block tangentially (fem/scene_mesh.h
-// build_rim_block_mesh). Runs on any number of processes (pairs across
-// them).
+// ComputationError. The block's top is graded under the fillet's start as
+// the body is. Runs on any number of processes (pairs across them).
 #include <array>
 #include <cstdint>
 #include <filesystem>

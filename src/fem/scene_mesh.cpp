@@ -194,9 +194,34 @@ void require_meshable(double smallest_size_m)
         smallest_relative_size * model_size / smallest_size_m));
 }
 
+/// Meshes the current model's volumes one at a time, on one surface mesh
+/// (conforming wherever volumes share a face). gmsh's Delaunay
+/// tetrahedralises volumes that share a face together, and the surface
+/// meshes of both must then stay apart by more than its tolerances: the rim
+/// end's fillet on the steel block, lifting off tangentially from the
+/// block's free top (d^2 / (2 r_e) above it at d beyond the fillet's start),
+/// failed below edge elements of about 2 um ("Invalid boundary mesh
+/// (overlapping facets)"). Each volume alone, the others hidden
+/// (Mesh.MeshOnlyVisible), never sees the other's faces.
+void generate_volume_by_volume()
+{
+  gmsh::vectorpair volumes;
+  gmsh::model::getEntities(volumes, 3);
+  gmsh::model::mesh::generate(2);
+  gmsh::option::setNumber("Mesh.MeshOnlyVisible", 1);
+  for (const auto& volume : volumes)
+  {
+    gmsh::model::setVisibility(volumes, 0);
+    gmsh::model::setVisibility({volume}, 1);
+    gmsh::model::mesh::generate(3);
+  }
+  gmsh::model::setVisibility(volumes, 1);
+}
+
 /// Runs gmsh on the geometry `add_geometry` builds, whose element sizes (and
 /// any other meshing option) it sets too; it returns the smallest size.
-/// The mesh as read_gmsh_mesh(dim) reads it.
+/// Several volumes are tetrahedralised one at a time. The mesh as
+/// read_gmsh_mesh(dim) reads it.
 RawMesh mesh_with_gmsh(int dim, const std::function<double()>& add_geometry_and_sizes)
 {
   gmsh::initialize();
@@ -210,7 +235,12 @@ RawMesh mesh_with_gmsh(int dim, const std::function<double()>& add_geometry_and_
     gmsh::option::setNumber("Mesh.Algorithm3D", 1); // Delaunay
     gmsh::option::setNumber("Mesh.Optimize", 1);
     require_meshable(add_geometry_and_sizes());
-    gmsh::model::mesh::generate(dim);
+    gmsh::vectorpair volumes;
+    gmsh::model::getEntities(volumes, 3);
+    if (dim == 3 && volumes.size() > 1)
+      generate_volume_by_volume();
+    else
+      gmsh::model::mesh::generate(dim);
     raw = read_gmsh_mesh(dim);
   }
   catch (const InputError&)
@@ -353,10 +383,9 @@ void tag_parts(SceneMesh& scene, const SceneParts& parts)
       scene.contact_facets.push_back(candidates[i]);
 }
 
-/// The contact facets of two bodies touching along an interface (meshed as
-/// twins there, or as two disjoint meshes): the boundary facets `on` it
-/// whose cell lies above (coordinate `up` > 0); the lower body's lie on
-/// cells below.
+/// The contact facets of two bodies meshed as twins along an interface:
+/// the boundary facets `on` it whose cell lies above (coordinate `up` > 0);
+/// the lower body's twins lie at the same place, on cells below.
 void upper_interface_facets(SceneMesh& scene, const Predicate& on, int up)
 {
   const dolfinx::mesh::Mesh& mesh = *scene.mesh;
@@ -485,13 +514,23 @@ SceneMesh build_slab_mesh(MPI_Comm comm, const SlabGeometry& slab, const MeshGra
 
 namespace
 {
-/// A rim end scene's volume that `add_geometry` builds in units of H, meshed
-/// with the rim end's sizes (mirrored in the interface z = 0 for the block
-/// below it) and scaled back to metres.
-RawMesh mesh_in_depth_units(const std::function<void()>& add_geometry, const RimEndSizes& sizes, double H)
+/// The rim end built and meshed in units of H (`unit`), scaled back to
+/// metres; with the block below it, graded as the body mirrored in the
+/// interface.
+RawMesh mesh_rim_end(const RimEndGeometry& unit, const RimEndSizes& sizes, double H, bool with_block)
 {
   RawMesh raw = mesh_with_gmsh(3, [&] {
-    add_geometry();
+    add_rim_end(unit);
+    if (with_block)
+    {
+      namespace occ = gmsh::model::occ;
+      gmsh::vectorpair bodies, out;
+      gmsh::model::getEntities(bodies, 3);
+      const int block = occ::addBox(-unit.length_m, 0, -1, unit.length_m + 1, 1, 1);
+      std::vector<gmsh::vectorpair> map;
+      occ::fragment(bodies, {{3, block}}, out, map);
+      occ::synchronize();
+    }
     gmsh::model::mesh::setSizeCallback([sizes, H](int, int, double x, double y, double z) {
       const double point[3] = {x * H, y * H, std::abs(z) * H};
       return rim_end_element_size(sizes, point) / H;
@@ -502,23 +541,6 @@ RawMesh mesh_in_depth_units(const std::function<void()>& add_geometry, const Rim
   for (double& x : raw.x)
     x *= H;
   return raw;
-}
-
-/// The rim end's body (`unit`: in units of H), meshed alone.
-RawMesh mesh_rim_end(const RimEndGeometry& unit, const RimEndSizes& sizes, double H)
-{
-  return mesh_in_depth_units([&] { add_rim_end(unit); }, sizes, H);
-}
-
-/// Two meshes as one with disjoint node sets: `lower`'s nodes after
-/// `upper`'s, its cells renumbered to match.
-RawMesh disjoint_union(RawMesh upper, const RawMesh& lower, int gdim)
-{
-  const auto offset = static_cast<std::int64_t>(upper.x.size() / gdim);
-  upper.x.insert(upper.x.end(), lower.x.begin(), lower.x.end());
-  for (std::int64_t node : lower.cells)
-    upper.cells.push_back(node + offset);
-  return upper;
 }
 
 /// The rim end's planes of symmetry: the far side x = -L and y = 0.
@@ -562,7 +584,7 @@ SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& g, const RimEn
   // OpenCASCADE's tolerances are absolute (1e-7): the geometry is built with
   // H as the unit and the mesh scaled back.
   const RimEndGeometry unit{g.radius_m / H, g.interior_angle_rad, g.edge_radius_m / H, 1.0, L / H, g.flat_sheet};
-  SceneMesh scene = distribute(comm, 3, [&] { return mesh_rim_end(unit, sizes, H); });
+  SceneMesh scene = distribute(comm, 3, [&] { return mesh_rim_end(unit, sizes, H, false); });
   const double tol = 1e-9 * H;
   SceneParts parts = rim_end_planes(L, tol);
   parts.top = [=](double, double, double z) { return std::abs(z - H) < tol; };
@@ -666,20 +688,7 @@ SceneMesh build_rim_block_mesh(MPI_Comm comm, const RimEndGeometry& g, const Rim
     throw InputError("rim end on a block: the sheet must be flat (its profile in the initial gap)");
   const double H = g.depth_m, L = g.length_m;
   const RimEndGeometry unit{g.radius_m / H, g.interior_angle_rad, g.edge_radius_m / H, 1.0, L / H, true};
-  // Two gmsh models, not one: meshed together (gmsh fragment, a conforming
-  // interface), a rounded edge's fillet lifting off tangentially from the
-  // block's free top, d^2 / (2 r_e) above it at d beyond x = -x_t, put the
-  // two surface meshes within far less than an element of each other, and
-  // gmsh's Delaunay, which tetrahedralises the volumes together, failed
-  // below edge elements of about 2 um ("Invalid boundary mesh (overlapping
-  // facets)", the 120 deg rim at r_e = 0.364 mm).
-  SceneMesh scene = distribute(comm, 3, [&] {
-    return disjoint_union(mesh_rim_end(unit, sizes, H), mesh_in_depth_units([&] {
-                            gmsh::model::occ::addBox(-unit.length_m, 0, -1, unit.length_m + 1, 1, 1);
-                            gmsh::model::occ::synchronize();
-                          }, sizes, H),
-                          3);
-  });
+  SceneMesh scene = distribute(comm, 3, [&] { return mesh_rim_end(unit, sizes, H, true); });
   const double tol = 1e-9 * H;
   SceneParts parts = rim_end_planes(L, tol);
   parts.top = [=](double, double, double z) { return std::abs(std::abs(z) - H) < tol; };

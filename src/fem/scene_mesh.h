@@ -149,21 +149,22 @@ SceneMesh build_square_end_grid_mesh(MPI_Comm comm, const RimEndGeometry& geomet
 
 /// The rim end (flat sheet) on a block: the body above z = 0 as
 /// build_rim_end_mesh's, and the block x in [-L, H], y in [0, H], z in
-/// [-H, 0] below, each meshed alone (two gmsh models) and joined as one
-/// mesh with disjoint node sets: two separate bodies whose faces on z = 0
-/// do not conform, paired node to surface (PenaltyContact::set_node_pairs,
-/// interface_node_pairs). The block's top is graded as the body is (the
-/// sizes mirrored in z = 0), under a rounded edge's fillet too, which leaves
-/// the interface at x = -x_t and lifts off the block's top. Top facets: the
-/// body's top z = H and the block's bottom z = -H; symmetry planes through
-/// both; the contact facets are the body's on the interface and its fillet.
+/// [-H, 0] below, meshed together (their shared face conforming; each
+/// volume tetrahedralised alone on that surface mesh) as two separate
+/// bodies: each interface node has a twin of the block's at the same place
+/// (PenaltyContact::set_node_pairs). Top facets: the body's top
+/// z = H and the block's bottom z = -H; symmetry planes through both; the
+/// contact facets are the body's on the interface and its fillet. A rounded
+/// edge's fillet leaves the interface at x = -x_t and lifts off the block's
+/// top, which stays one flat face: conforming with the body up to x = -x_t,
+/// free beyond it and graded under the fillet's start as the body is (the
+/// sizes mirrored in z = 0), for node-to-surface pairs there.
 SceneMesh build_rim_block_mesh(MPI_Comm comm, const RimEndGeometry& geometry, const RimEndSizes& sizes);
 
 /// Two elastic bodies pressed together in plane strain, for line Hertz
 /// between them: the upper body x in [0, W], y in [0, W] and the lower
 /// x in [0, W], y in [-W, 0] (the x >= 0 half by symmetry), meshed together
-/// as twins along y = 0 (one gmsh model, fragment: a conforming interface),
-/// graded about the origin.
+/// as twins along y = 0 (as build_rim_block_mesh), graded about the origin.
 /// Top facets y = W and y = -W; symmetry x = 0; contact facets the upper
 /// body's on y = 0.
 SceneMesh build_line_block_mesh(MPI_Comm comm, double size_m, const MeshGrading& grading);
