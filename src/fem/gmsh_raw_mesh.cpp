@@ -69,4 +69,15 @@ RawMesh read_gmsh_mesh(int dim)
   }
   return raw;
 }
+int add_threshold_field(int distance_field, double size_min, double size_max, double dist_min, double growth)
+{
+  namespace field = gmsh::model::mesh::field;
+  const int threshold = field::add("Threshold");
+  field::setNumber(threshold, "InField", distance_field);
+  field::setNumber(threshold, "SizeMin", size_min);
+  field::setNumber(threshold, "SizeMax", size_max);
+  field::setNumber(threshold, "DistMin", dist_min);
+  field::setNumber(threshold, "DistMax", dist_min + (size_max - size_min) / growth);
+  return threshold;
+}
 } // namespace rollcheck::fem

@@ -1,7 +1,8 @@
 #pragma once
-// The mesh gmsh holds, read into the arrays DOLFINx builds a mesh from:
-// shared by the scene meshes (fem/scene_mesh.h) and the whole-body mesh
-// (fem/whole_body_mesh.h), which run gmsh on rank 0 (fem/on_rank_zero.h).
+// The gmsh pieces shared by the scene meshes (fem/scene_mesh.h) and the
+// whole-body mesh (fem/whole_body_mesh.h), which run gmsh on rank 0
+// (fem/on_rank_zero.h): graded size fields, and the mesh gmsh holds read
+// into the arrays DOLFINx builds a mesh from.
 #include <cstdint>
 #include <vector>
 
@@ -22,4 +23,9 @@ struct RawMesh
 /// shared faces. ComputationError for an element of dimension `dim` that is
 /// not that simplex.
 RawMesh read_gmsh_mesh(int dim);
+
+/// A gmsh Threshold field on the distance field `distance_field`: size_min
+/// up to the distance dist_min, then growing linearly by `growth` per unit of
+/// distance until size_max. Returns its tag.
+int add_threshold_field(int distance_field, double size_min, double size_max, double dist_min, double growth);
 } // namespace rollcheck::fem

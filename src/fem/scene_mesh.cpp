@@ -100,13 +100,8 @@ void set_graded_size_field(int pole, const MeshGrading& g)
   namespace field = gmsh::model::mesh::field;
   const int distance = field::add("Distance");
   field::setNumbers(distance, "PointsList", {static_cast<double>(pole)});
-  const int threshold = field::add("Threshold");
-  field::setNumber(threshold, "InField", distance);
-  field::setNumber(threshold, "SizeMin", g.contact_size_m);
-  field::setNumber(threshold, "SizeMax", g.far_size_m);
-  field::setNumber(threshold, "DistMin", g.fine_radius_m);
-  field::setNumber(threshold, "DistMax", g.fine_radius_m + (g.far_size_m - g.contact_size_m) / g.growth);
-  field::setAsBackgroundMesh(threshold);
+  field::setAsBackgroundMesh(
+      add_threshold_field(distance, g.contact_size_m, g.far_size_m, g.fine_radius_m, g.growth));
   sizes_from_fields_alone();
 }
 

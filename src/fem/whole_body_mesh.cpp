@@ -61,22 +61,12 @@ RawMesh mesh_extruded_segment(double r, double c, const std::vector<double>& pla
 
     const int distance = field::add("Distance");
     field::setNumbers(distance, "PointsList", {static_cast<double>(pole)});
-    const int threshold = field::add("Threshold");
-    field::setNumber(threshold, "InField", distance);
-    field::setNumber(threshold, "SizeMin", sizes.contact_m);
-    field::setNumber(threshold, "SizeMax", sizes.far_m);
-    field::setNumber(threshold, "DistMin", sizes.strip_half_width_m);
-    field::setNumber(threshold, "DistMax",
-                     sizes.strip_half_width_m + (sizes.far_m - sizes.contact_m) / sizes.growth);
+    const int threshold
+        = add_threshold_field(distance, sizes.contact_m, sizes.far_m, sizes.strip_half_width_m, sizes.growth);
     int background = threshold;
     if (sizes.edge_m > 0)
     {
-      const int edge = field::add("Threshold");
-      field::setNumber(edge, "InField", distance);
-      field::setNumber(edge, "SizeMin", sizes.edge_m);
-      field::setNumber(edge, "SizeMax", sizes.far_m);
-      field::setNumber(edge, "DistMin", sizes.edge_zone_m);
-      field::setNumber(edge, "DistMax", sizes.edge_zone_m + (sizes.far_m - sizes.edge_m) / sizes.growth);
+      const int edge = add_threshold_field(distance, sizes.edge_m, sizes.far_m, sizes.edge_zone_m, sizes.growth);
       background = field::add("Min");
       field::setNumbers(background, "FieldsList", {static_cast<double>(threshold), static_cast<double>(edge)});
     }
