@@ -40,6 +40,15 @@ def score(entry):
     return f"{value:.4g}"
 
 
+def loop_ratio(j):
+    """The loop's largest end pressure over its largest interior pressure
+    (absent in JSON written before it was added)."""
+    if "loop_end_to_interior" not in j:
+        return "-"
+    value = j["loop_end_to_interior"]
+    return "singular" if value is None else f"{value:.3f}"
+
+
 def run(command, path, env):
     """One `rollcheck rim` run: its JSON at path, its log (with the per-end
     table) beside it."""
@@ -71,8 +80,9 @@ def main():
     folder = args.json_dir or tempfile.mkdtemp(prefix="rim_peaks_")
     os.makedirs(folder, exist_ok=True)
     rows = ["| body | faces | loaded rim ends (samples) | singular ends | worst end / orientation peak (direct ends) "
-            "| FEM-SDS | with the ends | FEM-FDS | with the ends | end table vs direct | status | s |",
-            "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+            "| loop's end peak / interior peak | FEM-SDS | with the ends | FEM-FDS | with the ends "
+            "| end table vs direct | status | s |",
+            "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     wanted = set(args.only.split(",")) if args.only else None
     for label, body in BODIES:
         if wanted and label.split(" ")[0] not in wanted and label not in wanted:
@@ -92,6 +102,7 @@ def main():
             f"| {label} | {j['interior']['n_faces']} | {loop['loaded_ends']} ({loop['loaded_end_samples']} of {loop['samples']}) "
             f"| {singular} ({100 * singular / max(loop['loaded_ends'], 1):.0f} %) "
             f"| {'-' if worst is None else f'{worst:.3f}'} "
+            f"| {loop_ratio(j)} "
             f"| {score(loop['fem_sds_rulings'])} | {score(aware['fem_sds']) if aware else '-'} "
             f"| {score(loop['fem_fds_rulings'])} | {score(aware['fem_fds']) if aware else '-'} "
             f"| {'-' if table is None else f'{100 * table:.1f} %'} | {j['end_aware_status'].split(':')[0]} "

@@ -79,8 +79,8 @@ const io::BoundSchema<RimCommand>& rim_schema()
               "L / H: the contact modelled from the far side (plane strain) to the edge", io::Bounds{1, 20})
         .choice("sheet", "--sheet", end(&RimEndSettings::sheet),
                 "The contact sheet as a cylinder, or flattened onto z = 0 with its height in the contact's initial "
-                "gap (half-space theory's profile); auto: flat where R >= 20 H; the steel counter-face is always flat "
-                "(the sheet's profile in the pairs' gap; needs R >= H)",
+                "gap (half-space theory's profile, for b << R); auto: flat where R >= 20 H or R < H, the cylinder "
+                "between; the steel counter-face is always flat (the sheet's profile in the pairs' gap)",
                 {{"auto", fem::SheetModel::automatic}, {"cylinder", fem::SheetModel::cylinder},
                  {"flat", fem::SheetModel::flat}})
         .choice("end_mesh", "--end-mesh", end(&RimEndSettings::mesh),
@@ -245,8 +245,12 @@ nlohmann::json run_loop(study::RimLoopSettings settings)
   std::string scores = fmt::format("interior only: FEM-SDS {}, FEM-FDS {}", score(loop.fem_rulings),
                                    score(loop.fem_fds_rulings));
   if (!loop.end_aware.empty())
-    scores += fmt::format("\nwith the ends:  FEM-SDS {}, FEM-FDS {}; {}", score(loop.end_aware[0].sds),
-                          score(loop.end_aware[0].fds), r.end_aware_status());
+    scores += fmt::format("\nwith the ends:  FEM-SDS {}, FEM-FDS {}; {}\nover the loop: largest end pressure / "
+                          "largest interior pressure {}",
+                          score(loop.end_aware[0].sds), score(loop.end_aware[0].fds), r.end_aware_status(),
+                          r.loop_end_to_interior()                ? fmt::format("{:.3f}", *r.loop_end_to_interior())
+                          : loop.end_aware[0].singular_ends > 0 ? "singular"
+                                                                 : "none");
   spdlog::info("\nrims of {} ({}), counter-face {}, edge {}:\n\n{}\nloaded rim ends over the loop: {} in {} of {} "
                "samples, interior angles {:.1f} to {:.1f} deg (singular above {:.2f} deg); end table of {} nodes "
                "at q = {:.4g} N/m, R = {:.4g} m, against the direct ends {}\n{}\n\n",

@@ -58,12 +58,22 @@ const io::BoundSchema<study::WholeBodyCheckSettings>& whole_body_schema()
               io::Bounds{0, 0.25, true, true})
         .integer("slice_refine", "--refine", &WholeBodyCheckSettings::slice_refine, "",
                  "The slices' mesh level (-1: the plane-strain default)", io::Bounds{-1, 8})
+        .choice("end_depth", "--end-depth", &WholeBodyCheckSettings::end_depth,
+                "The end models' block: body (as deep as the whole body's held section, the cut through its centre "
+                "of mass; square ends on rim's structured grid, MUMPS LU) or local (rim's default 10 b, which "
+                "overstates a deep body's square end by about 10 %)",
+                {{"body", study::EndModelDepth::body}, {"local", study::EndModelDepth::local}})
         .integer("end_levels", "--end-levels", &WholeBodyCheckSettings::end_levels, "",
-                 "The end models' edge mesh levels (rollcheck rim --levels); the whole body's end layers are as thin "
-                 "as their last edge elements",
-                 io::Bounds{1, 6})
+                 "The end models' edge mesh levels (rollcheck rim --levels)", io::Bounds{1, 6})
         .real("end_edge_element", "--end-edge-element", &WholeBodyCheckSettings::end_edge_element, "",
               "The end models' first edge element h_e / b (rollcheck rim --edge-element); each level halves it",
+              io::Bounds{1e-3, 1, false, true})
+        .integer("end_contact_elements", "--end-contact-elements", &WholeBodyCheckSettings::end_contact_elements, "",
+                 "The end models' elements per b along the edge and the strip (rollcheck rim --contact-elements)",
+                 io::Bounds{2, 40})
+        .real("body_end_layer", "--body-end-layer", &WholeBodyCheckSettings::body_end_layer, "",
+              "Whole body: thickness of its end layers (and of its section's elements near the contact line at the "
+              "ends), h / b",
               io::Bounds{1e-3, 1, false, true})
         .flag("end_layers_only", "--end-layers-only", &WholeBodyCheckSettings::end_layers_only,
               "Whole body: do not refine the section near the contact line to the end layers' size (by default the "

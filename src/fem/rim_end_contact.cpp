@@ -129,7 +129,12 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   // kappa = c E / h(x) with the mesh's own size: a penalty as soft as at the
   // strip's elements would cut the edge's singular pressure off at h_c / c.
   auto penalty_scale = [&](const double* x) { return sizes.contact_m / rim_end_element_size(sizes, x); };
-  auto sheet_height = [&](double y) { return s.radius_m - std::sqrt(s.radius_m * s.radius_m - y * y); };
+  // The flattened sheet's height at y; beyond y = R (a block deeper than R)
+  // the sheet has turned away and its gap R never closes against b << R.
+  auto sheet_height = [&](double y) {
+    const double on_sheet = std::min(std::abs(y), s.radius_m);
+    return s.radius_m - std::sqrt(s.radius_m * s.radius_m - on_sheet * on_sheet);
+  };
   const double tol = 1e-9 * H;
   // A rounded edge on the block: the fillet's nodes whose height above the
   // block's top is below r_e / 8 (within about r_e / 2 of the fillet's start,
@@ -157,7 +162,7 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   {
     problem.set_penalty_scale(penalty_scale);
     if (study.flat_sheet)
-      problem.set_initial_gap([&](const double* x) { return sheet_height(std::min(x[1], s.radius_m)); });
+      problem.set_initial_gap([&](const double* x) { return sheet_height(x[1]); });
   }
   level.dofs = problem.num_dofs();
   // The contact face's nodal pressures: the pairs' (block), or the rigid
@@ -271,17 +276,26 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
                                  setup.edge_radius_m, setup.depth_over_half_width * study.half_width_m));
   const bool sharp = !(setup.edge_radius_m > 0);
   const double depth_m = setup.depth_over_half_width * study.half_width_m;
-  study.flat_sheet = setup.sheet == SheetModel::flat || block || setup.mesh == RimEndMesh::grid
-                     || (setup.sheet == SheetModel::automatic && setup.radius_m >= 20 * depth_m);
+  // Flat where the cylinder hardly rises across the block (R >= 20 H), and
+  // where it cannot hold the block at all (R < H: a fillet's block deepened
+  // to 10.5 r_e at an end of small R, rim --body): half-space theory's
+  // reduction, exact in the gap wherever the contact can reach (b << R).
+  study.flat_sheet
+      = setup.sheet == SheetModel::flat || block || setup.mesh == RimEndMesh::grid
+        || (setup.sheet == SheetModel::automatic && (setup.radius_m >= 20 * depth_m || setup.radius_m < depth_m));
   // Two bodies meet on the flat interface with the sheet's profile in the
   // pairs' gap (half-space theory's reduction, as in line Hertz between two
   // bodies), whatever R / H: the flattened geometry differs from the
   // cylinder only away from the contact strip (at y = H by H^2 / (2 R)).
-  if (block && (setup.sheet == SheetModel::cylinder || setup.radius_m < depth_m))
-    throw InputError(fmt::format("rim: the block counter-face needs the flat sheet and R >= H (sheet {}, R = {} m, "
-                                 "H = {:.3g} m)",
-                                 setup.sheet == SheetModel::cylinder ? "cylinder" : "flat or automatic",
+  if (block && setup.sheet == SheetModel::cylinder)
+    throw InputError("rim: the block counter-face needs the flat sheet (sheet cylinder)");
+  if (!study.flat_sheet && setup.radius_m < depth_m)
+    throw InputError(fmt::format("rim: the cylinder sheet needs R >= H (R = {} m, H = {:.3g} m): use the flat sheet",
                                  setup.radius_m, depth_m));
+  if (study.flat_sheet && !(study.half_width_m < 0.2 * setup.radius_m))
+    throw InputError(fmt::format("rim: the flat sheet is half-space theory's, for b << R; here b = {:.3g} m against "
+                                 "R = {} m",
+                                 study.half_width_m, setup.radius_m));
   study.fillet_start_m = setup.edge_radius_m * std::tan((std::numbers::pi - setup.interior_angle_rad) / 2);
   study.boundary_layer_m = 4 * study.hertz_peak_pa * setup.edge_radius_m / (std::numbers::pi * study.effective_modulus_pa);
   const double E = setup.youngs_modulus_pa, nu = setup.poisson_ratio;

@@ -113,7 +113,8 @@ struct RimEndSettings
   /// The contact sheet as OpenCASCADE's cylinder, or flattened onto z = 0
   /// with its height in the initial gap (fem/scene_mesh.h RimEndGeometry);
   /// automatic: flat where R >= 20 H (the sheet rises less than H / 40
-  /// across the block), the cylinder below.
+  /// across the block) or R < H (the cylinder cannot hold the block), the
+  /// cylinder between. The flat sheet needs b < R / 5 (half-space theory).
   SheetModel sheet = SheetModel::automatic;
   RimEndMesh mesh = RimEndMesh::delaunay;
   int contact_elements = 6;          ///< elements across b along the contact strip

@@ -105,7 +105,7 @@ struct RimEndGeometry
   double radius_m = 0;           ///< R, of the contacting sheet across the ruling
   double interior_angle_rad = 0; ///< a, in [60, 180) deg
   double edge_radius_m = 0;      ///< r_e of the fillet; 0: a sharp edge
-  double depth_m = 0;            ///< H: the block's height and half-width (R >= H)
+  double depth_m = 0;            ///< H: the block's height and half-width (R >= H for the cylinder sheet)
   double length_m = 0;           ///< L: contact modelled from the far side x = -L to the edge
   /// The sheet flattened onto z = 0 (its height, R - sqrt(R^2 - y^2), then
   /// belongs in the contact's initial gap: PenaltyContact::set_initial_gap).

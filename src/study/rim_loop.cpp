@@ -165,6 +165,13 @@ std::optional<double> RimLoopResult::worst_end_to_interior() const
   return worst;
 }
 
+std::optional<double> RimLoopResult::loop_end_to_interior() const
+{
+  if (loop.end_aware.empty() || loop.end_aware[0].singular_ends > 0 || loop.loaded_ends == 0 || !(loop.fem_peak_pa > 0))
+    return std::nullopt;
+  return loop.end_aware[0].peak_pa / loop.fem_peak_pa;
+}
+
 std::string RimLoopResult::end_aware_status() const
 {
   if (loop.loaded_ends == 0)
@@ -322,6 +329,7 @@ nlohmann::json to_json(const RimLoopResult& r)
           {"singular_from_deg", r.singular_from_rad / degree},
           {"ends", ends},
           {"worst_end_to_interior", json_number(r.worst_end_to_interior())},
+          {"loop_end_to_interior", json_number(r.loop_end_to_interior())},
           {"end_table", table},
           {"end_table_load_n_per_m", r.reference_load_n_per_m},
           {"end_table_sheet_radius_m", r.reference_radius_m},

@@ -91,6 +91,10 @@ struct RimLoopResult
 
   /// Largest end/interior peak over the directly modelled ends that have one.
   std::optional<double> worst_end_to_interior() const;
+  /// Over every sample of the loop: the largest end pressure (the table's)
+  /// over the largest interior pressure (FEM-SDS's mapped points); none when
+  /// an end is singular or no sample loads a rim.
+  std::optional<double> loop_end_to_interior() const;
   /// In words: singular, converged, or not converged and why.
   std::string end_aware_status() const;
 };

@@ -52,6 +52,8 @@ void check_settings(const WholeBodyCheckSettings& s)
   require(s.crease_margin > 0 && s.crease_margin < 0.25, "crease_margin must lie in (0, 0.25)");
   require(s.end_levels >= 1 && s.end_levels <= 6, "end_levels must lie in [1, 6]");
   require(s.end_edge_element > 0 && s.end_edge_element <= 1, "end_edge_element must lie in (0, 1]");
+  require(s.end_contact_elements >= 2 && s.end_contact_elements <= 40, "end_contact_elements must lie in [2, 40]");
+  require(s.body_end_layer > 0 && s.body_end_layer <= 1, "body_end_layer must lie in (0, 1]");
   require(s.end_zone_over_half_width > 0 && s.end_zone_over_half_width <= 20,
           "end_zone_over_half_width must lie in (0, 20]");
   require(s.tolerance > 0 && s.tolerance < 1, "tolerance must lie in (0, 1)");
@@ -146,7 +148,15 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     rim.poisson_ratio = s.poisson_ratio;
     rim.levels = s.end_levels;
     rim.edge_element_over_half_width = s.end_edge_element;
+    rim.contact_elements = s.end_contact_elements;
     rim.tolerance = s.tolerance;
+    if (s.end_depth == EndModelDepth::body)
+    {
+      rim.depth_over_half_width = r.centre_of_mass_height_m / end.half_width_m;
+      rim.petsc_options = "-hertz_ksp_type preonly -hertz_pc_type lu -hertz_pc_factor_mat_solver_type mumps";
+    }
+    if (std::abs(end.interior_angle_deg - 90) < 1e-9)
+      rim.mesh = fem::RimEndMesh::grid;
     // Identical ends (the cylinder's) share one end model.
     const auto same = std::find_if(r.ends.begin(), r.ends.end(), [&](const EndComparison& other) {
       return other.load_n_per_m == end.load_n_per_m && other.radius_m == end.radius_m
@@ -156,7 +166,9 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     if (!end.end_model.singular && end.end_model.converged && end.end_model.end_to_interior)
       end.predicted_edge_pa = *end.end_model.end_to_interior * end.slice_peak_pa;
     if (log)
-      spdlog::info("end model at {} (a = {:.2f} deg): {}", e == 0 ? "the start" : "the end", end.interior_angle_deg,
+      spdlog::info("end model at {} (a = {:.2f} deg, H = {:.4g} b, {} mesh): {}", e == 0 ? "the start" : "the end",
+                   end.interior_angle_deg, end.end_model.setup.depth_over_half_width,
+                   end.end_model.setup.mesh == fem::RimEndMesh::grid ? "grid" : "Delaunay",
                    end.end_model.singular ? "singular"
                    : end.end_model.end_to_interior
                        ? fmt::format("edge / interior {:.4f}{}", *end.end_model.end_to_interior,
@@ -183,7 +195,7 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
   sizes.strip_half_width_m = s.strip_over_half_width * largest_b;
   sizes.growth = s.section_growth;
   sizes.far_m = radius / 8;
-  sizes.end_layer_m = s.end_edge_element * std::pow(0.5, s.end_levels - 1) * smallest_end_b;
+  sizes.end_layer_m = s.body_end_layer * smallest_end_b;
   if (!s.end_layers_only)
   {
     sizes.edge_m = sizes.end_layer_m;
@@ -298,6 +310,8 @@ nlohmann::json to_json(const WholeBodyCheck& r)
                     {"load_n_per_m", e.load_n_per_m},
                     {"half_width_m", e.half_width_m},
                     {"interior_angle_deg", e.interior_angle_deg},
+                    {"end_model_depth_over_half_width", e.end_model.setup.depth_over_half_width},
+                    {"end_model_mesh", e.end_model.setup.mesh == fem::RimEndMesh::grid ? "grid" : "delaunay"},
                     {"end_model_singular", e.end_model.singular},
                     {"end_model_converged", e.end_model.converged},
                     {"end_model_end_to_interior", json_number(e.end_model.end_to_interior)},
@@ -319,6 +333,7 @@ nlohmann::json to_json(const WholeBodyCheck& r)
           {"normal_load_n", s.normal_load_n},
           {"youngs_modulus_pa", s.youngs_modulus_pa},
           {"poisson_ratio", s.poisson_ratio},
+          {"end_depth", s.end_depth == EndModelDepth::body ? "body" : "local"},
           {"effective_modulus_pa", r.effective_modulus_pa},
           {"ruling",
            {{"length_m", r.length_m},

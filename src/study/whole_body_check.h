@@ -11,13 +11,17 @@
 //    against the slice's peak;
 //  - at both loaded ends: the end model (fem/rim_end_contact.h) under the
 //    end's q and R at its interior angle 90 deg + the rim's lean
-//    (contact/rim_overhang.h). Not singular (square or acute on the rigid
-//    plane): its converged edge pressure over its plane-strain interior,
-//    times the slice's peak at the end's q and R, is the reduced models'
-//    edge pressure, against the whole body's (mean nodal pressure of the end
-//    plane's nodes with |y| <= b / 2, at the end model's finest edge element
-//    as the whole body's end layer). Singular (obtuse): no number is
-//    compared; the check reports the end singular and does not pass.
+//    (contact/rim_overhang.h), its block as deep as the whole body's held
+//    section (EndModelDepth::body), a square end on the structured grid
+//    (fem/scene_mesh.h build_square_end_grid_mesh: gmsh's Delaunay end at
+//    that depth has about 1e6 DOFs a level) solved by MUMPS LU (GAMG stalled
+//    on the deep grid). Not singular (square or acute on the rigid plane):
+//    its converged edge pressure over its plane-strain interior, times the
+//    slice's peak at the end's q and R, is the reduced models' edge
+//    pressure, against the whole body's (mean nodal pressure of the end
+//    plane's nodes with |y| <= b / 2, end layers of body_end_layer b).
+//    Singular (obtuse): no number is compared; the check reports the end
+//    singular and does not pass.
 //  - the load distribution: the whole body's line load at each station
 //    against the locus's q(s), and its centre of pressure (held at the
 //    centre of mass's foot by the solver).
@@ -40,6 +44,12 @@
 
 namespace rollcheck::study
 {
+enum class EndModelDepth
+{
+  body,
+  local
+};
+
 struct WholeBodyCheckSettings
 {
   /// The body: its r1 (radius_m), the cylinder's height (2 r1 by default).
@@ -65,8 +75,22 @@ struct WholeBodyCheckSettings
   int stations = 9;                 ///< slices along the ruling
   double crease_margin = 0.05;      ///< stations this fraction of the ruling inside its loaded ends (fem-sds's)
   int slice_refine = -1;            ///< the slices' level (SliceSettings::refine)
+  /// The end models' block: as deep as the whole body's held section (the
+  /// cut through the centre of mass, e.g. 588 b for the 10 mm cylinder), or
+  /// the rim scene's local default 10 b. The square end's edge pressure
+  /// falls as the block deepens, since its top is held flat (grid, h_e = b/32:
+  /// 0.538 at 10 b, 0.488 at 400 b; docs/rims.md): a local block overstates
+  /// a deep body's square end by about 10 %.
+  EndModelDepth end_depth = EndModelDepth::body;
   int end_levels = 2;               ///< the end models' edge levels
-  double end_edge_element = 0.125;  ///< their first h_e / b; the whole body's end layer is their last
+  double end_edge_element = 1.0 / 16; ///< their first h_e / b; each level halves it
+  /// Along the edge and across the strip, elements per b of the end models
+  /// (rim --contact-elements): at 6 the deep grid's far side reached only
+  /// 0.95-0.98 of Hertz's p0 and its edge did not converge.
+  int end_contact_elements = 12;
+  /// The whole body's end layers (and, unless end_layers_only, its section
+  /// near the contact line at the ends), h / b of the ends' smallest b.
+  double body_end_layer = 1.0 / 16;
   /// Unless set, the whole body's section is refined to the end layer's
   /// size within end_zone_over_half_width b of the contact line, so that its
   /// elements at the ends are isotropic (as the end model's at its edge).
