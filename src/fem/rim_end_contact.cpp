@@ -196,7 +196,9 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
                                            "half the node-to-surface zone ({:.3g} m)",
                                            pair.x[2], surface_zone_m));
 
-  const double end_zone = 2 * b + s.edge_radius_m;
+  // Where the sheet ends: an acute rim's fillet starts further out than r_e
+  // (x_t = r_e tan((180 deg - a) / 2) > r_e below 90 deg).
+  const double end_zone = 2 * b + std::max(s.edge_radius_m, study.fillet_start_m);
   double edge_sum = 0;
   int edge_nodes = 0;
   std::optional<NodalFields> fields;

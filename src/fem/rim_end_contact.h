@@ -147,7 +147,7 @@ struct RimEndLevel
   double far_scatter = 0;            ///< their standard deviation over their mean
   double mid_peak_pa = 0;            ///< the same over x in [-L / 2 - H / 2, -L / 2 + H / 2]
   double mid_to_far_standard_error = 0; ///< of mid_peak_pa / far_peak_pa, from the nodes' scatter
-  /// Largest centre-line pressure within 2 b + r_e of the edge (each the
+  /// Largest centre-line pressure within 2 b + max(r_e, x_t) of the edge (each the
   /// mean over +-b / 4 along the ruling, a rounded edge's over at most half
   /// its boundary layer), and where (x).
   double end_peak_pa = 0, end_peak_x_m = 0;
