@@ -216,3 +216,28 @@ TEST(RimEndContact, FlatSheetStandsInForTheCylinderWhereTheBlockIsDeeperThanR)
   }
   EXPECT_NEAR(*flat.end_to_interior / *cylinder.end_to_interior, 1.0, 0.03);
 }
+
+TEST(RimEndContact, RoundedAcuteRimPeaksWhereItsFilletStarts)
+{
+  // Below 90 deg the fillet leaves the sheet further out than r_e
+  // (x_t = r_e tan 60 deg = 8.7 b at 60 deg, r_e = 5 b): the sheet's end,
+  // where the curvature jumps, carries the peak, and the study must look for
+  // it there (it once looked within 2 b + r_e = 7 b, found no pressure and
+  // stopped the loop at the oloid's acute ends).
+  fem::RimEndSettings s;
+  s.interior_angle_rad = 60 * degree;
+  s.load_n_per_m = 571769.86; // p0 = 2.0 GPa at R = 10 mm: b = 0.182 mm
+  const double b = 1.82e-4;
+  s.edge_radius_m = 5 * b;
+  s.depth_over_half_width = 52;
+  s.edge_element_over_half_width = 1.0 / 64;
+  s.levels = 2;
+  const fem::RimEndStudy study = fem::solve_rim_end(MPI_COMM_WORLD, s);
+  print(study);
+  EXPECT_GT(study.fillet_start_m, 2 * b + s.edge_radius_m);
+  EXPECT_TRUE(study.resolved);
+  EXPECT_TRUE(study.converged) << study.end_change.value_or(std::nan(""));
+  EXPECT_NEAR(study.levels.back().end_peak_x_m / study.fillet_start_m, -1.0, 0.1);
+  ASSERT_TRUE(study.end_to_interior.has_value());
+  EXPECT_GT(*study.end_to_interior, 1.2);
+}
