@@ -294,7 +294,7 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
   if (!study.flat_sheet && setup.radius_m < depth_m)
     throw InputError(fmt::format("rim: the cylinder sheet needs R >= H (R = {} m, H = {:.3g} m): use the flat sheet",
                                  setup.radius_m, depth_m));
-  if (study.flat_sheet && !(study.half_width_m < 0.2 * setup.radius_m))
+  if (study.flat_sheet && !(study.half_width_m < largest_half_width_over_radius * setup.radius_m))
     throw InputError(fmt::format("rim: the flat sheet is half-space theory's, for b << R; here b = {:.3g} m against "
                                  "R = {} m",
                                  study.half_width_m, setup.radius_m));

@@ -95,6 +95,10 @@ enum class RimEndMesh
   grid
 };
 
+/// The flat sheet is half-space theory's, for b << R: the largest b / R the
+/// scene accepts (fem::solve_rim_end refuses beyond it).
+constexpr double largest_half_width_over_radius = 0.2;
+
 struct RimEndSettings
 {
   /// R across the ruling at the end: the 10 mm cylinder of the Hertz scenes.

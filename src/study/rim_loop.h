@@ -57,8 +57,12 @@ struct RimLoopEnd
   std::size_t orientation = 0;       ///< FemSdsOrientation::index
   int end = 0;                       ///< 0 the ruling's start, 1 its end
   double interior_angle_rad = 0;     ///< 90 deg + the rim's lean
-  double modelled_angle_rad = 0;     ///< within the end model's [60, 179.5] deg
-  fem::RimEndStudy study;            ///< at the end's q and R
+  double modelled_angle_rad = 0;     ///< within the end model's [60, 179.5] deg ([60, 170] rounded)
+  fem::RimEndStudy study;            ///< at the end's q and R (no levels when outside the model)
+  /// Why the end model cannot stand for this end (empty: it does): b / R
+  /// beyond fem::largest_half_width_over_radius, where the ruling ends near
+  /// the apex of its sheet and the contact there is no line contact.
+  std::string outside_model;
   double interior_peak_pa = 0;       ///< the orientation's FEM peak along the ruling (slices)
   /// end_to_interior times the end model's interior pressure (none: singular or not converged).
   std::optional<double> end_peak_pa;
