@@ -21,15 +21,17 @@
 //    pressure, against the whole body's (mean nodal pressure of the end
 //    plane's nodes with |y| <= b / 2, end layers of body_end_layer b).
 //    Singular (obtuse): no number is compared; the check reports the end
-//    singular and does not pass.
+//    singular (the end model's measured exponent against the wedge's) and
+//    does not pass; as a secondary reading only, the whole body's edge
+//    against the end model's at the nearest edge element size (matched mesh).
 //  - the load distribution: the whole body's line load at each station
 //    against the locus's q(s), and its centre of pressure (held at the
 //    centre of mass's foot by the solver).
 // Passes when every station and both ends agree within `tolerance` (3 %).
 //
-// Bodies: the cylinder. The oloid needs a whole-body mesh of its developable
-// surface that keeps the elements long along the ruling (docs/whole-body.md,
-// "Not built"); asking for it is an InputError that says so.
+// Bodies: the cylinder (its section extruded) and the oloid (the cylinder's
+// reference mesh mapped onto its sections, fem/whole_body_mesh.h
+// build_mapped_body_mesh); any other body is an InputError that says so.
 #include "fem/rim_end_contact.h"
 #include "fem/slice_contact.h"
 #include "fem/whole_body_contact.h"
@@ -130,6 +132,13 @@ struct EndComparison
   double body_edge_pa = 0;               ///< the whole body's
   double body_interior_pa = 0;           ///< the whole body's peak at the nearest station
   std::optional<double> difference;      ///< body / predicted - 1
+  /// A singular end, read secondarily at matched meshes (never a pass): the
+  /// end model's level whose edge elements are nearest the whole body's end
+  /// layer, its edge / far pressure times the slice's peak, against the
+  /// whole body's edge. Both are numbers of the mesh (they grow as h_e^(lambda - 1)).
+  std::optional<std::size_t> matched_level;
+  std::optional<double> matched_edge_pa;
+  std::optional<double> matched_difference; ///< body / matched - 1
 };
 
 struct WholeBodyCheck
