@@ -154,19 +154,19 @@ double segment_distance(double r, double c, double z_c, double psi)
 double angle_from_down(double y, double z, double z_c) { return std::atan2(y, z_c - z); }
 
 /// One station's map of the reference section's angles onto the body's
-/// (fem/whole_body_mesh.h): psi' = k psi + e psi^2 between the corners,
-/// linear beyond them over the cut.
+/// (fem/whole_body_mesh.h): psi' = psi + e2 psi^2 + e3 psi^3 between the
+/// corners, linear beyond them over the cut.
 struct SectionMap
 {
   Eigen::Vector3d centre;
-  std::array<double, 2> reference_corner{}, body_corner{}; ///< psi at y > 0, y < 0
-  double k = 1, e = 0;
+  std::array<double, 2> reference_corner{}, body_corner{}; ///< psi at the right (y > 0) end of the cut, the left
+  double e2 = 0, e3 = 0;
 
   double body_angle(double psi) const
   {
     const double right = reference_corner[0], left = reference_corner[1];
     if (psi >= left && psi <= right)
-      return k * psi + e * psi * psi;
+      return psi + psi * psi * (e2 + e3 * psi);
     // Over the cut, from the right corner through the top to the left one.
     const double around = psi >= right ? psi : psi + 2 * std::numbers::pi;
     const double f = (around - right) / (left + 2 * std::numbers::pi - right);
@@ -180,22 +180,30 @@ SectionMap section_map(const MappedBodyPose& pose, double x, double z_c, double 
   const double z_G = pose.cut_height_m;
   SectionMap m;
   m.centre = Eigen::Vector3d(x, 0, z_c);
+  const std::array<double, 2> vertical = pose.chord(m.centre, Eigen::Vector3d(0, 0, 1));
+  if (!(vertical[0] <= 0 && vertical[1] >= 0))
+    throw ComputationError(fmt::format("whole-body map: the section's centre (x = {:.6g} m, z = {:.6g} m) lies outside "
+                                       "the body",
+                                       x, z_c));
   m.reference_corner = {angle_from_down(reference_half_width, z_G, z_c), angle_from_down(-reference_half_width, z_G, z_c)};
-  for (int side = 0; side < 2; ++side)
-  {
-    const double y = pose.boundary_distance(Eigen::Vector3d(x, 0, z_G), Eigen::Vector3d(0, side == 0 ? 1 : -1, 0));
-    m.body_corner[side] = angle_from_down(side == 0 ? y : -y, z_G, z_c);
-  }
-  // k p + e p^2 = q at both corners.
+  // The cut's chord; its right end counter-clockwise from the bottom in
+  // (0, 2 pi), its left end clockwise in (-2 pi, 0).
+  const std::array<double, 2> cut = pose.chord(Eigen::Vector3d(x, 0, z_G), Eigen::Vector3d(0, 1, 0));
+  const double right = angle_from_down(cut[1], z_G, z_c), left = angle_from_down(cut[0], z_G, z_c);
+  m.body_corner = {right < 0 ? right + 2 * std::numbers::pi : right, left > 0 ? left - 2 * std::numbers::pi : left};
+  // e2 p^2 + e3 p^3 = q - p at both corners.
   const double p1 = m.reference_corner[0], p2 = m.reference_corner[1];
-  const double q1 = m.body_corner[0], q2 = m.body_corner[1];
-  m.e = (q1 * p2 - q2 * p1) / (p1 * p1 * p2 - p2 * p2 * p1);
-  m.k = (q1 - m.e * p1 * p1) / p1;
-  // Monotone on [p2, p1], or the mapped section folds.
-  if (!(m.k + 2 * m.e * p1 > 0 && m.k + 2 * m.e * p2 > 0))
-    throw ComputationError(fmt::format("whole-body map: the section at x = {:.6g} m folds (corners at {:.4f}, {:.4f} "
-                                       "rad against the reference's {:.4f}, {:.4f})",
-                                       x, q1, q2, p1, p2));
+  const double r1 = (m.body_corner[0] - p1) / (p1 * p1), r2 = (m.body_corner[1] - p2) / (p2 * p2);
+  m.e3 = (r1 - r2) / (p1 - p2);
+  m.e2 = r1 - m.e3 * p1;
+  // Monotone on [p2, p1] (its slope 1 + 2 e2 p + 3 e3 p^2 is positive at
+  // both ends and at its extremum), or the mapped section folds.
+  auto slope = [&](double p) { return 1 + p * (2 * m.e2 + 3 * m.e3 * p); };
+  const double turn = m.e3 != 0 ? std::clamp(-m.e2 / (3 * m.e3), p2, p1) : p1;
+  if (!(slope(p1) > 0 && slope(p2) > 0 && slope(turn) > 0))
+    throw ComputationError(fmt::format("whole-body map: the section at x = {:.6g} m folds (cut's ends at {:.4f}, {:.4f} "
+                                       "rad from the bottom against the reference's {:.4f}, {:.4f})",
+                                       x, m.body_corner[0], m.body_corner[1], p1, p2));
   return m;
 }
 
@@ -225,7 +233,7 @@ void map_onto_body(std::vector<double>& nodes, const MappedBodyPose& pose, const
       const double psi = angle_from_down(y, z, z_c);
       const double body_psi = m.body_angle(psi);
       const Eigen::Vector3d d(0, std::sin(body_psi), -std::cos(body_psi));
-      double reach = pose.boundary_distance(m.centre, d);
+      double reach = pose.chord(m.centre, d)[1];
       if (d.z() > 0)
         reach = std::min(reach, (z_G - z_c) / d.z());
       p += rho / segment_distance(r_ref, z_G, z_c, psi) * reach * d;
@@ -326,10 +334,10 @@ WholeBodyMesh build_mapped_body_mesh(MPI_Comm comm, const MappedBodyPose& pose, 
 {
   const double L = pose.length_m, z_G = pose.cut_height_m, r_ref = pose.reference_radius_m, zone = pose.end_zone_m;
   if (!(L > 0) || !(z_G > 0) || !(r_ref > 0.5 * z_G) || !(pose.radius_m[0] > 0 && pose.radius_m[1] > 0)
-      || !pose.boundary_distance)
+      || !pose.chord)
     throw InputError(fmt::format("whole-body mapped body: need L > 0 ({} m), a cut height z_G > 0 ({} m), a "
                                  "reference radius above z_G / 2 ({} m), radii R > 0 ({}, {} m) and the body's "
-                                 "boundary distance",
+                                 "chords",
                                  L, z_G, r_ref, pose.radius_m[0], pose.radius_m[1]));
   for (const double t : pose.end_overhang_rad)
     // The shear x = a + z s(a) stays monotone in a (no fold) while

@@ -30,9 +30,12 @@
 //   C + (rho / rho_ref(psi)) rho_body(a, psi') (sin psi', -cos psi'),
 // rho_ref and rho_body the distances from C to the boundary of the reference
 // segment and of the body below z_G along the ray (the body's by ray casting,
-// geometry/convex_ray.h). psi' = k psi + e psi^2 on the curved part (smooth at
-// the contact line; k and e send the reference's corners, where its arc meets
-// the cut, to the body's), linear in angle over the cut. Within end_zone of
+// geometry/convex_ray.h). psi' = psi + e2 psi^2 + e3 psi^3 on the curved
+// part: unit slope at the contact line, so that the strip keeps its elements'
+// size and shape across the ruling, and e2, e3 send the reference's corners
+// (where its arc meets the cut) to the body's, the ends of its chord at z_G
+// (the oloid's sections lean: at 5 % of the ruling the chord lies wholly on
+// one side of the contact line); linear in angle over the cut. z_c = z_G / 2. Within end_zone of
 // each end the section is frozen at the zone's station (the plane sections
 // of a convex body degenerate towards its rims) and the layers are sheared,
 //   x = a + z s(a),  s from -tan t_0 at a = 0 (tan t_L at a = L) to 0 at the zone's end,
@@ -93,9 +96,9 @@ struct MappedBodyPose
   std::array<double, 2> radius_m{};            ///< R across the ruling at x = 0 and x = L
   std::array<double, 2> end_overhang_rad{};    ///< t_0, t_L: the rims' leans, outwards positive
   double end_zone_m = 0;                       ///< sheared, frozen end zones (> z_G |tan t|, < L / 2)
-  /// Distance from `from` (inside the body) along the unit vector `d` to the
-  /// body's boundary.
-  std::function<double(const Eigen::Vector3d& from, const Eigen::Vector3d& d)> boundary_distance;
+  /// The body's chord {t_min, t_max} on the line p + t d (d unit): the
+  /// interval of t inside it (ComputationError if the line misses it).
+  std::function<std::array<double, 2>(const Eigen::Vector3d& p, const Eigen::Vector3d& d)> chord;
 };
 
 struct WholeBodyMesh

@@ -1,4 +1,4 @@
-// The exit distance of a ray from a convex mesh (geometry/convex_ray.h).
+// The chord of a line through a convex mesh (geometry/convex_ray.h).
 #include "geometry/convex_ray.h"
 #include "core/error.h"
 #include <Eigen/Geometry>
@@ -26,24 +26,24 @@ HalfSpaces half_spaces(const SurfaceMesh& mesh)
   return h;
 }
 
-double ray_exit_distance(const HalfSpaces& body, const Eigen::Vector3d& from, const Eigen::Vector3d& direction)
+std::array<double, 2> line_chord(const HalfSpaces& body, const Eigen::Vector3d& point, const Eigen::Vector3d& direction)
 {
-  double scale = 0;
-  for (const double h : body.offsets)
-    scale = std::max(scale, std::abs(h));
-  double t = std::numeric_limits<double>::infinity();
+  double low = -std::numeric_limits<double>::infinity(), high = std::numeric_limits<double>::infinity();
   for (std::size_t f = 0; f < body.normals.size(); ++f)
   {
-    const double inside = body.offsets[f] - body.normals[f].dot(from);
-    if (inside < -1e-12 * scale)
-      throw ComputationError(fmt::format("convex ray: the point ({:.9g}, {:.9g}, {:.9g}) lies outside the body",
-                                         from.x(), from.y(), from.z()));
+    const double inside = body.offsets[f] - body.normals[f].dot(point);
     const double towards = body.normals[f].dot(direction);
     if (towards > 0)
-      t = std::min(t, std::max(0.0, inside) / towards);
+      high = std::min(high, inside / towards);
+    else if (towards < 0)
+      low = std::max(low, inside / towards);
+    else if (inside < 0)
+      high = -std::numeric_limits<double>::infinity(); // parallel to a face, outside it
   }
-  if (!std::isfinite(t))
-    throw ComputationError("convex ray: no face of the body faces the ray (an open mesh?)");
-  return t;
+  if (!(low <= high) || !std::isfinite(low) || !std::isfinite(high))
+    throw ComputationError(fmt::format("convex ray: the line through ({:.9g}, {:.9g}, {:.9g}) along ({:.6g}, {:.6g}, "
+                                       "{:.6g}) misses the body",
+                                       point.x(), point.y(), point.z(), direction.x(), direction.y(), direction.z()));
+  return {low, high};
 }
 } // namespace rollcheck::geometry

@@ -1,12 +1,15 @@
 #pragma once
-// Where a ray from inside a closed convex triangle mesh leaves it. The mesh
-// is the intersection of its faces' half-spaces n_f . x <= h_f (n_f the
-// outward unit normal), so the ray p + t d (d unit) leaves it at
-//   t = min over faces with n_f . d > 0 of (h_f - n_f . p) / (n_f . d).
+// Where a line crosses a closed convex triangle mesh. The mesh is the
+// intersection of its faces' half-spaces n_f . x <= h_f (n_f the outward unit
+// normal), so the line p + t d lies inside it for
+//   max over n_f . d < 0 of (h_f - n_f . p) / (n_f . d)  <=  t  <=
+//   min over n_f . d > 0 of (h_f - n_f . p) / (n_f . d),
+// and n_f . p <= h_f for the faces parallel to d (Cyrus-Beck clipping).
 // Used to map a reference mesh onto a convex body section by section
 // (fem/whole_body_mesh.h build_mapped_body_mesh).
 #include "geometry/surface_mesh.h"
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 namespace rollcheck::geometry
@@ -21,8 +24,7 @@ struct HalfSpaces
 /// (geometry::make_body's); InputError for a degenerate face.
 HalfSpaces half_spaces(const SurfaceMesh& mesh);
 
-/// t above for a unit `direction`; ComputationError if `from` lies outside
-/// (beyond a face by more than 1e-12 of the body's offsets) or no face faces
-/// the ray.
-double ray_exit_distance(const HalfSpaces& body, const Eigen::Vector3d& from, const Eigen::Vector3d& direction);
+/// The interval {t_min, t_max} above for a unit `direction`;
+/// ComputationError if the line misses the body.
+std::array<double, 2> line_chord(const HalfSpaces& body, const Eigen::Vector3d& point, const Eigen::Vector3d& direction);
 } // namespace rollcheck::geometry

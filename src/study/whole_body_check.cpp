@@ -91,9 +91,7 @@ fem::MappedBodyPose mapped_pose(const WholeBodyCheckSettings& s, const oracle::R
   pose.radius_m = {ruling.start_radius_m, ruling.end_radius_m};
   pose.end_overhang_rad = overhang_rad;
   pose.end_zone_m = s.crease_margin * ruling.length_m;
-  pose.boundary_distance = [hull](const Eigen::Vector3d& from, const Eigen::Vector3d& d) {
-    return geometry::ray_exit_distance(*hull, from, d);
-  };
+  pose.chord = [hull](const Eigen::Vector3d& p, const Eigen::Vector3d& d) { return geometry::line_chord(*hull, p, d); };
   return pose;
 }
 } // namespace
