@@ -159,7 +159,7 @@ WholeBodyFem solve_whole_body(MPI_Comm comm, const WholeBodyMesh& mesh, const Wh
                                          node.x[0], a));
     result.plane_peak_pa[k] = std::max(result.plane_peak_pa[k], node.pressure_pa);
     result.plane_load_n_per_m[k] += node.pressure_pa * node.weight;
-    if ((k == 0 || k == n - 1) && std::abs(node.x[1]) <= load.edge_half_width_m)
+    if ((k == 0 || k == n - 1) && std::abs(node.x[1]) <= load.edge_half_width_m && mesh.on_sheet(node.x.data()))
     {
       edge_sum[k == 0 ? 0 : 1] += node.pressure_pa;
       edge_count[k == 0 ? 0 : 1] += 1;

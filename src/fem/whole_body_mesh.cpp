@@ -245,6 +245,15 @@ void map_onto_body(std::vector<double>& nodes, const MappedBodyPose& pose, const
   }
 }
 
+/// z_f(a, y): the height of the mapped mesh's lower face at station a (its
+/// section frozen in the end zones) and y, the lower end of the hull's
+/// vertical chord there.
+double faceted_sheet_height(const MappedBodyPose& pose, double a, double y)
+{
+  const double station = std::clamp(a, pose.end_zone_m, pose.length_m - pose.end_zone_m);
+  return pose.chord(Eigen::Vector3d(station, y, 0), Eigen::Vector3d(0, 0, 1))[0];
+}
+
 /// The position a along the ruling of a point of the sheared mesh (the
 /// inverse of x = a + z s(a) in map_onto_body).
 double mapped_along(const MappedBodyPose& pose, const double* x)
@@ -373,13 +382,17 @@ WholeBodyMesh build_mapped_body_mesh(MPI_Comm comm, const MappedBodyPose& pose, 
       = mesh.geometry().index_map()->size_global() / static_cast<std::int64_t>(result.planes_m.size());
   scene.wall_s = result.gmsh_s;
   result.along = [pose](const double* x) { return mapped_along(pose, x); };
-  // The exact sheet's height at the point's (a, y), less the mesh's height:
-  // on the contact face the gap z + u_z + this is the sheet's + u_z.
   result.initial_gap = [pose](const double* x) {
     const double a = mapped_along(pose, x);
     const double R = pose.radius_m[0] + (pose.radius_m[1] - pose.radius_m[0]) * a / pose.length_m;
-    const double y = std::min(std::abs(x[1]), R);
-    return R - std::sqrt(R * R - y * y) - x[2];
+    if (!(std::abs(x[1]) < 0.05 * R))
+      return 0.0;
+    return R - std::sqrt(R * R - x[1] * x[1]) - faceted_sheet_height(pose, a, x[1]);
+  };
+  // Up an end face an element above the edge: within a thousandth of the
+  // end layer of the faceted sheet is on it.
+  result.on_sheet = [pose, tol = 1e-3 * sizes.end_layer_m](const double* x) {
+    return x[2] - faceted_sheet_height(pose, mapped_along(pose, x), x[1]) < tol;
   };
   return result;
 }

@@ -43,8 +43,14 @@
 // horizontal normal to the ruling and leaning out by the rim's overhang t
 // (contact/rim_overhang.h): the plane the end model puts there
 // (fem/rim_end_contact.h, interior angle 90 deg + t). The mesh's contact face
-// is the faceted body's; the exact sheet R(a) - sqrt(R(a)^2 - y^2) (R linear
-// along the ruling) enters as the contact's initial gap at its nodes.
+// is the faceted body's, at height z_f(a, y) (the lower end of the hull's
+// vertical chord at the section's station); the exact sheet
+// z_s = R(a) - sqrt(R(a)^2 - y^2) (R linear along the ruling) enters the
+// contact's initial gap as z_s - z_f within |y| < R / 20 (beyond it the
+// sheet stands R / 800, 12 um, above the plane: out of reach of an approach
+// of 0.1 um): the gap z + u_z +
+// z_s - z_f is the exact sheet's on the lower face, and still the height
+// above it on an obtuse end's face, which faces the plane too.
 //
 // Grading: in the section, h(d) = min(far, contact + growth max(0, d - strip),
 // edge + growth max(0, d - edge_zone)) with d the distance from the contact
@@ -116,6 +122,10 @@ struct WholeBodyMesh
   /// The contact's initial gap at a point (PenaltyContact::set_initial_gap),
   /// when the mesh's contact face is not the exact body's (none: it is).
   std::function<double(const double* x)> initial_gap;
+  /// Whether a contact node lies on the body's lower face (the sheet), not up
+  /// an end face that faces the plane (an obtuse end's): the edge pressure is
+  /// the sheet's at the end, as the end model's.
+  std::function<bool(const double* x)> on_sheet = [](const double*) { return true; };
 };
 
 /// Layer boundaries 0 = x_0 < ... < x_n = L: end_layer at both ends,
