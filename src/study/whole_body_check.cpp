@@ -67,6 +67,20 @@ void check_settings(const WholeBodyCheckSettings& s)
 
 double half_width(double q, double R, double E_star) { return std::sqrt(4 * q * R / (std::numbers::pi * E_star)); }
 
+/// An acute end model's largest pressure within 2 b of the edge over its far
+/// side's, at its last level, if it changed by less than `tolerance` from the
+/// level before.
+std::optional<double> converged_near_edge_peak(const fem::RimEndStudy& end, double tolerance)
+{
+  if (end.levels.size() < 2)
+    return std::nullopt;
+  auto ratio = [](const fem::RimEndLevel& l) { return l.end_peak_pa / l.far_peak_pa; };
+  const double last = ratio(end.levels.back()), before = ratio(end.levels[end.levels.size() - 2]);
+  if (!(std::abs(last / before - 1) < tolerance))
+    return std::nullopt;
+  return last;
+}
+
 /// The body in the whole body's frame (fem/whole_body_mesh.h): x along the
 /// ruling b from its start s_1, z = -u up from the plane, y = z x x; its
 /// sections ray cast against the hull of s.body.points n per circle (the
@@ -199,7 +213,13 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
              && other.interior_angle_deg == end.interior_angle_deg;
     });
     end.end_model = same != r.ends.end() ? same->end_model : fem::solve_rim_end(comm, rim);
-    if (!end.end_model.singular && end.end_model.converged && end.end_model.end_to_interior)
+    end.near_edge_peak = !end.end_model.singular && end.interior_angle_deg < 90;
+    if (end.near_edge_peak)
+    {
+      if (const std::optional<double> ratio = converged_near_edge_peak(end.end_model, s.tolerance))
+        end.predicted_edge_pa = *ratio * end.slice_peak_pa;
+    }
+    else if (!end.end_model.singular && end.end_model.converged && end.end_model.end_to_interior)
       end.predicted_edge_pa = *end.end_model.end_to_interior * end.slice_peak_pa;
     if (log)
       spdlog::info("end model at {} (a = {:.2f} deg, H = {:.4g} b, {} mesh): {}", e == 0 ? "the start" : "the end",
@@ -292,9 +312,12 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     const bool at_start = end.position_m < 0.5 * L;
     end.body_edge_pa = r.fem.edge_pressure_pa[at_start ? 0 : 1];
     end.body_interior_pa = at_start ? r.stations.front().body_peak_pa : r.stations.back().body_peak_pa;
+    for (std::size_t k = 0; k < r.fem.plane_x_m.size(); ++k)
+      if (std::abs(r.fem.plane_x_m[k] - end.position_m) <= 2 * end.half_width_m)
+        end.body_near_edge_peak_pa = std::max(end.body_near_edge_peak_pa, r.fem.plane_peak_pa[k]);
     if (end.predicted_edge_pa)
     {
-      end.difference = end.body_edge_pa / *end.predicted_edge_pa - 1;
+      end.difference = (end.near_edge_peak ? end.body_near_edge_peak_pa : end.body_edge_pa) / *end.predicted_edge_pa - 1;
       worst_end = std::max(worst_end, std::abs(*end.difference));
     }
     else
@@ -354,6 +377,8 @@ nlohmann::json to_json(const WholeBodyCheck& r)
                         {"dofs", l.dofs},
                         {"far_peak_pa", l.far_peak_pa},
                         {"edge_pressure_pa", l.edge_pressure_pa},
+                        {"end_peak_pa", l.end_peak_pa},
+                        {"end_peak_x_m", l.end_peak_x_m},
                         {"wall_s", l.wall_s}});
     ends.push_back({{"position_m", e.position_m},
                     {"radius_m", e.radius_m},
@@ -369,6 +394,8 @@ nlohmann::json to_json(const WholeBodyCheck& r)
                     {"end_model_levels", levels},
                     {"slice_peak_pa", e.slice_peak_pa},
                     {"predicted_edge_pa", json_number(e.predicted_edge_pa)},
+                    {"compared", e.near_edge_peak ? "near-edge peak (acute end)" : "edge"},
+                    {"body_near_edge_peak_pa", e.body_near_edge_peak_pa},
                     {"body_edge_pa", e.body_edge_pa},
                     {"body_interior_pa", e.body_interior_pa},
                     {"body_edge_to_interior", e.body_edge_pa / e.body_interior_pa},
@@ -452,7 +479,10 @@ std::string markdown_table(const WholeBodyCheck& r)
   for (const EndComparison& e : r.ends)
     t += fmt::format("| {:.4f} | {:.2f} | {} | {} | {} | {:.5g} | {:.4f} | {} | {} |\n", e.position_m / r.length_m,
                      e.interior_angle_deg,
-                     e.end_model.singular
+                     e.near_edge_peak ? fmt::format("acute: near-edge peak {}, body's {:.5g} MPa",
+                                                    e.predicted_edge_pa ? "converged" : "NOT converged",
+                                                    e.body_near_edge_peak_pa / 1e6)
+                     : e.end_model.singular
                          ? fmt::format("singular (exponent {} measured, {:.3f} wedge)",
                                        e.end_model.measured_exponent
                                            ? fmt::format("{:.3f}", *e.end_model.measured_exponent)
