@@ -43,7 +43,8 @@ TEST(WholeBodyCheck, CylinderAgreesWithSlicesAndEndModelsWithinThreePercent)
 // The oloid at r1 = 10 mm in the orientation whose ends are nearest square
 // (--direction 67.5: c = 0.514, both ends loaded, R = 10.02 and 8.84 mm,
 // interior angles 87.2 deg acute and 93.0 deg obtuse): its mapped whole-body
-// mesh against the slices along the ruling and the end models at both ends.
+// mesh against the slices along the ruling and the end models at both ends
+// (the acute end by its largest pressure within 2 b of the edge).
 // The obtuse end is singular on the rigid plane: reported, never compared as
 // a number, so the check as a whole does not pass.
 TEST(WholeBodyCheck, OloidAgreesWithSlicesAndItsAcuteEndWithinThreePercent)
@@ -69,7 +70,8 @@ TEST(WholeBodyCheck, OloidAgreesWithSlicesAndItsAcuteEndWithinThreePercent)
   const study::EndComparison& obtuse = check.ends[1];
   EXPECT_LT(acute.interior_angle_deg, 90);
   EXPECT_FALSE(acute.end_model.singular);
-  ASSERT_TRUE(acute.difference.has_value()) << "the acute end model did not converge";
+  EXPECT_TRUE(acute.near_edge_peak); // its edge pressure falls to zero under refinement
+  ASSERT_TRUE(acute.difference.has_value()) << "the acute end model's near-edge peak did not converge";
   EXPECT_LE(std::abs(*acute.difference), s.tolerance);
   EXPECT_GT(obtuse.interior_angle_deg, 90);
   EXPECT_TRUE(obtuse.end_model.singular);
