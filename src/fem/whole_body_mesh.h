@@ -35,10 +35,12 @@
 // size and shape across the ruling, and e2, e3 send the reference's corners
 // (where its arc meets the cut) to the body's, the ends of its chord at z_G
 // (the oloid's sections lean: at 5 % of the ruling the chord lies wholly on
-// one side of the contact line); linear in angle over the cut. z_c = z_G / 2. Within end_zone of
-// each end the section is frozen at the zone's station (the plane sections
-// of a convex body degenerate towards its rims) and the layers are sheared,
-//   x = a + z s(a),  s from -tan t_0 at a = 0 (tan t_L at a = L) to 0 at the zone's end,
+// one side of the contact line); linear in angle over the cut. z_c = z_G / 2.
+// Within end_zone of each end the section is frozen at the zone's station
+// (the plane sections of a convex body degenerate towards its rims) and the
+// layers are sheared,
+//   x = a + z s(a),  s linear from -tan t_0 at a = 0 (tan t_L at a = L)
+//                    to 0 at the zone's end,
 // so that each end face is the plane through the ruling's end, containing the
 // horizontal normal to the ruling and leaning out by the rim's overhang t
 // (contact/rim_overhang.h): the plane the end model puts there
@@ -48,9 +50,9 @@
 // z_s = R(a) - sqrt(R(a)^2 - y^2) (R linear along the ruling) enters the
 // contact's initial gap as z_s - z_f within |y| < R / 20 (beyond it the
 // sheet stands R / 800, 12 um, above the plane: out of reach of an approach
-// of 0.1 um): the gap z + u_z +
-// z_s - z_f is the exact sheet's on the lower face, and still the height
-// above it on an obtuse end's face, which faces the plane too.
+// of 0.1 um): the gap z + u_z + z_s - z_f is the exact sheet's on the lower
+// face, and still the height above it on an obtuse end's face, which faces
+// the plane too.
 //
 // Grading: in the section, h(d) = min(far, contact + growth max(0, d - strip),
 // edge + growth max(0, d - edge_zone)) with d the distance from the contact
