@@ -289,6 +289,27 @@ TEST(Audit, VectorCoverageAndFemRules)
   EXPECT_FALSE(rules::start_is_local_optimum()({&sloped}).holds);
 }
 
+TEST(Audit, RimRuleFailsOnASingularEndOrAConcentration)
+{
+  auto rims = [](int loaded, int singular, json end_to_interior) {
+    return json{{"loop_scores", {{"loaded_ends", loaded}, {"loaded_end_samples", 10}, {"end_aware", {{{"singular_ends", singular}}}}}},
+                {"loop_end_to_interior", end_to_interior}};
+  };
+  CommandOutput cylinder("rim", rims(20, 0, 0.51));
+  CommandOutput sharp("rim", rims(14, 10, nullptr)), square("rim", rims(14, 0, 0.6)), peaked("rim", rims(14, 0, 1.7));
+  const CellResult singular = rules::rims_free_of_concentration()({&sharp, &cylinder});
+  EXPECT_FALSE(singular.holds);
+  EXPECT_EQ(singular.value, "sharp edges on the rigid plane: oloid 10 of 14 loaded rim ends singular (10 samples load "
+                            "a rim); cylinder 0 of 20 loaded rim ends singular (10 samples load a rim), largest end "
+                            "pressure 0.51x the interior's");
+  EXPECT_TRUE(rules::rims_free_of_concentration()({&square, &cylinder}).holds);
+  EXPECT_FALSE(rules::rims_free_of_concentration()({&peaked, &cylinder}).holds);
+  // No loaded end: nothing at the rims (no end_aware scores are written).
+  CommandOutput unloaded("rim", json{{"loop_scores", {{"loaded_ends", 0}, {"loaded_end_samples", 0}}},
+                                     {"loop_end_to_interior", nullptr}});
+  EXPECT_TRUE(rules::rims_free_of_concentration()({&unloaded, &cylinder}).holds);
+}
+
 TEST(Audit, AMissingKeyInAClaimNamesTheClaimKeyAndCommand)
 {
   const Claim claim{"sds_ratio", "SDS", "58.0x", "", "",
@@ -305,7 +326,7 @@ TEST(Audit, AMissingKeyInAClaimNamesTheClaimKeyAndCommand)
 TEST(Audit, TheClaimTableIsWellFormed)
 {
   const std::vector<Claim> claims = audit_claims(ROLLCHECK_REFERENCE_MESH_DIR, true);
-  EXPECT_EQ(claims.size(), 29u);
+  EXPECT_EQ(claims.size(), 30u);
   std::set<std::string> modes, ids;
   for (const auto& [mode, meaning] : audit_modes())
     modes.insert(mode);

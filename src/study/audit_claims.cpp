@@ -9,6 +9,7 @@
 #include <fmt/ranges.h>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 namespace rollcheck::study
 {
@@ -684,6 +685,27 @@ Claim sds_point_hertz()
             {{"fem-sds", "--body", "paper-oloid", "--orientations", "3", "--fem-slices", "3"}},
             rules::point_hertz_is_contact_pressure(claim_tolerance)}}};
 }
+Claim fixed_loci()
+{
+  // The rim study's quickest loop: one orientation solved directly, two edge
+  // levels (singular or not follows from the wedge's exponent at each end's
+  // interior angle; the levels measure the growth).
+  auto rims = [](const std::string& body) {
+    return CommandArgs{"rim", "--body", body, "--orientations", "1", "--levels", "2"};
+  };
+  return {"fixed_loci",
+          "The oloid eliminates stress concentrated at fixed loci of the body, the cylinder's geometric failure mode",
+          "the cylinder \"concentrates fatigue damage at fixed loci, the geometric failure mode that the oloid "
+          "eliminates\"",
+          "holds when no loaded ruling end of the oloid's loop is singular and its largest end pressure over the "
+          "loop is at most its largest interior pressure.",
+          "Every loaded ruling ends on the body's rims, for the oloid its two generating circles: fixed loci of the "
+          "body. A sharp obtuse edge there is singular against the rigid plane (Williams's wedge), which a 3D FEM "
+          "of each end confirms (`rollcheck rim`, docs/rims.md); against a block of the same steel every sharp "
+          "edge above 77.45 deg is, the cylinder's square ends too. Rounded edges are finite: README, \"The "
+          "rims\".",
+          {{contact, {rims("oloid"), rims("cylinder")}, rules::rims_free_of_concentration()}}};
+}
 } // namespace
 
 std::string command_line(const CommandArgs& args) { return fmt::format("rollcheck {} --json -", fmt::join(args, " ")); }
@@ -781,7 +803,8 @@ std::vector<Claim> audit_claims(const fs::path& reference_meshes, bool quick)
           surface_coverage(b),
           speed(b),
           all_metrics(b),
-          sds_point_hertz()};
+          sds_point_hertz(),
+          fixed_loci()};
 }
 
 namespace rules
@@ -1174,6 +1197,37 @@ Rule fem_agrees_with_line_hertz(double tolerance)
                                   "{:+.2f} %; the preprint's point-Hertz SDS {:.3g}x FEM-SDS",
                                   100 * slices, 100 * loop, point),
                       slices <= tolerance && std::abs(loop) <= tolerance};
+  };
+}
+
+Rule rims_free_of_concentration()
+{
+  return [](const std::vector<CommandOutput*>& out) {
+    struct Rims
+    {
+      double loaded = 0, samples = 0, singular = 0;
+      std::optional<double> end_to_interior; ///< none: singular
+    };
+    auto read = [](CommandOutput& o) {
+      Rims r;
+      r.loaded = o.number("/loop_scores/loaded_ends");
+      r.samples = o.number("/loop_scores/loaded_end_samples");
+      r.singular = r.loaded > 0 ? o.number("/loop_scores/end_aware/0/singular_ends") : 0;
+      if (!o.at("/loop_end_to_interior").is_null())
+        r.end_to_interior = o.number("/loop_end_to_interior");
+      return r;
+    };
+    auto describe = [](const Rims& r) {
+      return fmt::format("{:.0f} of {:.0f} loaded rim ends singular ({:.0f} samples load a rim){}", r.singular,
+                         r.loaded, r.samples,
+                         r.end_to_interior ? fmt::format(", largest end pressure {:.2f}x the interior's",
+                                                         *r.end_to_interior)
+                                           : std::string());
+    };
+    const Rims oloid = read(*out[0]), cylinder = read(*out[1]);
+    return CellResult{fmt::format("sharp edges on the rigid plane: oloid {}; cylinder {}", describe(oloid),
+                                  describe(cylinder)),
+                      oloid.singular == 0 && oloid.end_to_interior.value_or(0) <= 1};
   };
 }
 

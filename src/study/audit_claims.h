@@ -183,5 +183,9 @@ Rule converged_sds_ratio(double paper, double tolerance);
 Rule line_contact_fatigue(double fatigue_load_n, double endurance_limit_pa);
 /// fem-sds: the FEM slices and FEM-SDS agree with line-contact Hertz within `tolerance`.
 Rule fem_agrees_with_line_hertz(double tolerance);
+/// (oloid, cylinder) rim --body: holds when none of the oloid's loaded rim
+/// ends is singular and its loop's largest end pressure is at most its
+/// largest interior pressure (no stress concentrated at its rims).
+Rule rims_free_of_concentration();
 } // namespace rules
 } // namespace rollcheck::study
