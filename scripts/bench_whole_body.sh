@@ -5,7 +5,8 @@
 # body's DOFs, and the ratio to the budget; beside them the largest
 # differences along the ruling and at the ends, against 3 %.
 #   bash scripts/bench_whole_body.sh [ROLLCHECK] [-- extra whole-body options]
-# Default: the 10 mm cylinder (F = 100 N, steel).
+# The 10 mm cylinder and the 10 mm oloid at --direction 67.5, its ends
+# nearest square (F = 100 N, steel).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 bin=$here/build/src/cli/rollcheck
@@ -13,13 +14,14 @@ if [[ $# -gt 0 && $1 != -- ]]; then bin=$1; shift; fi
 [[ ${1:-} == -- ]] && shift
 source "$here/scripts/bench_lib.sh"
 run cylinder mpirun -n 2 "$bin" whole-body --body cylinder --radius 0.01 "$@"
+run oloid mpirun -n 2 "$bin" whole-body --body oloid --radius 0.01 --direction 67.5 "$@"
 /usr/bin/python3 - "$tmp" <<'PY'
 import json, sys
 tmp = sys.argv[1]
 budget = 600.0
 print("| check | DOFs | node planes x section nodes | slices s | end models s | whole body s | total s | total / 10 min | worst along | worst end | verdict |")
 print("|---|---|---|---|---|---|---|---|---|---|---|")
-for name in ["cylinder"]:
+for name in ["cylinder", "oloid"]:
     r = json.load(open(f"{tmp}/{name}.json"))
     total = float(open(f"{tmp}/{name}.s").read())
     w, m = r["wall_s"], r["mesh"]

@@ -86,8 +86,8 @@ const io::BoundSchema<RimCommand>& rim_schema()
         .choice("end_mesh", "--end-mesh", end(&RimEndSettings::mesh),
                 "How the end is meshed: gmsh (Delaunay tetrahedra graded about the edge and the strip, any end) or "
                 "grid (a structured grid of tetrahedra built without gmsh, h_e across the edge and b / "
-                "contact_elements along it: an independent check of the sharp square end on the rigid plane, flat "
-                "sheet)",
+                "contact_elements along it, sheared for an end within 15 deg of square: an independent check of the "
+                "sharp square or near-square end on the rigid plane, flat sheet)",
                 {{"gmsh", fem::RimEndMesh::delaunay}, {"grid", fem::RimEndMesh::grid}})
         .integer("contact_elements", "--contact-elements", end(&RimEndSettings::contact_elements), "",
                  "Elements across b along the contact strip", io::Bounds{2, 40})

@@ -46,9 +46,12 @@ void validate(const RimEndSettings& s)
                                  s.depth_over_half_width, s.length_over_depth));
   if (s.mesh == RimEndMesh::grid
       && (s.counter_face != CounterFace::rigid || s.sheet == SheetModel::cylinder || s.edge_radius_m != 0
-          || std::abs(s.interior_angle_rad - std::numbers::pi / 2) > 1e-9))
-    throw InputError("rim: end_mesh = grid models only the sharp square end (interior_angle_deg 90, edge_radius_m 0) "
-                     "on the flat sheet against the rigid plane");
+          || !(std::abs(s.interior_angle_rad - std::numbers::pi / 2) <= max_grid_end_lean_rad)))
+    throw InputError(fmt::format("rim: end_mesh = grid models only a sharp end within {:.0f} deg of square "
+                                 "(interior_angle_deg 90 +- {:.0f}, edge_radius_m 0) on the flat sheet against the "
+                                 "rigid plane",
+                                 max_grid_end_lean_rad * 180 / std::numbers::pi,
+                                 max_grid_end_lean_rad * 180 / std::numbers::pi));
   if (!s.xdmf_path.empty())
   {
     if (s.xdmf_path.extension() != ".xdmf")

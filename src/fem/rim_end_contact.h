@@ -86,9 +86,9 @@ enum class CounterFace
 
 /// How the end is meshed: gmsh's Delaunay tetrahedra graded about the edge
 /// and the strip (any end), or a structured grid built without gmsh
-/// (fem/scene_mesh.h build_square_end_grid_mesh: the sharp square end on the
-/// flat sheet against the rigid plane only), an independent discretisation
-/// to check the first by.
+/// (fem/scene_mesh.h build_square_end_grid_mesh: a sharp square or
+/// near-square end, within 15 deg of 90, on the flat sheet against the rigid
+/// plane only), an independent discretisation to check the first by.
 enum class RimEndMesh
 {
   delaunay,

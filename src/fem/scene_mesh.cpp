@@ -328,35 +328,6 @@ struct SceneParts
   bool facing_plane_only = false;
 };
 
-/// The facets' unit outward normals' z components (3D, triangle facets).
-std::vector<double> outward_normal_z(const dolfinx::mesh::Mesh& mesh, std::span<const std::int32_t> facets)
-{
-  const int tdim = mesh.topology().dim();
-  const std::vector<std::int32_t> nodes = dolfinx::mesh::entities_to_geometry(mesh, tdim - 1, facets, false);
-  auto facet_cells = mesh.topology().connectivity(tdim - 1, tdim);
-  std::vector<std::int32_t> cells;
-  for (std::int32_t f : facets)
-    cells.push_back(facet_cells->links(f)[0]);
-  const std::vector<double> cell_mid = dolfinx::mesh::compute_midpoints(mesh, tdim, cells);
-  std::span<const double> x = mesh.geometry().x();
-  std::vector<double> normal_z;
-  for (std::size_t i = 0; i < facets.size(); ++i)
-  {
-    const double* p0 = &x[3 * nodes[3 * i]];
-    const double* p1 = &x[3 * nodes[3 * i + 1]];
-    const double* p2 = &x[3 * nodes[3 * i + 2]];
-    const std::array<double, 3> a{p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]};
-    const std::array<double, 3> c{p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]};
-    std::array<double, 3> n{a[1] * c[2] - a[2] * c[1], a[2] * c[0] - a[0] * c[2], a[0] * c[1] - a[1] * c[0]};
-    // Outward: away from the cell's midpoint.
-    double away = 0;
-    for (int k = 0; k < 3; ++k)
-      away += n[k] * ((p0[k] + p1[k] + p2[k]) / 3 - cell_mid[3 * i + k]);
-    normal_z.push_back((away < 0 ? -n[2] : n[2]) / std::hypot(n[0], n[1], n[2]));
-  }
-  return normal_z;
-}
-
 /// Tags the parts; the contact facets are the facets with all vertices on the
 /// curved surface except those lying in a plane (a plane facet can have all
 /// its vertices on a rim).
@@ -401,6 +372,34 @@ double seconds_since(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 } // namespace
+
+std::vector<double> outward_normal_z(const dolfinx::mesh::Mesh& mesh, std::span<const std::int32_t> facets)
+{
+  const int tdim = mesh.topology().dim();
+  const std::vector<std::int32_t> nodes = dolfinx::mesh::entities_to_geometry(mesh, tdim - 1, facets, false);
+  auto facet_cells = mesh.topology().connectivity(tdim - 1, tdim);
+  std::vector<std::int32_t> cells;
+  for (std::int32_t f : facets)
+    cells.push_back(facet_cells->links(f)[0]);
+  const std::vector<double> cell_mid = dolfinx::mesh::compute_midpoints(mesh, tdim, cells);
+  std::span<const double> x = mesh.geometry().x();
+  std::vector<double> normal_z;
+  for (std::size_t i = 0; i < facets.size(); ++i)
+  {
+    const double* p0 = &x[3 * nodes[3 * i]];
+    const double* p1 = &x[3 * nodes[3 * i + 1]];
+    const double* p2 = &x[3 * nodes[3 * i + 2]];
+    const std::array<double, 3> a{p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]};
+    const std::array<double, 3> c{p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]};
+    std::array<double, 3> n{a[1] * c[2] - a[2] * c[1], a[2] * c[0] - a[0] * c[2], a[0] * c[1] - a[1] * c[0]};
+    // Outward: away from the cell's midpoint.
+    double away = 0;
+    for (int k = 0; k < 3; ++k)
+      away += n[k] * ((p0[k] + p1[k] + p2[k]) / 3 - cell_mid[3 * i + k]);
+    normal_z.push_back((away < 0 ? -n[2] : n[2]) / std::hypot(n[0], n[1], n[2]));
+  }
+  return normal_z;
+}
 
 SceneMesh build_scene_mesh(MPI_Comm comm, Model model, double R, const MeshGrading& grading)
 {
@@ -619,8 +618,12 @@ SceneMesh build_square_end_grid_mesh(MPI_Comm comm, const RimEndGeometry& g, con
 {
   const auto start = std::chrono::steady_clock::now();
   const double H = g.depth_m, L = g.length_m;
-  if (!g.flat_sheet || std::abs(g.interior_angle_rad - std::numbers::pi / 2) > 1e-12 || g.edge_radius_m != 0)
-    throw InputError("rim end grid: only the sharp square end (90 deg, no edge radius) on the flat sheet");
+  const double lean = g.interior_angle_rad - std::numbers::pi / 2;
+  if (!g.flat_sheet || !(std::abs(lean) <= max_grid_end_lean_rad) || g.edge_radius_m != 0)
+    throw InputError(fmt::format("rim end grid: only a sharp end within {:.0f} deg of square (interior angle {:.3f} "
+                                 "deg, edge radius {} m) on the flat sheet",
+                                 max_grid_end_lean_rad * 180 / std::numbers::pi,
+                                 g.interior_angle_rad * 180 / std::numbers::pi, g.edge_radius_m));
   for (double v : {H, L, sizes.edge_m, sizes.contact_m, sizes.contact_zone_m, sizes.far_m, sizes.growth})
     if (!std::isfinite(v) || v <= 0)
       throw InputError(fmt::format("rim end grid: depth, length and element sizes must be positive and finite "
@@ -640,7 +643,9 @@ SceneMesh build_square_end_grid_mesh(MPI_Comm comm, const RimEndGeometry& g, con
     for (std::size_t i = 0; i < nx; ++i)
       for (std::size_t j = 0; j < ny; ++j)
         for (std::size_t k = 0; k < nz; ++k)
-          raw.x.insert(raw.x.end(), {-along_x[i], along_y[j], along_z[k]});
+          // Sheared so that the end face x = 0 leans by a - 90 deg, the far side fixed.
+          raw.x.insert(raw.x.end(),
+                       {-along_x[i] + along_z[k] * std::tan(lean) * (1 - along_x[i] / L), along_y[j], along_z[k]});
     auto node = [&](std::size_t i, std::size_t j, std::size_t k) {
       return static_cast<std::int64_t>((i * ny + j) * nz + k);
     };
@@ -668,8 +673,13 @@ SceneMesh build_square_end_grid_mesh(MPI_Comm comm, const RimEndGeometry& g, con
   const double tol = 1e-9 * H;
   SceneParts parts = rim_end_planes(L, tol);
   parts.top = [=](double, double, double z) { return std::abs(z - H) < tol; };
-  parts.curved = [=](double, double, double z) { return std::abs(z) < tol; };
+  // The sheet, and the end face where it faces the plane (obtuse, as in
+  // build_rim_end_mesh; a square or acute end's face never does).
+  parts.curved = [=](double x, double, double z) {
+    return std::abs(z) < tol || std::abs(x - z * std::tan(lean)) < tol;
+  };
   parts.in_plane = [](double, double, double) { return false; };
+  parts.facing_plane_only = true;
   tag_parts(scene, parts);
   scene.symmetry_multiplicity = 2;
   scene.wall_s = seconds_since(start);

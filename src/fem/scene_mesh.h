@@ -50,6 +50,8 @@
 #include <dolfinx/mesh/Mesh.h>
 #include <array>
 #include <memory>
+#include <numbers>
+#include <span>
 #include <mpi.h>
 #include <vector>
 
@@ -72,6 +74,10 @@ struct SceneMesh
 };
 
 SceneMesh build_scene_mesh(MPI_Comm comm, Model model, double radius_m, const MeshGrading& grading);
+
+/// The unit outward normals' z components of the given boundary facets (3D,
+/// triangles): outward is away from the midpoint of the facet's cell.
+std::vector<double> outward_normal_z(const dolfinx::mesh::Mesh& mesh, std::span<const std::int32_t> facets);
 
 struct SlabGeometry
 {
@@ -136,10 +142,17 @@ double rim_end_element_size(const RimEndSizes& sizes, const double* x);
 /// ranges above.
 SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& geometry, const RimEndSizes& sizes);
 
+/// The largest |a - 90 deg| of build_square_end_grid_mesh: 15 deg, near-square
+/// ends (the oloid's at its symmetric orientations lean 3 deg), where the
+/// sheared boxes' Kuhn tetrahedra stay well shaped.
+inline constexpr double max_grid_end_lean_rad = std::numbers::pi / 12;
+
 /// The sharp square end (a = 90 deg) with the flat sheet, as
 /// build_rim_end_mesh's block x in [-L, 0], y and z in [0, H], on a
 /// structured grid of tetrahedra built without gmsh: an independent
-/// discretisation of that scene. The grid's nodes are the tensor product of
+/// discretisation of that scene. A near-square end (|a - 90 deg| <=
+/// max_grid_end_lean_rad) is the same grid sheared, x -> x + z tan(a - 90 deg)
+/// (1 + x / L): its end face leans as the other face, its far side stays. The grid's nodes are the tensor product of
 /// 1D spacings h(d) = min(far, h_0 + growth d) from the edge (x and z, h_0 =
 /// edge_m) and from the strip (y, contact_m within contact_zone_m), each box
 /// cut into Kuhn's six tetrahedra. Its elements at the edge are h_e across

@@ -73,6 +73,8 @@ WholeBodyFem solve_whole_body(MPI_Comm comm, const WholeBodyMesh& mesh, const Wh
   const double kappa = load.penalty_c * load.youngs_modulus_pa / load.contact_element_m;
   PenaltyContact problem(mesh.scene, Model::solid, 1, load.youngs_modulus_pa, load.poisson_ratio, kappa,
                          load.petsc_options);
+  if (mesh.initial_gap)
+    problem.set_initial_gap(mesh.initial_gap);
   WholeBodyFem result;
   result.dofs = problem.num_dofs();
   const bool log = world_rank() == 0;
@@ -138,7 +140,8 @@ WholeBodyFem solve_whole_body(MPI_Comm comm, const WholeBodyMesh& mesh, const Wh
   result.force_n = problem.contact_force_n();
   result.centre_of_pressure_m = reading.centre_m;
 
-  // By node plane: the nodes lie on the planes of the structured layers.
+  // By node plane: the nodes lie on the planes of the structured layers
+  // (at their position along the ruling, where the layers are sheared).
   const std::vector<double>& planes = mesh.planes_m;
   const std::size_t n = planes.size();
   result.plane_x_m = planes;
@@ -148,12 +151,15 @@ WholeBodyFem solve_whole_body(MPI_Comm comm, const WholeBodyMesh& mesh, const Wh
   const double same_plane = 1e-6 * (planes[1] - planes[0]);
   for (const SurfacePressureNode& node : reading.nodes)
   {
-    const std::size_t k = std::lower_bound(planes.begin(), planes.end(), node.x[0] - same_plane) - planes.begin();
-    if (k >= n || std::abs(planes[k] - node.x[0]) > same_plane)
-      throw ComputationError(fmt::format("whole body: a contact node at x = {:.9g} m lies on no node plane", node.x[0]));
+    const double a = mesh.along(node.x.data());
+    const std::size_t k = std::lower_bound(planes.begin(), planes.end(), a - same_plane) - planes.begin();
+    if (k >= n || std::abs(planes[k] - a) > same_plane)
+      throw ComputationError(fmt::format("whole body: a contact node at x = {:.9g} m (a = {:.9g} m along the ruling) "
+                                         "lies on no node plane",
+                                         node.x[0], a));
     result.plane_peak_pa[k] = std::max(result.plane_peak_pa[k], node.pressure_pa);
     result.plane_load_n_per_m[k] += node.pressure_pa * node.weight;
-    if ((k == 0 || k == n - 1) && std::abs(node.x[1]) <= load.edge_half_width_m)
+    if ((k == 0 || k == n - 1) && std::abs(node.x[1]) <= load.edge_half_width_m && mesh.on_sheet(node.x.data()))
     {
       edge_sum[k == 0 ? 0 : 1] += node.pressure_pa;
       edge_count[k == 0 ? 0 : 1] += 1;

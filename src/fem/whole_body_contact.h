@@ -22,8 +22,9 @@
 // x = const of the structured mesh: its largest value (the peak across the
 // ruling), the line load q = sum p_i A_i / dx (A_i the node's tributary
 // area, dx the plane's tributary length), and at both end planes the mean
-// pressure of the nodes with |y| <= edge_half_width (the end model's edge
-// pressure, fem/rim_end_contact.h: its nodes with y <= b / 2).
+// pressure of the sheet's nodes (WholeBodyMesh::on_sheet) with |y| <=
+// edge_half_width (the end model's edge pressure, fem/rim_end_contact.h: its
+// nodes on the edge with y <= b / 2).
 #include "fem/whole_body_mesh.h"
 #include <array>
 #include <cstdint>

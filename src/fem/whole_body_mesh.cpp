@@ -15,6 +15,7 @@
 #include <dolfinx/mesh/utils.h>
 #include <fmt/format.h>
 #include <functional>
+#include <numbers>
 #include <gmsh.h>
 #include <xtensor/xtensor.hpp>
 
@@ -135,6 +136,153 @@ std::vector<std::int32_t> boundary_facets(const dolfinx::mesh::Mesh& mesh, const
     return marked;
   });
 }
+
+/// Distance from (0, z_c) along (sin psi, -cos psi) to the boundary of the
+/// disc segment z <= c of the circle of radius r about (0, r).
+double segment_distance(double r, double c, double z_c, double psi)
+{
+  const double dz = -std::cos(psi);
+  const double w = z_c - r; // the centre's height above the circle's centre
+  const double along = w * dz;
+  double t = -along + std::sqrt(along * along - w * w + r * r);
+  if (dz > 0)
+    t = std::min(t, (c - z_c) / dz);
+  return t;
+}
+
+/// The angle from straight down of (y, z) about (0, z_c), in (-pi, pi].
+double angle_from_down(double y, double z, double z_c) { return std::atan2(y, z_c - z); }
+
+/// One station's map of the reference section's angles onto the body's
+/// (fem/whole_body_mesh.h): psi' = psi + e2 psi^2 + e3 psi^3 between the
+/// corners, linear beyond them over the cut.
+struct SectionMap
+{
+  Eigen::Vector3d centre;
+  std::array<double, 2> reference_corner{}, body_corner{}; ///< psi at the right (y > 0) end of the cut, the left
+  double e2 = 0, e3 = 0;
+
+  double body_angle(double psi) const
+  {
+    const double right = reference_corner[0], left = reference_corner[1];
+    if (psi >= left && psi <= right)
+      return psi + psi * psi * (e2 + e3 * psi);
+    // Over the cut, from the right corner through the top to the left one.
+    const double around = psi >= right ? psi : psi + 2 * std::numbers::pi;
+    const double f = (around - right) / (left + 2 * std::numbers::pi - right);
+    return body_corner[0] + f * (body_corner[1] + 2 * std::numbers::pi - body_corner[0]);
+  }
+};
+
+/// The body's own section at station x (fem/whole_body_mesh.h).
+SectionMap section_map(const MappedBodyPose& pose, double x, double z_c, double reference_half_width)
+{
+  const double z_G = pose.cut_height_m;
+  SectionMap m;
+  m.centre = Eigen::Vector3d(x, 0, z_c);
+  const std::array<double, 2> vertical = pose.chord(m.centre, Eigen::Vector3d(0, 0, 1));
+  if (!(vertical[0] <= 0 && vertical[1] >= 0))
+    throw ComputationError(fmt::format("whole-body map: the section's centre (x = {:.6g} m, z = {:.6g} m) lies outside "
+                                       "the body",
+                                       x, z_c));
+  m.reference_corner = {angle_from_down(reference_half_width, z_G, z_c), angle_from_down(-reference_half_width, z_G, z_c)};
+  // The cut's chord; its right end counter-clockwise from the bottom in
+  // (0, 2 pi), its left end clockwise in (-2 pi, 0).
+  const std::array<double, 2> cut = pose.chord(Eigen::Vector3d(x, 0, z_G), Eigen::Vector3d(0, 1, 0));
+  const double right = angle_from_down(cut[1], z_G, z_c), left = angle_from_down(cut[0], z_G, z_c);
+  m.body_corner = {right < 0 ? right + 2 * std::numbers::pi : right, left > 0 ? left - 2 * std::numbers::pi : left};
+  // e2 p^2 + e3 p^3 = q - p at both corners.
+  const double p1 = m.reference_corner[0], p2 = m.reference_corner[1];
+  const double r1 = (m.body_corner[0] - p1) / (p1 * p1), r2 = (m.body_corner[1] - p2) / (p2 * p2);
+  m.e3 = (r1 - r2) / (p1 - p2);
+  m.e2 = r1 - m.e3 * p1;
+  // Monotone on [p2, p1] (its slope 1 + 2 e2 p + 3 e3 p^2 is positive at
+  // both ends and at its extremum), or the mapped section folds.
+  auto slope = [&](double p) { return 1 + p * (2 * m.e2 + 3 * m.e3 * p); };
+  const double turn = m.e3 != 0 ? std::clamp(-m.e2 / (3 * m.e3), p2, p1) : p1;
+  if (!(slope(p1) > 0 && slope(p2) > 0 && slope(turn) > 0))
+    throw ComputationError(fmt::format("whole-body map: the section at x = {:.6g} m folds (cut's ends at {:.4f}, {:.4f} "
+                                       "rad from the bottom against the reference's {:.4f}, {:.4f})",
+                                       x, m.body_corner[0], m.body_corner[1], p1, p2));
+  return m;
+}
+
+/// The reference mesh's nodes (x, y, z) mapped onto the body and sheared at
+/// the ends (fem/whole_body_mesh.h), in place.
+void map_onto_body(std::vector<double>& nodes, const MappedBodyPose& pose, const std::vector<double>& planes,
+                   double r_ref)
+{
+  const double z_G = pose.cut_height_m, z_c = 0.5 * z_G, L = pose.length_m, zone = pose.end_zone_m;
+  const double reference_half_width = std::sqrt(r_ref * r_ref - (z_G - r_ref) * (z_G - r_ref));
+  const double t0 = std::tan(pose.end_overhang_rad[0]), tL = std::tan(pose.end_overhang_rad[1]);
+  std::vector<SectionMap> maps;
+  for (const double a : planes)
+    maps.push_back(section_map(pose, std::clamp(a, zone, L - zone), z_c, reference_half_width));
+  const double same_plane = 1e-6 * (planes[1] - planes[0]);
+  for (std::size_t i = 0; i < nodes.size(); i += 3)
+  {
+    const double a = nodes[i], y = nodes[i + 1], z = nodes[i + 2];
+    const std::size_t k = std::lower_bound(planes.begin(), planes.end(), a - same_plane) - planes.begin();
+    if (k >= planes.size() || std::abs(planes[k] - a) > same_plane)
+      throw ComputationError(fmt::format("whole-body map: a node at x = {:.9g} m lies on no layer plane", a));
+    const SectionMap& m = maps[k];
+    const double rho = std::hypot(y, z - z_c);
+    Eigen::Vector3d p = m.centre;
+    if (rho > 0)
+    {
+      const double psi = angle_from_down(y, z, z_c);
+      const double body_psi = m.body_angle(psi);
+      const Eigen::Vector3d d(0, std::sin(body_psi), -std::cos(body_psi));
+      double reach = pose.chord(m.centre, d)[1];
+      if (d.z() > 0)
+        reach = std::min(reach, (z_G - z_c) / d.z());
+      p += rho / segment_distance(r_ref, z_G, z_c, psi) * reach * d;
+    }
+    const double shear = a < zone ? -t0 * (1 - a / zone) : a > L - zone ? tL * (1 - (L - a) / zone) : 0.0;
+    nodes[i] = a + p.z() * shear;
+    nodes[i + 1] = p.y();
+    nodes[i + 2] = p.z();
+  }
+}
+
+/// z_f(a, y): the height of the mapped mesh's lower face at station a (its
+/// section frozen in the end zones) and y, the lower end of the hull's
+/// vertical chord there.
+double faceted_sheet_height(const MappedBodyPose& pose, double a, double y)
+{
+  const double station = std::clamp(a, pose.end_zone_m, pose.length_m - pose.end_zone_m);
+  return pose.chord(Eigen::Vector3d(station, y, 0), Eigen::Vector3d(0, 0, 1))[0];
+}
+
+/// The position a along the ruling of a point of the sheared mesh (the
+/// inverse of x = a + z s(a) in map_onto_body).
+double mapped_along(const MappedBodyPose& pose, const double* x)
+{
+  const double L = pose.length_m, zone = pose.end_zone_m;
+  const double t0 = std::tan(pose.end_overhang_rad[0]), tL = std::tan(pose.end_overhang_rad[1]);
+  const double z = x[2];
+  const double from_start = (x[0] + z * t0) / (1 + z * t0 / zone);
+  if (from_start < zone)
+    return from_start;
+  const double from_end = (x[0] + z * tL * (L - zone) / zone) / (1 + z * tL / zone);
+  if (from_end > L - zone)
+    return from_end;
+  return x[0];
+}
+
+/// InputError for bad section sizes of a body of extent `size_m`.
+void check_sizes(const WholeBodySizes& sizes, double size_m)
+{
+  if (!(sizes.contact_m > 0) || !(sizes.strip_half_width_m > 0) || !(sizes.growth > 0)
+      || !(sizes.far_m >= sizes.contact_m))
+    throw InputError(fmt::format("whole-body mesh sizes: contact {} m, strip {} m, growth {}, far {} m: need positive "
+                                 "sizes and far >= contact",
+                                 sizes.contact_m, sizes.strip_half_width_m, sizes.growth, sizes.far_m));
+  if (sizes.contact_m < 1e-8 * size_m)
+    throw InputError(fmt::format("whole-body mesh: contact elements of {:.3g} m are below 1e-8 of the body ({:.3g} m), "
+                                 "which gmsh does not mesh reliably",
+                                 sizes.contact_m, size_m));
+}
 } // namespace
 
 std::vector<double> layer_planes(double length_m, const WholeBodySizes& s)
@@ -165,15 +313,7 @@ WholeBodyMesh build_cylinder_body_mesh(MPI_Comm comm, const CylinderPose& pose, 
     throw InputError(fmt::format("whole-body cylinder: radius {} m and length {} m must be positive and the cut "
                                  "height {} m within (0, 2 r)",
                                  r, L, c));
-  if (!(sizes.contact_m > 0) || !(sizes.strip_half_width_m > 0) || !(sizes.growth > 0)
-      || !(sizes.far_m >= sizes.contact_m))
-    throw InputError(fmt::format("whole-body mesh sizes: contact {} m, strip {} m, growth {}, far {} m: need positive "
-                                 "sizes and far >= contact",
-                                 sizes.contact_m, sizes.strip_half_width_m, sizes.growth, sizes.far_m));
-  if (sizes.contact_m < 1e-8 * std::max(r, L))
-    throw InputError(fmt::format("whole-body mesh: contact elements of {:.3g} m are below 1e-8 of the body ({:.3g} m), "
-                                 "which gmsh does not mesh reliably",
-                                 sizes.contact_m, std::max(r, L)));
+  check_sizes(sizes, std::max(r, L));
   WholeBodyMesh result;
   result.length_m = L;
   result.planes_m = layer_planes(L, sizes);
@@ -196,6 +336,64 @@ WholeBodyMesh build_cylinder_body_mesh(MPI_Comm comm, const CylinderPose& pose, 
   const std::int64_t nodes = mesh.geometry().index_map()->size_global();
   result.section_nodes = nodes / static_cast<std::int64_t>(result.planes_m.size());
   scene.wall_s = result.gmsh_s;
+  return result;
+}
+
+WholeBodyMesh build_mapped_body_mesh(MPI_Comm comm, const MappedBodyPose& pose, const WholeBodySizes& sizes)
+{
+  const double L = pose.length_m, z_G = pose.cut_height_m, r_ref = pose.reference_radius_m, zone = pose.end_zone_m;
+  if (!(L > 0) || !(z_G > 0) || !(r_ref > 0.5 * z_G) || !(pose.radius_m[0] > 0 && pose.radius_m[1] > 0)
+      || !pose.chord)
+    throw InputError(fmt::format("whole-body mapped body: need L > 0 ({} m), a cut height z_G > 0 ({} m), a "
+                                 "reference radius above z_G / 2 ({} m), radii R > 0 ({}, {} m) and the body's "
+                                 "chords",
+                                 L, z_G, r_ref, pose.radius_m[0], pose.radius_m[1]));
+  for (const double t : pose.end_overhang_rad)
+    // The shear x = a + z s(a) stays monotone in a (no fold) while
+    // 1 - z_G |tan t| / zone > 1/2 for an acute end (s growing along a).
+    if (!(std::abs(t) < std::numbers::pi / 3) || !(zone > 2 * z_G * std::max(0.0, -std::tan(t))) || !(zone < 0.5 * L))
+      throw InputError(fmt::format("whole-body mapped body: end zone {} m must lie below L / 2 ({} m) and above "
+                                   "2 z_G tan(-t) ({} m) for the end's overhang t = {} deg (within +-60 deg)",
+                                   zone, 0.5 * L, 2 * z_G * std::max(0.0, -std::tan(t)), t * 180 / std::numbers::pi));
+  check_sizes(sizes, std::max(r_ref, L));
+  WholeBodyMesh result;
+  result.length_m = L;
+  result.planes_m = layer_planes(L, sizes);
+  result.scene.mesh = distribute(
+      comm,
+      [&] {
+        RawMesh raw = mesh_extruded_segment(r_ref, z_G, result.planes_m, sizes);
+        map_onto_body(raw.x, pose, result.planes_m, r_ref);
+        return raw;
+      },
+      result.gmsh_s);
+  SceneMesh& scene = result.scene;
+  const dolfinx::mesh::Mesh& mesh = *scene.mesh;
+  const double tol = 1e-9 * std::max(r_ref, L);
+  scene.top_facets = boundary_facets(mesh, [&](double, double, double z) { return std::abs(z - z_G) < tol; });
+  const std::vector<std::int32_t> others
+      = boundary_facets(mesh, [&](double, double, double z) { return std::abs(z - z_G) >= tol; });
+  const std::vector<double> normal_z = outward_normal_z(mesh, others);
+  for (std::size_t i = 0; i < others.size(); ++i)
+    if (normal_z[i] < -1e-6)
+      scene.contact_facets.push_back(others[i]);
+  scene.symmetry_multiplicity = 1;
+  result.section_nodes
+      = mesh.geometry().index_map()->size_global() / static_cast<std::int64_t>(result.planes_m.size());
+  scene.wall_s = result.gmsh_s;
+  result.along = [pose](const double* x) { return mapped_along(pose, x); };
+  result.initial_gap = [pose](const double* x) {
+    const double a = mapped_along(pose, x);
+    const double R = pose.radius_m[0] + (pose.radius_m[1] - pose.radius_m[0]) * a / pose.length_m;
+    if (!(std::abs(x[1]) < 0.05 * R))
+      return 0.0;
+    return R - std::sqrt(R * R - x[1] * x[1]) - faceted_sheet_height(pose, a, x[1]);
+  };
+  // Up an end face an element above the edge: within a thousandth of the
+  // end layer of the faceted sheet is on it.
+  result.on_sheet = [pose, tol = 1e-3 * sizes.end_layer_m](const double* x) {
+    return x[2] - faceted_sheet_height(pose, mapped_along(pose, x), x[1]) < tol;
+  };
   return result;
 }
 } // namespace rollcheck::fem

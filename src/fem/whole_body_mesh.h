@@ -21,12 +21,48 @@
 // b / 6 along a 20 mm ruling at b = 20 um would be 6000 per row of the strip
 // (millions of tetrahedra), which no 10-minute run solves.
 //
+// Other convex bodies (build_mapped_body_mesh, the oloid): the same graded
+// reference segment (radius r_ref, cut at z_G), extruded through the same
+// layers, is MAPPED onto the body node by node, so that the elements stay long
+// along the ruling and fine only across the strip. In the section plane of
+// station a each reference node at angle psi (from straight down) and
+// distance rho about the centre C = (a, 0, z_c) goes to
+//   C + (rho / rho_ref(psi)) rho_body(a, psi') (sin psi', -cos psi'),
+// rho_ref and rho_body the distances from C to the boundary of the reference
+// segment and of the body below z_G along the ray (the body's by ray casting,
+// geometry/convex_ray.h). psi' = psi + e2 psi^2 + e3 psi^3 on the curved
+// part: unit slope at the contact line, so that the strip keeps its elements'
+// size and shape across the ruling, and e2, e3 send the reference's corners
+// (where its arc meets the cut) to the body's, the ends of its chord at z_G
+// (the oloid's sections lean: at 5 % of the ruling the chord lies wholly on
+// one side of the contact line); linear in angle over the cut. z_c = z_G / 2.
+// Within end_zone of each end the section is frozen at the zone's station
+// (the plane sections of a convex body degenerate towards its rims) and the
+// layers are sheared,
+//   x = a + z s(a),  s linear from -tan t_0 at a = 0 (tan t_L at a = L)
+//                    to 0 at the zone's end,
+// so that each end face is the plane through the ruling's end, containing the
+// horizontal normal to the ruling and leaning out by the rim's overhang t
+// (contact/rim_overhang.h): the plane the end model puts there
+// (fem/rim_end_contact.h, interior angle 90 deg + t). The mesh's contact face
+// is the faceted body's, at height z_f(a, y) (the lower end of the hull's
+// vertical chord at the section's station); the exact sheet
+// z_s = R(a) - sqrt(R(a)^2 - y^2) (R linear along the ruling) enters the
+// contact's initial gap as z_s - z_f within |y| < R / 20 (beyond it the
+// sheet stands R / 800, 12 um, above the plane: out of reach of an approach
+// of 0.1 um): the gap z + u_z + z_s - z_f is the exact sheet's on the lower
+// face, and still the height above it on an obtuse end's face, which faces
+// the plane too.
+//
 // Grading: in the section, h(d) = min(far, contact + growth max(0, d - strip),
 // edge + growth max(0, d - edge_zone)) with d the distance from the contact
 // line (gmsh Distance + Threshold + Min);
 // along the ruling, layers of end_layer at x = 0 and x = L growing by
 // layer_growth towards the middle, up to largest_layer.
 #include "fem/scene_mesh.h"
+#include <Eigen/Core>
+#include <array>
+#include <functional>
 #include <mpi.h>
 #include <vector>
 
@@ -58,6 +94,21 @@ struct CylinderPose
   double cut_height_m = 0; ///< in (0, 2 r)
 };
 
+/// A convex body standing on z = 0 along its contact ruling x in [0, L]
+/// (the frame above), for build_mapped_body_mesh.
+struct MappedBodyPose
+{
+  double length_m = 0;                         ///< L
+  double cut_height_m = 0;                     ///< z_G, where the body is held
+  double reference_radius_m = 0;               ///< r_ref of the reference segment (> z_G / 2)
+  std::array<double, 2> radius_m{};            ///< R across the ruling at x = 0 and x = L
+  std::array<double, 2> end_overhang_rad{};    ///< t_0, t_L: the rims' leans, outwards positive
+  double end_zone_m = 0;                       ///< sheared, frozen end zones (> z_G |tan t|, < L / 2)
+  /// The body's chord {t_min, t_max} on the line p + t d (d unit): the
+  /// interval of t inside it (ComputationError if the line misses it).
+  std::function<std::array<double, 2>(const Eigen::Vector3d& p, const Eigen::Vector3d& d)> chord;
+};
+
 struct WholeBodyMesh
 {
   /// Model::solid conventions, symmetry multiplicity 1, no symmetry planes;
@@ -67,6 +118,16 @@ struct WholeBodyMesh
   std::vector<double> planes_m; ///< node planes along the ruling, 0 ... L
   std::int64_t section_nodes = 0;
   double gmsh_s = 0;           ///< gmsh on rank 0
+  /// A point's position a along the ruling, whose node planes are
+  /// planes_m (x itself unless the layers are sheared).
+  std::function<double(const double* x)> along = [](const double* x) { return x[0]; };
+  /// The contact's initial gap at a point (PenaltyContact::set_initial_gap),
+  /// when the mesh's contact face is not the exact body's (none: it is).
+  std::function<double(const double* x)> initial_gap;
+  /// Whether a contact node lies on the body's lower face (the sheet), not up
+  /// an end face that faces the plane (an obtuse end's): the edge pressure is
+  /// the sheet's at the end, as the end model's.
+  std::function<bool(const double* x)> on_sheet = [](const double*) { return true; };
 };
 
 /// Layer boundaries 0 = x_0 < ... < x_n = L: end_layer at both ends,
@@ -77,4 +138,12 @@ std::vector<double> layer_planes(double length_m, const WholeBodySizes& sizes);
 /// InputError for a bad pose or sizes (naming them), ComputationError when
 /// gmsh fails; every rank gets its part.
 WholeBodyMesh build_cylinder_body_mesh(MPI_Comm comm, const CylinderPose& pose, const WholeBodySizes& sizes);
+
+/// The mapped mesh (above). Top facets the section z = z_G; contact facets
+/// every other boundary facet facing the plane (outward normal's z < 0: the
+/// body's lower surface and an obtuse end's face, as in the end model; a
+/// square or acute end's face never faces it). InputError for a bad pose or
+/// sizes (naming them), ComputationError when gmsh or the mapping fails (a
+/// section whose centre lies outside the body, a fold); every rank gets its part.
+WholeBodyMesh build_mapped_body_mesh(MPI_Comm comm, const MappedBodyPose& pose, const WholeBodySizes& sizes);
 } // namespace rollcheck::fem
