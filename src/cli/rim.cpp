@@ -250,6 +250,7 @@ nlohmann::json run_loop(study::RimLoopSettings settings)
                           score(loop.end_aware[0].sds), score(loop.end_aware[0].fds), r.end_aware_status(),
                           r.loop_end_to_interior()                ? fmt::format("{:.3f}", *r.loop_end_to_interior())
                           : loop.end_aware[0].singular_ends > 0 ? "singular"
+                          : loop.end_aware[0].outside_model_ends > 0 ? "undefined (ends outside the line-contact model)"
                                                                  : "none");
   spdlog::info("\nrims of {} ({}), counter-face {}, edge {}:\n\n{}\nloaded rim ends over the loop: {} in {} of {} "
                "samples, interior angles {:.1f} to {:.1f} deg (singular above {:.2f} deg); end table of {} nodes "

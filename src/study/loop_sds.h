@@ -156,6 +156,10 @@ struct EndAwareScores
 {
   ConvergedScore sds, fds;             ///< none when an end is singular
   std::size_t singular_ends = 0;       ///< loaded ends the factor calls singular
+  /// Loaded ends where line contact fails, b / R = sqrt(4 q / (pi E* R)) at
+  /// least fem::largest_half_width_over_radius (a ruling ending near its
+  /// sheet's apex, R -> 0): no end pressure is defined there.
+  std::size_t outside_model_ends = 0;
   double peak_pa = 0;                  ///< largest end pressure (0 when singular)
 };
 

@@ -193,7 +193,8 @@ std::optional<double> RimLoopResult::worst_end_to_interior() const
 
 std::optional<double> RimLoopResult::loop_end_to_interior() const
 {
-  if (loop.end_aware.empty() || loop.end_aware[0].singular_ends > 0 || loop.loaded_ends == 0 || !(loop.fem_peak_pa > 0))
+  if (loop.end_aware.empty() || loop.end_aware[0].singular_ends > 0 || loop.end_aware[0].outside_model_ends > 0
+      || loop.loaded_ends == 0 || !(loop.fem_peak_pa > 0))
     return std::nullopt;
   return loop.end_aware[0].peak_pa / loop.fem_peak_pa;
 }
@@ -209,6 +210,10 @@ std::string RimLoopResult::end_aware_status() const
     return fmt::format("singular: {} of the loop's {} loaded rim ends have a sharp edge of interior angle above "
                        "{:.2f} deg",
                        all.singular_ends, loop.loaded_ends, singular_from_rad / degree);
+  if (all.outside_model_ends > 0)
+    return fmt::format("undefined: {} of the loop's {} loaded rim ends lie where b / R >= {:.1f} (a ruling ending "
+                       "near its sheet's apex, no line contact), where no end pressure is defined",
+                       all.outside_model_ends, loop.loaded_ends, fem::largest_half_width_over_radius);
   const double tolerance = fem_sds.loop.tolerance;
   std::vector<std::string> why;
   if (!table_converged)
