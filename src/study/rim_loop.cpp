@@ -51,6 +51,14 @@ double median(std::vector<double> values)
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
+/// Line Hertz's b of an end model's q and R against its counter-face.
+double half_width(const fem::RimEndSettings& e)
+{
+  const double modulus
+      = contact::effective_modulus(e.youngs_modulus_pa, e.poisson_ratio, e.counter_face == fem::CounterFace::block);
+  return contact::line_contact(e.load_n_per_m, e.radius_m, modulus, e.poisson_ratio).half_width_m;
+}
+
 fem::RimEndSettings end_settings(const RimLoopSettings& s, double radius_m, double load_n_per_m, double angle_rad)
 {
   fem::RimEndSettings e = s.end;
@@ -64,12 +72,7 @@ fem::RimEndSettings end_settings(const RimLoopSettings& s, double radius_m, doub
   // r_e < H / 10), and b varies from end to end: deepen the block where the
   // setting's H / b would be too shallow for this end's b.
   if (e.edge_radius_m > 0)
-  {
-    const double modulus = contact::effective_modulus(e.youngs_modulus_pa, e.poisson_ratio,
-                                                      e.counter_face == fem::CounterFace::block);
-    const double half_width = std::sqrt(4 * load_n_per_m * radius_m / (std::numbers::pi * modulus));
-    e.depth_over_half_width = std::max(e.depth_over_half_width, 10.5 * e.edge_radius_m / half_width);
-  }
+    e.depth_over_half_width = std::max(e.depth_over_half_width, 10.5 * e.edge_radius_m / half_width(e));
   return e;
 }
 
@@ -95,19 +98,14 @@ std::vector<RimLoopEnd> direct_ends(MPI_Comm comm, const RimLoopSettings& s, con
       const fem::RimEndSettings settings
           = end_settings(s, end == 0 ? ruling.start_radius_m : ruling.end_radius_m, q, e.interior_angle_rad);
       e.modelled_angle_rad = settings.interior_angle_rad;
-      const double half_width
-          = contact::line_contact(settings.load_n_per_m, settings.radius_m,
-                                  contact::effective_modulus(settings.youngs_modulus_pa, settings.poisson_ratio,
-                                                             settings.counter_face == fem::CounterFace::block),
-                                  settings.poisson_ratio)
-                .half_width_m;
-      if (!(half_width < fem::largest_half_width_over_radius * settings.radius_m))
+      const double b = half_width(settings);
+      if (!(b < fem::largest_half_width_over_radius * settings.radius_m))
       {
         e.study.setup = settings;
-        e.study.half_width_m = half_width;
+        e.study.half_width_m = b;
         e.outside_model = fmt::format("b / R = {:.2f}: near its sheet's apex the contact is no line contact (the end "
                                       "model needs b / R < {:.1f})",
-                                      half_width / settings.radius_m, fem::largest_half_width_over_radius);
+                                      b / settings.radius_m, fem::largest_half_width_over_radius);
         ends.push_back(std::move(e));
         continue;
       }
