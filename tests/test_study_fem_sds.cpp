@@ -11,6 +11,8 @@
 // meet the closed form of the uniformly loaded generator,
 // p0 = sqrt((F / L) E* / (pi R)) (K. L. Johnson, "Contact Mechanics", 1985,
 // eq. 4.45), to the accuracy of tests/test_slice_contact.cpp.
+#include "contact/hertz.h"
+#include "fem/rim_end_contact.h"
 #include "fem/slice_scaling.h"
 #include "core/error.h"
 #include "geometry/body.h"
@@ -196,4 +198,32 @@ TEST(FemSds, CylinderEndAwareScoresFollowTheEndFactor)
   EXPECT_FALSE(loop.end_aware[3].fds.value.has_value());
   EXPECT_EQ(loop.end_aware[3].singular_ends, loop.loaded_ends);
   EXPECT_EQ(loop.end_aware[3].peak_pa, 0.0);
+  EXPECT_EQ(loop.end_aware[1].outside_model_ends, 0u);
+
+  // An end near its sheet's apex (R -> 0): line contact holds while b / R,
+  // from line Hertz itself, stays below fem::largest_half_width_over_radius.
+  const double e_star = result.effective_modulus_pa, radius = 1.0;
+  auto half_width_over_radius = [&](double load_ratio) {
+    return contact::line_contact(load_ratio * e_star * radius, radius, e_star, settings.poisson_ratio).half_width_m
+           / radius;
+  };
+  const double limit = std::numbers::pi / 4 * std::pow(fem::largest_half_width_over_radius, 2);
+  ASSERT_LT(half_width_over_radius(0.999 * limit), fem::largest_half_width_over_radius);
+  ASSERT_GT(half_width_over_radius(1.001 * limit), fem::largest_half_width_over_radius);
+  study::LoadedEnd& end = result.loop_samples.rulings.at(0).ends.at(0);
+  const std::vector<study::EndFactor> unit = {factors[1]};
+  end.load_ratio = 0.999 * limit; // inside: scored (its pressure clamped to the loop's load ratios)
+  const study::EndAwareScores inside
+      = study::end_aware_scores(MPI_COMM_WORLD, result.loop_samples, table, study::loop_settings(settings), unit)[0];
+  EXPECT_EQ(inside.outside_model_ends, 0u);
+  EXPECT_TRUE(inside.sds.value.has_value());
+  end.load_ratio = 1.001 * limit; // outside: no pressure, scores undefined, the others' peak kept
+  const study::EndAwareScores outside
+      = study::end_aware_scores(MPI_COMM_WORLD, result.loop_samples, table, study::loop_settings(settings), unit)[0];
+  EXPECT_EQ(outside.outside_model_ends, 1u);
+  EXPECT_EQ(outside.outside_model_samples, 1u);
+  EXPECT_EQ(outside.singular_ends, 0u);
+  EXPECT_FALSE(outside.sds.value.has_value());
+  EXPECT_FALSE(outside.fds.value.has_value());
+  EXPECT_NEAR(outside.peak_pa / loop.fem_peak_pa, 1.0, 1e-9);
 }

@@ -208,6 +208,24 @@ std::string end_verdict(const fem::RimEndStudy& study)
   return fmt::format("{:.3f}{}", *study.end_to_interior, study.converged ? "" : " (NOT converged)");
 }
 
+/// The loop's largest end pressure over its largest interior pressure, in words.
+std::string loop_ratio_text(const study::RimLoopResult& r)
+{
+  if (const auto ratio = r.loop_end_to_interior())
+    return fmt::format("{:.3f}", *ratio);
+  if (r.loop.end_aware.empty() || r.loop.loaded_ends == 0)
+    return "none (no loaded end)";
+  const study::EndAwareScores& all = r.loop.end_aware[0];
+  if (all.singular_ends > 0)
+    return "singular";
+  const std::string covered = r.covered_end_to_interior()
+                                  ? fmt::format("{:.3f}", *r.covered_end_to_interior())
+                                  : std::string("none");
+  return fmt::format("undefined: {} of the {} loaded ends (in {} of the {} samples) lie outside the line-contact "
+                     "model; over the ends it covers {}",
+                     all.outside_model_ends, r.loop.loaded_ends, all.outside_model_samples, r.loop.samples, covered);
+}
+
 nlohmann::json run_loop(study::RimLoopSettings settings)
 {
   settings.loop.youngs_modulus_pa = settings.end.youngs_modulus_pa;
@@ -248,10 +266,7 @@ nlohmann::json run_loop(study::RimLoopSettings settings)
     scores += fmt::format("\nwith the ends:  FEM-SDS {}, FEM-FDS {}; {}\nover the loop: largest end pressure / "
                           "largest interior pressure {}",
                           score(loop.end_aware[0].sds), score(loop.end_aware[0].fds), r.end_aware_status(),
-                          r.loop_end_to_interior()                ? fmt::format("{:.3f}", *r.loop_end_to_interior())
-                          : loop.end_aware[0].singular_ends > 0 ? "singular"
-                          : loop.end_aware[0].outside_model_ends > 0 ? "undefined (ends outside the line-contact model)"
-                                                                 : "none");
+                          loop_ratio_text(r));
   spdlog::info("\nrims of {} ({}), counter-face {}, edge {}:\n\n{}\nloaded rim ends over the loop: {} in {} of {} "
                "samples, interior angles {:.1f} to {:.1f} deg (singular above {:.2f} deg); end table of {} nodes "
                "at q = {:.4g} N/m, R = {:.4g} m, against the direct ends {}\n{}\n\n",

@@ -4,6 +4,7 @@
 #include "contact/rim_overhang.h"
 #include "core/error.h"
 #include "core/json_number.h"
+#include "fem/rim_end_contact.h"
 #include "oracle/distribution_score.h"
 #include <algorithm>
 #include <chrono>
@@ -16,6 +17,14 @@ namespace rollcheck::study
 {
 namespace
 {
+/// Line contact holds at a loaded end while its half-width is small against
+/// its radius: b / R = sqrt(4 q / (pi E* R)) = sqrt(4 lambda / pi) below
+/// fem::largest_half_width_over_radius (the end model's own limit).
+bool within_line_contact(double load_ratio)
+{
+  return std::sqrt(4 * load_ratio / std::numbers::pi) < fem::largest_half_width_over_radius;
+}
+
 SampleContact classify(const contact::ContactLocus& locus)
 {
   if (locus.ruling)
@@ -179,9 +188,16 @@ EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::
     std::vector<std::pair<int, double>> points;
     for (const MappedPoint& p : ruling.points)
       points.emplace_back(p.face, fem_pressure(p.line_hertz_pa, p.load_ratio));
+    bool outside_model = false;
     if (end_factor)
       for (const LoadedEnd& end : ruling.ends)
       {
+        if (!within_line_contact(end.load_ratio))
+        {
+          ++out.outside_model_ends;
+          outside_model = true;
+          continue;
+        }
         const std::optional<double> factor = (*end_factor)(end.interior_angle_rad);
         if (!factor)
         {
@@ -193,16 +209,19 @@ EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::
         out.peak_pa = std::max(out.peak_pa, p);
         points.emplace_back(end.face, p);
       }
+    out.outside_model_samples += outside_model;
     add_face_peaks(points, ruling.even, [](double p) { return p; }, sds_all, sds_even);
     add_face_peaks(points, ruling.even, damage, fds_all, fds_even);
   }
-  MPI_Allreduce(MPI_IN_PLACE, &out.singular_ends, 1, MPI_UNSIGNED_LONG, MPI_SUM, comm);
+  for (std::size_t* count : {&out.singular_ends, &out.outside_model_ends, &out.outside_model_samples})
+    MPI_Allreduce(MPI_IN_PLACE, count, 1, MPI_UNSIGNED_LONG, MPI_SUM, comm);
   MPI_Allreduce(MPI_IN_PLACE, &out.peak_pa, 1, MPI_DOUBLE, MPI_MAX, comm);
-  const bool finite = out.singular_ends == 0;
-  if (!finite)
+  if (out.singular_ends > 0)
     out.peak_pa = 0;
-  out.sds = score_pair(comm, std::move(sds_all), std::move(sds_even), areas, finite);
-  out.fds = score_pair(comm, std::move(fds_all), std::move(fds_even), areas, finite);
+  // An end with no pressure leaves the scores undefined, not smaller.
+  const bool defined = out.singular_ends == 0 && out.outside_model_ends == 0;
+  out.sds = score_pair(comm, std::move(sds_all), std::move(sds_even), areas, defined);
+  out.fds = score_pair(comm, std::move(fds_all), std::move(fds_even), areas, defined);
   return out;
 }
 
@@ -400,6 +419,8 @@ nlohmann::json to_json(const LoopSds& loop)
     end_aware.push_back({{"fem_sds", score(e.sds)},
                          {"fem_fds", score(e.fds)},
                          {"singular_ends", e.singular_ends},
+                         {"outside_model_ends", e.outside_model_ends},
+                         {"outside_model_samples", e.outside_model_samples},
                          {"end_peak_pa", e.singular_ends > 0 ? nlohmann::json(nullptr) : json_number(e.peak_pa)}});
   nlohmann::json by_contact = nlohmann::json::object();
   for (const auto& [name, count] : loop.samples_by_contact)

@@ -154,13 +154,16 @@ struct ConvergedScore
 /// FEM-SDS and FEM-FDS of the ruling samples with their loaded ends' pressures.
 struct EndAwareScores
 {
-  ConvergedScore sds, fds;             ///< none when an end is singular
+  ConvergedScore sds, fds;             ///< none when an end is singular or outside the model
   std::size_t singular_ends = 0;       ///< loaded ends the factor calls singular
   /// Loaded ends where line contact fails, b / R = sqrt(4 q / (pi E* R)) at
   /// least fem::largest_half_width_over_radius (a ruling ending near its
   /// sheet's apex, R -> 0): no end pressure is defined there.
   std::size_t outside_model_ends = 0;
-  double peak_pa = 0;                  ///< largest end pressure (0 when singular)
+  std::size_t outside_model_samples = 0; ///< ruling samples with such an end
+  /// Largest end pressure over the ends that have one (0 when an end is
+  /// singular): with ends outside the model, over those it covers.
+  double peak_pa = 0;
 };
 
 struct LoopSds

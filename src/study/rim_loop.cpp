@@ -189,12 +189,19 @@ std::optional<double> RimLoopResult::worst_end_to_interior() const
   return worst;
 }
 
-std::optional<double> RimLoopResult::loop_end_to_interior() const
+std::optional<double> RimLoopResult::covered_end_to_interior() const
 {
-  if (loop.end_aware.empty() || loop.end_aware[0].singular_ends > 0 || loop.end_aware[0].outside_model_ends > 0
-      || loop.loaded_ends == 0 || !(loop.fem_peak_pa > 0))
+  if (loop.end_aware.empty() || loop.end_aware[0].singular_ends > 0 || !(loop.end_aware[0].peak_pa > 0)
+      || !(loop.fem_peak_pa > 0))
     return std::nullopt;
   return loop.end_aware[0].peak_pa / loop.fem_peak_pa;
+}
+
+std::optional<double> RimLoopResult::loop_end_to_interior() const
+{
+  if (loop.end_aware.empty() || loop.end_aware[0].outside_model_ends > 0)
+    return std::nullopt;
+  return covered_end_to_interior();
 }
 
 std::string RimLoopResult::end_aware_status() const
@@ -360,6 +367,9 @@ nlohmann::json to_json(const RimLoopResult& r)
           {"ends", ends},
           {"worst_end_to_interior", json_number(r.worst_end_to_interior())},
           {"loop_end_to_interior", json_number(r.loop_end_to_interior())},
+          {"covered_end_to_interior", json_number(r.covered_end_to_interior())},
+          {"outside_model_ends", r.loop.end_aware.empty() ? 0 : r.loop.end_aware[0].outside_model_ends},
+          {"outside_model_samples", r.loop.end_aware.empty() ? 0 : r.loop.end_aware[0].outside_model_samples},
           {"end_table", table},
           {"end_table_load_n_per_m", r.reference_load_n_per_m},
           {"end_table_sheet_radius_m", r.reference_radius_m},

@@ -97,8 +97,12 @@ struct RimLoopResult
   std::optional<double> worst_end_to_interior() const;
   /// Over every sample of the loop: the largest end pressure (the table's)
   /// over the largest interior pressure (FEM-SDS's mapped points); none when
-  /// an end is singular or no sample loads a rim.
+  /// an end is singular or outside the model, or no sample loads a rim.
   std::optional<double> loop_end_to_interior() const;
+  /// The same over the loaded ends the end model covers (b / R below
+  /// fem::largest_half_width_over_radius); none when an end is singular or
+  /// no end is covered. Equals loop_end_to_interior when every end is covered.
+  std::optional<double> covered_end_to_interior() const;
   /// In words: singular, converged, or not converged and why.
   std::string end_aware_status() const;
 };
