@@ -31,10 +31,10 @@ BODIES = [
 ]
 
 
-def score(entry):
+def score(entry, missing="singular"):
     value = entry["value"]
     if value is None:
-        return "singular"
+        return missing
     if value == "inf" or (isinstance(value, float) and value == float("inf")):
         return "inf"
     return f"{value:.4g}"
@@ -46,7 +46,15 @@ def loop_ratio(j):
     if "loop_end_to_interior" not in j:
         return "-"
     value = j["loop_end_to_interior"]
-    return "singular" if value is None else f"{value:.3f}"
+    if value is not None:
+        return f"{value:.3f}"
+    covered, change = j.get("covered_end_to_interior"), j.get("covered_limit_change")
+    if j.get("outside_model_ends", 0) > 0 and covered is not None:
+        tolerance = j["loop_scores"]["tolerance"]
+        if change is not None and abs(change) >= tolerance:
+            return f"undefined; {covered:.3f} over the covered ends, set by the limit on b / R ({100 * change:+.0f} % on halving it)"
+        return f"undefined; {covered:.3f} over the covered ends"
+    return "singular" if j.get("outside_model_ends", 0) == 0 else "undefined"
 
 
 def run(command, path, env):
@@ -79,10 +87,11 @@ def main():
     mpi = ["mpirun", "-n", str(args.ranks)] if args.ranks > 1 else []
     folder = args.json_dir or tempfile.mkdtemp(prefix="rim_peaks_")
     os.makedirs(folder, exist_ok=True)
-    rows = ["| body | faces | loaded rim ends (samples) | singular ends | worst end / orientation peak (direct ends) "
+    rows = ["| body | faces | loaded rim ends (samples) | singular ends | ends outside the model (samples) "
+            "| worst end / orientation peak (direct ends) "
             "| loop's end peak / interior peak | FEM-SDS | with the ends | FEM-FDS | with the ends "
             "| end table vs direct | status | s |",
-            "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+            "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     wanted = set(args.only.split(",")) if args.only else None
     for label, body in BODIES:
         if wanted and label.split(" ")[0] not in wanted and label not in wanted:
@@ -96,15 +105,17 @@ def main():
         loop = j["loop_scores"]
         aware = loop.get("end_aware", [{}])[0] if loop.get("end_aware") else None
         singular = aware["singular_ends"] if aware else 0
+        outside = f"{aware.get('outside_model_ends', 0)} ({aware.get('outside_model_samples', 0)})" if aware else "-"
+        missing = "singular" if singular > 0 else "undefined"
         worst = j["worst_end_to_interior"]
         table = j["end_table_vs_direct"]
         rows.append(
             f"| {label} | {j['interior']['n_faces']} | {loop['loaded_ends']} ({loop['loaded_end_samples']} of {loop['samples']}) "
             f"| {singular} ({100 * singular / max(loop['loaded_ends'], 1):.0f} %) "
-            f"| {'-' if worst is None else f'{worst:.3f}'} "
+            f"| {outside} | {'-' if worst is None else f'{worst:.3f}'} "
             f"| {loop_ratio(j)} "
-            f"| {score(loop['fem_sds_rulings'])} | {score(aware['fem_sds']) if aware else '-'} "
-            f"| {score(loop['fem_fds_rulings'])} | {score(aware['fem_fds']) if aware else '-'} "
+            f"| {score(loop['fem_sds_rulings'])} | {score(aware['fem_sds'], missing) if aware else '-'} "
+            f"| {score(loop['fem_fds_rulings'])} | {score(aware['fem_fds'], missing) if aware else '-'} "
             f"| {'-' if table is None else f'{100 * table:.1f} %'} | {j['end_aware_status'].split(':')[0]} "
             f"| {j['wall_s']:.0f} |")
         print(rows[-1], flush=True)

@@ -212,11 +212,17 @@ TEST(FemSds, CylinderEndAwareScoresFollowTheEndFactor)
   ASSERT_GT(half_width_over_radius(1.001 * limit), fem::largest_half_width_over_radius);
   study::LoadedEnd& end = result.loop_samples.rulings.at(0).ends.at(0);
   const std::vector<study::EndFactor> unit = {factors[1]};
-  end.load_ratio = 0.999 * limit; // inside: scored (its pressure clamped to the loop's load ratios)
+  // Inside, but above half the limit, at three times the others' line-Hertz
+  // pressure (an end towards a sheet's apex): scored, the loop's largest end
+  // pressure, and absent from the peak within half the limit.
+  end.load_ratio = 0.999 * limit;
+  end.line_hertz_pa *= 3;
   const study::EndAwareScores inside
       = study::end_aware_scores(MPI_COMM_WORLD, result.loop_samples, table, study::loop_settings(settings), unit)[0];
   EXPECT_EQ(inside.outside_model_ends, 0u);
   EXPECT_TRUE(inside.sds.value.has_value());
+  EXPECT_NEAR(inside.peak_pa / loop.fem_peak_pa, 3.0, 1e-9);
+  EXPECT_NEAR(inside.peak_within_half_limit_pa / loop.fem_peak_pa, 1.0, 1e-9);
   end.load_ratio = 1.001 * limit; // outside: no pressure, scores undefined, the others' peak kept
   const study::EndAwareScores outside
       = study::end_aware_scores(MPI_COMM_WORLD, result.loop_samples, table, study::loop_settings(settings), unit)[0];
@@ -226,4 +232,5 @@ TEST(FemSds, CylinderEndAwareScoresFollowTheEndFactor)
   EXPECT_FALSE(outside.sds.value.has_value());
   EXPECT_FALSE(outside.fds.value.has_value());
   EXPECT_NEAR(outside.peak_pa / loop.fem_peak_pa, 1.0, 1e-9);
+  EXPECT_EQ(outside.peak_within_half_limit_pa, outside.peak_pa);
 }

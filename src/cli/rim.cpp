@@ -218,9 +218,17 @@ std::string loop_ratio_text(const study::RimLoopResult& r)
   const study::EndAwareScores& all = r.loop.end_aware[0];
   if (all.singular_ends > 0)
     return "singular";
-  const std::string covered = r.covered_end_to_interior()
-                                  ? fmt::format("{:.3f}", *r.covered_end_to_interior())
-                                  : std::string("none");
+  std::string covered = "none";
+  if (const auto ratio = r.covered_end_to_interior())
+  {
+    covered = fmt::format("{:.3f}", *ratio);
+    if (const auto change = r.covered_limit_change())
+      covered += std::abs(*change) < r.fem_sds.loop.tolerance
+                     ? fmt::format(" (halving the limit on b / R changes it by {:+.2f} %)", 100 * *change)
+                     : fmt::format(", {:.1f} % above the ends within half the limit on b / R: set by the limit, "
+                                   "no peak (line Hertz grows as R^-1/2 towards a sheet's apex)",
+                                   100 * *change);
+  }
   return fmt::format("undefined: {} of the {} loaded ends (in {} of the {} samples) lie outside the line-contact "
                      "model; over the ends it covers {}",
                      all.outside_model_ends, r.loop.loaded_ends, all.outside_model_samples, r.loop.samples, covered);

@@ -17,12 +17,12 @@ namespace rollcheck::study
 {
 namespace
 {
-/// Line contact holds at a loaded end while its half-width is small against
-/// its radius: b / R = sqrt(4 q / (pi E* R)) = sqrt(4 lambda / pi) below
-/// fem::largest_half_width_over_radius (the end model's own limit).
-bool within_line_contact(double load_ratio)
+/// A loaded end's b / R by line Hertz, sqrt(4 q / (pi E* R)) = sqrt(4 lambda / pi):
+/// line contact holds while it is below fem::largest_half_width_over_radius
+/// (the end model's own limit).
+double half_width_over_radius(double load_ratio)
 {
-  return std::sqrt(4 * load_ratio / std::numbers::pi) < fem::largest_half_width_over_radius;
+  return std::sqrt(4 * load_ratio / std::numbers::pi);
 }
 
 SampleContact classify(const contact::ContactLocus& locus)
@@ -192,7 +192,8 @@ EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::
     if (end_factor)
       for (const LoadedEnd& end : ruling.ends)
       {
-        if (!within_line_contact(end.load_ratio))
+        const double width_ratio = half_width_over_radius(end.load_ratio);
+        if (!(width_ratio < fem::largest_half_width_over_radius))
         {
           ++out.outside_model_ends;
           outside_model = true;
@@ -207,6 +208,8 @@ EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::
         const double p = *factor * fem_pressure(end.line_hertz_pa, std::clamp(end.load_ratio, samples.load_ratio_min,
                                                                                samples.load_ratio_max));
         out.peak_pa = std::max(out.peak_pa, p);
+        if (width_ratio < fem::largest_half_width_over_radius / 2)
+          out.peak_within_half_limit_pa = std::max(out.peak_within_half_limit_pa, p);
         points.emplace_back(end.face, p);
       }
     out.outside_model_samples += outside_model;
@@ -215,9 +218,12 @@ EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::
   }
   for (std::size_t* count : {&out.singular_ends, &out.outside_model_ends, &out.outside_model_samples})
     MPI_Allreduce(MPI_IN_PLACE, count, 1, MPI_UNSIGNED_LONG, MPI_SUM, comm);
-  MPI_Allreduce(MPI_IN_PLACE, &out.peak_pa, 1, MPI_DOUBLE, MPI_MAX, comm);
-  if (out.singular_ends > 0)
-    out.peak_pa = 0;
+  for (double* peak : {&out.peak_pa, &out.peak_within_half_limit_pa})
+  {
+    MPI_Allreduce(MPI_IN_PLACE, peak, 1, MPI_DOUBLE, MPI_MAX, comm);
+    if (out.singular_ends > 0)
+      *peak = 0;
+  }
   // An end with no pressure leaves the scores undefined, not smaller.
   const bool defined = out.singular_ends == 0 && out.outside_model_ends == 0;
   out.sds = score_pair(comm, std::move(sds_all), std::move(sds_even), areas, defined);
@@ -421,6 +427,8 @@ nlohmann::json to_json(const LoopSds& loop)
                          {"singular_ends", e.singular_ends},
                          {"outside_model_ends", e.outside_model_ends},
                          {"outside_model_samples", e.outside_model_samples},
+                         {"end_peak_within_half_limit_pa",
+                          e.singular_ends > 0 ? nlohmann::json(nullptr) : json_number(e.peak_within_half_limit_pa)},
                          {"end_peak_pa", e.singular_ends > 0 ? nlohmann::json(nullptr) : json_number(e.peak_pa)}});
   nlohmann::json by_contact = nlohmann::json::object();
   for (const auto& [name, count] : loop.samples_by_contact)

@@ -164,6 +164,10 @@ struct EndAwareScores
   /// Largest end pressure over the ends that have one (0 when an end is
   /// singular): with ends outside the model, over those it covers.
   double peak_pa = 0;
+  /// The same over the ends with b / R below half the limit: where it
+  /// differs from peak_pa, the largest pressure sits at the model's limit
+  /// (line Hertz's grows as R^-1/2 towards a sheet's apex) and is no peak.
+  double peak_within_half_limit_pa = 0;
 };
 
 struct LoopSds

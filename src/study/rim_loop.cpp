@@ -197,6 +197,13 @@ std::optional<double> RimLoopResult::covered_end_to_interior() const
   return loop.end_aware[0].peak_pa / loop.fem_peak_pa;
 }
 
+std::optional<double> RimLoopResult::covered_limit_change() const
+{
+  if (!covered_end_to_interior() || !(loop.end_aware[0].peak_within_half_limit_pa > 0))
+    return std::nullopt;
+  return loop.end_aware[0].peak_pa / loop.end_aware[0].peak_within_half_limit_pa - 1;
+}
+
 std::optional<double> RimLoopResult::loop_end_to_interior() const
 {
   if (loop.end_aware.empty() || loop.end_aware[0].outside_model_ends > 0)
@@ -368,6 +375,7 @@ nlohmann::json to_json(const RimLoopResult& r)
           {"worst_end_to_interior", json_number(r.worst_end_to_interior())},
           {"loop_end_to_interior", json_number(r.loop_end_to_interior())},
           {"covered_end_to_interior", json_number(r.covered_end_to_interior())},
+          {"covered_limit_change", json_number(r.covered_limit_change())},
           {"outside_model_ends", r.loop.end_aware.empty() ? 0 : r.loop.end_aware[0].outside_model_ends},
           {"outside_model_samples", r.loop.end_aware.empty() ? 0 : r.loop.end_aware[0].outside_model_samples},
           {"end_table", table},

@@ -103,6 +103,10 @@ struct RimLoopResult
   /// fem::largest_half_width_over_radius); none when an end is singular or
   /// no end is covered. Equals loop_end_to_interior when every end is covered.
   std::optional<double> covered_end_to_interior() const;
+  /// covered_end_to_interior's change when the limit on b / R halves (none
+  /// without ends below half the limit): beyond the loop's tolerance, the
+  /// covered ends' largest pressure is set by the limit, not converged.
+  std::optional<double> covered_limit_change() const;
   /// In words: singular, converged, or not converged and why.
   std::string end_aware_status() const;
 };
