@@ -77,6 +77,9 @@ TEST(WholeBodyCheck, OloidAgreesWithSlicesAndItsAcuteEndWithinThreePercent)
   EXPECT_TRUE(obtuse.end_model.singular);
   EXPECT_FALSE(obtuse.difference.has_value());
   EXPECT_TRUE(obtuse.matched_difference.has_value());
+  // Its one end-model level sits at the body's end layer (the matched mesh).
+  ASSERT_EQ(obtuse.end_model.levels.size(), 1u);
+  EXPECT_NEAR(obtuse.end_model.levels[0].edge_element_m / obtuse.half_width_m, s.body_end_layer, 1e-6);
   EXPECT_FALSE(check.pass) << "a singular end never passes";
 }
 

@@ -3,6 +3,7 @@
 #include "study/whole_body_check.h"
 #include "contact/hertz.h"
 #include "contact/rim_overhang.h"
+#include "contact/wedge_exponent.h"
 #include "core/error.h"
 #include "core/json_number.h"
 #include "fem/all_gather.h"
@@ -196,6 +197,14 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     rim.poisson_ratio = s.poisson_ratio;
     rim.levels = s.end_levels;
     rim.edge_element_over_half_width = s.end_edge_element;
+    // A singular end is never compared as a number: its only reading, the
+    // secondary one at matched edge elements, needs one level, at the body's
+    // end layer (its exponent under refinement is the rim scene's).
+    if (contact::edge_on_rigid_plane_exponent(rim.interior_angle_rad) < 0)
+    {
+      rim.levels = 1;
+      rim.edge_element_over_half_width = s.body_end_layer;
+    }
     rim.contact_elements = s.end_contact_elements;
     rim.tolerance = s.tolerance;
     if (s.end_depth == EndModelDepth::body)

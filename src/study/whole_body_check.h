@@ -25,9 +25,10 @@
 //    when its ratio to the far side's changes by less than `tolerance`
 //    between the end model's last two levels.
 //    Singular (obtuse): no number is compared; the check reports the end
-//    singular (the end model's measured exponent against the wedge's) and
-//    does not pass; as a secondary reading only, the whole body's edge
-//    against the end model's at the nearest edge element size (matched mesh).
+//    singular (the wedge's exponent; `rollcheck rim` measures its growth)
+//    and does not pass; as a secondary reading only, the whole body's edge
+//    against the end model's at the body's end layer (matched mesh: one
+//    level, h_e = body_end_layer b).
 //  - the load distribution: the whole body's line load at each station
 //    against the locus's q(s), and its centre of pressure (held at the
 //    centre of mass's foot by the solver).
