@@ -260,20 +260,25 @@ nlohmann::json run_loop(study::RimLoopSettings settings)
                         e.end_peak_pa ? fmt::format("{:.3f}", *e.end_peak_pa / e.interior_peak_pa) : "-",
                         e.table_ratio ? fmt::format("{:.3f}", *e.table_ratio) : "-", e.study.wall_s());
   }
-  auto score = [](const study::ConvergedScore& c) {
+  const study::LoopSds& loop = r.loop;
+  // A missing score: a singular end, or an end outside the model (undefined).
+  const std::string missing
+      = !loop.end_aware.empty() && loop.end_aware[0].singular_ends == 0 && loop.end_aware[0].outside_model_ends > 0
+            ? "undefined"
+            : "singular";
+  auto score = [](const study::ConvergedScore& c, const std::string& missing_word = "singular") {
     if (!c.value)
-      return std::string("singular");
+      return missing_word;
     if (std::isinf(*c.value))
       return std::string("infinite (no stress amplitude above the endurance limit)");
     return fmt::format("{:.5g} (halving the samples {:+.2f} %)", *c.value, 100 * c.sample_change());
   };
-  const study::LoopSds& loop = r.loop;
   std::string scores = fmt::format("interior only: FEM-SDS {}, FEM-FDS {}", score(loop.fem_rulings),
                                    score(loop.fem_fds_rulings));
   if (!loop.end_aware.empty())
     scores += fmt::format("\nwith the ends:  FEM-SDS {}, FEM-FDS {}; {}\nover the loop: largest end pressure / "
                           "largest interior pressure {}",
-                          score(loop.end_aware[0].sds), score(loop.end_aware[0].fds), r.end_aware_status(),
+                          score(loop.end_aware[0].sds, missing), score(loop.end_aware[0].fds, missing), r.end_aware_status(),
                           loop_ratio_text(r));
   spdlog::info("\nrims of {} ({}), counter-face {}, edge {}:\n\n{}\nloaded rim ends over the loop: {} in {} of {} "
                "samples, interior angles {:.1f} to {:.1f} deg (singular above {:.2f} deg); end table of {} nodes "
