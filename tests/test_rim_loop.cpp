@@ -2,6 +2,7 @@
 // singular against each counter-face, and the end table's interpolation. The
 // FEM behind them is tested in test_rim_end_contact and tests/cli/rim.sh.
 #include "contact/edge_on_elastic_block_exponent.h"
+#include "contact/hertz.h"
 #include "contact/wedge_exponent.h"
 #include "core/error.h"
 #include "study/rim_loop.h"
@@ -83,4 +84,30 @@ TEST(RimLoop, ANodeWithoutARatioIsAnError)
 {
   const std::vector<study::EndTableNode> table = {node(90, 0.2), node(100, std::nullopt)};
   EXPECT_THROW(study::end_table_ratio(table, 1, std::numbers::pi, 99 * degree), ComputationError);
+}
+
+// On a steel block the loop's slices meet the block too: the pair's E*
+// (half the rigid plane's for identical bodies, Johnson 1985 eq. 4.22), so
+// that its pressures and its ends' b / R are the pair's. The cylinder's
+// square ends are then all singular (the elastic wedge's -0.226).
+TEST(RimLoop, SteelBlockGivesTheLoopThePairsModulus)
+{
+  study::RimLoopSettings s;
+  s.loop.body.body = "cylinder";
+  s.loop.samples_per_loop = 512;
+  s.loop.orientations = 1;
+  s.loop.fem_slices = 2;
+  s.end.counter_face = fem::CounterFace::block;
+  s.end.levels = 1;
+  ASSERT_FALSE(s.loop.elastic_plane);
+  const study::RimLoopResult r = study::run_rim_loop(MPI_COMM_WORLD, s);
+  const double rigid = contact::effective_modulus(s.loop.youngs_modulus_pa, s.loop.poisson_ratio, false);
+  const double pair = contact::effective_modulus(s.loop.youngs_modulus_pa, s.loop.poisson_ratio, true);
+  EXPECT_NEAR(pair / rigid, 0.5, 1e-12);
+  EXPECT_NEAR(r.fem_sds.effective_modulus_pa / pair, 1.0, 1e-12);
+  ASSERT_FALSE(r.ends.empty());
+  for (const study::RimLoopEnd& e : r.ends)
+    EXPECT_NEAR(e.study.effective_modulus_pa / pair, 1.0, 1e-12);
+  ASSERT_EQ(r.loop.end_aware.size(), 1u);
+  EXPECT_EQ(r.loop.end_aware[0].singular_ends, r.loop.loaded_ends);
 }

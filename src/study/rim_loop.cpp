@@ -248,8 +248,13 @@ std::string RimLoopResult::end_aware_status() const
   return text;
 }
 
-RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& s)
+RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
 {
+  // The interior's slices meet the same counter-face as the ends: on a steel
+  // block, E* of the pair (half-space theory's reduction, as the end model's
+  // block), so that the pressures, load ratios and b / R of the loop are the pair's.
+  RimLoopSettings s = settings;
+  s.loop.elastic_plane = s.end.counter_face == fem::CounterFace::block;
   if (!(s.end_table_step_rad > 0) || !std::isfinite(s.end_table_step_rad))
     throw InputError(fmt::format("rim --body: end_table_step_deg must be positive and finite, got {}",
                                  s.end_table_step_rad / degree));

@@ -111,8 +111,10 @@ struct RimLoopResult
   std::string end_aware_status() const;
 };
 
-/// Collective on `comm` (every rank gets the result). InputError naming the
-/// setting for bad settings; ComputationError from the FEM.
+/// Collective on `comm` (every rank gets the result). The end's counter-face
+/// sets the loop's too (settings.loop.elastic_plane: a steel block gives the
+/// slices the pair's E*). InputError naming the setting for bad settings;
+/// ComputationError from the FEM.
 RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings);
 
 /// The table's end/interior ratio at `interior_angle_rad`, interpolating
