@@ -48,6 +48,9 @@ def loop_ratio(j):
     value = j["loop_end_to_interior"]
     if value is not None:
         return f"{value:.3f}"
+    aware = j["loop_scores"].get("end_aware")
+    if aware and aware[0]["singular_ends"] > 0:
+        return "singular"
     covered, change = j.get("covered_end_to_interior"), j.get("covered_limit_change")
     if j.get("outside_model_ends", 0) > 0 and covered is not None:
         tolerance = j["loop_scores"]["tolerance"]
