@@ -165,7 +165,7 @@ TEST(FemSds, CylinderEndAwareScoresFollowTheEndFactor)
   study::FemSdsResult result = study::run_fem_sds(MPI_COMM_WORLD, settings, table);
   study::LoopSds& loop = result.loop;
   loop.end_aware = study::end_aware_scores(MPI_COMM_WORLD, result.loop_samples, table, study::loop_settings(settings),
-                                           factors);
+                                           factors, 0.0);
 
   // Every sample stands on a generator running rim to rim: two square ends.
   EXPECT_EQ(loop.loaded_end_samples, loop.samples);
@@ -218,14 +218,14 @@ TEST(FemSds, CylinderEndAwareScoresFollowTheEndFactor)
   end.load_ratio = 0.999 * limit;
   end.line_hertz_pa *= 3;
   const study::EndAwareScores inside
-      = study::end_aware_scores(MPI_COMM_WORLD, result.loop_samples, table, study::loop_settings(settings), unit)[0];
+      = study::end_aware_scores(MPI_COMM_WORLD, result.loop_samples, table, study::loop_settings(settings), unit, 0.0)[0];
   EXPECT_EQ(inside.outside_model_ends, 0u);
   EXPECT_TRUE(inside.sds.value.has_value());
   EXPECT_NEAR(inside.peak_pa / loop.fem_peak_pa, 3.0, 1e-9);
   EXPECT_NEAR(inside.peak_within_half_limit_pa / loop.fem_peak_pa, 1.0, 1e-9);
   end.load_ratio = 1.001 * limit; // outside: no pressure, scores undefined, the others' peak kept
   const study::EndAwareScores outside
-      = study::end_aware_scores(MPI_COMM_WORLD, result.loop_samples, table, study::loop_settings(settings), unit)[0];
+      = study::end_aware_scores(MPI_COMM_WORLD, result.loop_samples, table, study::loop_settings(settings), unit, 0.0)[0];
   EXPECT_EQ(outside.outside_model_ends, 1u);
   EXPECT_EQ(outside.outside_model_samples, 1u);
   EXPECT_EQ(outside.singular_ends, 0u);
@@ -233,4 +233,23 @@ TEST(FemSds, CylinderEndAwareScoresFollowTheEndFactor)
   EXPECT_FALSE(outside.fds.value.has_value());
   EXPECT_NEAR(outside.peak_pa / loop.fem_peak_pa, 1.0, 1e-9);
   EXPECT_EQ(outside.peak_within_half_limit_pa, outside.peak_pa);
+
+  // A part finished with an edge radius r_e four times the end's R: the end
+  // is taken at R = r_e, its load ratio a quarter (b / R half: back inside
+  // the model), its line-Hertz pressure half (1.5 times the others').
+  end.radius_m = 0.125;
+  const study::EndAwareScores finished
+      = study::end_aware_scores(MPI_COMM_WORLD, result.loop_samples, table, study::loop_settings(settings), unit, 0.5)[0];
+  EXPECT_EQ(finished.finished_ends, 1u);
+  EXPECT_EQ(finished.outside_model_ends, 0u);
+  EXPECT_TRUE(finished.sds.value.has_value());
+  EXPECT_NEAR(finished.peak_pa / loop.fem_peak_pa, 1.5, 1e-9);
+  // An edge radius below the end's R leaves it as it was.
+  const study::EndAwareScores sharper
+      = study::end_aware_scores(MPI_COMM_WORLD, result.loop_samples, table, study::loop_settings(settings), unit, 0.1)[0];
+  EXPECT_EQ(sharper.finished_ends, 0u);
+  EXPECT_EQ(sharper.outside_model_ends, 1u);
+  EXPECT_THROW(study::end_aware_scores(MPI_COMM_WORLD, result.loop_samples, table, study::loop_settings(settings), unit,
+                                       -1.0),
+               InputError);
 }

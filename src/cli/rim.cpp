@@ -212,7 +212,13 @@ std::string end_verdict(const fem::RimEndStudy& study)
 std::string loop_ratio_text(const study::RimLoopResult& r)
 {
   if (const auto ratio = r.loop_end_to_interior())
-    return fmt::format("{:.3f}", *ratio);
+  {
+    const std::size_t finished = r.loop.end_aware.empty() ? 0 : r.loop.end_aware[0].finished_ends;
+    return finished == 0 ? fmt::format("{:.3f}", *ratio)
+                         : fmt::format("{:.3f} ({} of the {} loaded ends near a sheet's apex taken at R = r_e, the "
+                                       "finish's least radius)",
+                                       *ratio, finished, r.loop.loaded_ends);
+  }
   if (r.loop.end_aware.empty() || r.loop.loaded_ends == 0)
     return "none (no loaded end)";
   const study::EndAwareScores& all = r.loop.end_aware[0];

@@ -93,7 +93,8 @@ RulingSample map_ruling(std::span<const oracle::Circle> circles, const contact::
     sample.ends.push_back(
         {contact::faces_along_ruling(cones, locus, fractions)[0],
          line_hertz_peak(s.normal_load_n, locus.centre_of_pressure, ruling, effective_modulus_pa, f),
-         fem::load_ratio(load_at(f), radius_at(f), effective_modulus_pa), std::numbers::pi / 2 + lean[end]});
+         fem::load_ratio(load_at(f), radius_at(f), effective_modulus_pa), std::numbers::pi / 2 + lean[end],
+         radius_at(f)});
   }
   return sample;
 }
@@ -172,7 +173,7 @@ double tabulated(double load_ratio) { return std::max(load_ratio, fem::SliceScal
 /// and with their loaded ends' pressures if `end_factor` is given: the load
 /// ratio of an end held within the range the table covers for the points.
 EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::SliceScaling& table, int stride,
-                          const LoopSdsSettings& s, const EndFactor* end_factor)
+                          const LoopSdsSettings& s, const EndFactor* end_factor, double edge_radius_m = 0)
 {
   const Eigen::VectorXd& areas = samples.face_areas;
   EndAwareScores out;
@@ -190,8 +191,16 @@ EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::
       points.emplace_back(p.face, fem_pressure(p.line_hertz_pa, p.load_ratio));
     bool outside_model = false;
     if (end_factor)
-      for (const LoadedEnd& end : ruling.ends)
+      for (LoadedEnd end : ruling.ends)
       {
+        if (end.radius_m < edge_radius_m)
+        {
+          const double sharper = end.radius_m / edge_radius_m;
+          end.line_hertz_pa *= std::sqrt(sharper);
+          end.load_ratio *= sharper;
+          end.radius_m = edge_radius_m;
+          ++out.finished_ends;
+        }
         const double width_ratio = half_width_over_radius(end.load_ratio);
         if (!(width_ratio < fem::largest_half_width_over_radius))
         {
@@ -216,7 +225,8 @@ EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::
     add_face_peaks(points, ruling.even, [](double p) { return p; }, sds_all, sds_even);
     add_face_peaks(points, ruling.even, damage, fds_all, fds_even);
   }
-  for (std::size_t* count : {&out.singular_ends, &out.outside_model_ends, &out.outside_model_samples})
+  for (std::size_t* count :
+       {&out.singular_ends, &out.outside_model_ends, &out.outside_model_samples, &out.finished_ends})
     MPI_Allreduce(MPI_IN_PLACE, count, 1, MPI_UNSIGNED_LONG, MPI_SUM, comm);
   for (double* peak : {&out.peak_pa, &out.peak_within_half_limit_pa})
   {
@@ -403,13 +413,15 @@ LoopSds loop_sds(MPI_Comm comm, const LoopSamples& samples, fem::SliceScaling& t
 
 std::vector<EndAwareScores> end_aware_scores(MPI_Comm comm, const LoopSamples& samples,
                                              const fem::SliceScaling& table, const LoopSdsSettings& s,
-                                             std::span<const EndFactor> end_factors)
+                                             std::span<const EndFactor> end_factors, double edge_radius_m)
 {
+  if (!(edge_radius_m >= 0) || !std::isfinite(edge_radius_m))
+    throw InputError(fmt::format("loop SDS: the edge radius must be >= 0 and finite, got {}", edge_radius_m));
   std::vector<EndAwareScores> scores;
   if (samples.ruling_count() == 0)
     return scores;
   for (const EndFactor& factor : end_factors)
-    scores.push_back(fem_scores(comm, samples, table, 1, s, &factor));
+    scores.push_back(fem_scores(comm, samples, table, 1, s, &factor, edge_radius_m));
   return scores;
 }
 
@@ -427,6 +439,7 @@ nlohmann::json to_json(const LoopSds& loop)
                          {"singular_ends", e.singular_ends},
                          {"outside_model_ends", e.outside_model_ends},
                          {"outside_model_samples", e.outside_model_samples},
+                         {"finished_ends", e.finished_ends},
                          {"end_peak_within_half_limit_pa",
                           e.singular_ends > 0 ? nlohmann::json(nullptr) : json_number(e.peak_within_half_limit_pa)},
                          {"end_peak_pa", e.singular_ends > 0 ? nlohmann::json(nullptr) : json_number(e.peak_pa)}});

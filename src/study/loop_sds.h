@@ -111,13 +111,15 @@ struct MappedPoint
 };
 
 /// A loaded rim end of a ruling sample: the face at the end, the line-Hertz
-/// pressure and load ratio of the end itself, and the rim's interior angle.
+/// pressure and load ratio of the end itself, the rim's interior angle and
+/// the sheet's radius across the ruling there.
 struct LoadedEnd
 {
   int face = 0;
   double line_hertz_pa = 0;
   double load_ratio = 0;
   double interior_angle_rad = 0;
+  double radius_m = 0;
 };
 
 struct RulingSample
@@ -161,6 +163,10 @@ struct EndAwareScores
   /// sheet's apex, R -> 0): no end pressure is defined there.
   std::size_t outside_model_ends = 0;
   std::size_t outside_model_samples = 0; ///< ruling samples with such an end
+  /// Loaded ends whose sheet is sharper across the ruling than a rounded
+  /// part's finish allows (R below its edge radius, near a sheet's apex),
+  /// taken at R = r_e (end_aware_scores).
+  std::size_t finished_ends = 0;
   /// Largest end pressure over the ends that have one (0 when an end is
   /// singular): with ends outside the model, over those it covers.
   double peak_pa = 0;
@@ -221,9 +227,17 @@ LoopSds loop_sds(MPI_Comm comm, const LoopSamples& samples, fem::SliceScaling& t
 /// One set of end-aware scores per factor (e.g. an end table and its every
 /// other node), from `table` as loop_sds left it; none when the loop has no
 /// ruling sample. Collective on `comm`.
+///
+/// `edge_radius_m` > 0: the part is finished with that edge radius, the
+/// rolling-ball blend (a ball of radius r_e rolled inside the hull rounds
+/// every part of the surface it cannot touch), so no radius of the finished
+/// surface is below r_e. An end where the hull's sheet has R < r_e (near a
+/// sheet's apex, R -> 0) is taken at R = r_e: line Hertz's pressure scaled
+/// by (R / r_e)^1/2, its load ratio by R / r_e (the hull's q: the blend's
+/// small rise over the apex, which would unload it, is not modelled).
 std::vector<EndAwareScores> end_aware_scores(MPI_Comm comm, const LoopSamples& samples,
                                              const fem::SliceScaling& table, const LoopSdsSettings& settings,
-                                             std::span<const EndFactor> end_factors);
+                                             std::span<const EndFactor> end_factors, double edge_radius_m);
 
 /// Fractions of the ruling mapped onto the faces: the midpoints of `points`
 /// equal parts of [loaded_from, loaded_to].

@@ -95,8 +95,10 @@ std::vector<RimLoopEnd> direct_ends(MPI_Comm comm, const RimLoopSettings& s, con
       e.orientation = r.index;
       e.end = end;
       e.interior_angle_rad = std::numbers::pi / 2 + r.rim_overhang_rad[static_cast<std::size_t>(end)];
+      // A rounded part's finish leaves no radius below r_e (study/loop_sds.h end_aware_scores).
+      const double hull_radius = end == 0 ? ruling.start_radius_m : ruling.end_radius_m;
       const fem::RimEndSettings settings
-          = end_settings(s, end == 0 ? ruling.start_radius_m : ruling.end_radius_m, q, e.interior_angle_rad);
+          = end_settings(s, std::max(hull_radius, s.end.edge_radius_m), q, e.interior_angle_rad);
       e.modelled_angle_rad = settings.interior_angle_rad;
       const double b = half_width(settings);
       if (!(b < fem::largest_half_width_over_radius * settings.radius_m))
@@ -323,7 +325,8 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
     factors.push_back([](double) { return std::optional<double>(); }); // every loaded end singular
   // The interior's scores with the ends', from the samples it mapped.
   result.loop = result.fem_sds.loop;
-  result.loop.end_aware = end_aware_scores(comm, result.fem_sds.loop_samples, slices, loop_settings(s.loop), factors);
+  result.loop.end_aware = end_aware_scores(comm, result.fem_sds.loop_samples, slices, loop_settings(s.loop), factors,
+                                           s.end.edge_radius_m);
   result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
@@ -383,6 +386,7 @@ nlohmann::json to_json(const RimLoopResult& r)
           {"covered_limit_change", json_number(r.covered_limit_change())},
           {"outside_model_ends", r.loop.end_aware.empty() ? 0 : r.loop.end_aware[0].outside_model_ends},
           {"outside_model_samples", r.loop.end_aware.empty() ? 0 : r.loop.end_aware[0].outside_model_samples},
+          {"finished_ends", r.loop.end_aware.empty() ? 0 : r.loop.end_aware[0].finished_ends},
           {"end_table", table},
           {"end_table_load_n_per_m", r.reference_load_n_per_m},
           {"end_table_sheet_radius_m", r.reference_radius_m},

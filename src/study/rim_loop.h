@@ -23,6 +23,15 @@
 // the table (the change when the table's nodes halve). A sharp edge's
 // singular ends make the end-aware scores singular: reported as such, with
 // the number of loaded ends that are.
+//
+// A rounded edge stands for a finished part, the hull rounded by a ball of
+// radius r_e rolled inside it: no radius of its surface is below r_e. Near a
+// sheet's apex the hull's R -> 0 at a ruling's end (the oloid's: where the
+// centre of pressure lies a quarter of the ruling from one end, whose ruling
+// touches the rim's circle there, R falling linearly to 0), its line Hertz
+// pressure grows without bound and its b / R leaves line contact; the
+// finished part's end is taken at R = r_e (study/loop_sds.h
+// end_aware_scores; the direct ends too).
 #include "fem/rim_end_contact.h"
 #include "study/fem_sds.h"
 #include <cstddef>
