@@ -244,6 +244,8 @@ TEST(FemSds, CylinderEndAwareScoresFollowTheEndFactor)
   EXPECT_EQ(finished.outside_model_ends, 0u);
   EXPECT_TRUE(finished.sds.value.has_value());
   EXPECT_NEAR(finished.peak_pa / loop.fem_peak_pa, 1.5, 1e-9);
+  EXPECT_NEAR(finished.finished_peak_pa / loop.fem_peak_pa, 1.5, 1e-9);
+  EXPECT_NEAR(finished.unfinished_peak_pa / loop.fem_peak_pa, 1.0, 1e-9);
   // An edge radius below the end's R leaves it as it was.
   const study::EndAwareScores sharper
       = study::end_aware_scores(MPI_COMM_WORLD, result.loop_samples, table, study::loop_settings(settings), unit, 0.1)[0];

@@ -193,7 +193,8 @@ EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::
     if (end_factor)
       for (LoadedEnd end : ruling.ends)
       {
-        if (end.radius_m < edge_radius_m)
+        const bool finished = end.radius_m < edge_radius_m;
+        if (finished)
         {
           const double sharper = end.radius_m / edge_radius_m;
           end.line_hertz_pa *= std::sqrt(sharper);
@@ -217,6 +218,8 @@ EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::
         const double p = *factor * fem_pressure(end.line_hertz_pa, std::clamp(end.load_ratio, samples.load_ratio_min,
                                                                                samples.load_ratio_max));
         out.peak_pa = std::max(out.peak_pa, p);
+        double& peak_of_kind = finished ? out.finished_peak_pa : out.unfinished_peak_pa;
+        peak_of_kind = std::max(peak_of_kind, p);
         if (width_ratio < fem::largest_half_width_over_radius / 2)
           out.peak_within_half_limit_pa = std::max(out.peak_within_half_limit_pa, p);
         points.emplace_back(end.face, p);
@@ -228,7 +231,7 @@ EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::
   for (std::size_t* count :
        {&out.singular_ends, &out.outside_model_ends, &out.outside_model_samples, &out.finished_ends})
     MPI_Allreduce(MPI_IN_PLACE, count, 1, MPI_UNSIGNED_LONG, MPI_SUM, comm);
-  for (double* peak : {&out.peak_pa, &out.peak_within_half_limit_pa})
+  for (double* peak : {&out.peak_pa, &out.peak_within_half_limit_pa, &out.finished_peak_pa, &out.unfinished_peak_pa})
   {
     MPI_Allreduce(MPI_IN_PLACE, peak, 1, MPI_DOUBLE, MPI_MAX, comm);
     if (out.singular_ends > 0)
@@ -440,6 +443,8 @@ nlohmann::json to_json(const LoopSds& loop)
                          {"outside_model_ends", e.outside_model_ends},
                          {"outside_model_samples", e.outside_model_samples},
                          {"finished_ends", e.finished_ends},
+                         {"finished_end_peak_pa", e.finished_peak_pa},
+                         {"unfinished_end_peak_pa", e.unfinished_peak_pa},
                          {"end_peak_within_half_limit_pa",
                           e.singular_ends > 0 ? nlohmann::json(nullptr) : json_number(e.peak_within_half_limit_pa)},
                          {"end_peak_pa", e.singular_ends > 0 ? nlohmann::json(nullptr) : json_number(e.peak_pa)}});

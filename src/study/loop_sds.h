@@ -167,6 +167,9 @@ struct EndAwareScores
   /// part's finish allows (R below its edge radius, near a sheet's apex),
   /// taken at R = r_e (end_aware_scores).
   std::size_t finished_ends = 0;
+  /// Largest end pressure over those ends and over the others (0 when an
+  /// end is singular), to show which sets the loop's peak.
+  double finished_peak_pa = 0, unfinished_peak_pa = 0;
   /// Largest end pressure over the ends that have one (0 when an end is
   /// singular): with ends outside the model, over those it covers.
   double peak_pa = 0;
