@@ -109,6 +109,8 @@ def main():
         aware = loop.get("end_aware", [{}])[0] if loop.get("end_aware") else None
         singular = aware["singular_ends"] if aware else 0
         outside = f"{aware.get('outside_model_ends', 0)} ({aware.get('outside_model_samples', 0)})" if aware else "-"
+        if aware and aware.get("finished_ends", 0) > 0:
+            outside += f"; {aware['finished_ends']} taken at R = r_e"
         missing = "singular" if singular > 0 else "undefined"
         worst = j["worst_end_to_interior"]
         table = j["end_table_vs_direct"]

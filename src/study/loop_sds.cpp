@@ -171,7 +171,8 @@ double tabulated(double load_ratio) { return std::max(load_ratio, fem::SliceScal
 
 /// FEM-SDS and FEM-FDS over the ruling samples with the table of `stride`,
 /// and with their loaded ends' pressures if `end_factor` is given: the load
-/// ratio of an end held within the range the table covers for the points.
+/// ratio of an end held within the range the table covers for the points,
+/// an end sharper across than `edge_radius_m` taken at it (end_aware_scores).
 EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::SliceScaling& table, int stride,
                           const LoopSdsSettings& s, const EndFactor* end_factor, double edge_radius_m = 0)
 {
