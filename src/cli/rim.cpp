@@ -65,7 +65,9 @@ const io::BoundSchema<RimCommand>& rim_schema()
               "lean)",
               io::Bounds{60, 180, false, true}, std::numbers::pi / 180)
         .real("edge_radius_m", "--edge-radius", end(&RimEndSettings::edge_radius_m), "m",
-              "r_e of the edge's fillet, the way a part is finished; 0: the sharp edge of the ideal hull",
+              "r_e of the edge's fillet, the way a part is finished; 0: the sharp edge of the ideal hull. With --body "
+              "the part is the hull rounded by a ball of r_e rolled inside it: no radius of its surface is below r_e, "
+              "so an end near a sheet's apex is taken at R = r_e",
               io::Bounds{0, 1, false, false});
     s.choice("counter_face", "--counter-face", end(&RimEndSettings::counter_face),
              "What the body presses on: rigid (the frictionless rigid plane) or steel (a block of the body's own "
