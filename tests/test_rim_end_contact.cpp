@@ -10,6 +10,7 @@
 #include <dolfinx/mesh/utils.h>
 #include <cmath>
 #include <cstdio>
+#include <dolfinx/common/IndexMap.h>
 #include <gtest/gtest.h>
 #include <mpi.h>
 #include <numbers>
@@ -104,6 +105,28 @@ TEST(RimEndContact, OnlyFacesFacingThePlaneAreContactFacets)
       EXPECT_GT(highest_anywhere, 0.5 * H) << angle_deg;
     else
       EXPECT_LT(highest_anywhere, 1e-9 * H) << angle_deg;
+  }
+}
+
+TEST(RimEndContact, ObtuseRoundedRimOnTheCylinderSheetIsBuilt)
+{
+  // At 170 deg the other face is nearly level, so on the cylinder sheet the
+  // edge (the sheet cut by that face) leaves the block through its end x = H
+  // before it crosses it in y (at y = 0.9 H for R = 10 mm, H = 10.5 r_e: the
+  // preprint's body's end table at F = 800 N): its fillet must still be
+  // found (it was not: "found 0 edge curves"). A coarse mesh is enough.
+  fem::ensure_petsc();
+  const double edge_radius = 4e-4, H = 10.5 * edge_radius;
+  fem::RimEndSizes sizes;
+  sizes.contact_m = sizes.edge_m = H / 20;
+  sizes.contact_zone_m = sizes.edge_zone_m = H / 10;
+  sizes.edge_x_m = -edge_radius * std::tan(5 * degree);
+  sizes.far_m = H / 4;
+  for (const double angle_deg : {120.0, 170.0})
+  {
+    const fem::RimEndGeometry geometry{0.01, angle_deg * degree, edge_radius, H, 3 * H, false};
+    const fem::SceneMesh scene = fem::build_rim_end_mesh(MPI_COMM_WORLD, geometry, sizes);
+    EXPECT_GT(scene.mesh->topology().index_map(3)->size_global(), 0) << angle_deg;
   }
 }
 

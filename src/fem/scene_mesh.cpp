@@ -147,7 +147,13 @@ void add_rim_end(const RimEndGeometry& g)
     throw ComputationError(fmt::format("rim end: the cut left {} volumes, not one", cut.size()));
   if (!(g.edge_radius_m > 0))
     return;
-  // The edge: the one curve that crosses the block (y from 0 to H) from the origin.
+  // The edge: the one curve from the origin across the block in y. On the
+  // cylinder sheet it rises with the sheet, and along a nearly level other
+  // face (a -> 180 deg) it runs out in x: at 170 deg, R = 2.4 H, it leaves
+  // the block through its end x = H at y = 0.9 H. So it is told by starting
+  // at x = 0 on the bottom and reaching past y = H / 2 (the contact stays
+  // within a few b of y = 0), which neither the far side's curve (x = -L)
+  // nor the sheet's and the cut's centre lines (y = 0) do.
   gmsh::vectorpair curves;
   gmsh::model::getEntities(curves, 1);
   std::vector<int> edges;
@@ -156,7 +162,7 @@ void add_rim_end(const RimEndGeometry& g)
   {
     double x0, y0, z0, x1, y1, z1;
     gmsh::model::getBoundingBox(dim, tag, x0, y0, z0, x1, y1, z1);
-    if (y0 < tol && y1 > H - tol && x0 > -0.5 * H && x1 < 0.5 * H && z0 < tol)
+    if (y0 < tol && y1 > 0.5 * H && x0 < tol && x1 > -tol && z0 < tol)
       edges.push_back(tag);
   }
   if (edges.size() != 1)
