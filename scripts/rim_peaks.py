@@ -103,7 +103,7 @@ def main():
         command = mpi + [rollcheck, "rim"] + body + ["--counter-face", args.counter_face] + extra
         # The cylinder keeps the preprint's proportions (height 2 r) when the
         # radius is scaled; its own default height (2 m) would make a rod.
-        if "--radius" in extra and "--height" not in extra and "--body" in body and body[body.index("--body") + 1] == "cylinder":
+        if body == ["--body", "cylinder"] and "--radius" in extra and "--height" not in extra:
             command += ["--height", str(2 * float(extra[extra.index("--radius") + 1]))]
         if not args.tabulate:
             run(command, path, env)

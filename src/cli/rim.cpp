@@ -215,13 +215,13 @@ std::string loop_ratio_text(const study::RimLoopResult& r)
 {
   if (const auto ratio = r.loop_end_to_interior())
   {
-    const std::size_t finished = r.loop.end_aware.empty() ? 0 : r.loop.end_aware[0].finished_ends;
-    if (finished == 0)
-      return fmt::format("{:.3f}", *ratio);
+    // A ratio implies end-aware scores (loop_end_to_interior).
     const study::EndAwareScores& all = r.loop.end_aware[0];
+    if (all.finished_ends == 0)
+      return fmt::format("{:.3f}", *ratio);
     return fmt::format("{:.3f}; {} of the {} loaded ends lie near a sheet's apex, taken at R = r_e (the finish's "
                        "least radius): their largest {:.3f}, the other ends' {:.3f}",
-                       *ratio, finished, r.loop.loaded_ends, all.finished_peak_pa / r.loop.fem_peak_pa,
+                       *ratio, all.finished_ends, r.loop.loaded_ends, all.finished_peak_pa / r.loop.fem_peak_pa,
                        all.unfinished_peak_pa / r.loop.fem_peak_pa);
   }
   if (r.loop.end_aware.empty() || r.loop.loaded_ends == 0)
