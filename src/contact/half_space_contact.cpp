@@ -1,0 +1,272 @@
+#include "contact/half_space_contact.h"
+#include "core/error.h"
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+#include <numbers>
+#include <numeric>
+#include <unsupported/Eigen/FFT>
+
+namespace rollcheck::contact
+{
+namespace
+{
+using Complex = std::complex<double>;
+
+/// The integral of 1 / r over [0, s] x [0, t], odd in s and in t.
+double love_term(double s, double t)
+{
+  double value = 0;
+  if (s != 0)
+    value += s * std::asinh(t / std::abs(s));
+  if (t != 0)
+    value += t * std::asinh(s / std::abs(t));
+  return value;
+}
+
+/// The smallest 2^a 3^b 5^c >= n (the FFT's fast sizes).
+std::size_t fast_fft_size(std::size_t n)
+{
+  for (std::size_t m = std::max<std::size_t>(n, 1);; ++m)
+  {
+    std::size_t r = m;
+    for (std::size_t f : {2, 3, 5})
+      while (r % f == 0)
+        r /= f;
+    if (r == 1)
+      return m;
+  }
+}
+
+/// In-place 2D FFT of a row-major nx x ny array (rows along y), forward or
+/// inverse (unscaled).
+void fft_2d(std::vector<Complex>& data, std::size_t nx, std::size_t ny, bool inverse)
+{
+  Eigen::FFT<double> fft;
+  fft.SetFlag(Eigen::FFT<double>::Unscaled);
+  std::vector<Complex> in(std::max(nx, ny)), out(std::max(nx, ny));
+  const auto transform = [&](std::size_t n) {
+    if (inverse)
+      fft.inv(out.data(), in.data(), static_cast<Eigen::DenseIndex>(n));
+    else
+      fft.fwd(out.data(), in.data(), static_cast<Eigen::DenseIndex>(n));
+  };
+  for (std::size_t i = 0; i < nx; ++i)
+  {
+    std::copy_n(data.begin() + static_cast<std::ptrdiff_t>(i * ny), ny, in.begin());
+    transform(ny);
+    std::copy_n(out.begin(), ny, data.begin() + static_cast<std::ptrdiff_t>(i * ny));
+  }
+  for (std::size_t j = 0; j < ny; ++j)
+  {
+    for (std::size_t i = 0; i < nx; ++i)
+      in[i] = data[i * ny + j];
+    transform(nx);
+    for (std::size_t i = 0; i < nx; ++i)
+      data[i * ny + j] = out[i];
+  }
+}
+} // namespace
+
+double cell_deflection(double half_x_m, double half_y_m, double x_m, double y_m, double effective_modulus_pa)
+{
+  const double a = half_x_m, c = half_y_m;
+  return (love_term(x_m + a, y_m + c) - love_term(x_m + a, y_m - c) - love_term(x_m - a, y_m + c)
+          + love_term(x_m - a, y_m - c))
+         / (std::numbers::pi * effective_modulus_pa);
+}
+
+HalfSpaceDeflection::HalfSpaceDeflection(const HalfSpaceGrid& grid, double effective_modulus_pa)
+    : grid_(grid), padded_x_(fast_fft_size(2 * grid.nx)), padded_y_(fast_fft_size(2 * grid.ny))
+{
+  if (grid.nx == 0 || grid.ny == 0 || !(grid.cell_x_m > 0) || !(grid.cell_y_m > 0))
+    throw InputError(fmt::format("half-space contact: the grid needs cells ({} x {}) of positive size ({} x {} m)",
+                                 grid.nx, grid.ny, grid.cell_x_m, grid.cell_y_m));
+  if (!(effective_modulus_pa > 0) || !std::isfinite(effective_modulus_pa))
+    throw InputError(fmt::format("half-space contact: E* must be positive, got {} Pa", effective_modulus_pa));
+  // Circular layout: offsets 0..n-1 first, then -(n-1)..-1 at the end; the
+  // padding between never meets a cell of the grid.
+  const auto offset = [](std::size_t k, std::size_t n, std::size_t padded) -> double {
+    if (k < n)
+      return static_cast<double>(k);
+    if (k > padded - n)
+      return static_cast<double>(k) - static_cast<double>(padded);
+    return std::nan("");
+  };
+  kernel_spectrum_.assign(padded_x_ * padded_y_, 0.0);
+  for (std::size_t i = 0; i < padded_x_; ++i)
+  {
+    const double di = offset(i, grid.nx, padded_x_);
+    if (std::isnan(di))
+      continue;
+    for (std::size_t j = 0; j < padded_y_; ++j)
+    {
+      const double dj = offset(j, grid.ny, padded_y_);
+      if (!std::isnan(dj))
+        kernel_spectrum_[i * padded_y_ + j] = cell_deflection(grid.cell_x_m / 2, grid.cell_y_m / 2,
+                                                              di * grid.cell_x_m, dj * grid.cell_y_m,
+                                                              effective_modulus_pa);
+    }
+  }
+  fft_2d(kernel_spectrum_, padded_x_, padded_y_, false);
+  // The inverse transform's 1 / N, once.
+  const double scale = 1.0 / static_cast<double>(padded_x_ * padded_y_);
+  for (Complex& k : kernel_spectrum_)
+    k *= scale;
+}
+
+std::vector<double> HalfSpaceDeflection::operator()(std::span<const double> pressure_pa) const
+{
+  if (pressure_pa.size() != grid_.size())
+    throw InputError(fmt::format("half-space contact: {} pressures for a grid of {} cells", pressure_pa.size(),
+                                 grid_.size()));
+  std::vector<Complex> work(padded_x_ * padded_y_, 0.0);
+  for (std::size_t i = 0; i < grid_.nx; ++i)
+    for (std::size_t j = 0; j < grid_.ny; ++j)
+      work[i * padded_y_ + j] = pressure_pa[i * grid_.ny + j];
+  fft_2d(work, padded_x_, padded_y_, false);
+  for (std::size_t k = 0; k < work.size(); ++k)
+    work[k] *= kernel_spectrum_[k];
+  fft_2d(work, padded_x_, padded_y_, true);
+  std::vector<double> deflection(grid_.size());
+  for (std::size_t i = 0; i < grid_.nx; ++i)
+    for (std::size_t j = 0; j < grid_.ny; ++j)
+      deflection[i * grid_.ny + j] = work[i * padded_y_ + j].real();
+  return deflection;
+}
+
+HalfSpaceContact solve_half_space_contact(const HalfSpaceDeflection& deflection, std::span<const double> gap_m,
+                                          double force_n, const HalfSpaceContactSettings& settings,
+                                          std::span<const double> initial_pressure_pa)
+{
+  const HalfSpaceGrid& grid = deflection.grid();
+  const std::size_t n = grid.size();
+  if (gap_m.size() != n)
+    throw InputError(fmt::format("half-space contact: {} gap values for a grid of {} cells", gap_m.size(), n));
+  if (!(force_n > 0) || !std::isfinite(force_n))
+    throw InputError(fmt::format("half-space contact: the force must be positive and finite, got {} N", force_n));
+  if (const auto bad = std::ranges::find_if(gap_m, [](double g) { return !std::isfinite(g); }); bad != gap_m.end())
+    throw InputError(fmt::format("half-space contact: the gap is not finite at cell {}", bad - gap_m.begin()));
+  const double area = grid.cell_area_m2();
+
+  std::vector<double> p(n, force_n / (area * static_cast<double>(n)));
+  if (!initial_pressure_pa.empty())
+  {
+    if (initial_pressure_pa.size() != n)
+      throw InputError("half-space contact: the initial pressure has the wrong size");
+    const double total = std::accumulate(initial_pressure_pa.begin(), initial_pressure_pa.end(), 0.0) * area;
+    if (total > 0)
+      for (std::size_t k = 0; k < n; ++k)
+        p[k] = std::max(0.0, initial_pressure_pa[k]) * force_n / total;
+  }
+
+  // Polonsky and Keer (1999), section 3: conjugate gradients on the loaded
+  // cells, the gap's mean over them the approach, the force rescaled each step.
+  std::vector<double> direction(n, 0.0), gap(n), p_old(n);
+  double gap_norm_old = 1.0;
+  bool conjugate = false;
+  HalfSpaceContact result;
+  for (int iteration = 1;; ++iteration)
+  {
+    const std::vector<double> u = deflection(p);
+    double mean = 0;
+    std::size_t loaded = 0;
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      gap[k] = gap_m[k] + u[k];
+      if (p[k] > 0)
+      {
+        mean += gap[k];
+        ++loaded;
+      }
+    }
+    if (loaded == 0)
+      throw ComputationError("half-space contact: no cell carries load");
+    mean /= static_cast<double>(loaded);
+    double gap_norm = 0;
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      gap[k] -= mean;
+      if (p[k] > 0)
+        gap_norm += gap[k] * gap[k];
+    }
+    for (std::size_t k = 0; k < n; ++k)
+      direction[k] = p[k] > 0 ? gap[k] + (conjugate ? gap_norm / gap_norm_old : 0.0) * direction[k] : 0.0;
+    gap_norm_old = gap_norm;
+    std::vector<double> response = deflection(direction);
+    double response_mean = 0;
+    for (std::size_t k = 0; k < n; ++k)
+      if (p[k] > 0)
+        response_mean += response[k];
+    response_mean /= static_cast<double>(loaded);
+    double numerator = 0, denominator = 0;
+    for (std::size_t k = 0; k < n; ++k)
+      if (p[k] > 0)
+      {
+        numerator += gap[k] * direction[k];
+        denominator += (response[k] - response_mean) * direction[k];
+      }
+    const double step = denominator != 0 ? numerator / denominator : 0.0;
+    p_old = p;
+    bool overlap = false;
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      if (p[k] > 0)
+        p[k] = std::max(0.0, p[k] - step * direction[k]);
+      else if (gap[k] < 0)
+      {
+        // An unloaded cell the surfaces pass through joins the contact.
+        p[k] = -step * gap[k];
+        overlap = true;
+      }
+    }
+    conjugate = !overlap;
+    const double total = std::accumulate(p.begin(), p.end(), 0.0) * area;
+    if (!(total > 0))
+      throw ComputationError("half-space contact: the iteration lost every loaded cell");
+    double change = 0;
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      p[k] *= force_n / total;
+      change += std::abs(p[k] - p_old[k]);
+    }
+    change *= area / force_n;
+    result.iterations = iteration;
+    result.change = change;
+    result.approach_m = mean;
+    if (change < settings.tolerance)
+      break;
+    if (iteration >= settings.max_iterations || !std::isfinite(change))
+      throw ComputationError(fmt::format("half-space contact: no convergence in {} iterations (change {:.3g}, "
+                                         "tolerance {:.3g})",
+                                         iteration, change, settings.tolerance));
+  }
+  result.deflection_m = deflection(p);
+  result.approach_m = 0;
+  std::size_t loaded = 0;
+  for (std::size_t k = 0; k < n; ++k)
+    if (p[k] > 0)
+    {
+      result.approach_m += gap_m[k] + result.deflection_m[k];
+      ++loaded;
+    }
+  result.approach_m /= static_cast<double>(loaded);
+  result.largest_gap_violation_m = -std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < n; ++k)
+    if (p[k] <= 0)
+      result.largest_gap_violation_m =
+          std::max(result.largest_gap_violation_m, result.approach_m - gap_m[k] - result.deflection_m[k]);
+  for (std::size_t i = 0; i < grid.nx; ++i)
+    for (std::size_t j = 0; j < grid.ny; ++j)
+    {
+      const bool border = i == 0 || j == 0 || j + 1 == grid.ny || (i + 1 == grid.nx && !settings.contact_continues_past_last_x);
+      if (border && p[i * grid.ny + j] > 0)
+        throw ComputationError(fmt::format("half-space contact: the contact reaches the grid's border at cell ({}, {}) "
+                                           "(x = {:.4g} m, y = {:.4g} m): the grid must hold the whole contact",
+                                           i, j, grid.x(i), grid.y(j)));
+    }
+  result.pressure_pa = std::move(p);
+  return result;
+}
+} // namespace rollcheck::contact
