@@ -1,0 +1,76 @@
+#include "geometry/rolling_ball_opening.h"
+#include "core/error.h"
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+namespace rollcheck::geometry
+{
+namespace
+{
+/// One pass along a line of n values `stride` apart: out[a] = best over u of
+/// (in[u] -+ (u - a)^2 h^2 / (2 r)), the max with `subtract` (erosion), the
+/// min without (dilation).
+void parabola_pass(const double* in, double* out, std::size_t n, std::size_t stride, double cell_m, double radius_m,
+                   bool subtract)
+{
+  const double curvature = cell_m * cell_m / (2 * radius_m);
+  const double sign = subtract ? -1.0 : 1.0;
+  // Minimised: sign (in[u] + sign curvature d^2), d = u - a; a max for the erosion.
+  const auto objective = [&](std::size_t u, std::size_t a) {
+    const double d = static_cast<double>(u) - static_cast<double>(a);
+    return sign * in[u * stride] + curvature * d * d;
+  };
+  for (std::size_t a = 0; a < n; ++a)
+  {
+    std::size_t best = 0;
+    for (std::size_t u = 1; u < n; ++u)
+      if (objective(u, a) < objective(best, a))
+        best = u;
+    double value = objective(best, a);
+    // The optimum lies between samples: the vertex of the parabola through
+    // the best sample and its neighbours (error O(h^3) instead of O(h^2)),
+    // where the objective is smooth there (equal second differences about
+    // it; at a kink the best sample is the optimum).
+    if (best > 1 && best + 2 < n)
+    {
+      const auto bend_at = [&](std::size_t u) {
+        return objective(u - 1, a) - 2 * objective(u, a) + objective(u + 1, a);
+      };
+      const double bend = bend_at(best);
+      const double left = objective(best - 1, a), right = objective(best + 1, a);
+      if (bend > 0 && std::abs(bend_at(best - 1) - bend) < 0.25 * bend && std::abs(bend_at(best + 1) - bend) < 0.25 * bend)
+        value -= (right - left) * (right - left) / (8 * bend);
+    }
+    out[a * stride] = sign * value;
+  }
+}
+
+std::vector<double> separable_pass(std::span<const double> field, std::size_t nx, std::size_t ny, double cell_x_m,
+                                   double cell_y_m, double radius_m, bool subtract)
+{
+  std::vector<double> along_y(field.size()), result(field.size());
+  for (std::size_t i = 0; i < nx; ++i)
+    parabola_pass(field.data() + i * ny, along_y.data() + i * ny, ny, 1, cell_y_m, radius_m, subtract);
+  for (std::size_t j = 0; j < ny; ++j)
+    parabola_pass(along_y.data() + j, result.data() + j, nx, ny, cell_x_m, radius_m, subtract);
+  return result;
+}
+} // namespace
+
+std::vector<double> rolling_ball_opening(std::span<const double> height_m, std::size_t nx, std::size_t ny,
+                                         double cell_x_m, double cell_y_m, double radius_m)
+{
+  if (height_m.size() != nx * ny || nx == 0 || ny == 0)
+    throw InputError(fmt::format("rolling-ball opening: {} heights for a grid of {} x {}", height_m.size(), nx, ny));
+  if (!(radius_m > 0) || !std::isfinite(radius_m) || !(cell_x_m > 0) || !(cell_y_m > 0))
+    throw InputError(fmt::format("rolling-ball opening: the ball's radius ({} m) and the cells ({} x {} m) must be "
+                                 "positive",
+                                 radius_m, cell_x_m, cell_y_m));
+  if (std::ranges::any_of(height_m, [](double z) { return !std::isfinite(z); }))
+    throw InputError("rolling-ball opening: a height is not finite");
+  const std::vector<double> eroded = separable_pass(height_m, nx, ny, cell_x_m, cell_y_m, radius_m, true);
+  return separable_pass(eroded, nx, ny, cell_x_m, cell_y_m, radius_m, false);
+}
+} // namespace rollcheck::geometry

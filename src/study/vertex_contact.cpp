@@ -1,0 +1,370 @@
+#include "study/vertex_contact.h"
+#include "contact/half_space_contact.h"
+#include "contact/hertz.h"
+#include "core/error.h"
+#include "geometry/rolling_ball_opening.h"
+#include "geometry/two_circle_hull_height.h"
+#include <Eigen/Dense>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+namespace rollcheck::study
+{
+namespace
+{
+/// The oloid (r1) standing on the ruling from P = A(-60 deg) to B's far
+/// point, P the frame's origin (scripts/oloid_vertex.py's frame).
+struct OloidAtVertex
+{
+  geometry::SpaceCircle a;
+  geometry::SpaceCircle b;
+  geometry::GroundFrame ground;
+  geometry::SegmentSearch search;
+  double ruling_length_m = 0;
+  double centre_of_pressure = 0;
+
+  explicit OloidAtVertex(double r1)
+      : a{Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(), r1},
+        b{Eigen::Vector3d(r1, 0, 0), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), r1}
+  {
+    const double apex_t = -std::numbers::pi / 3;
+    const Eigen::Vector3d p = a.at(apex_t), end(2 * r1, 0, 0), centre_of_mass(r1 / 2, 0, 0);
+    ground.origin = p;
+    ground.down = p / r1;
+    ground.along = (end - p).normalized();
+    ground.across = ground.down.cross(ground.along);
+    ruling_length_m = (end - p).norm();
+    centre_of_pressure = (centre_of_mass - p).dot(ground.along) / ruling_length_m;
+    // The surface within a few r_e of P lies on segments from A within
+    // 0.15 rad (1.5 mm at r1 = 10 mm) of P.
+    search = {apex_t - 0.15, apex_t + 0.15, 48};
+  }
+
+  double height(double along_m, double across_m) const
+  {
+    return geometry::two_circle_hull_height(a, b, ground, search, along_m, across_m);
+  }
+
+  /// The sheet's radius across the ruling at x' from P, from the rise at
+  /// +-y0 (their mean cancels the sheet's cubic term).
+  double sheet_radius(double along_m) const
+  {
+    const double y0 = 1e-3 * ruling_length_m;
+    return y0 * y0 / (height(along_m, y0) + height(along_m, -y0));
+  }
+};
+
+/// The contact locus's no-tension linear rule for c < 1/3: the load on
+/// [0, 3 c L], largest at P.
+struct LocusLoad
+{
+  double apex_n_per_m = 0;
+  double loaded_length_m = 0;
+
+  double at(double along_m) const
+  {
+    return along_m < 0 || along_m > loaded_length_m ? 0.0 : apex_n_per_m * (1 - along_m / loaded_length_m);
+  }
+  /// The load over [0, x] and its first moment about P.
+  double load_to(double x) const
+  {
+    x = std::clamp(x, 0.0, loaded_length_m);
+    return apex_n_per_m * (x - x * x / (2 * loaded_length_m));
+  }
+  double moment_to(double x) const
+  {
+    x = std::clamp(x, 0.0, loaded_length_m);
+    return apex_n_per_m * (x * x / 2 - x * x * x / (3 * loaded_length_m));
+  }
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+VertexContactLevel solve_level(const VertexContactSettings& s, const OloidAtVertex& oloid, const LocusLoad& locus,
+                               double effective_modulus, double half_width, double cell, double& largest_slope,
+                               double& apex_lift)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const auto cells_over = [&](double length) { return static_cast<std::size_t>(std::ceil(length / cell)); };
+  const double before = s.before_over_half_width * half_width, after = s.after_over_half_width * half_width;
+
+  // The prescribed line Hertz beyond the window: R(x') at stations 50 um
+  // apart, interpolated.
+  const double station_step = std::min(5e-5, locus.loaded_length_m / 50);
+  std::vector<double> station_radius;
+  for (double x = 0; x <= locus.loaded_length_m + station_step; x += station_step)
+    station_radius.push_back(oloid.sheet_radius(std::max(x, station_step / 4)));
+  const auto radius_at = [&](double x) {
+    const double k = std::clamp(x / station_step, 0.0, static_cast<double>(station_radius.size() - 1) - 1e-9);
+    const auto i = static_cast<std::size_t>(k);
+    return station_radius[i] + (k - static_cast<double>(i)) * (station_radius[i + 1] - station_radius[i]);
+  };
+  double widest = s.across_over_half_width * half_width;
+  for (double x = after; x < locus.loaded_length_m; x += station_step)
+    widest = std::max(widest, 1.25 * contact::line_contact(locus.at(x), radius_at(x), effective_modulus,
+                                                           s.poisson_ratio).half_width_m);
+  const std::size_t half_across = cells_over(widest);
+  const std::size_t ny = 2 * half_across + 1;
+  const std::size_t window_nx = cells_over(before) + cells_over(after) + 1;
+  const std::size_t first_cell = cells_over(before); // x' = 0 at this column
+  const std::size_t outer_nx = first_cell + cells_over(1.05 * locus.loaded_length_m) + 1;
+  const contact::HalfSpaceGrid outer_grid{outer_nx, ny, cell, cell, -static_cast<double>(first_cell) * cell,
+                                          -static_cast<double>(half_across) * cell};
+  const contact::HalfSpaceGrid window{window_nx, ny, cell, cell, outer_grid.first_x_m, outer_grid.first_y_m};
+
+  const contact::HalfSpaceDeflection outer_influence(outer_grid, effective_modulus);
+  const auto deflection_beyond = [&](const LocusLoad& load) {
+    std::vector<double> prescribed(outer_grid.size(), 0.0);
+    for (std::size_t i = window_nx; i < outer_nx; ++i)
+    {
+      const double x = outer_grid.x(i), q = load.at(x);
+      if (q <= 0)
+        continue;
+      const contact::LineHertz hertz = contact::line_contact(q, radius_at(x), effective_modulus, s.poisson_ratio);
+      double column = 0;
+      for (std::size_t j = 0; j < ny; ++j)
+        column += prescribed[i * ny + j] =
+            contact::pressure_profile(hertz.peak_pressure_pa, hertz.half_width_m, outer_grid.y(j));
+      // Each column carries q exactly, whatever its cells resolve of b.
+      if (column > 0)
+        for (std::size_t j = 0; j < ny; ++j)
+          prescribed[i * ny + j] *= q / (column * cell);
+    }
+    return outer_influence(prescribed);
+  };
+
+  // The rounded surface: the hull on the window and a margin of 0.6 r_e
+  // (where the rolling ball touches it), opened by the ball.
+  const std::size_t margin = cells_over(0.6 * s.edge_radius_m);
+  const std::size_t surface_nx = window_nx + 2 * margin, surface_ny = ny + 2 * margin;
+  std::vector<double> hull(surface_nx * surface_ny);
+  for (std::size_t i = 0; i < surface_nx; ++i)
+    for (std::size_t j = 0; j < surface_ny; ++j)
+    {
+      const double z = oloid.height(window.first_x_m + (static_cast<double>(i) - static_cast<double>(margin)) * cell,
+                                    window.first_y_m + (static_cast<double>(j) - static_cast<double>(margin)) * cell);
+      if (!std::isfinite(z))
+        throw ComputationError("vertex contact: the hull's surface was not found over the window (search range)");
+      hull[i * surface_ny + j] = z;
+    }
+  const std::vector<double> rounded =
+      geometry::rolling_ball_opening(hull, surface_nx, surface_ny, cell, cell, s.edge_radius_m);
+  const auto surface = [&](std::size_t i, std::size_t j) { return rounded[(i + margin) * surface_ny + j + margin]; };
+
+  std::vector<double> gap(window.size());
+  const contact::HalfSpaceDeflection deflection(window, effective_modulus);
+  contact::HalfSpaceContactSettings solver;
+  solver.contact_continues_past_last_x = true;
+  VertexContactLevel level;
+  level.cell_m = cell;
+  level.cells = window.size();
+  contact::HalfSpaceContact solved;
+  // The window shares the counter-face's approach and tilt with the ruling
+  // beyond it: both are set (through the window's force and the tilt, gap +
+  // tilt x') so that the window carries the ruling's load and moment over its
+  // matching zone [0.5, 0.9] of `after`, where the end no longer shows.
+  const double zone_start = 0.5 * after, zone_end = 0.9 * after;
+  Eigen::Vector2d unknowns(1.0, 0.0);
+  Eigen::Matrix2d jacobian;
+  bool has_jacobian = false;
+  const auto match_window = [&](const LocusLoad& load, const std::vector<double>& beyond) {
+    const double zone_load = load.load_to(zone_end) - load.load_to(zone_start);
+    const double zone_arm = (load.moment_to(zone_end) - load.moment_to(zone_start)) / zone_load;
+    const auto mismatch = [&](const Eigen::Vector2d& unknowns) {
+      // unknowns: the window's force over the ruling's on it, the tilt in b_P^2 / (r_e after).
+      const double tilt = unknowns[1] * half_width * half_width / (s.edge_radius_m * after);
+      for (std::size_t i = 0; i < window_nx; ++i)
+        for (std::size_t j = 0; j < ny; ++j)
+          gap[i * ny + j] = surface(i, j) + beyond[i * ny + j] + tilt * window.x(i);
+      solved = contact::solve_half_space_contact(deflection, gap, unknowns[0] * load.load_to(after), solver,
+                                                 solved.pressure_pa);
+      level.iterations += solved.iterations;
+      ++level.solves;
+      double zone_force = 0, moment = 0;
+      for (std::size_t i = 0; i < window_nx; ++i)
+        if (const double x = window.x(i); x >= zone_start && x <= zone_end)
+          for (std::size_t j = 0; j < ny; ++j)
+          {
+            zone_force += solved.pressure_pa[i * ny + j] * cell * cell;
+            moment += solved.pressure_pa[i * ny + j] * cell * cell * x;
+          }
+      return Eigen::Vector2d(zone_force / zone_load - 1, (moment / zone_force - zone_arm) / (zone_end - zone_start));
+    };
+    // Broyden's method from a finite-difference Jacobian, both kept from one
+    // balance iteration to the next.
+    Eigen::Vector2d residual = mismatch(unknowns);
+    if (!has_jacobian)
+      for (int k = 0; k < 2; ++k)
+      {
+        Eigen::Vector2d step = Eigen::Vector2d::Zero();
+        step[k] = k == 0 ? 0.02 : 0.1;
+        jacobian.col(k) = (mismatch(unknowns + step) - residual) / step[k];
+      }
+    has_jacobian = true;
+    for (int k = 0; residual.cwiseAbs().maxCoeff() > 1e-4; ++k)
+    {
+      if (k > 30)
+        throw ComputationError(fmt::format("vertex contact: the window did not match the ruling beyond it (load off "
+                                           "by {:.3g}, moment arm by {:.3g} of the zone)",
+                                           residual[0], residual[1]));
+      const Eigen::Vector2d step = -jacobian.colPivHouseholderQr().solve(residual);
+      unknowns += step;
+      const Eigen::Vector2d next = mismatch(unknowns);
+      jacobian += (next - residual - jacobian * step) * step.transpose() / step.squaredNorm();
+      residual = next;
+    }
+  };
+  // The body's balance: the window's load and the ruling's beyond it carry F
+  // with its centre at the centre of mass's foot. The ruling beyond takes
+  // the no-tension linear rule, q falling to 0 at its loaded length l: a
+  // triangle on [after, l], whose load centre is after + (l - after) / 3.
+  const double force = locus.load_to(locus.loaded_length_m);
+  const double force_moment = locus.moment_to(locus.loaded_length_m);
+  LocusLoad load = locus;
+  for (int balance = 0;; ++balance)
+  {
+    match_window(load, deflection_beyond(load));
+    double window_force = 0, window_moment = 0;
+    for (std::size_t i = 0; i < window_nx; ++i)
+      for (std::size_t j = 0; j < ny; ++j)
+      {
+        window_force += solved.pressure_pa[i * ny + j] * cell * cell;
+        window_moment += solved.pressure_pa[i * ny + j] * cell * cell * window.x(i);
+      }
+    const double beyond_force = force - window_force, beyond_moment = force_moment - window_moment;
+    const double length = after + 3 * (beyond_moment / beyond_force - after);
+    LocusLoad next{2 * length * beyond_force / ((length - after) * (length - after)), length};
+    level.window_load_change = window_force / locus.load_to(after) - 1;
+    const bool settled = std::abs(next.apex_n_per_m / load.apex_n_per_m - 1) < 1e-4
+                         && std::abs(next.loaded_length_m / load.loaded_length_m - 1) < 1e-4;
+    if (!(length > after) || next.loaded_length_m > outer_grid.x(outer_nx - 1))
+      throw ComputationError("vertex contact: the ruling beyond the window cannot balance the body");
+    load = next;
+    if (settled)
+      break;
+    if (balance > 20)
+      throw ComputationError("vertex contact: the body's balance did not settle");
+  }
+  level.balanced_apex_line_load_n_per_m = load.apex_n_per_m;
+
+  // Readings: the peak, the columns, the far station against line Hertz.
+  const auto peak = std::ranges::max_element(solved.pressure_pa);
+  const auto k_peak = static_cast<std::size_t>(peak - solved.pressure_pa.begin());
+  level.peak_pressure_pa = *peak;
+  level.peak_along_m = window.x(k_peak / ny);
+  level.peak_across_m = window.y(k_peak % ny);
+  level.contact_start_m = after;
+  for (std::size_t i = 0; i < window_nx; ++i)
+  {
+    double column_peak = 0, column_load = 0;
+    for (std::size_t j = 0; j < ny; ++j)
+    {
+      const double p = solved.pressure_pa[i * ny + j];
+      column_peak = std::max(column_peak, p);
+      column_load += p * cell;
+      if (p > 0)
+      {
+        level.contact_start_m = std::min(level.contact_start_m, window.x(i));
+        // Half-space theory's small slopes, over the loaded cells.
+        if (i > 0 && i + 1 < window_nx && j > 0 && j + 1 < ny)
+          largest_slope = std::max(largest_slope, std::hypot(surface(i + 1, j) - surface(i - 1, j),
+                                                             surface(i, j + 1) - surface(i, j - 1))
+                                                      / (2 * cell));
+      }
+    }
+    level.station_m.push_back(window.x(i));
+    level.station_peak_pa.push_back(column_peak);
+    level.station_load_n_per_m.push_back(column_load);
+  }
+  const std::size_t far = first_cell + cells_over(0.75 * after);
+  level.far_peak_pa = level.station_peak_pa[far];
+  level.far_line_hertz_pa = contact::line_contact(load.at(window.x(far)), radius_at(window.x(far)),
+                                                  effective_modulus, s.poisson_ratio)
+                                .peak_pressure_pa;
+  apex_lift = surface(first_cell, half_across);
+  level.wall_s = seconds_since(start);
+  return level;
+}
+} // namespace
+
+VertexContact vertex_contact(const VertexContactSettings& s)
+{
+  for (const auto& [value, name] : {std::pair{s.radius_m, "--radius"}, {s.normal_load_n, "--load"},
+                                    {s.edge_radius_m, "--edge-radius"}, {s.youngs_modulus_pa, "--youngs-modulus"},
+                                    {s.cells_per_half_width, "--cells"}, {s.before_over_half_width, "--before"},
+                                    {s.after_over_half_width, "--after"}, {s.across_over_half_width, "--across"}})
+    if (!(value > 0) || !std::isfinite(value))
+      throw InputError(fmt::format("vertex: {} must be positive and finite, got {}", name, value));
+  if (!(s.poisson_ratio >= 0 && s.poisson_ratio < 0.5))
+    throw InputError(fmt::format("vertex: --poisson-ratio must lie in [0, 0.5), got {}", s.poisson_ratio));
+  if (s.levels < 1)
+    throw InputError("vertex: --levels must be at least 1");
+
+  const OloidAtVertex oloid(s.radius_m);
+  VertexContact result;
+  result.ruling_length_m = oloid.ruling_length_m;
+  result.centre_of_pressure = oloid.centre_of_pressure;
+  const LocusLoad locus{2 * s.normal_load_n / (3 * oloid.centre_of_pressure * oloid.ruling_length_m),
+                        3 * oloid.centre_of_pressure * oloid.ruling_length_m};
+  result.apex_line_load_n_per_m = locus.apex_n_per_m;
+  result.effective_modulus_pa = contact::effective_modulus(s.youngs_modulus_pa, s.poisson_ratio, s.steel_counter_face);
+  const contact::LineHertz at_apex =
+      contact::line_contact(locus.apex_n_per_m, s.edge_radius_m, result.effective_modulus_pa, s.poisson_ratio);
+  result.half_width_m = at_apex.half_width_m;
+  result.line_hertz_peak_pa = at_apex.peak_pressure_pa;
+  for (int k = 0; k < s.levels; ++k)
+  {
+    const double cell = result.half_width_m / (s.cells_per_half_width * std::pow(2.0, k));
+    result.levels.push_back(solve_level(s, oloid, locus, result.effective_modulus_pa, result.half_width_m, cell,
+                                        result.largest_slope, result.apex_lift_m));
+  }
+  if (result.levels.size() >= 2)
+  {
+    result.last_change =
+        result.levels.back().peak_pressure_pa / result.levels[result.levels.size() - 2].peak_pressure_pa - 1;
+    result.converged = std::abs(result.last_change) < s.tolerance;
+  }
+  return result;
+}
+
+nlohmann::json to_json(const VertexContact& r)
+{
+  nlohmann::json levels = nlohmann::json::array();
+  for (const VertexContactLevel& l : r.levels)
+    levels.push_back({{"cell_m", l.cell_m},
+                      {"cells", l.cells},
+                      {"iterations", l.iterations},
+                      {"solves", l.solves},
+                      {"peak_pressure_pa", l.peak_pressure_pa},
+                      {"peak_along_m", l.peak_along_m},
+                      {"peak_across_m", l.peak_across_m},
+                      {"contact_start_m", l.contact_start_m},
+                      {"window_load_change", l.window_load_change},
+                      {"balanced_apex_line_load_n_per_m", l.balanced_apex_line_load_n_per_m},
+                      {"far_peak_pa", l.far_peak_pa},
+                      {"far_line_hertz_pa", l.far_line_hertz_pa},
+                      {"wall_s", l.wall_s},
+                      {"station_m", l.station_m},
+                      {"station_peak_pa", l.station_peak_pa},
+                      {"station_load_n_per_m", l.station_load_n_per_m}});
+  return {{"ruling_length_m", r.ruling_length_m},
+          {"centre_of_pressure", r.centre_of_pressure},
+          {"apex_line_load_n_per_m", r.apex_line_load_n_per_m},
+          {"effective_modulus_pa", r.effective_modulus_pa},
+          {"half_width_m", r.half_width_m},
+          {"line_hertz_peak_pa", r.line_hertz_peak_pa},
+          {"largest_slope", r.largest_slope},
+          {"apex_lift_m", r.apex_lift_m},
+          {"peak_pressure_pa", r.levels.back().peak_pressure_pa},
+          {"last_change", r.last_change},
+          {"converged", r.converged},
+          {"levels", levels}};
+}
+} // namespace rollcheck::study
