@@ -93,3 +93,25 @@ TEST(FinishedSurface, RollingBallRoundsACreaseAndLeavesAGentleSurface)
   EXPECT_THROW(geometry::rolling_ball_opening(bowl, n, n, cell, cell, -r), InputError);
   EXPECT_THROW(geometry::rolling_ball_opening(bowl, n + 1, n, cell, cell, r), InputError);
 }
+
+TEST(FinishedSurface, RollingBallRoundsACreaseBetweenSamples)
+{
+  // The crease z = k |y - y0| with y0 a third of a cell off the grid: the
+  // rounded surface k^2 r / 2 + (y - y0)^2 / (2 r) needs the crease's
+  // position between samples: second order, within h^2 / r (the
+  // first-order error k h / 3 without it is 27 times that).
+  const double k = 0.2, r = 4e-4, cell = 1e-6, y0 = cell / 3;
+  const std::size_t nx = 4, ny = 401;
+  const auto y_of = [&](std::size_t j) { return (static_cast<double>(j) - 200) * cell; };
+  std::vector<double> crease(nx * ny);
+  for (std::size_t i = 0; i < nx; ++i)
+    for (std::size_t j = 0; j < ny; ++j)
+      crease[i * ny + j] = k * std::abs(y_of(j) - y0);
+  const std::vector<double> rounded = geometry::rolling_ball_opening(crease, nx, ny, cell, cell, r);
+  for (std::size_t j = 100; j <= 300; ++j)
+  {
+    const double d = y_of(j) - y0;
+    const double expected = std::abs(d) <= k * r ? k * k * r / 2 + d * d / (2 * r) : k * std::abs(d);
+    EXPECT_NEAR(rounded[ny + j], expected, cell * cell / r) << "y = " << y_of(j);
+  }
+}

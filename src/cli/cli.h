@@ -99,7 +99,7 @@ void add_hertz_command(CLI::App& app);
 void add_fem_sds_command(CLI::App& app);
 void add_crease_command(CLI::App& app);
 void add_rim_command(CLI::App& app);
-void add_vertex_command(CLI::App& app);
+void add_flat_rim_command(CLI::App& app);
 void add_optimize_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_batch_command(CLI::App& app);

@@ -75,7 +75,7 @@ void add_fem_commands(CLI::App& app)
   add_fem_sds_command(app);
   add_crease_command(app);
   add_rim_command(app);
-  add_vertex_command(app);
+  add_flat_rim_command(app);
   add_run_command(app);
   add_batch_command(app);
   add_validate_command(app);

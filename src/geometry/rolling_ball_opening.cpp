@@ -29,19 +29,61 @@ void parabola_pass(const double* in, double* out, std::size_t n, std::size_t str
       if (objective(u, a) < objective(best, a))
         best = u;
     double value = objective(best, a);
-    // The optimum lies between samples: the vertex of the parabola through
-    // the best sample and its neighbours (error O(h^3) instead of O(h^2)),
-    // where the objective is smooth there (equal second differences about
-    // it; at a kink the best sample is the optimum).
+    // The optimum lies between samples. Where the objective is smooth about
+    // the best sample (equal second differences), it is the vertex of the
+    // parabola through the best sample and its neighbours (error O(h^3)).
+    // Where it has a kink beside the best sample (the dilation meets the
+    // erosion's crease between samples; a slope jump far above the sides'
+    // curvature), it is where the parabolas through three samples on either
+    // side meet, or a side's own vertex (error O(h^3) instead of O(h)).
+    const auto bend_at = [&](std::size_t u) {
+      return objective(u - 1, a) - 2 * objective(u, a) + objective(u + 1, a);
+    };
     if (best > 1 && best + 2 < n)
     {
-      const auto bend_at = [&](std::size_t u) {
-        return objective(u - 1, a) - 2 * objective(u, a) + objective(u + 1, a);
-      };
       const double bend = bend_at(best);
       const double left = objective(best - 1, a), right = objective(best + 1, a);
       if (bend > 0 && std::abs(bend_at(best - 1) - bend) < 0.25 * bend && std::abs(bend_at(best + 1) - bend) < 0.25 * bend)
         value -= (right - left) * (right - left) / (8 * bend);
+    }
+    for (const std::size_t kink : {best - 1, best}) // a kink between samples `kink` and `kink + 1`
+    {
+      if (best < 1 || kink < 2 || kink + 3 >= n)
+        continue;
+      // t in cells from sample `kink`: left side on t = -2, -1, 0, right on 1, 2, 3.
+      const double l0 = objective(kink, a), l_slope = (objective(kink, a) - objective(kink - 2, a)) / 2;
+      const double l_bend = bend_at(kink - 1);
+      const double r0 = objective(kink + 2, a), r_slope = (objective(kink + 3, a) - objective(kink + 1, a)) / 2;
+      const double r_bend = bend_at(kink + 2);
+      const auto left_side = [&](double t) { return l0 + (l_slope + l_bend) * t + l_bend / 2 * t * t; };
+      const auto right_side = [&](double t) {
+        const double d = t - 2;
+        return r0 + r_slope * d + r_bend / 2 * d * d;
+      };
+      const double jump = (r_slope - 1.5 * r_bend) - (l_slope + 1.5 * l_bend); // the sides' slopes at t = 1/2
+      if (!(jump > 8 * std::max({std::abs(l_bend), std::abs(r_bend), 1e-300})))
+        continue;
+      // left_side - right_side = A t^2 + B t + C on [0, 1].
+      const double A = (l_bend - r_bend) / 2, B = (l_slope + l_bend) - (r_slope - 2 * r_bend);
+      const double C = l0 - (r0 - 2 * r_slope + 2 * r_bend);
+      std::vector<double> roots;
+      if (std::abs(A) < 1e-14 * (std::abs(B) + std::abs(C)))
+        roots.push_back(-C / B);
+      else if (const double disc = B * B - 4 * A * C; disc >= 0)
+        for (const double sgn : {-1.0, 1.0})
+          roots.push_back((-B + sgn * std::sqrt(disc)) / (2 * A));
+      for (const double t : roots)
+        if (t >= 0 && t <= 1)
+        {
+          value = std::min(value, left_side(t));
+          // A side's own minimum on its side of the kink.
+          if (l_bend > 0)
+            if (const double v = -(l_slope + l_bend) / l_bend; v > -1 && v < t)
+              value = std::min(value, left_side(v));
+          if (r_bend > 0)
+            if (const double v = 2 - r_slope / r_bend; v > t && v < 2)
+              value = std::min(value, right_side(v));
+        }
     }
     out[a * stride] = sign * value;
   }

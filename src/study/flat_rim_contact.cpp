@@ -1,4 +1,4 @@
-#include "study/vertex_contact.h"
+#include "study/flat_rim_contact.h"
 #include "contact/half_space_contact.h"
 #include "contact/hertz.h"
 #include "core/error.h"
@@ -7,6 +7,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
+#include <functional>
+#include <memory>
 #include <cmath>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -58,28 +60,40 @@ struct OloidAtVertex
   }
 };
 
-/// The contact locus's no-tension linear rule for c < 1/3: the load on
-/// [0, 3 c L], largest at P.
-struct LocusLoad
+/// A line load along the ruling from the end (x' = 0): q(x') = at_end +
+/// slope x' on [0, length], 0 elsewhere.
+struct LineLoad
 {
-  double apex_n_per_m = 0;
-  double loaded_length_m = 0;
+  double at_end_n_per_m = 0;
+  double slope_n_per_m2 = 0;
+  double length_m = 0;
 
-  double at(double along_m) const
-  {
-    return along_m < 0 || along_m > loaded_length_m ? 0.0 : apex_n_per_m * (1 - along_m / loaded_length_m);
-  }
-  /// The load over [0, x] and its first moment about P.
+  double at(double x) const { return x < 0 || x > length_m ? 0.0 : at_end_n_per_m + slope_n_per_m2 * x; }
+  /// The load over [0, x] and its first moment about the end.
   double load_to(double x) const
   {
-    x = std::clamp(x, 0.0, loaded_length_m);
-    return apex_n_per_m * (x - x * x / (2 * loaded_length_m));
+    x = std::clamp(x, 0.0, length_m);
+    return at_end_n_per_m * x + slope_n_per_m2 * x * x / 2;
   }
   double moment_to(double x) const
   {
-    x = std::clamp(x, 0.0, loaded_length_m);
-    return apex_n_per_m * (x * x / 2 - x * x * x / (3 * loaded_length_m));
+    x = std::clamp(x, 0.0, length_m);
+    return at_end_n_per_m * x * x / 2 + slope_n_per_m2 * x * x * x / 3;
   }
+  /// The no-tension linear rule's triangle: `at_end` at the end, 0 at `length`.
+  static LineLoad triangle(double at_end, double length) { return {at_end, -at_end / length, length}; }
+};
+
+/// One flat rim end: the hull's surface near it, the sheet's radius across
+/// the ruling beyond the window, and the ruling's line load.
+struct EndProblem
+{
+  std::function<double(double, double)> hull_height;
+  std::function<double(double)> sheet_radius;
+  LineLoad load;
+  /// Re-solve the ruling's load beyond the window so that the body balances
+  /// (the oloid); else the load beyond is held (an end of a long contact).
+  bool balance_body = false;
 };
 
 double seconds_since(std::chrono::steady_clock::time_point start)
@@ -87,9 +101,8 @@ double seconds_since(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-VertexContactLevel solve_level(const VertexContactSettings& s, const OloidAtVertex& oloid, const LocusLoad& locus,
-                               double effective_modulus, double half_width, double cell, double& largest_slope,
-                               double& apex_lift)
+FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double effective_modulus, double half_width,
+                         double cell, double& largest_slope, double& end_lift)
 {
   const auto start = std::chrono::steady_clock::now();
   const auto cells_over = [&](double length) { return static_cast<std::size_t>(std::ceil(length / cell)); };
@@ -97,30 +110,30 @@ VertexContactLevel solve_level(const VertexContactSettings& s, const OloidAtVert
 
   // The prescribed line Hertz beyond the window: R(x') at stations 50 um
   // apart, interpolated.
-  const double station_step = std::min(5e-5, locus.loaded_length_m / 50);
+  const double station_step = std::min(5e-5, end.load.length_m / 50);
   std::vector<double> station_radius;
-  for (double x = 0; x <= locus.loaded_length_m + station_step; x += station_step)
-    station_radius.push_back(oloid.sheet_radius(std::max(x, station_step / 4)));
+  for (double x = 0; x <= end.load.length_m + station_step; x += station_step)
+    station_radius.push_back(end.sheet_radius(std::max(x, station_step / 4)));
   const auto radius_at = [&](double x) {
     const double k = std::clamp(x / station_step, 0.0, static_cast<double>(station_radius.size() - 1) - 1e-9);
     const auto i = static_cast<std::size_t>(k);
     return station_radius[i] + (k - static_cast<double>(i)) * (station_radius[i + 1] - station_radius[i]);
   };
   double widest = s.across_over_half_width * half_width;
-  for (double x = after; x < locus.loaded_length_m; x += station_step)
-    widest = std::max(widest, 1.25 * contact::line_contact(locus.at(x), radius_at(x), effective_modulus,
+  for (double x = after; x < end.load.length_m; x += station_step)
+    widest = std::max(widest, 1.25 * contact::line_contact(end.load.at(x), radius_at(x), effective_modulus,
                                                            s.poisson_ratio).half_width_m);
   const std::size_t half_across = cells_over(widest);
   const std::size_t ny = 2 * half_across + 1;
   const std::size_t window_nx = cells_over(before) + cells_over(after) + 1;
   const std::size_t first_cell = cells_over(before); // x' = 0 at this column
-  const std::size_t outer_nx = first_cell + cells_over(1.05 * locus.loaded_length_m) + 1;
+  const std::size_t outer_nx = first_cell + cells_over(1.05 * end.load.length_m) + 1;
   const contact::HalfSpaceGrid outer_grid{outer_nx, ny, cell, cell, -static_cast<double>(first_cell) * cell,
                                           -static_cast<double>(half_across) * cell};
   const contact::HalfSpaceGrid window{window_nx, ny, cell, cell, outer_grid.first_x_m, outer_grid.first_y_m};
 
   const contact::HalfSpaceDeflection outer_influence(outer_grid, effective_modulus);
-  const auto deflection_beyond = [&](const LocusLoad& load) {
+  const auto deflection_beyond = [&](const LineLoad& load) {
     std::vector<double> prescribed(outer_grid.size(), 0.0);
     for (std::size_t i = window_nx; i < outer_nx; ++i)
     {
@@ -148,10 +161,10 @@ VertexContactLevel solve_level(const VertexContactSettings& s, const OloidAtVert
   for (std::size_t i = 0; i < surface_nx; ++i)
     for (std::size_t j = 0; j < surface_ny; ++j)
     {
-      const double z = oloid.height(window.first_x_m + (static_cast<double>(i) - static_cast<double>(margin)) * cell,
+      const double z = end.hull_height(window.first_x_m + (static_cast<double>(i) - static_cast<double>(margin)) * cell,
                                     window.first_y_m + (static_cast<double>(j) - static_cast<double>(margin)) * cell);
       if (!std::isfinite(z))
-        throw ComputationError("vertex contact: the hull's surface was not found over the window (search range)");
+        throw ComputationError("flat rim: the hull's surface was not found over the window (search range)");
       hull[i * surface_ny + j] = z;
     }
   const std::vector<double> rounded =
@@ -162,7 +175,7 @@ VertexContactLevel solve_level(const VertexContactSettings& s, const OloidAtVert
   const contact::HalfSpaceDeflection deflection(window, effective_modulus);
   contact::HalfSpaceContactSettings solver;
   solver.contact_continues_past_last_x = true;
-  VertexContactLevel level;
+  FlatRimLevel level;
   level.cell_m = cell;
   level.cells = window.size();
   contact::HalfSpaceContact solved;
@@ -174,7 +187,7 @@ VertexContactLevel solve_level(const VertexContactSettings& s, const OloidAtVert
   Eigen::Vector2d unknowns(1.0, 0.0);
   Eigen::Matrix2d jacobian;
   bool has_jacobian = false;
-  const auto match_window = [&](const LocusLoad& load, const std::vector<double>& beyond) {
+  const auto match_window = [&](const LineLoad& load, const std::vector<double>& beyond) {
     const double zone_load = load.load_to(zone_end) - load.load_to(zone_start);
     const double zone_arm = (load.moment_to(zone_end) - load.moment_to(zone_start)) / zone_load;
     const auto mismatch = [&](const Eigen::Vector2d& unknowns) {
@@ -211,7 +224,7 @@ VertexContactLevel solve_level(const VertexContactSettings& s, const OloidAtVert
     for (int k = 0; residual.cwiseAbs().maxCoeff() > 1e-4; ++k)
     {
       if (k > 30)
-        throw ComputationError(fmt::format("vertex contact: the window did not match the ruling beyond it (load off "
+        throw ComputationError(fmt::format("flat rim: the window did not match the ruling beyond it (load off "
                                            "by {:.3g}, moment arm by {:.3g} of the zone)",
                                            residual[0], residual[1]));
       const Eigen::Vector2d step = -jacobian.colPivHouseholderQr().solve(residual);
@@ -225,9 +238,8 @@ VertexContactLevel solve_level(const VertexContactSettings& s, const OloidAtVert
   // with its centre at the centre of mass's foot. The ruling beyond takes
   // the no-tension linear rule, q falling to 0 at its loaded length l: a
   // triangle on [after, l], whose load centre is after + (l - after) / 3.
-  const double force = locus.load_to(locus.loaded_length_m);
-  const double force_moment = locus.moment_to(locus.loaded_length_m);
-  LocusLoad load = locus;
+  LineLoad load = end.load;
+  const double force = load.load_to(load.length_m), force_moment = load.moment_to(load.length_m);
   for (int balance = 0;; ++balance)
   {
     match_window(load, deflection_beyond(load));
@@ -238,21 +250,23 @@ VertexContactLevel solve_level(const VertexContactSettings& s, const OloidAtVert
         window_force += solved.pressure_pa[i * ny + j] * cell * cell;
         window_moment += solved.pressure_pa[i * ny + j] * cell * cell * window.x(i);
       }
+    level.window_load_change = window_force / end.load.load_to(after) - 1;
+    if (!end.balance_body)
+      break;
     const double beyond_force = force - window_force, beyond_moment = force_moment - window_moment;
     const double length = after + 3 * (beyond_moment / beyond_force - after);
-    LocusLoad next{2 * length * beyond_force / ((length - after) * (length - after)), length};
-    level.window_load_change = window_force / locus.load_to(after) - 1;
-    const bool settled = std::abs(next.apex_n_per_m / load.apex_n_per_m - 1) < 1e-4
-                         && std::abs(next.loaded_length_m / load.loaded_length_m - 1) < 1e-4;
-    if (!(length > after) || next.loaded_length_m > outer_grid.x(outer_nx - 1))
-      throw ComputationError("vertex contact: the ruling beyond the window cannot balance the body");
+    if (!(length > after) || length > outer_grid.x(outer_nx - 1))
+      throw ComputationError("flat rim: the ruling beyond the window cannot balance the body");
+    const LineLoad next = LineLoad::triangle(2 * length * beyond_force / ((length - after) * (length - after)), length);
+    const bool settled = std::abs(next.at_end_n_per_m / load.at_end_n_per_m - 1) < 1e-4
+                         && std::abs(next.length_m / load.length_m - 1) < 1e-4;
     load = next;
     if (settled)
       break;
     if (balance > 20)
-      throw ComputationError("vertex contact: the body's balance did not settle");
+      throw ComputationError("flat rim: the body's balance did not settle");
   }
-  level.balanced_apex_line_load_n_per_m = load.apex_n_per_m;
+  level.balanced_end_line_load_n_per_m = load.at_end_n_per_m;
 
   // Readings: the peak, the columns, the far station against line Hertz.
   const auto peak = std::ranges::max_element(solved.pressure_pa);
@@ -288,42 +302,77 @@ VertexContactLevel solve_level(const VertexContactSettings& s, const OloidAtVert
   level.far_line_hertz_pa = contact::line_contact(load.at(window.x(far)), radius_at(window.x(far)),
                                                   effective_modulus, s.poisson_ratio)
                                 .peak_pressure_pa;
-  apex_lift = surface(first_cell, half_across);
+  end_lift = surface(first_cell, half_across);
   level.wall_s = seconds_since(start);
   return level;
 }
 } // namespace
 
-VertexContact vertex_contact(const VertexContactSettings& s)
+FlatRimContact flat_rim_contact(const FlatRimSettings& s)
 {
   for (const auto& [value, name] : {std::pair{s.radius_m, "--radius"}, {s.normal_load_n, "--load"},
                                     {s.edge_radius_m, "--edge-radius"}, {s.youngs_modulus_pa, "--youngs-modulus"},
+                                    {s.sheet_radius_m, "--sheet-radius"}, {s.load_n_per_m, "--load-per-length"},
                                     {s.cells_per_half_width, "--cells"}, {s.before_over_half_width, "--before"},
                                     {s.after_over_half_width, "--after"}, {s.across_over_half_width, "--across"}})
     if (!(value > 0) || !std::isfinite(value))
-      throw InputError(fmt::format("vertex: {} must be positive and finite, got {}", name, value));
+      throw InputError(fmt::format("flat-rim: {} must be positive and finite, got {}", name, value));
   if (!(s.poisson_ratio >= 0 && s.poisson_ratio < 0.5))
-    throw InputError(fmt::format("vertex: --poisson-ratio must lie in [0, 0.5), got {}", s.poisson_ratio));
+    throw InputError(fmt::format("flat-rim: --poisson must lie in [0, 0.5), got {}", s.poisson_ratio));
   if (s.levels < 1)
-    throw InputError("vertex: --levels must be at least 1");
+    throw InputError("flat-rim: --levels must be at least 1");
+  const bool straight_rim = s.interior_angle_rad > 0;
+  if (straight_rim && !(s.interior_angle_rad >= 150 * std::numbers::pi / 180 && s.interior_angle_rad <= std::numbers::pi))
+    throw InputError(fmt::format("flat-rim: --interior-angle {} deg is outside [150, 180] deg, where the rim's other "
+                                 "face is gentle enough for half-space theory (use `rollcheck rim`)",
+                                 s.interior_angle_rad * 180 / std::numbers::pi));
 
-  const OloidAtVertex oloid(s.radius_m);
-  VertexContact result;
-  result.ruling_length_m = oloid.ruling_length_m;
-  result.centre_of_pressure = oloid.centre_of_pressure;
-  const LocusLoad locus{2 * s.normal_load_n / (3 * oloid.centre_of_pressure * oloid.ruling_length_m),
-                        3 * oloid.centre_of_pressure * oloid.ruling_length_m};
-  result.apex_line_load_n_per_m = locus.apex_n_per_m;
+  FlatRimContact result;
   result.effective_modulus_pa = contact::effective_modulus(s.youngs_modulus_pa, s.poisson_ratio, s.steel_counter_face);
-  const contact::LineHertz at_apex =
-      contact::line_contact(locus.apex_n_per_m, s.edge_radius_m, result.effective_modulus_pa, s.poisson_ratio);
-  result.half_width_m = at_apex.half_width_m;
-  result.line_hertz_peak_pa = at_apex.peak_pressure_pa;
+  EndProblem end;
+  double reference_radius = 0;
+  if (straight_rim)
+  {
+    // A cylinder sheet of radius R cut by the plane through the rim (x' = 0
+    // on the ground) leaning by 180 deg - a: the body is above both.
+    const double lean = std::tan(std::numbers::pi - s.interior_angle_rad), radius = s.sheet_radius_m;
+    end.hull_height = [lean, radius](double x, double y) {
+      return std::max(radius - std::sqrt(std::max(radius * radius - y * y, 0.0)), -x * lean);
+    };
+    end.sheet_radius = [radius](double) { return radius; };
+    reference_radius = std::max(radius, s.edge_radius_m);
+    const double half_width = contact::line_contact(s.load_n_per_m, reference_radius, result.effective_modulus_pa,
+                                                    s.poisson_ratio)
+                                  .half_width_m;
+    // A long contact: the line load held to 400 b beyond the end (its far
+    // end's deflection over the window is smooth; the window's tilt takes it).
+    end.load = {s.load_n_per_m, 0.0, std::max(400.0, 3 * s.after_over_half_width) * half_width};
+  }
+  else
+  {
+    const auto oloid = std::make_shared<const OloidAtVertex>(s.radius_m);
+    result.ruling_length_m = oloid->ruling_length_m;
+    result.centre_of_pressure = oloid->centre_of_pressure;
+    end.hull_height = [oloid](double x, double y) { return oloid->height(x, y); };
+    end.sheet_radius = [oloid](double x) { return oloid->sheet_radius(x); };
+    // The contact locus's no-tension linear rule for c < 1/3: a triangle on
+    // [0, 3 c L], q(P) = 2 F / (3 c L).
+    const double loaded = 3 * oloid->centre_of_pressure * oloid->ruling_length_m;
+    end.load = LineLoad::triangle(2 * s.normal_load_n / loaded, loaded);
+    end.balance_body = true;
+    reference_radius = s.edge_radius_m; // the hull's R at P is 0: the finished part's is r_e
+  }
+  result.end_line_load_n_per_m = end.load.at_end_n_per_m;
+  const contact::LineHertz at_end = contact::line_contact(end.load.at_end_n_per_m, reference_radius,
+                                                          result.effective_modulus_pa, s.poisson_ratio);
+  result.reference_radius_m = reference_radius;
+  result.half_width_m = at_end.half_width_m;
+  result.line_hertz_peak_pa = at_end.peak_pressure_pa;
   for (int k = 0; k < s.levels; ++k)
   {
     const double cell = result.half_width_m / (s.cells_per_half_width * std::pow(2.0, k));
-    result.levels.push_back(solve_level(s, oloid, locus, result.effective_modulus_pa, result.half_width_m, cell,
-                                        result.largest_slope, result.apex_lift_m));
+    result.levels.push_back(solve_level(s, end, result.effective_modulus_pa, result.half_width_m, cell,
+                                        result.largest_slope, result.end_lift_m));
   }
   if (result.levels.size() >= 2)
   {
@@ -334,10 +383,10 @@ VertexContact vertex_contact(const VertexContactSettings& s)
   return result;
 }
 
-nlohmann::json to_json(const VertexContact& r)
+nlohmann::json to_json(const FlatRimContact& r)
 {
   nlohmann::json levels = nlohmann::json::array();
-  for (const VertexContactLevel& l : r.levels)
+  for (const FlatRimLevel& l : r.levels)
     levels.push_back({{"cell_m", l.cell_m},
                       {"cells", l.cells},
                       {"iterations", l.iterations},
@@ -347,7 +396,7 @@ nlohmann::json to_json(const VertexContact& r)
                       {"peak_across_m", l.peak_across_m},
                       {"contact_start_m", l.contact_start_m},
                       {"window_load_change", l.window_load_change},
-                      {"balanced_apex_line_load_n_per_m", l.balanced_apex_line_load_n_per_m},
+                      {"balanced_end_line_load_n_per_m", l.balanced_end_line_load_n_per_m},
                       {"far_peak_pa", l.far_peak_pa},
                       {"far_line_hertz_pa", l.far_line_hertz_pa},
                       {"wall_s", l.wall_s},
@@ -356,12 +405,13 @@ nlohmann::json to_json(const VertexContact& r)
                       {"station_load_n_per_m", l.station_load_n_per_m}});
   return {{"ruling_length_m", r.ruling_length_m},
           {"centre_of_pressure", r.centre_of_pressure},
-          {"apex_line_load_n_per_m", r.apex_line_load_n_per_m},
+          {"end_line_load_n_per_m", r.end_line_load_n_per_m},
           {"effective_modulus_pa", r.effective_modulus_pa},
+          {"reference_radius_m", r.reference_radius_m},
           {"half_width_m", r.half_width_m},
           {"line_hertz_peak_pa", r.line_hertz_peak_pa},
           {"largest_slope", r.largest_slope},
-          {"apex_lift_m", r.apex_lift_m},
+          {"end_lift_m", r.end_lift_m},
           {"peak_pressure_pa", r.levels.back().peak_pressure_pa},
           {"last_change", r.last_change},
           {"converged", r.converged},

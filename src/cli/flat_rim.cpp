@@ -1,0 +1,108 @@
+// `rollcheck flat-rim`: a rounded rim end whose rim is nearly flat, in 3D by
+// half-space theory on the ball-rounded surface (study/flat_rim_contact.h),
+// level by level: the finished oloid at a vertex orientation (c = 1/4), where
+// the ruling's largest line load meets the sheet's apex, against what
+// `rim --body` takes there (line Hertz at R = r_e); or, with
+// --interior-angle, a straight rim across a cylinder sheet, `rim`'s one end,
+// to check the reduction against the FEM. Also the scene "flat-rim".
+#include "cli/cli.h"
+#include "cli/scenes.h"
+#include "study/flat_rim_contact.h"
+#include <numbers>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
+
+namespace rollcheck::cli
+{
+namespace
+{
+const io::BoundSchema<study::FlatRimSettings>& flat_rim_schema()
+{
+  using S = study::FlatRimSettings;
+  static const io::BoundSchema<S> schema = [] {
+    io::BoundSchema<S> s("flat-rim");
+    s.real("radius_m", "--radius", &S::radius_m, "m", "r1 of the oloid (the rim scenes' 10 mm body)", io::positive)
+        .real("normal_load_n", "--load", &S::normal_load_n, "N",
+              "Force F pressing the body onto the counter-face through its centre of mass (rim --body's)",
+              io::positive)
+        .real("interior_angle_deg", "--interior-angle", &S::interior_angle_rad, "deg",
+              "0: the oloid's vertex. Else a straight rim of this interior angle (150-180 deg: the rim's other face "
+              "leans by 180 deg - a) across a cylinder sheet, `rim`'s one end",
+              io::Bounds{0, 180, false, false}, std::numbers::pi / 180)
+        .real("sheet_radius_m", "--sheet-radius", &S::sheet_radius_m, "m",
+              "With --interior-angle: R, the sheet's radius across the ruling", io::positive)
+        .real("load_n_per_m", "--load-per-length", &S::load_n_per_m, "N/m",
+              "With --interior-angle: q, the line load along the ruling", io::positive)
+        .real("edge_radius_m", "--edge-radius", &S::edge_radius_m, "m",
+              "r_e of the finish: the hull rounded by a ball of r_e rolled inside it (rim --body's)", io::positive)
+        .choice("counter_face", "--counter-face", &S::steel_counter_face,
+                "What the body presses on: rigid (the frictionless rigid plane) or steel (a half-space of the "
+                "body's own material, frictionless)",
+                {{"rigid", false}, {"steel", true}});
+    add_material(s, &S::youngs_modulus_pa, &S::poisson_ratio);
+    s.real("cells_per_half_width", "--cells", &S::cells_per_half_width, "",
+           "Cells across b (line Hertz's half-width at the end's q with R = max(R_end, r_e); the oloid's apex: r_e) at the first level; each level doubles it",
+           io::Bounds{2, 64})
+        .integer("levels", "--levels", &S::levels, "", "Grid levels (convergence needs 2)", io::Bounds{1, 4})
+        .real("before_over_half_width", "--before", &S::before_over_half_width, "",
+              "The window beyond the end (past the ruling's end), in b", io::Bounds{1, 200})
+        .real("after_over_half_width", "--after", &S::after_over_half_width, "",
+              "The window along the ruling from the end, in b; the ruling's line load is prescribed beyond it",
+              io::Bounds{5, 1000})
+        .real("across_over_half_width", "--across", &S::across_over_half_width, "",
+              "The window's half-width across the ruling, in b", io::Bounds{1.5, 100})
+        .real("tolerance", "--tolerance", &S::tolerance, "",
+              "Largest change of the peak between the last two levels that counts as converged",
+              io::Bounds{0, 1, true, false});
+    return s;
+  }();
+  return schema;
+}
+
+nlohmann::json run_flat_rim(const io::Parameters& p)
+{
+  const study::FlatRimSettings setup = flat_rim_schema().bind(p);
+  const study::FlatRimContact r = study::flat_rim_contact(setup);
+  std::string table = "| level | cell (m) | cells | CG iterations | solves | peak p (Pa) | peak at x', y (m) | "
+                      "contact from x' (m) | far station / line Hertz - 1 | s |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const study::FlatRimLevel& l : r.levels)
+    table += fmt::format("| {} | {:.3g} | {} | {} | {} | {:.5g} | {:.3g}, {:.3g} | {:.3g} | {:+.2f} % | {:.1f} |\n",
+                         &l - r.levels.data(), l.cell_m, l.cells, l.iterations, l.solves, l.peak_pressure_pa,
+                         l.peak_along_m, l.peak_across_m, l.contact_start_m,
+                         100 * (l.far_peak_pa / l.far_line_hertz_pa - 1), l.wall_s);
+  const double peak = r.levels.back().peak_pressure_pa;
+  const std::string what =
+      setup.interior_angle_rad > 0
+          ? fmt::format("straight rim of {:.4g} deg across a sheet of R = {} m, q = {} N/m", setup.interior_angle_rad * 180 / std::numbers::pi,
+                        setup.sheet_radius_m, setup.load_n_per_m)
+          : fmt::format("oloid r1 = {} m at a vertex orientation (c = {:.4f}), F = {} N, q(P) = {:.6g} N/m", setup.radius_m,
+                        r.centre_of_pressure, setup.normal_load_n, r.end_line_load_n_per_m);
+  spdlog::info("\n{}, counter-face {}, edge radius {} m: b = {:.4g} m (R = {:.4g} m), E* = {:.4g} Pa\n\n{}\npeak {:.5g} Pa "
+               "({}: {:+.2f} % at the last level); line Hertz at the end's q with R = max(R_end, r_e) gives {:.5g} Pa "
+               "(peak / that = {:.4f}); the rounded surface lies {:.3g} m above the ground at the end; largest slope "
+               "over the contact {:.3f} (half-space theory)\n",
+               what, setup.steel_counter_face ? "steel" : "rigid", setup.edge_radius_m, r.half_width_m,
+               r.reference_radius_m, r.effective_modulus_pa, table, peak, r.converged ? "converged" : "NOT converged",
+               100 * r.last_change, r.line_hertz_peak_pa, peak / r.line_hertz_peak_pa, r.end_lift_m, r.largest_slope);
+  nlohmann::json j = study::to_json(r);
+  j["counter_face"] = setup.steel_counter_face ? "steel" : "rigid";
+  j["edge_radius_m"] = setup.edge_radius_m;
+  j["normal_load_n"] = setup.normal_load_n;
+  j["radius_m"] = setup.radius_m;
+  j["interior_angle_deg"] = setup.interior_angle_rad * 180 / std::numbers::pi;
+  j["peak_over_line_hertz"] = peak / r.line_hertz_peak_pa;
+  return j;
+}
+} // namespace
+
+void add_flat_rim_command(CLI::App& app)
+{
+  add_scene_command(app, "flat-rim",
+                    "A rounded rim end whose rim is nearly flat, in 3D by half-space theory on the ball-rounded "
+                    "surface, rigid or steel counter-face, several grid levels: the finished oloid at a vertex "
+                    "orientation (the ruling's largest line load at the sheet's apex), or a straight rim of "
+                    "150-180 deg across a cylinder sheet (rim's one end)",
+                    flat_rim_schema().schema(), run_flat_rim);
+}
+} // namespace rollcheck::cli

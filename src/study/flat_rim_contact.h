@@ -1,0 +1,109 @@
+#pragma once
+// A rounded rim end whose rim is nearly flat (interior angle 150-180 deg),
+// in 3D by half-space theory: the end of the rolling loop where `rim`'s
+// FEM end model is weakest (a fillet arc shorter than its boundary layer,
+// the end table's last node standing for 178.5-180 deg).
+//
+// The oloid at a vertex orientation (the default): at c = 1/4 (and 3/4) it
+// stands on the ruling from P, rim circle A's point at -60 deg, to B's far
+// point; the ruling is A's tangent at P (the rim's interior angle is
+// 180 deg), the sheet's radius across the ruling falls to 0 at P
+// (R = 2 x' / sqrt 3) and the contact locus's no-tension rule puts its
+// largest line load there, q(P) = 8 F / (3 L) (scripts/oloid_vertex.py). A
+// part finished with edge radius r_e is the hull rounded by a ball of r_e
+// rolled inside it; `rim --body` takes such an end as line Hertz at R = r_e
+// times the end table's factor, an estimate from above. Here it is solved
+// as it is. Or (`interior_angle_rad` > 0) a straight rim across a cylinder
+// sheet of radius R under a uniform line load q, `rim`'s one end, to check
+// this reduction against the FEM end model.
+//  - the surface: the hull's lower surface near the end (the oloid's from
+//    its two circles, geometry/two_circle_hull_height.h; the straight rim's
+//    max(y^2 / 2R, -x' tan(180 deg - a))), rounded by the ball
+//    (geometry/rolling_ball_opening.h, small slopes), on a grid of cells of
+//    b / cells_per_half_width, b line Hertz's half-width at the end's q with
+//    R = max(R_end, r_e) (R_end = 0 at the oloid's apex);
+//  - the body and the counter-face as half-spaces (contact/half_space_contact.h):
+//    exact for the steel block, and for the body where its rim is nearly
+//    flat and the surface's slopes across the contact are small (reported);
+//  - the window [-before, +after] b along the ruling from the end is solved;
+//    beyond it, along the rest of the loaded ruling, the line load as line
+//    Hertz pressure at the sheet's R(x'), prescribed: its deflection is in
+//    the window's gap. The window shares the counter-face's approach and
+//    tilt along the ruling with the ruling beyond it: both are set (Broyden)
+//    so that the window carries the ruling's load and moment over its
+//    matching zone, [0.5, 0.9] of `after`, where the end no longer shows.
+//    For the oloid the ruling beyond then takes the no-tension linear rule
+//    again with the window's load and moment, so that the body balances (F
+//    through the centre of mass's foot): the load the finished end does not
+//    take moves along the ruling. No rotation about the ruling.
+// Levels halve the cells; the peak is converged when it changes by less
+// than `tolerance` at the last level.
+#include <nlohmann/json_fwd.hpp>
+#include <vector>
+
+namespace rollcheck::study
+{
+struct FlatRimSettings
+{
+  double radius_m = 0.01;         ///< r1 of the oloid (the rim scenes' 10 mm body)
+  double normal_load_n = 800;     ///< F through the centre of mass (rim --body's)
+  /// > 0: a straight rim of this interior angle (rad) across a cylinder sheet
+  /// instead of the oloid's vertex, with:
+  double interior_angle_rad = 0;
+  double sheet_radius_m = 1e-3;   ///< R of that sheet
+  double load_n_per_m = 1.2e5;    ///< its uniform line load q
+  double edge_radius_m = 4e-4;    ///< r_e of the finish (rim --body's)
+  double youngs_modulus_pa = 200e9;
+  double poisson_ratio = 0.3;
+  bool steel_counter_face = false; ///< a half-space of the body's material; else the rigid plane
+  double cells_per_half_width = 6; ///< b / cell at the first level
+  int levels = 2;
+  double before_over_half_width = 12; ///< the window beyond the end, in b
+  double after_over_half_width = 60;  ///< the window along the ruling from the end, in b
+  double across_over_half_width = 4;  ///< the window's half-width across the ruling, in b
+  double tolerance = 0.03;            ///< of the peak between the last two levels
+};
+
+struct FlatRimLevel
+{
+  double cell_m = 0;
+  std::size_t cells = 0;          ///< in the window
+  int iterations = 0;             ///< conjugate-gradient iterations over every tilt
+  int solves = 0;                 ///< contact solves to match the ruling beyond the window
+  double peak_pressure_pa = 0;
+  double peak_along_m = 0;        ///< x' of the peak from the end (negative: beyond it)
+  double peak_across_m = 0;
+  double contact_start_m = 0;     ///< the loaded cells' smallest x'
+  double window_load_change = 0;  ///< the window's load over the ruling's on it, - 1 (what the end does not take)
+  double balanced_end_line_load_n_per_m = 0; ///< q at the end of the linear rule beyond the window, once the body balances (the oloid)
+  double far_peak_pa = 0;         ///< the largest pressure across the ruling at the window's far station
+  double far_line_hertz_pa = 0;   ///< line Hertz's p0 at that station's q and R
+  double wall_s = 0;
+  std::vector<double> station_m;          ///< x' of each column of cells
+  std::vector<double> station_peak_pa;    ///< the largest pressure across each column
+  std::vector<double> station_load_n_per_m; ///< the column's load per unit length
+};
+
+struct FlatRimContact
+{
+  double ruling_length_m = 0;           ///< the oloid's
+  double centre_of_pressure = 0;        ///< the oloid's c, as a fraction of the ruling from P
+  double end_line_load_n_per_m = 0;    ///< q at the end (the oloid's q(P))
+  double effective_modulus_pa = 0;
+  double reference_radius_m = 0;        ///< max(R_end, r_e)
+  double half_width_m = 0;              ///< b: line Hertz at the end's q, R = max(R_end, r_e)
+  double line_hertz_peak_pa = 0;        ///< p0 there: what rim --body takes before its end factor
+  double largest_slope = 0;             ///< of the rounded surface over the loaded cells (half-space theory needs it small)
+  double end_lift_m = 0;               ///< the rounded surface's height above the ground at the end
+  std::vector<FlatRimLevel> levels;
+  double last_change = 0;               ///< of the peak, last level against the one before
+  bool converged = false;
+};
+
+/// Throws InputError for a non-positive radius, load, edge radius or
+/// modulus, ComputationError when a solve fails (the contact reaching the
+/// window's border across or beyond P names the setting to widen).
+FlatRimContact flat_rim_contact(const FlatRimSettings& settings);
+
+nlohmann::json to_json(const FlatRimContact& result);
+} // namespace rollcheck::study
