@@ -79,12 +79,12 @@ nlohmann::json run_flat_rim(const io::Parameters& p)
           : fmt::format("oloid r1 = {} m at a vertex orientation (c = {:.4f}), F = {} N, q(P) = {:.6g} N/m", setup.radius_m,
                         r.centre_of_pressure, setup.normal_load_n, r.end_line_load_n_per_m);
   spdlog::info("\n{}, counter-face {}, edge radius {} m: b = {:.4g} m (R = {:.4g} m), E* = {:.4g} Pa\n\n{}\npeak {:.5g} Pa "
-               "({}: {:+.2f} % at the last level); line Hertz at the end's q with R = max(R_end, r_e) gives {:.5g} Pa "
+               "({}: {:+.2f} % at the last level, {:+.2f} % with the first level's window twice as long); line Hertz at the end's q with R = max(R_end, r_e) gives {:.5g} Pa "
                "(peak / that = {:.4f}); the rounded surface lies {:.3g} m above the ground at the end; largest slope "
                "over the contact {:.3f} (half-space theory)\n",
                what, setup.steel_counter_face ? "steel" : "rigid", setup.edge_radius_m, r.half_width_m,
                r.reference_radius_m, r.effective_modulus_pa, table, peak, r.converged ? "converged" : "NOT converged",
-               100 * r.last_change, r.line_hertz_peak_pa, peak / r.line_hertz_peak_pa, r.end_lift_m, r.largest_slope);
+               100 * r.last_change, 100 * r.window_change, r.line_hertz_peak_pa, peak / r.line_hertz_peak_pa, r.end_lift_m, r.largest_slope);
   nlohmann::json j = study::to_json(r);
   j["counter_face"] = setup.steel_counter_face ? "steel" : "rigid";
   j["edge_radius_m"] = setup.edge_radius_m;

@@ -106,7 +106,11 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
 {
   const auto start = std::chrono::steady_clock::now();
   const auto cells_over = [&](double length) { return static_cast<std::size_t>(std::ceil(length / cell)); };
-  const double before = s.before_over_half_width * half_width, after = s.after_over_half_width * half_width;
+  const double before = s.before_over_half_width * half_width;
+  // The window's far edge, on the cells' boundary: the ruling beyond it is
+  // loaded from there.
+  const std::size_t after_cells = cells_over(s.after_over_half_width * half_width);
+  const double after = (static_cast<double>(after_cells) + 0.5) * cell;
 
   // The prescribed line Hertz beyond the window: R(x') at stations 50 um
   // apart, interpolated.
@@ -119,15 +123,17 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
     const auto i = static_cast<std::size_t>(k);
     return station_radius[i] + (k - static_cast<double>(i)) * (station_radius[i + 1] - station_radius[i]);
   };
+  // Across: the widest contact of the ruling beyond the window, with room
+  // for the balance raising its load and the end's extra load near it.
   double widest = s.across_over_half_width * half_width;
   for (double x = after; x < end.load.length_m; x += station_step)
-    widest = std::max(widest, 1.25 * contact::line_contact(end.load.at(x), radius_at(x), effective_modulus,
+    widest = std::max(widest, 1.6 * contact::line_contact(end.load.at(x), radius_at(x), effective_modulus,
                                                            s.poisson_ratio).half_width_m);
   const std::size_t half_across = cells_over(widest);
   const std::size_t ny = 2 * half_across + 1;
-  const std::size_t window_nx = cells_over(before) + cells_over(after) + 1;
+  const std::size_t window_nx = cells_over(before) + after_cells + 1;
   const std::size_t first_cell = cells_over(before); // x' = 0 at this column
-  const std::size_t outer_nx = first_cell + cells_over(1.05 * end.load.length_m) + 1;
+  const std::size_t outer_nx = first_cell + cells_over(1.3 * end.load.length_m) + 1;
   const contact::HalfSpaceGrid outer_grid{outer_nx, ny, cell, cell, -static_cast<double>(first_cell) * cell,
                                           -static_cast<double>(half_across) * cell};
   const contact::HalfSpaceGrid window{window_nx, ny, cell, cell, outer_grid.first_x_m, outer_grid.first_y_m};
@@ -260,13 +266,16 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
     const LineLoad next = LineLoad::triangle(2 * length * beyond_force / ((length - after) * (length - after)), length);
     const bool settled = std::abs(next.at_end_n_per_m / load.at_end_n_per_m - 1) < 1e-4
                          && std::abs(next.length_m / load.length_m - 1) < 1e-4;
-    load = next;
+    // Half steps: a full step overshoots once the window is long (its own
+    // load then answers strongly to the rule beyond it).
+    load = LineLoad::triangle((next.at_end_n_per_m + load.at_end_n_per_m) / 2, (next.length_m + load.length_m) / 2);
     if (settled)
       break;
-    if (balance > 20)
+    if (balance > 40)
       throw ComputationError("flat rim: the body's balance did not settle");
   }
   level.balanced_end_line_load_n_per_m = load.at_end_n_per_m;
+  level.balanced_loaded_length_m = load.length_m;
 
   // Readings: the peak, the columns, the far station against line Hertz.
   const auto peak = std::ranges::max_element(solved.pressure_pa);
@@ -333,12 +342,11 @@ FlatRimContact flat_rim_contact(const FlatRimSettings& s)
   double reference_radius = 0;
   if (straight_rim)
   {
-    // A cylinder sheet of radius R cut by the plane through the rim (x' = 0
-    // on the ground) leaning by 180 deg - a: the body is above both.
+    // rim's end model with its flat sheet: a block whose top (x' > 0) meets
+    // the rim's other face, leaning by 180 deg - a, along a straight edge
+    // across the ruling, the sheet's profile y^2 / (2 R) in the gap.
     const double lean = std::tan(std::numbers::pi - s.interior_angle_rad), radius = s.sheet_radius_m;
-    end.hull_height = [lean, radius](double x, double y) {
-      return std::max(radius - std::sqrt(std::max(radius * radius - y * y, 0.0)), -x * lean);
-    };
+    end.hull_height = [lean, radius](double x, double y) { return y * y / (2 * radius) + std::max(0.0, -x * lean); };
     end.sheet_radius = [radius](double) { return radius; };
     reference_radius = std::max(radius, s.edge_radius_m);
     const double half_width = contact::line_contact(s.load_n_per_m, reference_radius, result.effective_modulus_pa,
@@ -374,12 +382,21 @@ FlatRimContact flat_rim_contact(const FlatRimSettings& s)
     result.levels.push_back(solve_level(s, end, result.effective_modulus_pa, result.half_width_m, cell,
                                         result.largest_slope, result.end_lift_m));
   }
+  // The window's length: the first level again with the window twice as
+  // long (the half-space's reach along the ruling is long: the end's extra
+  // line load decays over tens of b).
+  FlatRimSettings longer = s;
+  longer.after_over_half_width *= 2;
+  double unused_slope = 0, unused_lift = 0;
+  result.longer_window_peak_pa = solve_level(longer, end, result.effective_modulus_pa, result.half_width_m,
+                                             result.levels.front().cell_m, unused_slope, unused_lift)
+                                     .peak_pressure_pa;
+  result.window_change = result.longer_window_peak_pa / result.levels.front().peak_pressure_pa - 1;
   if (result.levels.size() >= 2)
-  {
     result.last_change =
         result.levels.back().peak_pressure_pa / result.levels[result.levels.size() - 2].peak_pressure_pa - 1;
-    result.converged = std::abs(result.last_change) < s.tolerance;
-  }
+  result.converged = result.levels.size() >= 2 && std::abs(result.last_change) < s.tolerance
+                     && std::abs(result.window_change) < s.tolerance;
   return result;
 }
 
@@ -397,6 +414,7 @@ nlohmann::json to_json(const FlatRimContact& r)
                       {"contact_start_m", l.contact_start_m},
                       {"window_load_change", l.window_load_change},
                       {"balanced_end_line_load_n_per_m", l.balanced_end_line_load_n_per_m},
+                      {"balanced_loaded_length_m", l.balanced_loaded_length_m},
                       {"far_peak_pa", l.far_peak_pa},
                       {"far_line_hertz_pa", l.far_line_hertz_pa},
                       {"wall_s", l.wall_s},
@@ -414,6 +432,8 @@ nlohmann::json to_json(const FlatRimContact& r)
           {"end_lift_m", r.end_lift_m},
           {"peak_pressure_pa", r.levels.back().peak_pressure_pa},
           {"last_change", r.last_change},
+          {"longer_window_peak_pa", r.longer_window_peak_pa},
+          {"window_change", r.window_change},
           {"converged", r.converged},
           {"levels", levels}};
 }

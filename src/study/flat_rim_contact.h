@@ -18,7 +18,7 @@
 // this reduction against the FEM end model.
 //  - the surface: the hull's lower surface near the end (the oloid's from
 //    its two circles, geometry/two_circle_hull_height.h; the straight rim's
-//    max(y^2 / 2R, -x' tan(180 deg - a))), rounded by the ball
+//    y^2 / 2R + max(0, -x' tan(180 deg - a)), rim's flat sheet), rounded by the ball
 //    (geometry/rolling_ball_opening.h, small slopes), on a grid of cells of
 //    b / cells_per_half_width, b line Hertz's half-width at the end's q with
 //    R = max(R_end, r_e) (R_end = 0 at the oloid's apex);
@@ -37,7 +37,12 @@
 //    through the centre of mass's foot): the load the finished end does not
 //    take moves along the ruling. No rotation about the ruling.
 // Levels halve the cells; the peak is converged when it changes by less
-// than `tolerance` at the last level.
+// than `tolerance` at the last level and when the first level's window is
+// doubled along the ruling (the half-space's reach along a line contact is
+// long: an end's extra line load decays over tens of b, and for a long
+// contact held to a uniform load the end's peak keeps growing with the
+// held length, as line contacts in half-space theory have no plane-strain
+// limit).
 #include <nlohmann/json_fwd.hpp>
 #include <vector>
 
@@ -56,7 +61,7 @@ struct FlatRimSettings
   double youngs_modulus_pa = 200e9;
   double poisson_ratio = 0.3;
   bool steel_counter_face = false; ///< a half-space of the body's material; else the rigid plane
-  double cells_per_half_width = 6; ///< b / cell at the first level
+  double cells_per_half_width = 4; ///< b / cell at the first level
   int levels = 2;
   double before_over_half_width = 12; ///< the window beyond the end, in b
   double after_over_half_width = 60;  ///< the window along the ruling from the end, in b
@@ -75,7 +80,11 @@ struct FlatRimLevel
   double peak_across_m = 0;
   double contact_start_m = 0;     ///< the loaded cells' smallest x'
   double window_load_change = 0;  ///< the window's load over the ruling's on it, - 1 (what the end does not take)
-  double balanced_end_line_load_n_per_m = 0; ///< q at the end of the linear rule beyond the window, once the body balances (the oloid)
+  /// The linear rule beyond the window once the body balances (the oloid):
+  /// q = balanced_end_line_load (1 - x' / balanced_loaded_length) up to
+  /// balanced_loaded_length; the ruling's held load otherwise.
+  double balanced_end_line_load_n_per_m = 0;
+  double balanced_loaded_length_m = 0;
   double far_peak_pa = 0;         ///< the largest pressure across the ruling at the window's far station
   double far_line_hertz_pa = 0;   ///< line Hertz's p0 at that station's q and R
   double wall_s = 0;
@@ -97,7 +106,9 @@ struct FlatRimContact
   double end_lift_m = 0;               ///< the rounded surface's height above the ground at the end
   std::vector<FlatRimLevel> levels;
   double last_change = 0;               ///< of the peak, last level against the one before
-  bool converged = false;
+  double longer_window_peak_pa = 0;     ///< the first level's peak with `after` doubled
+  double window_change = 0;             ///< that against the first level's
+  bool converged = false;               ///< both changes below the tolerance
 };
 
 /// Throws InputError for a non-positive radius, load, edge radius or

@@ -1,0 +1,110 @@
+// The nearly flat rounded rim end by half-space theory (study/flat_rim_contact.h):
+// far from the end it is line Hertz, the oloid's balance is recomputed from
+// its output, and bad input is refused. Its agreement with the FEM end model
+// is tests/cli/flat_rim.sh's (reference data from `rollcheck rim`).
+#include "study/flat_rim_contact.h"
+#include "contact/hertz.h"
+#include "core/error.h"
+#include <algorithm>
+#include <cmath>
+#include <gtest/gtest.h>
+#include <numbers>
+
+using namespace rollcheck;
+
+namespace
+{
+study::FlatRimSettings straight_rim(double interior_angle_deg)
+{
+  study::FlatRimSettings s;
+  s.interior_angle_rad = interior_angle_deg * std::numbers::pi / 180;
+  s.sheet_radius_m = 1e-3;
+  s.load_n_per_m = 1.2e5;
+  s.edge_radius_m = 4e-4;
+  s.cells_per_half_width = 4;
+  s.levels = 1;
+  return s;
+}
+} // namespace
+
+TEST(FlatRimContact, StraightRimIsLineHertzAwayFromItsEnd)
+{
+  const study::FlatRimContact r = study::flat_rim_contact(straight_rim(170));
+  const study::FlatRimLevel& l = r.levels.back();
+  // Line Hertz at the sheet's R (1 mm > r_e) and q.
+  const contact::LineHertz hertz =
+      contact::line_contact(1.2e5, 1e-3, contact::effective_modulus(200e9, 0.3, false), 0.3);
+  EXPECT_NEAR(r.half_width_m / hertz.half_width_m, 1.0, 1e-12);
+  EXPECT_NEAR(l.far_peak_pa / hertz.peak_pressure_pa, 1.0, 0.01);
+  // Every column from 0.7 to 0.9 of the window carries q within 1 % (the
+  // matching holds only the sum and moment over 0.5-0.9; the end's extra
+  // load decays through the first half of the window: +1.5 % at 30 b).
+  const double after = 60 * r.half_width_m;
+  for (std::size_t i = 0; i < l.station_m.size(); ++i)
+    if (l.station_m[i] > 0.7 * after && l.station_m[i] < 0.9 * after)
+      EXPECT_NEAR(l.station_load_n_per_m[i] / 1.2e5, 1.0, 0.01) << "x' = " << l.station_m[i];
+  // The rounded rim concentrates pressure inside the end, within r_e
+  // sin(10 deg) / 2 of the rim line; the contact ends before the rim line's
+  // far side of the blend.
+  EXPECT_GT(l.peak_pressure_pa, 1.5 * hertz.peak_pressure_pa);
+  EXPECT_GT(l.peak_along_m, 0.0);
+  EXPECT_LT(l.peak_along_m, 4e-4 * std::sin(10 * std::numbers::pi / 180));
+  EXPECT_GT(l.contact_start_m, -4e-4 * std::tan(10 * std::numbers::pi / 180) / 2);
+}
+
+TEST(FlatRimContact, OloidVertexBalancesTheBodyAndConverges)
+{
+  const study::FlatRimSettings s; // cells of b / 4 and b / 8, a window of 60 b (and 120 b)
+  const study::FlatRimContact r = study::flat_rim_contact(s);
+  ASSERT_EQ(r.levels.size(), 2u);
+  EXPECT_NEAR(r.centre_of_pressure, 0.25, 1e-12);
+  const double length = std::sqrt(3.0) * s.radius_m;
+  EXPECT_NEAR(r.ruling_length_m / length, 1.0, 1e-12);
+  EXPECT_NEAR(r.end_line_load_n_per_m / (8 * s.normal_load_n / (3 * length)), 1.0, 1e-12);
+  EXPECT_TRUE(r.converged) << r.last_change << " " << r.window_change;
+  for (const study::FlatRimLevel& l : r.levels)
+  {
+    // The window's columns and the linear rule beyond it carry F through
+    // the centre of mass's foot (c L from P), recomputed from the output.
+    const double cell = l.cell_m;
+    double force = 0, moment = 0, after = 0;
+    for (std::size_t i = 0; i < l.station_m.size(); ++i)
+    {
+      force += l.station_load_n_per_m[i] * cell;
+      moment += l.station_load_n_per_m[i] * cell * l.station_m[i];
+      after = l.station_m[i] + cell / 2;
+    }
+    const double q = l.balanced_end_line_load_n_per_m, end = l.balanced_loaded_length_m;
+    const auto load_to = [&](double x) { return q * (x - x * x / (2 * end)); };
+    const auto moment_to = [&](double x) { return q * (x * x / 2 - x * x * x / (3 * end)); };
+    force += load_to(end) - load_to(after);
+    moment += moment_to(end) - moment_to(after);
+    EXPECT_NEAR(force / s.normal_load_n, 1.0, 1e-3);
+    EXPECT_NEAR(moment / force / (0.25 * length), 1.0, 1e-3);
+    // The finish lifts the apex: the contact starts inside the ruling, and
+    // the load it does not take there raises the rule's q(P).
+    EXPECT_GT(l.contact_start_m, 0.0);
+    EXPECT_LT(l.window_load_change, 0.0);
+    EXPECT_GT(q, r.end_line_load_n_per_m);
+    EXPECT_NEAR(l.far_peak_pa / l.far_line_hertz_pa, 1.0, 0.01);
+  }
+  EXPECT_GT(r.end_lift_m, 0.0);
+  EXPECT_LT(r.largest_slope, 0.1); // half-space theory's small slopes
+}
+
+TEST(FlatRimContact, RefusesBadInput)
+{
+  study::FlatRimSettings s = straight_rim(120);
+  EXPECT_THROW(study::flat_rim_contact(s), InputError); // too steep for half-space theory
+  s = straight_rim(170);
+  s.edge_radius_m = -1e-4;
+  EXPECT_THROW(study::flat_rim_contact(s), InputError);
+  s = straight_rim(170);
+  s.load_n_per_m = std::nan("");
+  EXPECT_THROW(study::flat_rim_contact(s), InputError);
+  // A flat end (180 deg) lets the contact run on past the window's start:
+  // refused, not truncated.
+  s = straight_rim(180);
+  s.before_over_half_width = 2;
+  EXPECT_THROW(study::flat_rim_contact(s), ComputationError);
+}
