@@ -11,7 +11,9 @@
 // the rims at a ruling's ends (rim_overhang.h), which the FEM layer is given,
 // and the stress singularity of a rim's edge on the rigid plane
 // (wedge_exponent.h) or on a block of elastic material
-// (edge_on_elastic_block_exponent.h).
+// (edge_on_elastic_block_exponent.h), and frictionless contact of two
+// half-spaces across a gap on a grid (half_space_contact.h: boundary
+// elements by FFT), which the flat rim end is solved with.
 // Knows nothing of how the trajectory was produced.
 #include "contact/contact_locus.h"
 #include "contact/edge_on_elastic_block_exponent.h"
@@ -19,6 +21,7 @@
 #include "contact/face_curvature.h"
 #include "contact/face_pressure.h"
 #include "contact/fatigue.h"
+#include "contact/half_space_contact.h"
 #include "contact/hertz.h"
 #include "contact/rim_overhang.h"
 #include "contact/sliding_speed.h"

@@ -431,6 +431,7 @@ nlohmann::json to_json(const FlatRimContact& r)
           {"largest_slope", r.largest_slope},
           {"end_lift_m", r.end_lift_m},
           {"peak_pressure_pa", r.levels.back().peak_pressure_pa},
+          {"far_line_hertz_error", r.levels.back().far_peak_pa / r.levels.back().far_line_hertz_pa - 1},
           {"last_change", r.last_change},
           {"longer_window_peak_pa", r.longer_window_peak_pa},
           {"window_change", r.window_change},
