@@ -19,6 +19,17 @@ contact::HalfSpaceGrid square_grid(std::size_t cells, double half_side)
   const double cell = 2 * half_side / static_cast<double>(cells);
   return {cells, cells, cell, cell, -half_side + cell / 2, -half_side + cell / 2};
 }
+
+/// f(r) at every cell's centre, r its distance from the grid's centre.
+template <class Radial>
+std::vector<double> radial_field(const contact::HalfSpaceGrid& grid, Radial f)
+{
+  std::vector<double> values(grid.size());
+  for (std::size_t i = 0; i < grid.nx; ++i)
+    for (std::size_t j = 0; j < grid.ny; ++j)
+      values[i * grid.ny + j] = f(std::hypot(grid.x(i), grid.y(j)));
+  return values;
+}
 } // namespace
 
 TEST(HalfSpaceContact, CellDeflectionIsBoussinesqFarAwayAndLoveAtTheCentre)
@@ -43,10 +54,8 @@ TEST(HalfSpaceContact, HertzPressureDeflectsTheSurfaceByTheSpheresProfile)
   const contact::PointHertz hertz = contact::point_contact(force, radius, effective_modulus, 0.3);
   const double a = hertz.contact_radius_m;
   const contact::HalfSpaceGrid grid = square_grid(128, 1.5 * a);
-  std::vector<double> pressure(grid.size());
-  for (std::size_t i = 0; i < grid.nx; ++i)
-    for (std::size_t j = 0; j < grid.ny; ++j)
-      pressure[i * grid.ny + j] = contact::pressure_profile(hertz.peak_pressure_pa, a, std::hypot(grid.x(i), grid.y(j)));
+  const std::vector<double> pressure = radial_field(
+      grid, [&](double r) { return contact::pressure_profile(hertz.peak_pressure_pa, a, r); });
   const contact::HalfSpaceDeflection deflection(grid, effective_modulus);
   const std::vector<double> u = deflection(pressure);
   double worst = 0;
@@ -68,10 +77,8 @@ TEST(HalfSpaceContact, SphereOnAPlaneIsHertz)
   const double a = hertz.contact_radius_m;
   // Cells of a / 32, the sphere's gap r^2 / (2 R) at their centres.
   const contact::HalfSpaceGrid grid = square_grid(96, 1.5 * a);
-  std::vector<double> gap(grid.size());
-  for (std::size_t i = 0; i < grid.nx; ++i)
-    for (std::size_t j = 0; j < grid.ny; ++j)
-      gap[i * grid.ny + j] = (grid.x(i) * grid.x(i) + grid.y(j) * grid.y(j)) / (2 * radius);
+  const auto sphere = [&](double r) { return r * r / (2 * radius); };
+  const std::vector<double> gap = radial_field(grid, sphere);
   const contact::HalfSpaceDeflection deflection(grid, effective_modulus);
   const contact::HalfSpaceContact solved = contact::solve_half_space_contact(deflection, gap, force);
   const double peak = *std::ranges::max_element(solved.pressure_pa);
@@ -84,12 +91,8 @@ TEST(HalfSpaceContact, SphereOnAPlaneIsHertz)
   EXPECT_LE(solved.largest_gap_violation_m, 1e-6 * hertz.approach_m);
   // Halving the cells moves the peak by less than 1 %.
   const contact::HalfSpaceGrid coarse = square_grid(48, 1.5 * a);
-  std::vector<double> coarse_gap(coarse.size());
-  for (std::size_t i = 0; i < coarse.nx; ++i)
-    for (std::size_t j = 0; j < coarse.ny; ++j)
-      coarse_gap[i * coarse.ny + j] = (coarse.x(i) * coarse.x(i) + coarse.y(j) * coarse.y(j)) / (2 * radius);
-  const contact::HalfSpaceContact coarse_solved =
-      contact::solve_half_space_contact(contact::HalfSpaceDeflection(coarse, effective_modulus), coarse_gap, force);
+  const contact::HalfSpaceContact coarse_solved = contact::solve_half_space_contact(
+      contact::HalfSpaceDeflection(coarse, effective_modulus), radial_field(coarse, sphere), force);
   EXPECT_NEAR(*std::ranges::max_element(coarse_solved.pressure_pa) / peak, 1.0, 0.01);
 }
 
