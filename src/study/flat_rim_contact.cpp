@@ -197,7 +197,7 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
     const double zone_load = load.load_to(zone_end) - load.load_to(zone_start);
     const double zone_arm = (load.moment_to(zone_end) - load.moment_to(zone_start)) / zone_load;
     const auto mismatch = [&](const Eigen::Vector2d& unknowns) {
-      // unknowns: the window's force over the ruling's on it, the tilt in b_P^2 / (r_e after).
+      // unknowns: the window's force over the ruling's on it, the tilt in b^2 / (r_e after).
       const double tilt = unknowns[1] * half_width * half_width / (s.edge_radius_m * after);
       for (std::size_t i = 0; i < window_nx; ++i)
         for (std::size_t j = 0; j < ny; ++j)
@@ -246,6 +246,13 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
   // triangle on [after, l], whose load centre is after + (l - after) / 3.
   LineLoad load = end.load;
   const double force = load.load_to(load.length_m), force_moment = load.moment_to(load.length_m);
+  // The balance as a fixed point of the rule beyond (q at the end, loaded
+  // length), scaled by the locus's: Broyden's method, starting from half
+  // steps (a full step overshoots once the window is long: its own load
+  // then answers strongly to the rule beyond it).
+  const Eigen::Vector2d scale(end.load.at_end_n_per_m, end.load.length_m);
+  Eigen::Vector2d rule(1.0, 1.0), last_residual, last_step;
+  Eigen::Matrix2d balance_jacobian = -2 * Eigen::Matrix2d::Identity();
   for (int balance = 0;; ++balance)
   {
     match_window(load, deflection_beyond(load));
@@ -263,16 +270,20 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
     const double length = after + 3 * (beyond_moment / beyond_force - after);
     if (!(length > after) || length > outer_grid.x(outer_nx - 1))
       throw ComputationError("flat rim: the ruling beyond the window cannot balance the body");
-    const LineLoad next = LineLoad::triangle(2 * length * beyond_force / ((length - after) * (length - after)), length);
-    const bool settled = std::abs(next.at_end_n_per_m / load.at_end_n_per_m - 1) < 1e-4
-                         && std::abs(next.length_m / load.length_m - 1) < 1e-4;
-    // Half steps: a full step overshoots once the window is long (its own
-    // load then answers strongly to the rule beyond it).
-    load = LineLoad::triangle((next.at_end_n_per_m + load.at_end_n_per_m) / 2, (next.length_m + load.length_m) / 2);
-    if (settled)
+    const Eigen::Vector2d next(2 * length * beyond_force / ((length - after) * (length - after)) / scale[0],
+                               length / scale[1]);
+    const Eigen::Vector2d residual = next - rule;
+    if (residual.cwiseAbs().maxCoeff() < 1e-4)
       break;
     if (balance > 40)
       throw ComputationError("flat rim: the body's balance did not settle");
+    if (balance > 0)
+      balance_jacobian += (residual - last_residual - balance_jacobian * last_step) * last_step.transpose()
+                          / last_step.squaredNorm();
+    last_step = -balance_jacobian.colPivHouseholderQr().solve(residual);
+    last_residual = residual;
+    rule += last_step;
+    load = LineLoad::triangle(rule[0] * scale[0], rule[1] * scale[1]);
   }
   level.balanced_end_line_load_n_per_m = load.at_end_n_per_m;
   level.balanced_loaded_length_m = load.length_m;

@@ -25,7 +25,8 @@
 //  - the body and the counter-face as half-spaces (contact/half_space_contact.h):
 //    exact for the steel block, and for the body where its rim is nearly
 //    flat and the surface's slopes across the contact are small (reported);
-//  - the window [-before, +after] b along the ruling from the end is solved;
+//  - the window [-before, +after] b along the ruling from the end is solved
+//    (12 b and 100 b);
 //    beyond it, along the rest of the loaded ruling, the line load as line
 //    Hertz pressure at the sheet's R(x'), prescribed: its deflection is in
 //    the window's gap. The window shares the counter-face's approach and
@@ -34,8 +35,9 @@
 //    matching zone, [0.5, 0.9] of `after`, where the end no longer shows.
 //    For the oloid the ruling beyond then takes the no-tension linear rule
 //    again with the window's load and moment, so that the body balances (F
-//    through the centre of mass's foot): the load the finished end does not
-//    take moves along the ruling. No rotation about the ruling.
+//    through the centre of mass's foot; Broyden on the rule's q and
+//    length): the load the finished end does not take moves along the
+//    ruling. No rotation about the ruling.
 // Levels halve the cells; the peak is converged when it changes by less
 // than `tolerance` at the last level and when the first level's window is
 // doubled along the ruling (the half-space's reach along a line contact is
@@ -64,7 +66,7 @@ struct FlatRimSettings
   double cells_per_half_width = 4; ///< b / cell at the first level
   int levels = 2;
   double before_over_half_width = 12; ///< the window beyond the end, in b
-  double after_over_half_width = 60;  ///< the window along the ruling from the end, in b
+  double after_over_half_width = 100; ///< the window along the ruling from the end, in b
   double across_over_half_width = 4;  ///< the window's half-width across the ruling, in b
   double tolerance = 0.03;            ///< of the peak between the last two levels
 };
