@@ -3,7 +3,7 @@
 // level by level: the finished oloid at a vertex orientation (c = 1/4), where
 // the ruling's largest line load meets the sheet's apex, against what
 // `rim --body` takes there (line Hertz at R = r_e); or, with
-// --interior-angle, a straight rim across a cylinder sheet, `rim`'s one end,
+// --interior-angle, a straight rim across a flattened sheet, `rim`'s one end,
 // to check the reduction against the FEM. Also the scene "flat-rim".
 #include "cli/cli.h"
 #include "cli/scenes.h"
@@ -28,7 +28,7 @@ const io::BoundSchema<study::FlatRimSettings>& flat_rim_schema()
               io::positive)
         .real("interior_angle_deg", "--interior-angle", &S::interior_angle_rad, "deg",
               "0: the oloid's vertex. Else a straight rim of this interior angle (150-180 deg: the rim's other face "
-              "leans by 180 deg - a) across a cylinder sheet, `rim`'s one end",
+              "leans by 180 deg - a) across a sheet of radius R, flattened with its profile in the gap: `rim`'s one end",
               io::Bounds{0, 180, false, false}, std::numbers::pi / 180)
         .real("sheet_radius_m", "--sheet-radius", &S::sheet_radius_m, "m",
               "With --interior-angle: R, the sheet's radius across the ruling", io::positive)
@@ -53,7 +53,7 @@ const io::BoundSchema<study::FlatRimSettings>& flat_rim_schema()
         .real("across_over_half_width", "--across", &S::across_over_half_width, "",
               "The window's half-width across the ruling, in b", io::Bounds{1.5, 100})
         .real("tolerance", "--tolerance", &S::tolerance, "",
-              "Largest change of the peak between the last two levels that counts as converged",
+              "Largest change of the peak between the last two levels, and when the first level's window doubles, that counts as converged",
               io::Bounds{0, 1, true, false});
     return s;
   }();
@@ -102,7 +102,7 @@ void add_flat_rim_command(CLI::App& app)
                     "A rounded rim end whose rim is nearly flat, in 3D by half-space theory on the ball-rounded "
                     "surface, rigid or steel counter-face, several grid levels: the finished oloid at a vertex "
                     "orientation (the ruling's largest line load at the sheet's apex), or a straight rim of "
-                    "150-180 deg across a cylinder sheet (rim's one end)",
+                    "150-180 deg across a flattened sheet (rim's one end)",
                     flat_rim_schema().schema(), run_flat_rim);
 }
 } // namespace rollcheck::cli

@@ -337,8 +337,8 @@ FlatRimContact flat_rim_contact(const FlatRimSettings& s)
                                     {s.after_over_half_width, "--after"}, {s.across_over_half_width, "--across"}})
     if (!(value > 0) || !std::isfinite(value))
       throw InputError(fmt::format("flat-rim: {} must be positive and finite, got {}", name, value));
-  if (!(s.poisson_ratio >= 0 && s.poisson_ratio < 0.5))
-    throw InputError(fmt::format("flat-rim: --poisson must lie in [0, 0.5), got {}", s.poisson_ratio));
+  if (!(s.poisson_ratio > -1 && s.poisson_ratio < 0.5))
+    throw InputError(fmt::format("flat-rim: --poisson must lie in (-1, 0.5), got {}", s.poisson_ratio));
   if (s.levels < 1)
     throw InputError("flat-rim: --levels must be at least 1");
   const bool straight_rim = s.interior_angle_rad > 0;

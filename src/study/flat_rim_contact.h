@@ -13,7 +13,7 @@
 // part finished with edge radius r_e is the hull rounded by a ball of r_e
 // rolled inside it; `rim --body` takes such an end as line Hertz at R = r_e
 // times the end table's factor, an estimate from above. Here it is solved
-// as it is. Or (`interior_angle_rad` > 0) a straight rim across a cylinder
+// as it is. Or (`interior_angle_rad` > 0) a straight rim across a flattened
 // sheet of radius R under a uniform line load q, `rim`'s one end, to check
 // this reduction against the FEM end model.
 //  - the surface: the hull's lower surface near the end (the oloid's from
@@ -54,7 +54,7 @@ struct FlatRimSettings
 {
   double radius_m = 0.01;         ///< r1 of the oloid (the rim scenes' 10 mm body)
   double normal_load_n = 800;     ///< F through the centre of mass (rim --body's)
-  /// > 0: a straight rim of this interior angle (rad) across a cylinder sheet
+  /// > 0: a straight rim of this interior angle (rad) across a flattened sheet
   /// instead of the oloid's vertex, with:
   double interior_angle_rad = 0;
   double sheet_radius_m = 1e-3;   ///< R of that sheet
