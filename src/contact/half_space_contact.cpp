@@ -234,7 +234,6 @@ HalfSpaceContact solve_half_space_contact(const HalfSpaceDeflection& deflection,
     change *= area / force_n;
     result.iterations = iteration;
     result.change = change;
-    result.approach_m = mean;
     if (change < settings.tolerance)
       break;
     if (iteration >= settings.max_iterations || !std::isfinite(change))

@@ -1,6 +1,7 @@
 #include "geometry/rolling_ball_opening.h"
 #include "core/error.h"
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
@@ -25,10 +26,13 @@ void parabola_pass(const double* in, double* out, std::size_t n, std::size_t str
   for (std::size_t a = 0; a < n; ++a)
   {
     std::size_t best = 0;
+    double value = objective(0, a);
     for (std::size_t u = 1; u < n; ++u)
-      if (objective(u, a) < objective(best, a))
+      if (const double f = objective(u, a); f < value)
+      {
         best = u;
-    double value = objective(best, a);
+        value = f;
+      }
     // The optimum lies between samples. Where the objective is smooth about
     // the best sample (equal second differences), it is the vertex of the
     // parabola through the best sample and its neighbours (error O(h^3)).
@@ -66,12 +70,12 @@ void parabola_pass(const double* in, double* out, std::size_t n, std::size_t str
       // left_side - right_side = A t^2 + B t + C on [0, 1].
       const double A = (l_bend - r_bend) / 2, B = (l_slope + l_bend) - (r_slope - 2 * r_bend);
       const double C = l0 - (r0 - 2 * r_slope + 2 * r_bend);
-      std::vector<double> roots;
+      // NaN marks no root: it fails the interval test below.
+      std::array<double, 2> roots{std::nan(""), std::nan("")};
       if (std::abs(A) < 1e-14 * (std::abs(B) + std::abs(C)))
-        roots.push_back(-C / B);
+        roots[0] = -C / B;
       else if (const double disc = B * B - 4 * A * C; disc >= 0)
-        for (const double sgn : {-1.0, 1.0})
-          roots.push_back((-B + sgn * std::sqrt(disc)) / (2 * A));
+        roots = {(-B - std::sqrt(disc)) / (2 * A), (-B + std::sqrt(disc)) / (2 * A)};
       for (const double t : roots)
         if (t >= 0 && t <= 1)
         {

@@ -4,6 +4,7 @@
 #include "core/error.h"
 #include "geometry/rolling_ball_opening.h"
 #include "geometry/two_circle_hull_height.h"
+#include "oracle/contact_density.h"
 #include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
@@ -196,13 +197,13 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
   const auto match_window = [&](const LineLoad& load, const std::vector<double>& beyond) {
     const double zone_load = load.load_to(zone_end) - load.load_to(zone_start);
     const double zone_arm = (load.moment_to(zone_end) - load.moment_to(zone_start)) / zone_load;
-    const auto mismatch = [&](const Eigen::Vector2d& unknowns) {
-      // unknowns: the window's force over the ruling's on it, the tilt in b^2 / (r_e after).
-      const double tilt = unknowns[1] * half_width * half_width / (s.edge_radius_m * after);
+    const auto mismatch = [&](const Eigen::Vector2d& guess) {
+      // guess: the window's force over the ruling's on it, the tilt in b^2 / (r_e after).
+      const double tilt = guess[1] * half_width * half_width / (s.edge_radius_m * after);
       for (std::size_t i = 0; i < window_nx; ++i)
         for (std::size_t j = 0; j < ny; ++j)
           gap[i * ny + j] = surface(i, j) + beyond[i * ny + j] + tilt * window.x(i);
-      solved = contact::solve_half_space_contact(deflection, gap, unknowns[0] * load.load_to(after), solver,
+      solved = contact::solve_half_space_contact(deflection, gap, guess[0] * load.load_to(after), solver,
                                                  solved.pressure_pa);
       level.iterations += solved.iterations;
       ++level.solves;
@@ -375,9 +376,10 @@ FlatRimContact flat_rim_contact(const FlatRimSettings& s)
     end.hull_height = [oloid](double x, double y) { return oloid->height(x, y); };
     end.sheet_radius = [oloid](double x) { return oloid->sheet_radius(x); };
     // The contact locus's no-tension linear rule for c < 1/3: a triangle on
-    // [0, 3 c L], q(P) = 2 F / (3 c L).
+    // [0, 3 c L], q(P) = 2 F / (3 c L) (oracle::line_load).
     const double loaded = 3 * oloid->centre_of_pressure * oloid->ruling_length_m;
-    end.load = LineLoad::triangle(2 * s.normal_load_n / loaded, loaded);
+    end.load = LineLoad::triangle(
+        oracle::line_load(s.normal_load_n, oloid->centre_of_pressure, oloid->ruling_length_m, 0.0), loaded);
     end.balance_body = true;
     reference_radius = s.edge_radius_m; // the hull's R at P is 0: the finished part's is r_e
   }
