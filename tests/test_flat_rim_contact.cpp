@@ -25,6 +25,28 @@ study::FlatRimSettings straight_rim(double interior_angle_deg)
   s.levels = 1;
   return s;
 }
+
+/// The window's columns and the linear rule beyond it carry F through the
+/// centre of mass's foot (c L from the end), recomputed from the output.
+void expect_balance(const study::FlatRimContact& r, const study::FlatRimLevel& l, double normal_load_n)
+{
+  const double cell = l.cell_m;
+  double force = 0, moment = 0, after = 0;
+  for (std::size_t i = 0; i < l.station_m.size(); ++i)
+  {
+    force += l.station_load_n_per_m[i] * cell;
+    moment += l.station_load_n_per_m[i] * cell * l.station_m[i];
+    after = l.station_m[i] + cell / 2;
+  }
+  const double q = l.balanced_end_line_load_n_per_m, slope = l.balanced_slope_n_per_m2, end = l.balanced_loaded_length_m;
+  const auto load_to = [&](double x) { return q * x + slope * x * x / 2; };
+  const auto moment_to = [&](double x) { return q * x * x / 2 + slope * x * x * x / 3; };
+  force += load_to(end) - load_to(after);
+  moment += moment_to(end) - moment_to(after);
+  EXPECT_NEAR(force / normal_load_n, 1.0, 1e-3);
+  EXPECT_NEAR(moment / force / (r.centre_of_pressure * r.ruling_length_m), 1.0, 1e-3);
+  EXPECT_GE(q + slope * end, -1e-6 * q); // no tension
+}
 } // namespace
 
 TEST(FlatRimContact, StraightRimIsLineHertzAwayFromItsEnd)
@@ -64,23 +86,8 @@ TEST(FlatRimContact, OloidVertexBalancesTheBodyAndConverges)
   EXPECT_TRUE(r.converged) << r.last_change << " " << r.window_change;
   for (const study::FlatRimLevel& l : r.levels)
   {
-    // The window's columns and the linear rule beyond it carry F through
-    // the centre of mass's foot (c L from P), recomputed from the output.
-    const double cell = l.cell_m;
-    double force = 0, moment = 0, after = 0;
-    for (std::size_t i = 0; i < l.station_m.size(); ++i)
-    {
-      force += l.station_load_n_per_m[i] * cell;
-      moment += l.station_load_n_per_m[i] * cell * l.station_m[i];
-      after = l.station_m[i] + cell / 2;
-    }
-    const double q = l.balanced_end_line_load_n_per_m, end = l.balanced_loaded_length_m;
-    const auto load_to = [&](double x) { return q * (x - x * x / (2 * end)); };
-    const auto moment_to = [&](double x) { return q * (x * x / 2 - x * x * x / (3 * end)); };
-    force += load_to(end) - load_to(after);
-    moment += moment_to(end) - moment_to(after);
-    EXPECT_NEAR(force / s.normal_load_n, 1.0, 1e-3);
-    EXPECT_NEAR(moment / force / (0.25 * length), 1.0, 1e-3);
+    expect_balance(r, l, s.normal_load_n);
+    const double q = l.balanced_end_line_load_n_per_m;
     // The finish lifts the apex: the contact starts inside the ruling, and
     // the load it does not take there raises the rule's q(P).
     EXPECT_GT(l.contact_start_m, 0.0);
@@ -90,6 +97,31 @@ TEST(FlatRimContact, OloidVertexBalancesTheBodyAndConverges)
   }
   EXPECT_GT(r.end_lift_m, 0.0);
   EXPECT_LT(r.largest_slope, 0.1); // half-space theory's small slopes
+}
+
+// Away from the vertex the end's rim leans (interior angle below 180 deg)
+// and its sheet is wider than r_e; at the lowest angle, 150 deg, the doubled
+// window covers 43 % of the ruling, whose load then answers strongly to the
+// rule beyond it (the balance backtracks).
+TEST(FlatRimContact, OloidLoopEndBalancesTheBody)
+{
+  for (const double angle_deg : {150.0})
+  {
+    study::FlatRimSettings s;
+    s.levels = 1;
+    const study::LoopEnd end = study::oloid_loop_end(s.radius_m, angle_deg * std::numbers::pi / 180);
+    const study::FlatRimContact r = study::flat_rim_contact(s, end);
+    EXPECT_NEAR(r.interior_angle_rad * 180 / std::numbers::pi, angle_deg, 1e-6);
+    EXPECT_NEAR(r.centre_of_pressure, end.centre_of_pressure_from_end(), 1e-12);
+    EXPECT_GT(r.end_radius_m, s.edge_radius_m);
+    EXPECT_EQ(r.reference_radius_m, r.end_radius_m);
+    const study::FlatRimLevel& l = r.levels.back();
+    expect_balance(r, l, s.normal_load_n);
+    EXPECT_NEAR(l.far_peak_pa / l.far_line_hertz_pa, 1.0, 0.01) << angle_deg << " deg";
+    EXPECT_GT(l.peak_pressure_pa, r.line_hertz_peak_pa) << angle_deg << " deg";
+    EXPECT_LT(std::abs(r.window_change), s.tolerance) << angle_deg << " deg";
+    EXPECT_LT(r.largest_slope, 0.1);
+  }
 }
 
 TEST(FlatRimContact, RefusesBadInput)
@@ -107,4 +139,7 @@ TEST(FlatRimContact, RefusesBadInput)
   s = straight_rim(180);
   s.before_over_half_width = 2;
   EXPECT_THROW(study::flat_rim_contact(s), ComputationError);
+  study::FlatRimSettings oloid;
+  oloid.end_angle_rad = 140 * std::numbers::pi / 180;
+  EXPECT_THROW(study::flat_rim_contact(oloid), InputError);
 }

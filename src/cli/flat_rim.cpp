@@ -26,6 +26,10 @@ const io::BoundSchema<study::FlatRimSettings>& flat_rim_schema()
         .real("normal_load_n", "--load", &S::normal_load_n, "N",
               "Force F pressing the body onto the counter-face through its centre of mass (rim --body's)",
               io::positive)
+        .real("end_angle_deg", "--end-angle", &S::end_angle_rad, "deg",
+              "The oloid's loop orientation whose loaded end has this interior angle (150-180 deg; 180: the vertex, "
+              "c = 1/4; below it the loop's forward side, the other side being its mirror image)",
+              io::Bounds{150, 180}, std::numbers::pi / 180)
         .real("interior_angle_deg", "--interior-angle", &S::interior_angle_rad, "deg",
               "0: the oloid's vertex. Else a straight rim of this interior angle (150-180 deg: the rim's other face "
               "leans by 180 deg - a) across a sheet of radius R, flattened with its profile in the gap: `rim`'s one end",
@@ -76,8 +80,11 @@ nlohmann::json run_flat_rim(const io::Parameters& p)
       setup.interior_angle_rad > 0
           ? fmt::format("straight rim of {:.4g} deg across a sheet of R = {} m, q = {} N/m", setup.interior_angle_rad * 180 / std::numbers::pi,
                         setup.sheet_radius_m, setup.load_n_per_m)
-          : fmt::format("oloid r1 = {} m at a vertex orientation (c = {:.4f}), F = {} N, q(P) = {:.6g} N/m", setup.radius_m,
-                        r.centre_of_pressure, setup.normal_load_n, r.end_line_load_n_per_m);
+          : fmt::format("oloid r1 = {} m at its loop's end of {:.4f} deg ({}c = {:.4f} from the end, hull's R there "
+                        "{:.4g} m), F = {} N, q = {:.6g} N/m at the end",
+                        setup.radius_m, r.interior_angle_rad * 180 / std::numbers::pi,
+                        setup.end_angle_rad < std::numbers::pi ? "" : "the vertex, ", r.centre_of_pressure,
+                        r.end_radius_m, setup.normal_load_n, r.end_line_load_n_per_m);
   spdlog::info("\n{}, counter-face {}, edge radius {} m: b = {:.4g} m (R = {:.4g} m), E* = {:.4g} Pa\n\n{}\npeak {:.5g} Pa "
                "({}: {:+.2f} % at the last level, {:+.2f} % with the first level's window twice as long); line Hertz at the end's q with R = max(R_end, r_e) gives {:.5g} Pa "
                "(peak / that = {:.4f}); the rounded surface lies {:.3g} m above the ground at the end; largest slope "

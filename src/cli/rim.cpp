@@ -52,7 +52,13 @@ const io::BoundSchema<RimCommand>& rim_schema()
         .real("end_table_step_deg", "--end-table-step", &RimCommand::end_table_step_rad, "deg",
               "With --body: largest spacing of the end table's interior angles (end models across the loop's "
               "range of loaded ends; the check halves it)",
-              io::Bounds{0.5, 60}, std::numbers::pi / 180);
+              io::Bounds{0.5, 60}, std::numbers::pi / 180)
+        .real("flat_rim_from_deg", "--flat-rim-from", &RimCommand::flat_rim_from_rad, "deg",
+              "With --body and a rounded edge: loaded ends of at least this interior angle take the flat-rim table, "
+              "the body's own ends solved in 3D by half-space theory (its surface near the end, its load along the "
+              "ruling, its balance: `rollcheck flat-rim`), nodes 5 deg apart up to the loop's flattest end, instead "
+              "of the FEM end table (a straight rim under a uniform load); 180: never",
+              io::Bounds{150, 180}, std::numbers::pi / 180);
     s.real("sheet_radius_m", "--sheet-radius", end(&RimEndSettings::radius_m), "m",
            "One end: R, the contacting sheet's radius across the ruling at the end (the Hertz scenes' 10 mm "
            "cylinder)",
@@ -291,16 +297,30 @@ nlohmann::json run_loop(study::RimLoopSettings settings)
                           "largest interior pressure {}",
                           score(loop.end_aware[0].sds, missing), score(loop.end_aware[0].fds, missing), r.end_aware_status(),
                           loop_ratio_text(r));
+  std::string flat;
+  if (!r.flat_table.empty())
+  {
+    flat = fmt::format("; from {:.1f} deg the flat-rim table (the loop's own ends, half-space theory), peak / line "
+                       "Hertz:",
+                       r.flat_from_rad / degree);
+    for (const study::FlatRimNode& n : r.flat_table)
+      flat += fmt::format(" {:.3f} at {:.1f}{}", n.ratio(), n.interior_angle_rad / degree,
+                          n.converged() ? "" : " (NOT converged)");
+    if (const nlohmann::json& seam = j["flat_rim_seam"]; !seam.is_null())
+      flat += fmt::format(" deg; where the tables meet the end table gives {:.3f}", seam["end_table_ratio"].get<double>());
+    else
+      flat += " deg";
+  }
   spdlog::info("\nrims of {} ({}), counter-face {}, edge {}:\n\n{}\nloaded rim ends over the loop: {} in {} of {} "
                "samples, interior angles {:.1f} to {:.1f} deg (singular above {:.2f} deg); end table of {} nodes "
-               "at q = {:.4g} N/m, R = {:.4g} m, against the direct ends {}\n{}\n\n",
+               "at q = {:.4g} N/m, R = {:.4g} m, against the direct ends {}{}\n{}\n\n",
                r.fem_sds.body, r.fem_sds.source, j["counter_face"].get<std::string>(),
                r.end_setup.edge_radius_m > 0 ? fmt::format("rounded, r_e = {:.3g} m", r.end_setup.edge_radius_m)
                                              : "sharp",
                ends, loop.loaded_ends, loop.loaded_end_samples, loop.samples, loop.loaded_end_angle_min_rad / degree,
                loop.loaded_end_angle_max_rad / degree, r.singular_from_rad / degree, r.table.size(),
                r.reference_load_n_per_m, r.reference_radius_m,
-               r.table_vs_direct ? fmt::format("{:.2f} %", 100 * *r.table_vs_direct) : "-", scores);
+               r.table_vs_direct ? fmt::format("{:.2f} %", 100 * *r.table_vs_direct) : "-", flat, scores);
   return j;
 }
 

@@ -358,6 +358,8 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScali
   result.oracle = s.oracle;
   result.source = source.description;
   result.contact_held = scene.contact_held;
+  result.circles = source.circles;
+  result.centre_of_mass_m = source.centre_of_mass_m;
   if (rank == 0)
     spdlog::info("fem-sds {}: {}; every sample scored, {} orientations solved directly (seed {})", result.body,
                  source.description, s.orientations, s.seed);

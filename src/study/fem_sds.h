@@ -119,6 +119,10 @@ struct FemSdsResult
   /// rulings; not in the JSON): end-aware scores reuse them (study/rim_loop.h).
   LoopSamples loop_samples;
   bool contact_held = true;                ///< rolling: false when a rim lifted before the loop closed
+  /// The body's generating circles and centre of mass (body frame; not in
+  /// the JSON): the rims' half-space end models solve the loop's own ends.
+  std::vector<oracle::Circle> circles;
+  Eigen::Vector3d centre_of_mass_m = Eigen::Vector3d::Zero();
   std::vector<fem::SliceScaling::Node> table; ///< the FEM solves every sample's pressures come from
   double table_wall_s = 0;                 ///< FEM time of the table
   double table_vs_direct_worst = 0;        ///< over the directly solved orientations

@@ -4,7 +4,9 @@
 #include "core/error.h"
 #include "geometry/rolling_ball_opening.h"
 #include "geometry/two_circle_hull_height.h"
+#include "geometry/two_circle_roller.h"
 #include "oracle/contact_density.h"
+#include "oracle/support_set.h"
 #include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
@@ -14,37 +16,31 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <optional>
 
 namespace rollcheck::study
 {
 namespace
 {
-/// The oloid (r1) standing on the ruling from P = A(-60 deg) to B's far
-/// point, P the frame's origin (scripts/oloid_vertex.py's frame).
-struct OloidAtVertex
+/// The hull's lower surface near a loaded end of a two-circle body's ruling,
+/// over the ground frame with the end as its origin and x' along the ruling.
+struct RulingEndSurface
 {
-  geometry::SpaceCircle a;
+  geometry::SpaceCircle a; ///< the circle the end lies on, t = 0 at the end
   geometry::SpaceCircle b;
   geometry::GroundFrame ground;
-  geometry::SegmentSearch search;
-  double ruling_length_m = 0;
-  double centre_of_pressure = 0;
+  // The surface within a few r_e of the end lies on segments from A within
+  // 0.15 rad of it (1.5 mm at r1 = 10 mm).
+  geometry::SegmentSearch search{-0.15, 0.15, 48};
 
-  explicit OloidAtVertex(double r1)
-      : a{Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(), r1},
-        b{Eigen::Vector3d(r1, 0, 0), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), r1}
+  explicit RulingEndSurface(const LoopEnd& e)
+      : a(space_circle(e.circles[static_cast<std::size_t>(e.end)], e.point_m())),
+        b(space_circle(e.circles[static_cast<std::size_t>(1 - e.end)], e.end == 0 ? e.ruling.end_m : e.ruling.start_m))
   {
-    const double apex_t = -std::numbers::pi / 3;
-    const Eigen::Vector3d p = a.at(apex_t), end(2 * r1, 0, 0), centre_of_mass(r1 / 2, 0, 0);
-    ground.origin = p;
-    ground.down = p / r1;
-    ground.along = (end - p).normalized();
+    ground.origin = e.point_m();
+    ground.down = e.ruling.direction; // the support direction: out of the body, into the ground
+    ground.along = e.end == 0 ? e.ruling.axis : Eigen::Vector3d(-e.ruling.axis);
     ground.across = ground.down.cross(ground.along);
-    ruling_length_m = (end - p).norm();
-    centre_of_pressure = (centre_of_mass - p).dot(ground.along) / ruling_length_m;
-    // The surface within a few r_e of P lies on segments from A within
-    // 0.15 rad (1.5 mm at r1 = 10 mm) of P.
-    search = {apex_t - 0.15, apex_t + 0.15, 48};
   }
 
   double height(double along_m, double across_m) const
@@ -52,12 +48,11 @@ struct OloidAtVertex
     return geometry::two_circle_hull_height(a, b, ground, search, along_m, across_m);
   }
 
-  /// The sheet's radius across the ruling at x' from P, from the rise at
-  /// +-y0 (their mean cancels the sheet's cubic term).
-  double sheet_radius(double along_m) const
+  /// The circle with t = 0 at `through`, a point of it.
+  static geometry::SpaceCircle space_circle(const oracle::Circle& c, const Eigen::Vector3d& through)
   {
-    const double y0 = 1e-3 * ruling_length_m;
-    return y0 * y0 / (height(along_m, y0) + height(along_m, -y0));
+    const Eigen::Vector3d radial = (through - c.centre_m).normalized();
+    return {c.centre_m, radial, c.normal.cross(radial), c.radius_m};
   }
 };
 
@@ -81,8 +76,32 @@ struct LineLoad
     x = std::clamp(x, 0.0, length_m);
     return at_end_n_per_m * x * x / 2 + slope_n_per_m2 * x * x * x / 3;
   }
-  /// The no-tension linear rule's triangle: `at_end` at the end, 0 at `length`.
-  static LineLoad triangle(double at_end, double length) { return {at_end, -at_end / length, length}; }
+  /// q = at_end + slope x' where positive, on [0, ruling_length] (the no-tension linear rule).
+  static LineLoad no_tension(double at_end, double slope, double ruling_length)
+  {
+    return {at_end, slope, slope < 0 ? std::min(ruling_length, -at_end / slope) : ruling_length};
+  }
+  /// The no-tension linear rule on [from, ruling_length] carrying `force` with
+  /// its centre at `centre` (the contact locus's rule, oracle::line_load);
+  /// none when the centre lies in the far third (the load would leave `from`).
+  static std::optional<LineLoad> carrying(double force, double centre, double from, double ruling_length)
+  {
+    const double length = ruling_length - from, e = (centre - from) / length;
+    double at_from = 0, slope = 0;
+    if (e > 0 && e < 1.0 / 3)
+    {
+      at_from = 2 * force / (3 * e * length);
+      slope = -at_from / (3 * e * length);
+    }
+    else if (e >= 1.0 / 3 && e <= 2.0 / 3)
+    {
+      at_from = force / length * (4 - 6 * e);
+      slope = (force / length * (6 * e - 2) - at_from) / length;
+    }
+    else
+      return std::nullopt;
+    return no_tension(at_from - slope * from, slope, ruling_length);
+  }
 };
 
 /// One flat rim end: the hull's surface near it, the sheet's radius across
@@ -92,8 +111,9 @@ struct EndProblem
   std::function<double(double, double)> hull_height;
   std::function<double(double)> sheet_radius;
   LineLoad load;
+  double ruling_length_m = 0;
   /// Re-solve the ruling's load beyond the window so that the body balances
-  /// (the oloid); else the load beyond is held (an end of a long contact).
+  /// (a body's end); else the load beyond is held (an end of a long contact).
   bool balance_body = false;
 };
 
@@ -113,21 +133,11 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
   const std::size_t after_cells = cells_over(s.after_over_half_width * half_width);
   const double after = (static_cast<double>(after_cells) + 0.5) * cell;
 
-  // The prescribed line Hertz beyond the window: R(x') at stations 50 um
-  // apart, interpolated.
-  const double station_step = std::min(5e-5, end.load.length_m / 50);
-  std::vector<double> station_radius;
-  for (double x = 0; x <= end.load.length_m + station_step; x += station_step)
-    station_radius.push_back(end.sheet_radius(std::max(x, station_step / 4)));
-  const auto radius_at = [&](double x) {
-    const double k = std::clamp(x / station_step, 0.0, static_cast<double>(station_radius.size() - 1) - 1e-9);
-    const auto i = static_cast<std::size_t>(k);
-    return station_radius[i] + (k - static_cast<double>(i)) * (station_radius[i + 1] - station_radius[i]);
-  };
+  const auto& radius_at = end.sheet_radius;
   // Across: the widest contact of the ruling beyond the window, with room
   // for the balance raising its load and the end's extra load near it.
   double widest = s.across_over_half_width * half_width;
-  for (double x = after; x < end.load.length_m; x += station_step)
+  for (double x = after; x < end.load.length_m; x += cell)
     widest = std::max(widest, 1.6 * contact::line_contact(end.load.at(x), radius_at(x), effective_modulus,
                                                            s.poisson_ratio).half_width_m);
   const std::size_t half_across = cells_over(widest);
@@ -243,16 +253,16 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
   };
   // The body's balance: the window's load and the ruling's beyond it carry F
   // with its centre at the centre of mass's foot. The ruling beyond takes
-  // the no-tension linear rule, q falling to 0 at its loaded length l: a
-  // triangle on [after, l], whose load centre is after + (l - after) / 3.
+  // the no-tension linear rule with the rest of F and its moment.
   LineLoad load = end.load;
   const double force = load.load_to(load.length_m), force_moment = load.moment_to(load.length_m);
-  // The balance as a fixed point of the rule beyond (q at the end, loaded
-  // length), scaled by the locus's: Broyden's method, starting from half
+  // The balance as a fixed point of the rule beyond (q at the end and its
+  // slope, scaled by the locus's): Broyden's method, starting from half
   // steps (a full step overshoots once the window is long: its own load
   // then answers strongly to the rule beyond it).
-  const Eigen::Vector2d scale(end.load.at_end_n_per_m, end.load.length_m);
-  Eigen::Vector2d rule(1.0, 1.0), last_residual, last_step;
+  const double q_scale = end.load.at_end_n_per_m, slope_scale = q_scale / end.ruling_length_m;
+  Eigen::Vector2d rule(1.0, end.load.slope_n_per_m2 / slope_scale), last_residual = Eigen::Vector2d::Zero(),
+                                                                       last_step = Eigen::Vector2d::Zero();
   Eigen::Matrix2d balance_jacobian = -2 * Eigen::Matrix2d::Identity();
   for (int balance = 0;; ++balance)
   {
@@ -267,13 +277,24 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
     level.window_load_change = window_force / end.load.load_to(after) - 1;
     if (!end.balance_body)
       break;
-    const double beyond_force = force - window_force, beyond_moment = force_moment - window_moment;
-    const double length = after + 3 * (beyond_moment / beyond_force - after);
-    if (!(length > after) || length > outer_grid.x(outer_nx - 1))
-      throw ComputationError("flat rim: the ruling beyond the window cannot balance the body");
-    const Eigen::Vector2d next(2 * length * beyond_force / ((length - after) * (length - after)) / scale[0],
-                               length / scale[1]);
-    const Eigen::Vector2d residual = next - rule;
+    const double beyond_force = force - window_force;
+    const std::optional<LineLoad> next_load = LineLoad::carrying(
+        beyond_force, (force_moment - window_moment) / beyond_force, after, end.ruling_length_m);
+    if (!next_load || next_load->length_m > outer_grid.x(outer_nx - 1))
+    {
+      // The step went too far (a long window's load answers strongly to the
+      // rule beyond it): back to half of it.
+      if (balance == 0 || balance > 40)
+        throw ComputationError(fmt::format("flat rim: the ruling beyond the window cannot balance the body "
+                                           "(window {:.3g} m of the ruling's {:.3g} m)",
+                                           after, end.ruling_length_m));
+      last_step /= 2;
+      rule -= last_step;
+      load = LineLoad::no_tension(rule[0] * q_scale, rule[1] * slope_scale, end.ruling_length_m);
+      continue;
+    }
+    const Eigen::Vector2d residual
+        = Eigen::Vector2d(next_load->at_end_n_per_m / q_scale, next_load->slope_n_per_m2 / slope_scale) - rule;
     if (residual.cwiseAbs().maxCoeff() < 1e-4)
       break;
     if (balance > 40)
@@ -284,9 +305,10 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
     last_step = -balance_jacobian.colPivHouseholderQr().solve(residual);
     last_residual = residual;
     rule += last_step;
-    load = LineLoad::triangle(rule[0] * scale[0], rule[1] * scale[1]);
+    load = LineLoad::no_tension(rule[0] * q_scale, rule[1] * slope_scale, end.ruling_length_m);
   }
   level.balanced_end_line_load_n_per_m = load.at_end_n_per_m;
+  level.balanced_slope_n_per_m2 = load.slope_n_per_m2;
   level.balanced_loaded_length_m = load.length_m;
 
   // Readings: the peak, the columns, the far station against line Hertz.
@@ -329,7 +351,9 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
 }
 } // namespace
 
-FlatRimContact flat_rim_contact(const FlatRimSettings& s)
+namespace
+{
+void check_settings(const FlatRimSettings& s)
 {
   for (const auto& [value, name] : {std::pair{s.radius_m, "--radius"}, {s.normal_load_n, "--load"},
                                     {s.edge_radius_m, "--edge-radius"}, {s.youngs_modulus_pa, "--youngs-modulus"},
@@ -342,51 +366,24 @@ FlatRimContact flat_rim_contact(const FlatRimSettings& s)
     throw InputError(fmt::format("flat-rim: --poisson must lie in (-1, 0.5), got {}", s.poisson_ratio));
   if (s.levels < 1)
     throw InputError("flat-rim: --levels must be at least 1");
-  const bool straight_rim = s.interior_angle_rad > 0;
-  if (straight_rim && !(s.interior_angle_rad >= 150 * std::numbers::pi / 180 && s.interior_angle_rad <= std::numbers::pi))
-    throw InputError(fmt::format("flat-rim: --interior-angle {} deg is outside [150, 180] deg, where the rim's other "
-                                 "face is gentle enough for half-space theory (use `rollcheck rim`)",
-                                 s.interior_angle_rad * 180 / std::numbers::pi));
+  const auto check_angle = [](double angle, const char* name) {
+    if (!(angle >= smallest_flat_rim_angle_rad && angle <= std::numbers::pi))
+      throw InputError(fmt::format("flat-rim: {} {} deg is outside [{}, 180] deg, where the rim's other face is "
+                                   "gentle enough for half-space theory (use `rollcheck rim`)",
+                                   name, angle * 180 / std::numbers::pi,
+                                   smallest_flat_rim_angle_rad * 180 / std::numbers::pi));
+  };
+  if (s.interior_angle_rad != 0)
+    check_angle(s.interior_angle_rad, "--interior-angle");
+  check_angle(s.end_angle_rad, "--end-angle");
+}
 
-  FlatRimContact result;
-  result.effective_modulus_pa = contact::effective_modulus(s.youngs_modulus_pa, s.poisson_ratio, s.steel_counter_face);
-  EndProblem end;
-  double reference_radius = 0;
-  if (straight_rim)
-  {
-    // rim's end model with its flat sheet: a block whose top (x' > 0) meets
-    // the rim's other face, leaning by 180 deg - a, along a straight edge
-    // across the ruling, the sheet's profile y^2 / (2 R) in the gap.
-    const double lean = std::tan(std::numbers::pi - s.interior_angle_rad), radius = s.sheet_radius_m;
-    end.hull_height = [lean, radius](double x, double y) { return y * y / (2 * radius) + std::max(0.0, -x * lean); };
-    end.sheet_radius = [radius](double) { return radius; };
-    reference_radius = std::max(radius, s.edge_radius_m);
-    const double half_width = contact::line_contact(s.load_n_per_m, reference_radius, result.effective_modulus_pa,
-                                                    s.poisson_ratio)
-                                  .half_width_m;
-    // A long contact: the line load held to 400 b beyond the end (its far
-    // end's deflection over the window is smooth; the window's tilt takes it).
-    end.load = {s.load_n_per_m, 0.0, std::max(400.0, 3 * s.after_over_half_width) * half_width};
-  }
-  else
-  {
-    const auto oloid = std::make_shared<const OloidAtVertex>(s.radius_m);
-    result.ruling_length_m = oloid->ruling_length_m;
-    result.centre_of_pressure = oloid->centre_of_pressure;
-    end.hull_height = [oloid](double x, double y) { return oloid->height(x, y); };
-    end.sheet_radius = [oloid](double x) { return oloid->sheet_radius(x); };
-    // The contact locus's no-tension linear rule for c < 1/3: a triangle on
-    // [0, 3 c L], q(P) = 2 F / (3 c L) (oracle::line_load).
-    const double loaded = 3 * oloid->centre_of_pressure * oloid->ruling_length_m;
-    end.load = LineLoad::triangle(
-        oracle::line_load(s.normal_load_n, oloid->centre_of_pressure, oloid->ruling_length_m, 0.0), loaded);
-    end.balance_body = true;
-    reference_radius = s.edge_radius_m; // the hull's R at P is 0: the finished part's is r_e
-  }
+/// The levels and the longer window of one end, into `result`.
+void solve_end(const FlatRimSettings& s, const EndProblem& end, FlatRimContact& result)
+{
   result.end_line_load_n_per_m = end.load.at_end_n_per_m;
-  const contact::LineHertz at_end = contact::line_contact(end.load.at_end_n_per_m, reference_radius,
+  const contact::LineHertz at_end = contact::line_contact(end.load.at_end_n_per_m, result.reference_radius_m,
                                                           result.effective_modulus_pa, s.poisson_ratio);
-  result.reference_radius_m = reference_radius;
   result.half_width_m = at_end.half_width_m;
   result.line_hertz_peak_pa = at_end.peak_pressure_pa;
   for (int k = 0; k < s.levels; ++k)
@@ -410,6 +407,82 @@ FlatRimContact flat_rim_contact(const FlatRimSettings& s)
         result.levels.back().peak_pressure_pa / result.levels[result.levels.size() - 2].peak_pressure_pa - 1;
   result.converged = result.levels.size() >= 2 && std::abs(result.last_change) < s.tolerance
                      && std::abs(result.window_change) < s.tolerance;
+}
+} // namespace
+
+LoopEnd oloid_loop_end(double radius_m, double interior_angle_rad)
+{
+  const std::vector<oracle::Circle> circles
+      = oracle::roller_circles({90, 1, 1, 2}, geometry::RollerFamily::centre_line, radius_m);
+  // Midway between the circles' centres: the oloid's symmetry.
+  const Eigen::Vector3d centre_of_mass = 0.5 * (circles[0].centre_m + circles[1].centre_m);
+  if (interior_angle_rad >= std::numbers::pi)
+    return flattest_loop_ends(circles, centre_of_mass, {}).flattest;
+  const double angles[1] = {interior_angle_rad};
+  return flattest_loop_ends(circles, centre_of_mass, angles).at_angle[0][0];
+}
+
+FlatRimContact flat_rim_contact(const FlatRimSettings& s)
+{
+  check_settings(s);
+  if (s.interior_angle_rad == 0)
+    return flat_rim_contact(s, oloid_loop_end(s.radius_m, s.end_angle_rad));
+  FlatRimContact result;
+  result.effective_modulus_pa = contact::effective_modulus(s.youngs_modulus_pa, s.poisson_ratio, s.steel_counter_face);
+  result.interior_angle_rad = s.interior_angle_rad;
+  result.end_radius_m = s.sheet_radius_m;
+  // rim's end model with its flat sheet: a block whose top (x' > 0) meets
+  // the rim's other face, leaning by 180 deg - a, along a straight edge
+  // across the ruling, the sheet's profile y^2 / (2 R) in the gap.
+  EndProblem end;
+  const double lean = std::tan(std::numbers::pi - s.interior_angle_rad), radius = s.sheet_radius_m;
+  end.hull_height = [lean, radius](double x, double y) { return y * y / (2 * radius) + std::max(0.0, -x * lean); };
+  end.sheet_radius = [radius](double) { return radius; };
+  result.reference_radius_m = std::max(radius, s.edge_radius_m);
+  const double half_width = contact::line_contact(s.load_n_per_m, result.reference_radius_m,
+                                                  result.effective_modulus_pa, s.poisson_ratio)
+                                .half_width_m;
+  // A long contact: the line load held to 400 b beyond the end (its far
+  // end's deflection over the window is smooth; the window's tilt takes it).
+  end.load = {s.load_n_per_m, 0.0, std::max(400.0, 3 * s.after_over_half_width) * half_width};
+  end.ruling_length_m = end.load.length_m;
+  solve_end(s, end, result);
+  return result;
+}
+
+FlatRimContact flat_rim_contact(const FlatRimSettings& s, const LoopEnd& loop_end)
+{
+  check_settings(s);
+  FlatRimContact result;
+  result.effective_modulus_pa = contact::effective_modulus(s.youngs_modulus_pa, s.poisson_ratio, s.steel_counter_face);
+  const oracle::Ruling& ruling = loop_end.ruling;
+  result.ruling_length_m = ruling.length_m;
+  result.centre_of_pressure = loop_end.centre_of_pressure_from_end();
+  result.interior_angle_rad = loop_end.interior_angle_rad;
+  result.end_radius_m = loop_end.radius_m();
+  if (!(result.interior_angle_rad >= smallest_flat_rim_angle_rad))
+    throw InputError(fmt::format("flat-rim: the end's interior angle, {:.4g} deg, is below {} deg (use `rollcheck rim`)",
+                                 result.interior_angle_rad * 180 / std::numbers::pi,
+                                 smallest_flat_rim_angle_rad * 180 / std::numbers::pi));
+  const auto surface = std::make_shared<const RulingEndSurface>(loop_end);
+  EndProblem end;
+  end.hull_height = [surface](double x, double y) { return surface->height(x, y); };
+  // Linear along the ruling: exact for a developable sheet.
+  end.sheet_radius = [r0 = loop_end.radius_m(), r1 = loop_end.other_radius_m(), length = ruling.length_m](double x) {
+    return r0 + (r1 - r0) * std::clamp(x / length, 0.0, 1.0);
+  };
+  // The contact locus's no-tension linear rule from this end (oracle::line_load).
+  const double c = result.centre_of_pressure;
+  const auto q = [&](double f) { return oracle::line_load(s.normal_load_n, c, ruling.length_m, f); };
+  if (!(q(0) > 0))
+    throw ComputationError(fmt::format("flat rim: the end carries no load (c = {:.4f} from it)", c));
+  end.load = LineLoad::no_tension(q(0), c < 1.0 / 3 ? -q(0) / (3 * c * ruling.length_m) : (q(1) - q(0)) / ruling.length_m,
+                                  ruling.length_m);
+  end.ruling_length_m = ruling.length_m;
+  end.balance_body = true;
+  // The finished part has no radius below r_e (the hull's is 0 at a sheet's apex).
+  result.reference_radius_m = std::max(result.end_radius_m, s.edge_radius_m);
+  solve_end(s, end, result);
   return result;
 }
 
@@ -427,6 +500,7 @@ nlohmann::json to_json(const FlatRimContact& r)
                       {"contact_start_m", l.contact_start_m},
                       {"window_load_change", l.window_load_change},
                       {"balanced_end_line_load_n_per_m", l.balanced_end_line_load_n_per_m},
+                      {"balanced_slope_n_per_m2", l.balanced_slope_n_per_m2},
                       {"balanced_loaded_length_m", l.balanced_loaded_length_m},
                       {"far_peak_pa", l.far_peak_pa},
                       {"far_line_hertz_pa", l.far_line_hertz_pa},
@@ -435,6 +509,8 @@ nlohmann::json to_json(const FlatRimContact& r)
                       {"station_peak_pa", l.station_peak_pa},
                       {"station_load_n_per_m", l.station_load_n_per_m}});
   return {{"ruling_length_m", r.ruling_length_m},
+          {"end_interior_angle_deg", r.interior_angle_rad * 180 / std::numbers::pi},
+          {"end_sheet_radius_m", r.end_radius_m},
           {"centre_of_pressure", r.centre_of_pressure},
           {"end_line_load_n_per_m", r.end_line_load_n_per_m},
           {"effective_modulus_pa", r.effective_modulus_pa},

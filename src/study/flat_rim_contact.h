@@ -45,15 +45,24 @@
 // contact held to a uniform load the end's peak keeps growing with the
 // held length, as line contacts in half-space theory have no plane-strain
 // limit).
+#include "study/flattest_loop_ends.h"
 #include <nlohmann/json_fwd.hpp>
+#include <numbers>
 #include <vector>
 
 namespace rollcheck::study
 {
+/// Below this interior angle the rim's other face is too steep for half-space theory.
+constexpr double smallest_flat_rim_angle_rad = 150 * std::numbers::pi / 180;
+
 struct FlatRimSettings
 {
   double radius_m = 0.01;         ///< r1 of the oloid (the rim scenes' 10 mm body)
   double normal_load_n = 800;     ///< F through the centre of mass (rim --body's)
+  /// The oloid's loop orientation whose loaded end has this interior angle
+  /// (rad): pi is the vertex (c = 1/4), below it the orientation on the loop's
+  /// forward side (the other is its mirror image).
+  double end_angle_rad = std::numbers::pi;
   /// > 0: a straight rim of this interior angle (rad) across a flattened sheet
   /// instead of the oloid's vertex, with:
   double interior_angle_rad = 0;
@@ -82,10 +91,11 @@ struct FlatRimLevel
   double peak_across_m = 0;
   double contact_start_m = 0;     ///< the loaded cells' smallest x'
   double window_load_change = 0;  ///< the window's load over the ruling's on it, - 1 (what the end does not take)
-  /// The linear rule beyond the window once the body balances (the oloid):
-  /// q = balanced_end_line_load (1 - x' / balanced_loaded_length) up to
+  /// The linear rule beyond the window once the body balances (a body's
+  /// end): q = balanced_end_line_load + balanced_slope x' up to
   /// balanced_loaded_length; the ruling's held load otherwise.
   double balanced_end_line_load_n_per_m = 0;
+  double balanced_slope_n_per_m2 = 0;
   double balanced_loaded_length_m = 0;
   double far_peak_pa = 0;         ///< the largest pressure across the ruling at the window's far station
   double far_line_hertz_pa = 0;   ///< line Hertz's p0 at that station's q and R
@@ -97,8 +107,10 @@ struct FlatRimLevel
 
 struct FlatRimContact
 {
-  double ruling_length_m = 0;           ///< the oloid's
-  double centre_of_pressure = 0;        ///< the oloid's c, as a fraction of the ruling from P
+  double ruling_length_m = 0;           ///< the body's
+  double centre_of_pressure = 0;        ///< the body's c, as a fraction of the ruling from the end
+  double interior_angle_rad = 0;        ///< of the rim at the end
+  double end_radius_m = 0;              ///< the hull's sheet radius across the ruling at the end
   double end_line_load_n_per_m = 0;    ///< q at the end (the oloid's q(P))
   double effective_modulus_pa = 0;
   double reference_radius_m = 0;        ///< max(R_end, r_e)
@@ -113,10 +125,18 @@ struct FlatRimContact
   bool converged = false;               ///< both changes below the tolerance
 };
 
-/// Throws InputError for a non-positive radius, load, edge radius or
-/// modulus, ComputationError when a solve fails (the contact reaching the
-/// window's border across or beyond P names the setting to widen).
+/// The settings' scene: the straight rim (interior_angle_rad > 0) or the
+/// oloid's loop end at end_angle_rad. Throws InputError for a non-positive
+/// radius, load, edge radius or modulus or an angle outside [150, 180] deg,
+/// ComputationError when a solve fails (the contact reaching the window's
+/// border across or beyond P names the setting to widen).
 FlatRimContact flat_rim_contact(const FlatRimSettings& settings);
+/// A loaded end of any two-circle body's loop (study/flattest_loop_ends.h),
+/// its q from F (the settings' normal_load_n) and c by the locus's rule; the
+/// settings' oloid and straight-rim fields are not used.
+FlatRimContact flat_rim_contact(const FlatRimSettings& settings, const LoopEnd& end);
+/// The oloid (r1) at its loop's end of this interior angle (pi: the vertex).
+LoopEnd oloid_loop_end(double radius_m, double interior_angle_rad);
 
 nlohmann::json to_json(const FlatRimContact& result);
 } // namespace rollcheck::study

@@ -121,6 +121,12 @@ std::vector<RimLoopEnd> direct_ends(MPI_Comm comm, const RimLoopSettings& s, con
   return ends;
 }
 
+/// The flat-rim table over [from, the loop's flattest loaded end]: the
+/// loop's own ends at those angles solved by half-space theory, the solves
+/// shared out over the ranks (each is serial).
+std::vector<FlatRimNode> flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, const FemSdsResult& interior,
+                                        double from);
+
 /// Nodes evenly over [lo, hi], an odd number of them (every other one is a
 /// table too), at most `step` apart; one where the range is a point.
 std::vector<double> table_angles(double lo, double hi, double step)
@@ -133,7 +139,77 @@ std::vector<double> table_angles(double lo, double hi, double step)
     angles.push_back(lo + (hi - lo) * k / (2 * halves));
   return angles;
 }
+std::vector<FlatRimNode> flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, const FemSdsResult& interior,
+                                        double from)
+{
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  const double flattest = flattest_loop_ends(interior.circles, interior.centre_of_mass_m, {}).flattest.interior_angle_rad;
+  std::vector<double> angles = table_angles(std::min(from, flattest), flattest, s.flat_rim_step_rad);
+  angles.pop_back(); // the flattest itself
+  const FlattestLoopEnds found = flattest_loop_ends(interior.circles, interior.centre_of_mass_m, angles);
+  std::vector<std::vector<LoopEnd>> ends;
+  for (const std::array<LoopEnd, 2>& sides : found.at_angle)
+  {
+    const bool mirrored = std::abs(sides[0].centre_of_pressure_from_end() - sides[1].centre_of_pressure_from_end()) < 1e-6
+                          && std::abs(sides[0].radius_m() - sides[1].radius_m()) < 1e-6 * sides[0].ruling.length_m;
+    ends.push_back(mirrored ? std::vector<LoopEnd>{sides[0]} : std::vector<LoopEnd>{sides[0], sides[1]});
+  }
+  ends.push_back({found.flattest});
+
+  FlatRimSettings setup;
+  setup.normal_load_n = s.loop.normal_load_n;
+  setup.edge_radius_m = s.end.edge_radius_m;
+  setup.youngs_modulus_pa = s.loop.youngs_modulus_pa;
+  setup.poisson_ratio = s.loop.poisson_ratio;
+  setup.steel_counter_face = s.end.counter_face == fem::CounterFace::block;
+  setup.tolerance = s.end.tolerance;
+  // Each rank solves its share; the others' values stay 0, so a sum shares them.
+  constexpr std::size_t per_end = 9;
+  std::vector<double> values;
+  int job = 0;
+  for (const std::vector<LoopEnd>& node_ends : ends)
+    for (const LoopEnd& end : node_ends)
+    {
+      std::array<double, per_end> v{};
+      if (job++ % size == rank)
+      {
+        const FlatRimContact r = flat_rim_contact(setup, end);
+        double wall = 0;
+        for (const FlatRimLevel& level : r.levels)
+          wall += level.wall_s;
+        v = {r.centre_of_pressure, r.end_line_load_n_per_m, r.end_radius_m, r.levels.back().peak_pressure_pa,
+             r.line_hertz_peak_pa, r.last_change, r.window_change, r.converged ? 1.0 : 0.0, wall};
+      }
+      values.insert(values.end(), v.begin(), v.end());
+    }
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM, comm);
+  std::vector<FlatRimNode> table;
+  const double* v = values.data();
+  for (const std::vector<LoopEnd>& node_ends : ends)
+  {
+    FlatRimNode& node = table.emplace_back();
+    node.interior_angle_rad = node_ends.front().interior_angle_rad;
+    for (std::size_t k = 0; k < node_ends.size(); ++k, v += per_end)
+      node.sides.push_back({v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7] > 0.5, v[8]});
+  }
+  return table;
+}
 } // namespace
+
+double FlatRimNode::ratio() const
+{
+  double largest = 0;
+  for (const FlatRimSide& side : sides)
+    largest = std::max(largest, side.peak_pressure_pa / side.line_hertz_peak_pa);
+  return largest;
+}
+
+bool FlatRimNode::converged() const
+{
+  return std::ranges::all_of(sides, [](const FlatRimSide& side) { return side.converged; });
+}
 
 double singular_from_angle(const fem::RimEndSettings& end)
 {
@@ -154,32 +230,49 @@ double singular_from_angle(const fem::RimEndSettings& end)
   return hi;
 }
 
+namespace
+{
+/// Linear interpolation over (angle, ratio) nodes, held at the ends.
+double interpolate_held(const std::vector<std::pair<double, double>>& nodes, double angle)
+{
+  if (angle <= nodes.front().first)
+    return nodes.front().second;
+  if (angle >= nodes.back().first)
+    return nodes.back().second;
+  const auto right = std::upper_bound(nodes.begin(), nodes.end(), angle,
+                                      [](double a, const std::pair<double, double>& n) { return a < n.first; });
+  const auto left = right - 1;
+  const double t = (angle - left->first) / (right->first - left->first);
+  return (1 - t) * left->second + t * right->second;
+}
+
+double flat_rim_ratio(const std::vector<FlatRimNode>& table, int stride, double interior_angle_rad)
+{
+  std::vector<std::pair<double, double>> nodes;
+  for (std::size_t k = 0; k < table.size(); k += static_cast<std::size_t>(stride))
+    nodes.emplace_back(table[k].interior_angle_rad, table[k].ratio());
+  return interpolate_held(nodes, interior_angle_rad);
+}
+} // namespace
+
 std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, int stride, double singular_from_rad,
                                       double interior_angle_rad)
 {
   if (interior_angle_rad > singular_from_rad)
     return std::nullopt;
-  std::vector<const EndTableNode*> nodes;
-  for (std::size_t k = 0; k < table.size(); k += static_cast<std::size_t>(stride))
-    nodes.push_back(&table[k]);
-  if (nodes.empty())
+  if (table.empty())
     throw ComputationError("rim loop: a non-singular loaded end, but the end table is empty");
-  auto ratio = [](const EndTableNode* n) {
-    if (!n->study.end_to_interior)
+  std::vector<std::pair<double, double>> nodes;
+  for (std::size_t k = 0; k < table.size(); k += static_cast<std::size_t>(stride))
+  {
+    const EndTableNode& n = table[k];
+    if (!n.study.end_to_interior)
       throw ComputationError(fmt::format("rim loop: the end table's node at {:.2f} deg has no end/interior ratio "
                                          "(its rounded edge is not resolved)",
-                                         n->interior_angle_rad / degree));
-    return *n->study.end_to_interior;
-  };
-  if (interior_angle_rad <= nodes.front()->interior_angle_rad)
-    return ratio(nodes.front());
-  if (interior_angle_rad >= nodes.back()->interior_angle_rad)
-    return ratio(nodes.back());
-  const auto upper = std::upper_bound(nodes.begin(), nodes.end(), interior_angle_rad,
-                                      [](double a, const EndTableNode* n) { return a < n->interior_angle_rad; });
-  const EndTableNode *right = *upper, *left = *(upper - 1);
-  const double t = (interior_angle_rad - left->interior_angle_rad) / (right->interior_angle_rad - left->interior_angle_rad);
-  return (1 - t) * ratio(left) + t * ratio(right);
+                                         n.interior_angle_rad / degree));
+    nodes.emplace_back(n.interior_angle_rad, *n.study.end_to_interior);
+  }
+  return interpolate_held(nodes, interior_angle_rad);
 }
 
 std::optional<double> RimLoopResult::worst_end_to_interior() const
@@ -231,7 +324,7 @@ std::string RimLoopResult::end_aware_status() const
   const double tolerance = fem_sds.loop.tolerance;
   std::vector<std::string> why;
   if (!table_converged)
-    why.push_back("a node of the end table did not converge");
+    why.push_back("a node of the end table or the flat-rim table did not converge");
   if (table_vs_direct && *table_vs_direct > end_setup.tolerance)
     why.push_back(
         fmt::format("the end table differs from the direct end models by {:.1f} %", 100 * *table_vs_direct));
@@ -272,11 +365,32 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
   result.singular_from_rad = singular_from_angle(result.end_setup);
 
   const LoopSds& interior = result.fem_sds.loop;
+  // A rounded edge's flattest ends: the body's own, by half-space theory.
+  if (s.end.edge_radius_m > 0 && interior.loaded_ends > 0 && interior.loaded_end_angle_max_rad >= s.flat_rim_from_rad
+      && result.fem_sds.circles.size() == 2)
+  {
+    result.flat_from_rad = s.flat_rim_from_rad;
+    result.flat_table = flat_rim_table(comm, s, result.fem_sds, s.flat_rim_from_rad);
+    for (const FlatRimNode& node : result.flat_table)
+    {
+      result.table_converged = result.table_converged && node.converged();
+      if (rank == 0)
+        for (const FlatRimSide& side : node.sides)
+          spdlog::info("rim loop: flat-rim at {:.2f} deg (c = {:.4f}, q = {:.5g} N/m, hull's R = {:.4g} m): peak {:.5g} "
+                       "Pa, {:.4f} times line Hertz ({}: {:+.2f} % last level, {:+.2f} % longer window; {:.0f} s)",
+                       node.interior_angle_rad / degree, side.centre_of_pressure, side.end_line_load_n_per_m,
+                       side.end_radius_m, side.peak_pressure_pa, side.peak_pressure_pa / side.line_hertz_peak_pa,
+                       side.converged ? "converged" : "NOT converged", 100 * side.last_change,
+                       100 * side.window_change, side.wall_s);
+    }
+  }
+  const bool flat = !result.flat_table.empty();
   const double lo = std::max(interior.loaded_end_angle_min_rad, smallest_modelled_angle);
   // The table's last node just below the singular angle, where the end model
-  // still finds a (square) edge.
+  // still finds a (square) edge; or where the flat-rim table takes over.
   const double hi = std::min({interior.loaded_end_angle_max_rad,
-                              result.singular_from_rad - 10 * singular_angle_tolerance, largest_angle(s.end)});
+                              result.singular_from_rad - 10 * singular_angle_tolerance, largest_angle(s.end),
+                              result.flat_from_rad});
   std::vector<EndFactor> factors;
   if (interior.loaded_ends > 0 && interior.loaded_end_angle_min_rad <= result.singular_from_rad)
   {
@@ -306,6 +420,12 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
     }
     for (RimLoopEnd& e : result.ends)
     {
+      if (flat && e.interior_angle_rad >= result.flat_from_rad)
+      {
+        // Not a check of the end table: the flat-rim table stands for it.
+        e.table_ratio = flat_rim_ratio(result.flat_table, 1, e.interior_angle_rad);
+        continue;
+      }
       e.table_ratio = end_table_ratio(result.table, 1, result.singular_from_rad, e.modelled_angle_rad);
       if (e.table_ratio && e.study.end_to_interior && e.study.resolved && !e.study.singular)
         // Over the larger of the end's and the interior's pressure, as the end
@@ -316,9 +436,13 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
     }
     const double singular_from = result.singular_from_rad;
     for (const int stride : {1, 2})
-      if (stride == 1 || result.table.size() >= 3)
-        factors.push_back([table = result.table, stride, singular_from, largest = largest_angle(s.end)](double angle) {
-          return end_table_ratio(table, stride, singular_from, std::clamp(angle, smallest_modelled_angle, largest));
+      if (stride == 1 || result.table.size() >= 3 || result.flat_table.size() >= 3)
+        factors.push_back([table = result.table, flat_table = result.flat_table, flat_from = result.flat_from_rad,
+                           stride, singular_from, largest = largest_angle(s.end)](double angle) -> std::optional<double> {
+          if (angle >= flat_from)
+            return flat_rim_ratio(flat_table, flat_table.size() >= 3 ? stride : 1, angle);
+          return end_table_ratio(table, table.size() >= 3 ? stride : 1, singular_from,
+                                 std::clamp(angle, smallest_modelled_angle, largest));
         });
   }
   else if (interior.loaded_ends > 0)
@@ -373,6 +497,32 @@ nlohmann::json to_json(const RimLoopResult& r)
     j["interior_angle_deg"] = n.interior_angle_rad / degree;
     table.push_back(std::move(j));
   }
+  nlohmann::json flat_table = nlohmann::json::array();
+  for (const FlatRimNode& n : r.flat_table)
+  {
+    nlohmann::json sides = nlohmann::json::array();
+    for (const FlatRimSide& side : n.sides)
+      sides.push_back({{"centre_of_pressure", side.centre_of_pressure},
+                       {"end_line_load_n_per_m", side.end_line_load_n_per_m},
+                       {"end_sheet_radius_m", side.end_radius_m},
+                       {"peak_pressure_pa", side.peak_pressure_pa},
+                       {"line_hertz_peak_pa", side.line_hertz_peak_pa},
+                       {"last_change", side.last_change},
+                       {"window_change", side.window_change},
+                       {"converged", side.converged},
+                       {"wall_s", side.wall_s}});
+    flat_table.push_back({{"interior_angle_deg", n.interior_angle_rad / degree},
+                          {"ratio", n.ratio()},
+                          {"converged", n.converged()},
+                          {"sides", sides}});
+  }
+  // Where the two tables meet: the FEM end model (a straight rim under a
+  // uniform load) against the body's own end (flat-rim).
+  nlohmann::json seam = nullptr;
+  if (!r.flat_table.empty() && !r.table.empty() && r.table.back().study.end_to_interior)
+    seam = {{"interior_angle_deg", r.flat_from_rad / degree},
+            {"end_table_ratio", *end_table_ratio(r.table, 1, r.singular_from_rad, r.flat_from_rad)},
+            {"flat_rim_ratio", flat_rim_ratio(r.flat_table, 1, r.flat_from_rad)}};
   const fem::RimEndSettings& setup = r.end_setup;
   return {{"body", r.fem_sds.body},
           {"loop", r.fem_sds.source},
@@ -391,6 +541,9 @@ nlohmann::json to_json(const RimLoopResult& r)
           {"end_table_load_n_per_m", r.reference_load_n_per_m},
           {"end_table_sheet_radius_m", r.reference_radius_m},
           {"end_table_converged", r.table_converged},
+          {"flat_rim_from_deg", r.flat_table.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.flat_from_rad / degree)},
+          {"flat_rim_table", flat_table},
+          {"flat_rim_seam", seam},
           {"end_table_vs_direct", json_number(r.table_vs_direct)},
           {"end_aware_status", r.end_aware_status()},
           {"loop_scores", to_json(r.loop)},

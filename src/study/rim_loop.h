@@ -34,6 +34,7 @@
 // end_aware_scores; the direct ends too).
 #include "fem/rim_end_contact.h"
 #include "study/fem_sds.h"
+#include "study/flat_rim_contact.h"
 #include <cstddef>
 #include <mpi.h>
 #include <nlohmann/json.hpp>
@@ -58,6 +59,41 @@ struct RimLoopSettings
   fem::RimEndSettings end;
   /// Largest spacing of the end table's nodes over the interior angle.
   double end_table_step_rad = 10 * std::numbers::pi / 180;
+  /// A rounded edge's ends of at least this interior angle are solved in 3D
+  /// on the body's own loop by half-space theory (flat-rim: its surface, its
+  /// load along the ruling, its balance), nodes at most flat_rim_step_rad
+  /// apart up to the loop's flattest end; the FEM end table stops there. pi:
+  /// never. Half-space theory is checked against the FEM end model at 160
+  /// and 170 deg (docs/flat-rim.md).
+  double flat_rim_from_rad = 160 * std::numbers::pi / 180;
+  double flat_rim_step_rad = 5 * std::numbers::pi / 180;
+};
+
+/// One loaded end solved by flat-rim (study/flat_rim_contact.h), as the
+/// loop needs it.
+struct FlatRimSide
+{
+  double centre_of_pressure = 0;     ///< c from the end
+  double end_line_load_n_per_m = 0;
+  double end_radius_m = 0;           ///< the hull's R across the ruling at the end
+  double peak_pressure_pa = 0;
+  double line_hertz_peak_pa = 0;     ///< at the end's q and R = max(R_end, r_e)
+  double last_change = 0, window_change = 0;
+  bool converged = false;
+  double wall_s = 0;
+};
+
+/// One node of the flat-rim table: the loop's orientations whose loaded end
+/// has this angle, one per side of the flattest end (one when the two sides
+/// are mirror images: the same c and R within 1e-6).
+struct FlatRimNode
+{
+  double interior_angle_rad = 0;
+  std::vector<FlatRimSide> sides;
+  /// The largest over the sides of the peak over line Hertz at the end's q
+  /// and R = max(R_end, r_e): the end's factor, as the end table's ratio.
+  double ratio() const;
+  bool converged() const;
 };
 
 /// One loaded ruling end of a directly solved orientation.
@@ -92,11 +128,14 @@ struct RimLoopResult
   double reference_load_n_per_m = 0, reference_radius_m = 0; ///< of the end table
   /// Interior angles above this are singular (a sharp edge; pi when rounded).
   double singular_from_rad = 0;
-  std::vector<EndTableNode> table;   ///< over the loop's non-singular loaded ends' angles
+  std::vector<EndTableNode> table;   ///< over the loop's non-singular loaded ends' angles below flat_from_rad
+  /// Ends from this angle on take the flat-rim table's ratio (pi: none do).
+  double flat_from_rad = std::numbers::pi;
+  std::vector<FlatRimNode> flat_table;
   /// Largest |table - direct| of the end/interior ratio over the direct ends
   /// with one, over the larger of the direct ratio and 1 (the interior).
   std::optional<double> table_vs_direct;
-  bool table_converged = true;       ///< every node's end model converged
+  bool table_converged = true;       ///< every node's end model converged (the flat-rim table's too)
   /// The loop's scores (fem_sds.loop's) with the end-aware ones: [0] the
   /// table, [1] every other node (absent with fewer than 3 nodes).
   LoopSds loop;
