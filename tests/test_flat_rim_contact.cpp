@@ -124,6 +124,32 @@ TEST(FlatRimContact, OloidLoopEndBalancesTheBody)
   }
 }
 
+// The surface flat-rim solves on, from the body's two circles, against the
+// oracle's ruling (z = 0 on it, the sheet's radius R across it) and the
+// rim's lean from the support directions (contact/rim_overhang.h): two
+// independent computations of the same hull.
+TEST(FlatRimContact, EndSurfaceIsTheHullNearTheLoopsEnd)
+{
+  for (const double angle_deg : {165.0, 175.0})
+  {
+    const study::LoopEnd end = study::oloid_loop_end(0.01, angle_deg * std::numbers::pi / 180);
+    // The section along the ruling leaves the end at the lean's slope and
+    // curves (it cuts the rim's ridge obliquely): the slope at the end by
+    // Richardson extrapolation from 5 and 10 um beyond it.
+    const auto slope = [&](double beyond) { return study::end_hull_height(end, -beyond, 0) / beyond; };
+    EXPECT_NEAR((2 * slope(5e-6) - slope(1e-5)) / std::tan(std::numbers::pi - end.interior_angle_rad), 1.0, 2e-3)
+        << angle_deg << " deg";
+    for (const double along : {1e-4, 1e-3})
+    {
+      const double radius = end.radius_m() + (end.other_radius_m() - end.radius_m()) * along / end.ruling.length_m;
+      EXPECT_NEAR(study::end_hull_height(end, along, 0), 0.0, 1e-10);
+      const double across = 3e-3 * radius; // the sheet's cubic term cancels in the mean of +-y
+      const double rise = study::end_hull_height(end, along, across) + study::end_hull_height(end, along, -across);
+      EXPECT_NEAR(across * across / rise / radius, 1.0, 2e-3) << angle_deg << " deg, x' = " << along;
+    }
+  }
+}
+
 TEST(FlatRimContact, RefusesBadInput)
 {
   study::FlatRimSettings s = straight_rim(120);

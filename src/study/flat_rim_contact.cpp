@@ -410,6 +410,11 @@ void solve_end(const FlatRimSettings& s, const EndProblem& end, FlatRimContact& 
 }
 } // namespace
 
+double end_hull_height(const LoopEnd& end, double along_m, double across_m)
+{
+  return RulingEndSurface(end).height(along_m, across_m);
+}
+
 LoopEnd oloid_loop_end(double radius_m, double interior_angle_rad)
 {
   const std::vector<oracle::Circle> circles

@@ -135,6 +135,10 @@ FlatRimContact flat_rim_contact(const FlatRimSettings& settings);
 /// its q from F (the settings' normal_load_n) and c by the locus's rule; the
 /// settings' oloid and straight-rim fields are not used.
 FlatRimContact flat_rim_contact(const FlatRimSettings& settings, const LoopEnd& end);
+/// The hull's lower surface near a loop's end, as flat-rim solves it: its
+/// height (m) above the ground at x' along the ruling from the end (negative:
+/// beyond it) and y across (geometry/two_circle_hull_height.h).
+double end_hull_height(const LoopEnd& end, double along_m, double across_m);
 /// The oloid (r1) at its loop's end of this interior angle (pi: the vertex).
 LoopEnd oloid_loop_end(double radius_m, double interior_angle_rad);
 
