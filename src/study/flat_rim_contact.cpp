@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <cmath>
 #include <fmt/format.h>
@@ -122,6 +123,120 @@ double seconds_since(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+/// The hull over the window and a margin of 0.6 r_e (where the rolling ball
+/// touches it), opened by the ball: the finished surface on the window's cells.
+struct RoundedSurface
+{
+  std::vector<double> values;
+  std::size_t margin = 0, ny = 0; ///< of the opened grid: the window's and its margin
+  double operator()(std::size_t i, std::size_t j) const { return values[(i + margin) * ny + j + margin]; }
+};
+
+RoundedSurface rounded_surface(const EndProblem& end, const contact::HalfSpaceGrid& window, double edge_radius)
+{
+  const double cell = window.cell_x_m;
+  RoundedSurface r;
+  r.margin = static_cast<std::size_t>(std::ceil(0.6 * edge_radius / cell));
+  const std::size_t nx = window.nx + 2 * r.margin;
+  r.ny = window.ny + 2 * r.margin;
+  std::vector<double> hull(nx * r.ny);
+  const double shift = static_cast<double>(r.margin);
+  for (std::size_t i = 0; i < nx; ++i)
+    for (std::size_t j = 0; j < r.ny; ++j)
+    {
+      const double z = end.hull_height(window.first_x_m + (static_cast<double>(i) - shift) * cell,
+                                       window.first_y_m + (static_cast<double>(j) - shift) * cell);
+      if (!std::isfinite(z))
+        throw ComputationError("flat rim: the hull's surface was not found over the window (search range)");
+      hull[i * r.ny + j] = z;
+    }
+  r.values = geometry::rolling_ball_opening(hull, nx, r.ny, cell, cell, edge_radius);
+  return r;
+}
+
+/// The rest of the loaded ruling beyond the window: its line load as line
+/// Hertz pressure at the sheet's R(x'), prescribed on the columns of `grid`
+/// from `first_column` on, and its deflection over the grid.
+struct RulingBeyond
+{
+  contact::HalfSpaceGrid grid;
+  std::size_t first_column = 0;
+  contact::HalfSpaceDeflection influence;
+  std::function<double(double)> sheet_radius;
+  double effective_modulus = 0, poisson_ratio = 0;
+
+  std::vector<double> deflection(const LineLoad& load) const
+  {
+    std::vector<double> prescribed(grid.size(), 0.0);
+    const std::size_t ny = grid.ny;
+    for (std::size_t i = first_column; i < grid.nx; ++i)
+    {
+      const double x = grid.x(i), q = load.at(x);
+      if (q <= 0)
+        continue;
+      const contact::LineHertz hertz = contact::line_contact(q, sheet_radius(x), effective_modulus, poisson_ratio);
+      double column = 0;
+      for (std::size_t j = 0; j < ny; ++j)
+        column += prescribed[i * ny + j] = contact::pressure_profile(hertz.peak_pressure_pa, hertz.half_width_m, grid.y(j));
+      // Each column carries q exactly, whatever its cells resolve of b.
+      if (column > 0)
+        for (std::size_t j = 0; j < ny; ++j)
+          prescribed[i * ny + j] *= q / (column * grid.cell_y_m);
+    }
+    return influence(prescribed);
+  }
+};
+
+/// The force (N) and its moment about x' = 0 (N m) of the window's columns in [from, to].
+Eigen::Vector2d load_over(const std::vector<double>& pressure, const contact::HalfSpaceGrid& window, double from,
+                          double to)
+{
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  const double area = window.cell_area_m2();
+  for (std::size_t i = 0; i < window.nx; ++i)
+    if (const double x = window.x(i); x >= from && x <= to)
+      for (std::size_t j = 0; j < window.ny; ++j)
+        sum += pressure[i * window.ny + j] * area * Eigen::Vector2d(1.0, x);
+  return sum;
+}
+
+/// The level's readings from the window's pressure: the peak, the columns,
+/// where the contact starts, the slopes under it.
+void read_level(FlatRimLevel& level, const std::vector<double>& pressure, const contact::HalfSpaceGrid& window,
+                const RoundedSurface& surface, double& largest_slope)
+{
+  const std::size_t nx = window.nx, ny = window.ny;
+  const double cell = window.cell_x_m; // square cells
+  const auto peak = std::ranges::max_element(pressure);
+  const auto k_peak = static_cast<std::size_t>(peak - pressure.begin());
+  level.peak_pressure_pa = *peak;
+  level.peak_along_m = window.x(k_peak / ny);
+  level.peak_across_m = window.y(k_peak % ny);
+  level.contact_start_m = window.x(nx - 1);
+  for (std::size_t i = 0; i < nx; ++i)
+  {
+    double column_peak = 0, column_load = 0;
+    for (std::size_t j = 0; j < ny; ++j)
+    {
+      const double p = pressure[i * ny + j];
+      column_peak = std::max(column_peak, p);
+      column_load += p * window.cell_y_m;
+      if (p > 0)
+      {
+        level.contact_start_m = std::min(level.contact_start_m, window.x(i));
+        // Half-space theory's small slopes, over the loaded cells.
+        if (i > 0 && i + 1 < nx && j > 0 && j + 1 < ny)
+          largest_slope = std::max(largest_slope, std::hypot(surface(i + 1, j) - surface(i - 1, j),
+                                                             surface(i, j + 1) - surface(i, j - 1))
+                                                      / (2 * cell));
+      }
+    }
+    level.station_m.push_back(window.x(i));
+    level.station_peak_pa.push_back(column_peak);
+    level.station_load_n_per_m.push_back(column_load);
+  }
+}
+
 FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double effective_modulus, double half_width,
                          double cell, double& largest_slope, double& end_lift)
 {
@@ -149,44 +264,9 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
                                           -static_cast<double>(half_across) * cell};
   const contact::HalfSpaceGrid window{window_nx, ny, cell, cell, outer_grid.first_x_m, outer_grid.first_y_m};
 
-  const contact::HalfSpaceDeflection outer_influence(outer_grid, effective_modulus);
-  const auto deflection_beyond = [&](const LineLoad& load) {
-    std::vector<double> prescribed(outer_grid.size(), 0.0);
-    for (std::size_t i = window_nx; i < outer_nx; ++i)
-    {
-      const double x = outer_grid.x(i), q = load.at(x);
-      if (q <= 0)
-        continue;
-      const contact::LineHertz hertz = contact::line_contact(q, radius_at(x), effective_modulus, s.poisson_ratio);
-      double column = 0;
-      for (std::size_t j = 0; j < ny; ++j)
-        column += prescribed[i * ny + j] =
-            contact::pressure_profile(hertz.peak_pressure_pa, hertz.half_width_m, outer_grid.y(j));
-      // Each column carries q exactly, whatever its cells resolve of b.
-      if (column > 0)
-        for (std::size_t j = 0; j < ny; ++j)
-          prescribed[i * ny + j] *= q / (column * cell);
-    }
-    return outer_influence(prescribed);
-  };
-
-  // The rounded surface: the hull on the window and a margin of 0.6 r_e
-  // (where the rolling ball touches it), opened by the ball.
-  const std::size_t margin = cells_over(0.6 * s.edge_radius_m);
-  const std::size_t surface_nx = window_nx + 2 * margin, surface_ny = ny + 2 * margin;
-  std::vector<double> hull(surface_nx * surface_ny);
-  for (std::size_t i = 0; i < surface_nx; ++i)
-    for (std::size_t j = 0; j < surface_ny; ++j)
-    {
-      const double z = end.hull_height(window.first_x_m + (static_cast<double>(i) - static_cast<double>(margin)) * cell,
-                                    window.first_y_m + (static_cast<double>(j) - static_cast<double>(margin)) * cell);
-      if (!std::isfinite(z))
-        throw ComputationError("flat rim: the hull's surface was not found over the window (search range)");
-      hull[i * surface_ny + j] = z;
-    }
-  const std::vector<double> rounded =
-      geometry::rolling_ball_opening(hull, surface_nx, surface_ny, cell, cell, s.edge_radius_m);
-  const auto surface = [&](std::size_t i, std::size_t j) { return rounded[(i + margin) * surface_ny + j + margin]; };
+  const RulingBeyond beyond{outer_grid, window_nx, contact::HalfSpaceDeflection(outer_grid, effective_modulus),
+                            end.sheet_radius, effective_modulus, s.poisson_ratio};
+  const RoundedSurface surface = rounded_surface(end, window, s.edge_radius_m);
 
   std::vector<double> gap(window.size());
   const contact::HalfSpaceDeflection deflection(window, effective_modulus);
@@ -217,15 +297,8 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
                                                  solved.pressure_pa);
       level.iterations += solved.iterations;
       ++level.solves;
-      double zone_force = 0, moment = 0;
-      for (std::size_t i = 0; i < window_nx; ++i)
-        if (const double x = window.x(i); x >= zone_start && x <= zone_end)
-          for (std::size_t j = 0; j < ny; ++j)
-          {
-            zone_force += solved.pressure_pa[i * ny + j] * cell * cell;
-            moment += solved.pressure_pa[i * ny + j] * cell * cell * x;
-          }
-      return Eigen::Vector2d(zone_force / zone_load - 1, (moment / zone_force - zone_arm) / (zone_end - zone_start));
+      const Eigen::Vector2d zone = load_over(solved.pressure_pa, window, zone_start, zone_end);
+      return Eigen::Vector2d(zone[0] / zone_load - 1, (zone[1] / zone[0] - zone_arm) / (zone_end - zone_start));
     };
     // Broyden's method from a finite-difference Jacobian, both kept from one
     // balance iteration to the next.
@@ -266,14 +339,10 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
   Eigen::Matrix2d balance_jacobian = -2 * Eigen::Matrix2d::Identity();
   for (int balance = 0;; ++balance)
   {
-    match_window(load, deflection_beyond(load));
-    double window_force = 0, window_moment = 0;
-    for (std::size_t i = 0; i < window_nx; ++i)
-      for (std::size_t j = 0; j < ny; ++j)
-      {
-        window_force += solved.pressure_pa[i * ny + j] * cell * cell;
-        window_moment += solved.pressure_pa[i * ny + j] * cell * cell * window.x(i);
-      }
+    match_window(load, beyond.deflection(load));
+    const double everywhere = std::numeric_limits<double>::infinity();
+    const Eigen::Vector2d on_window = load_over(solved.pressure_pa, window, -everywhere, everywhere);
+    const double window_force = on_window[0], window_moment = on_window[1];
     level.window_load_change = window_force / end.load.load_to(after) - 1;
     if (!end.balance_body)
       break;
@@ -311,35 +380,7 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
   level.balanced_slope_n_per_m2 = load.slope_n_per_m2;
   level.balanced_loaded_length_m = load.length_m;
 
-  // Readings: the peak, the columns, the far station against line Hertz.
-  const auto peak = std::ranges::max_element(solved.pressure_pa);
-  const auto k_peak = static_cast<std::size_t>(peak - solved.pressure_pa.begin());
-  level.peak_pressure_pa = *peak;
-  level.peak_along_m = window.x(k_peak / ny);
-  level.peak_across_m = window.y(k_peak % ny);
-  level.contact_start_m = after;
-  for (std::size_t i = 0; i < window_nx; ++i)
-  {
-    double column_peak = 0, column_load = 0;
-    for (std::size_t j = 0; j < ny; ++j)
-    {
-      const double p = solved.pressure_pa[i * ny + j];
-      column_peak = std::max(column_peak, p);
-      column_load += p * cell;
-      if (p > 0)
-      {
-        level.contact_start_m = std::min(level.contact_start_m, window.x(i));
-        // Half-space theory's small slopes, over the loaded cells.
-        if (i > 0 && i + 1 < window_nx && j > 0 && j + 1 < ny)
-          largest_slope = std::max(largest_slope, std::hypot(surface(i + 1, j) - surface(i - 1, j),
-                                                             surface(i, j + 1) - surface(i, j - 1))
-                                                      / (2 * cell));
-      }
-    }
-    level.station_m.push_back(window.x(i));
-    level.station_peak_pa.push_back(column_peak);
-    level.station_load_n_per_m.push_back(column_load);
-  }
+  read_level(level, solved.pressure_pa, window, surface, largest_slope);
   const std::size_t far = first_cell + cells_over(0.75 * after);
   level.far_peak_pa = level.station_peak_pa[far];
   level.far_line_hertz_pa = contact::line_contact(load.at(window.x(far)), radius_at(window.x(far)),
@@ -381,6 +422,7 @@ void check_settings(const FlatRimSettings& s)
 /// The levels and the longer window of one end, into `result`.
 void solve_end(const FlatRimSettings& s, const EndProblem& end, FlatRimContact& result)
 {
+  const auto start = std::chrono::steady_clock::now();
   result.end_line_load_n_per_m = end.load.at_end_n_per_m;
   const contact::LineHertz at_end = contact::line_contact(end.load.at_end_n_per_m, result.reference_radius_m,
                                                           result.effective_modulus_pa, s.poisson_ratio);
@@ -407,6 +449,7 @@ void solve_end(const FlatRimSettings& s, const EndProblem& end, FlatRimContact& 
         result.levels.back().peak_pressure_pa / result.levels[result.levels.size() - 2].peak_pressure_pa - 1;
   result.converged = result.levels.size() >= 2 && std::abs(result.last_change) < s.tolerance
                      && std::abs(result.window_change) < s.tolerance;
+  result.wall_s = seconds_since(start);
 }
 } // namespace
 
@@ -530,6 +573,7 @@ nlohmann::json to_json(const FlatRimContact& r)
           {"longer_window_peak_pa", r.longer_window_peak_pa},
           {"window_change", r.window_change},
           {"converged", r.converged},
+          {"wall_s", r.wall_s},
           {"levels", levels}};
 }
 } // namespace rollcheck::study

@@ -123,6 +123,7 @@ struct FlatRimContact
   double longer_window_peak_pa = 0;     ///< the first level's peak with `after` doubled
   double window_change = 0;             ///< that against the first level's
   bool converged = false;               ///< both changes below the tolerance
+  double wall_s = 0;                    ///< every level and the longer window
 };
 
 /// The settings' scene: the straight rim (interior_angle_rad > 0) or the

@@ -176,11 +176,8 @@ std::vector<FlatRimNode> flat_rim_table(MPI_Comm comm, const RimLoopSettings& s,
       if (job++ % size == rank)
       {
         const FlatRimContact r = flat_rim_contact(setup, end);
-        double wall = 0;
-        for (const FlatRimLevel& level : r.levels)
-          wall += level.wall_s;
         v = {r.centre_of_pressure, r.end_line_load_n_per_m, r.end_radius_m, r.levels.back().peak_pressure_pa,
-             r.line_hertz_peak_pa, r.last_change, r.window_change, r.converged ? 1.0 : 0.0, wall};
+             r.line_hertz_peak_pa, r.last_change, r.window_change, r.converged ? 1.0 : 0.0, r.wall_s};
       }
       values.insert(values.end(), v.begin(), v.end());
     }
