@@ -93,8 +93,8 @@ def main():
     rows = ["| body | faces | loaded rim ends (samples) | singular ends | ends outside the model (samples) "
             "| worst end / orientation peak (direct ends) "
             "| loop's end peak / interior peak | FEM-SDS | with the ends | FEM-FDS | with the ends "
-            "| end table vs direct | status | s |",
-            "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+            "| end table vs direct | flat-rim table (the loop's own flattest ends) | status | s |",
+            "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     wanted = set(args.only.split(",")) if args.only else None
     for label, body in BODIES:
         if wanted and label.split(" ")[0] not in wanted and label not in wanted:
@@ -118,6 +118,10 @@ def main():
         missing = "singular" if singular > 0 else "undefined"
         worst = j["worst_end_to_interior"]
         table = j["end_table_vs_direct"]
+        flat = j.get("flat_rim_table") or []
+        flat_text = (f"{len(flat)} nodes from {flat[0]['interior_angle_deg']:.1f} deg, ratios "
+                     f"{min(n['ratio'] for n in flat):.3f}-{max(n['ratio'] for n in flat):.3f}"
+                     + ("" if all(n["converged"] for n in flat) else " (a node NOT converged)")) if flat else "-"
         rows.append(
             f"| {label} | {j['interior']['n_faces']} | {loop['loaded_ends']} ({loop['loaded_end_samples']} of {loop['samples']}) "
             f"| {singular} ({100 * singular / max(loop['loaded_ends'], 1):.0f} %) "
@@ -125,7 +129,7 @@ def main():
             f"| {loop_ratio(j)} "
             f"| {score(loop['fem_sds_rulings'])} | {score(aware['fem_sds'], missing) if aware else '-'} "
             f"| {score(loop['fem_fds_rulings'])} | {score(aware['fem_fds'], missing) if aware else '-'} "
-            f"| {'-' if table is None else f'{100 * table:.1f} %'} | {j['end_aware_status'].split(':')[0]} "
+            f"| {'-' if table is None else f'{100 * table:.1f} %'} | {flat_text} | {j['end_aware_status'].split(':')[0]} "
             f"| {j['wall_s']:.0f} |")
         print(rows[-1], flush=True)
     table = "\n".join(rows)

@@ -56,7 +56,7 @@ const io::BoundSchema<RimCommand>& rim_schema()
         .real("flat_rim_from_deg", "--flat-rim-from", &RimCommand::flat_rim_from_rad, "deg",
               "With --body and a rounded edge: loaded ends of at least this interior angle take the flat-rim table, "
               "the body's own ends solved in 3D by half-space theory (its surface near the end, its load along the "
-              "ruling, its balance: `rollcheck flat-rim`), nodes 5 deg apart up to the loop's flattest end, instead "
+              "ruling, its balance: `rollcheck flat-rim`), nodes 2.5 deg apart up to the loop's flattest end, instead "
               "of the FEM end table (a straight rim under a uniform load); 180: never",
               io::Bounds{150, 180}, std::numbers::pi / 180);
     s.real("sheet_radius_m", "--sheet-radius", end(&RimEndSettings::radius_m), "m",

@@ -66,7 +66,7 @@ struct RimLoopSettings
   /// never. Half-space theory is checked against the FEM end model at 160
   /// and 170 deg (docs/flat-rim.md).
   double flat_rim_from_rad = 160 * std::numbers::pi / 180;
-  double flat_rim_step_rad = 5 * std::numbers::pi / 180;
+  double flat_rim_step_rad = 2.5 * std::numbers::pi / 180;
 };
 
 /// One loaded end solved by flat-rim (study/flat_rim_contact.h), as the
