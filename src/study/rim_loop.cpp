@@ -272,6 +272,15 @@ std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, in
   return interpolate_held(nodes, interior_angle_rad);
 }
 
+std::optional<double> EndRatios::operator()(int stride, double interior_angle_rad) const
+{
+  const auto own = [stride](std::size_t nodes) { return nodes >= 3 ? stride : 1; };
+  if (!flat_table.empty() && interior_angle_rad >= flat_from_rad)
+    return flat_rim_ratio(flat_table, own(flat_table.size()), interior_angle_rad);
+  return end_table_ratio(table, own(table.size()), singular_from_rad,
+                         std::clamp(interior_angle_rad, smallest_modelled_angle, largest_modelled_rad));
+}
+
 std::optional<double> RimLoopResult::worst_end_to_interior() const
 {
   std::optional<double> worst;
@@ -431,16 +440,11 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
             = std::max(result.table_vs_direct.value_or(0.0),
                        std::abs(*e.table_ratio - *e.study.end_to_interior) / std::max(*e.study.end_to_interior, 1.0));
     }
-    const double singular_from = result.singular_from_rad;
+    const EndRatios ratios{result.table, result.flat_table, result.flat_from_rad, result.singular_from_rad,
+                           largest_angle(s.end)};
     for (const int stride : {1, 2})
       if (stride == 1 || result.table.size() >= 3 || result.flat_table.size() >= 3)
-        factors.push_back([table = result.table, flat_table = result.flat_table, flat_from = result.flat_from_rad,
-                           stride, singular_from, largest = largest_angle(s.end)](double angle) -> std::optional<double> {
-          if (angle >= flat_from)
-            return flat_rim_ratio(flat_table, flat_table.size() >= 3 ? stride : 1, angle);
-          return end_table_ratio(table, table.size() >= 3 ? stride : 1, singular_from,
-                                 std::clamp(angle, smallest_modelled_angle, largest));
-        });
+        factors.push_back([ratios, stride](double angle) { return ratios(stride, angle); });
   }
   else if (interior.loaded_ends > 0)
     factors.push_back([](double) { return std::optional<double>(); }); // every loaded end singular

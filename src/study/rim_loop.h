@@ -171,6 +171,20 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings);
 std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, int stride, double singular_from_rad,
                                       double interior_angle_rad);
 
+/// The loop's end/interior ratio by the end's interior angle: the flat-rim
+/// table's from flat_from_rad on, the end table's below it (the angle held
+/// to [60 deg, largest_modelled_rad]); each table by every stride-th node
+/// when it has 3 or more (the check of its spacing), else by all.
+struct EndRatios
+{
+  std::vector<EndTableNode> table;
+  std::vector<FlatRimNode> flat_table;
+  double flat_from_rad = std::numbers::pi;
+  double singular_from_rad = std::numbers::pi;
+  double largest_modelled_rad = std::numbers::pi;
+  std::optional<double> operator()(int stride, double interior_angle_rad) const;
+};
+
 /// The smallest interior angle whose sharp edge is singular against the
 /// counter-face (bisection on the wedge exponent), pi when none is.
 double singular_from_angle(const fem::RimEndSettings& end);
