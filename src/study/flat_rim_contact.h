@@ -11,12 +11,15 @@
 // (R = 2 x' / sqrt 3) and the contact locus's no-tension rule puts its
 // largest line load there, q(P) = 8 F / (3 L) (scripts/oloid_vertex.py). A
 // part finished with edge radius r_e is the hull rounded by a ball of r_e
-// rolled inside it; `rim --body` takes such an end as line Hertz at R = r_e
-// times the end table's factor, an estimate from above. Here it is solved
-// as it is. Or (`interior_angle_rad` > 0) a straight rim across a flattened
-// sheet of radius R under a uniform line load q, `rim`'s one end, to check
-// this reduction against the FEM end model.
-//  - the surface: the hull's lower surface near the end (the oloid's from
+// rolled inside it; the FEM end table takes such an end as line Hertz at
+// R = r_e times a straight rim's factor, an estimate from above. Here it is
+// solved as it is; so is any loaded end of a two-circle body's loop (a
+// LoopEnd, study/flattest_loop_ends.h: the oloid's by `end_angle_rad`,
+// rim --body's flat-rim table by the loop's own angles). Or
+// (`interior_angle_rad` > 0) a straight rim across a flattened sheet of
+// radius R under a uniform line load q, `rim`'s one end, to check this
+// reduction against the FEM end model.
+//  - the surface: the hull's lower surface near the end (a body's from
 //    its two circles, geometry/two_circle_hull_height.h; the straight rim's
 //    y^2 / 2R + max(0, -x' tan(180 deg - a)), rim's flat sheet), rounded by the ball
 //    (geometry/rolling_ball_opening.h, small slopes), on a grid of cells of
@@ -33,11 +36,11 @@
 //    tilt along the ruling with the ruling beyond it: both are set (Broyden)
 //    so that the window carries the ruling's load and moment over its
 //    matching zone, [0.5, 0.9] of `after`, where the end no longer shows.
-//    For the oloid the ruling beyond then takes the no-tension linear rule
-//    again with the window's load and moment, so that the body balances (F
-//    through the centre of mass's foot; Broyden on the rule's q and
-//    length): the load the finished end does not take moves along the
-//    ruling. No rotation about the ruling.
+//    For a body's end the ruling beyond then takes the no-tension linear
+//    rule again with the window's load and moment, so that the body
+//    balances (F through the centre of mass's foot; Broyden on the rule's q
+//    at the end and its slope): the load the finished end does not take
+//    moves along the ruling. No rotation about the ruling.
 // Levels halve the cells; the peak is converged when it changes by less
 // than `tolerance` at the last level and when the first level's window is
 // doubled along the ruling (the half-space's reach along a line contact is
