@@ -113,29 +113,31 @@ TEST(RimLoop, SteelBlockGivesTheLoopThePairsModulus)
 }
 
 // A rounded edge's flattest ends take the flat-rim table (the loop's own
-// ends by half-space theory) from its first angle on; below it the end table,
-// held at its last node, never reaches into the flat-rim range.
+// ends by half-space theory) from its first angle on: its peak at the angle
+// over the end's line Hertz peak. Below it the end table, held at its last
+// node, never reaches into the flat-rim range.
 TEST(RimLoop, FlatRimTableTakesOverFromItsFirstAngle)
 {
   study::EndRatios ratios;
   ratios.table = {node(60, 1.5), node(100, 1.8), node(160, 1.96)};
   ratios.largest_modelled_rad = 170 * degree;
   ratios.flat_from_rad = 160 * degree;
-  for (const auto& [angle, peak_over_line_hertz] :
-       {std::pair{160.0, 2.0}, {165.0, 1.8}, {170.0, 1.5}, {175.0, 1.2}, {180.0, 1.1}})
+  for (const auto& [angle, peak_gpa] : {std::pair{160.0, 4.0}, {165.0, 3.6}, {170.0, 3.0}, {175.0, 2.4}, {180.0, 2.2}})
   {
     study::FlatRimNode n;
     n.interior_angle_rad = angle * degree;
-    // Two sides that are not mirror images: the larger ratio counts.
-    n.sides = {{0.3, 1e5, 1e-3, peak_over_line_hertz * 2e9, 2e9, 0, 0, true, 1},
-               {0.3, 1e5, 1e-3, 0.5 * peak_over_line_hertz * 2e9, 2e9, 0, 0, true, 1}};
+    // Two sides that are not mirror images: the larger peak counts.
+    n.sides = {{0.3, 1e5, 1e-3, peak_gpa * 1e9, 2e9, 0, 0, true, 1},
+               {0.3, 1e5, 1e-3, 0.5 * peak_gpa * 1e9, 2e9, 0, 0, true, 1}};
     ratios.flat_table.push_back(n);
   }
-  EXPECT_NEAR(*ratios(1, 150 * degree), 1.8 + 0.16 * 50 / 60, 1e-12); // the end table
-  EXPECT_NEAR(*ratios(1, 160 * degree), 2.0, 1e-12);                 // the flat-rim table from here
-  EXPECT_NEAR(*ratios(1, 172.5 * degree), 1.35, 1e-12);
-  EXPECT_NEAR(*ratios(2, 175 * degree), 1.3, 1e-12);                  // every other node: 170, 180
-  EXPECT_NEAR(*ratios(1, 180 * degree), 1.1, 1e-12);
+  const double line_hertz = 1e9; // the end's own
+  EXPECT_NEAR(*ratios(1, 150 * degree, line_hertz), 1.8 + 0.16 * 50 / 60, 1e-12); // the end table
+  EXPECT_NEAR(*ratios(1, 160 * degree, line_hertz), 4.0, 1e-12); // the flat-rim table from here
+  EXPECT_NEAR(*ratios(1, 172.5 * degree, 2 * line_hertz), 1.35, 1e-12);
+  EXPECT_NEAR(*ratios(2, 175 * degree, line_hertz), 2.6, 1e-12); // every other node: 170, 180
+  EXPECT_NEAR(*ratios(1, 180 * degree, line_hertz), 2.2, 1e-12);
+  EXPECT_NEAR(ratios.flat_table.back().ratio(), 1.1, 1e-12);
   EXPECT_TRUE(ratios.flat_table.front().converged());
   ratios.flat_table.front().sides.back().converged = false;
   EXPECT_FALSE(ratios.flat_table.front().converged());

@@ -210,7 +210,7 @@ EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::
           outside_model = true;
           continue;
         }
-        const std::optional<double> factor = (*end_factor)(end.interior_angle_rad);
+        const std::optional<double> factor = (*end_factor)(end.interior_angle_rad, end.line_hertz_pa);
         if (!factor)
         {
           ++out.singular_ends;

@@ -88,8 +88,10 @@ struct LoopSource
 };
 
 /// A loaded rim end's pressure over the interior FEM's at the end, from the
-/// end's interior angle (rad); none: the end is singular.
-using EndFactor = std::function<std::optional<double>(double interior_angle_rad)>;
+/// end's interior angle (rad) and line Hertz's peak at its q and R (R = r_e
+/// where the finish sets it; the interior FEM's is that times the slices'
+/// factor); none: the end is singular.
+using EndFactor = std::function<std::optional<double>(double interior_angle_rad, double line_hertz_pa)>;
 
 struct LoopSdsSettings
 {

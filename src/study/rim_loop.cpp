@@ -195,6 +195,14 @@ std::vector<FlatRimNode> flat_rim_table(MPI_Comm comm, const RimLoopSettings& s,
 }
 } // namespace
 
+double FlatRimNode::peak_pa() const
+{
+  double largest = 0;
+  for (const FlatRimSide& side : sides)
+    largest = std::max(largest, side.peak_pressure_pa);
+  return largest;
+}
+
 double FlatRimNode::ratio() const
 {
   double largest = 0;
@@ -243,11 +251,11 @@ double interpolate_held(const std::vector<std::pair<double, double>>& nodes, dou
   return (1 - t) * left->second + t * right->second;
 }
 
-double flat_rim_ratio(const std::vector<FlatRimNode>& table, int stride, double interior_angle_rad)
+double flat_rim_peak(const std::vector<FlatRimNode>& table, int stride, double interior_angle_rad)
 {
   std::vector<std::pair<double, double>> nodes;
   for (std::size_t k = 0; k < table.size(); k += static_cast<std::size_t>(stride))
-    nodes.emplace_back(table[k].interior_angle_rad, table[k].ratio());
+    nodes.emplace_back(table[k].interior_angle_rad, table[k].peak_pa());
   return interpolate_held(nodes, interior_angle_rad);
 }
 } // namespace
@@ -272,11 +280,11 @@ std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, in
   return interpolate_held(nodes, interior_angle_rad);
 }
 
-std::optional<double> EndRatios::operator()(int stride, double interior_angle_rad) const
+std::optional<double> EndRatios::operator()(int stride, double interior_angle_rad, double line_hertz_pa) const
 {
   const auto own = [stride](std::size_t nodes) { return nodes >= 3 ? stride : 1; };
   if (!flat_table.empty() && interior_angle_rad >= flat_from_rad)
-    return flat_rim_ratio(flat_table, own(flat_table.size()), interior_angle_rad);
+    return flat_rim_peak(flat_table, own(flat_table.size()), interior_angle_rad) / line_hertz_pa;
   return end_table_ratio(table, own(table.size()), singular_from_rad,
                          std::clamp(interior_angle_rad, smallest_modelled_angle, largest_modelled_rad));
 }
@@ -429,7 +437,8 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
       if (flat && e.interior_angle_rad >= result.flat_from_rad)
       {
         // Not a check of the end table: the flat-rim table stands for it.
-        e.table_ratio = flat_rim_ratio(result.flat_table, 1, e.interior_angle_rad);
+        if (e.study.hertz_peak_pa > 0)
+          e.table_ratio = flat_rim_peak(result.flat_table, 1, e.interior_angle_rad) / e.study.hertz_peak_pa;
         continue;
       }
       e.table_ratio = end_table_ratio(result.table, 1, result.singular_from_rad, e.modelled_angle_rad);
@@ -444,10 +453,10 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
                            largest_angle(s.end)};
     for (const int stride : {1, 2})
       if (stride == 1 || result.table.size() >= 3 || result.flat_table.size() >= 3)
-        factors.push_back([ratios, stride](double angle) { return ratios(stride, angle); });
+        factors.push_back([ratios, stride](double angle, double line_hertz) { return ratios(stride, angle, line_hertz); });
   }
   else if (interior.loaded_ends > 0)
-    factors.push_back([](double) { return std::optional<double>(); }); // every loaded end singular
+    factors.push_back([](double, double) { return std::optional<double>(); }); // every loaded end singular
   // The interior's scores with the ends', from the samples it mapped.
   result.loop = result.fem_sds.loop;
   result.loop.end_aware = end_aware_scores(comm, result.fem_sds.loop_samples, slices, loop_settings(s.loop), factors,
@@ -513,6 +522,7 @@ nlohmann::json to_json(const RimLoopResult& r)
                        {"converged", side.converged},
                        {"wall_s", side.wall_s}});
     flat_table.push_back({{"interior_angle_deg", n.interior_angle_rad / degree},
+                          {"peak_pressure_pa", n.peak_pa()},
                           {"ratio", n.ratio()},
                           {"converged", n.converged()},
                           {"sides", sides}});
@@ -523,7 +533,7 @@ nlohmann::json to_json(const RimLoopResult& r)
   if (!r.flat_table.empty() && !r.table.empty() && r.table.back().study.end_to_interior)
     seam = {{"interior_angle_deg", r.flat_from_rad / degree},
             {"end_table_ratio", *end_table_ratio(r.table, 1, r.singular_from_rad, r.flat_from_rad)},
-            {"flat_rim_ratio", flat_rim_ratio(r.flat_table, 1, r.flat_from_rad)}};
+            {"flat_rim_ratio", r.flat_table.front().ratio()}};
   const fem::RimEndSettings& setup = r.end_setup;
   return {{"body", r.fem_sds.body},
           {"loop", r.fem_sds.source},

@@ -90,8 +90,12 @@ struct FlatRimNode
 {
   double interior_angle_rad = 0;
   std::vector<FlatRimSide> sides;
+  /// The largest peak over the sides (Pa): the loop's ends near this angle
+  /// take it, interpolated linearly in the angle (it is smooth there, where
+  /// line Hertz at R = max(R_end, r_e) has a kink at R_end = r_e).
+  double peak_pa() const;
   /// The largest over the sides of the peak over line Hertz at the end's q
-  /// and R = max(R_end, r_e): the end's factor, as the end table's ratio.
+  /// and R = max(R_end, r_e), as the end table's ratio (reported).
   double ratio() const;
   bool converged() const;
 };
@@ -171,10 +175,11 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings);
 std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, int stride, double singular_from_rad,
                                       double interior_angle_rad);
 
-/// The loop's end/interior ratio by the end's interior angle: the flat-rim
-/// table's from flat_from_rad on, the end table's below it (the angle held
-/// to [60 deg, largest_modelled_rad]); each table by every stride-th node
-/// when it has 3 or more (the check of its spacing), else by all.
+/// The loop's end/interior ratio by the end's interior angle: from
+/// flat_from_rad on the flat-rim table's peak at the angle over the end's
+/// line Hertz peak, below it the end table's ratio (the angle held to
+/// [60 deg, largest_modelled_rad]); each table by every stride-th node when
+/// it has 3 or more (the check of its spacing), else by all.
 struct EndRatios
 {
   std::vector<EndTableNode> table;
@@ -182,7 +187,7 @@ struct EndRatios
   double flat_from_rad = std::numbers::pi;
   double singular_from_rad = std::numbers::pi;
   double largest_modelled_rad = std::numbers::pi;
-  std::optional<double> operator()(int stride, double interior_angle_rad) const;
+  std::optional<double> operator()(int stride, double interior_angle_rad, double line_hertz_pa) const;
 };
 
 /// The smallest interior angle whose sharp edge is singular against the
