@@ -24,6 +24,17 @@
 // singular ends make the end-aware scores singular: reported as such, with
 // the number of loaded ends that are.
 //
+// A rounded edge's flattest ends (interior angle from flat_rim_from_rad,
+// 160 deg, on) take the flat-rim table instead: the loop's own ends at
+// angles 2.5 deg apart up to its flattest (study/flattest_loop_ends.h),
+// solved in 3D by half-space theory on the hull's own surface with the
+// ruling's own load and the body's balance (study/flat_rim_contact.h); an
+// end's pressure is the table's peak at its angle (interpolated: the
+// ends near the flattest are one family per side, whose c, q and R follow
+// the angle) times the slices' factor. The straight rim of the FEM end
+// model is the weaker reduction there: on the oloid at 170 deg it gives
+// 1.92-1.97 where the body's own end gives 1.49-1.53 (docs/flat-rim.md).
+//
 // A rounded edge stands for a finished part, the hull rounded by a ball of
 // radius r_e rolled inside it: no radius of its surface is below r_e. Near a
 // sheet's apex the hull's R -> 0 at a ruling's end (the oloid's: where the
