@@ -297,7 +297,7 @@ nlohmann::json run_loop(study::RimLoopSettings settings)
                           "largest interior pressure {}",
                           score(loop.end_aware[0].sds, missing), score(loop.end_aware[0].fds, missing), r.end_aware_status(),
                           loop_ratio_text(r));
-  std::string flat;
+  std::string flat = r.flat_rim_refused.empty() ? "" : "; no flat-rim table (" + r.flat_rim_refused + ")";
   if (!r.flat_table.empty())
   {
     flat = fmt::format("; from {:.1f} deg the flat-rim table (the loop's own ends, half-space theory), peak / line "

@@ -1,4 +1,5 @@
 #include "geometry/two_circle_hull_height.h"
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -47,6 +48,19 @@ double segments_height(const SpaceCircle& a, const SpaceCircle& b, const GroundF
   }
   return lowest;
 }
+
+/// The height over `point` of circle c's disc (+infinity where the vertical
+/// line misses it).
+double disc_height(const SpaceCircle& c, const GroundFrame& ground, const Eigen::Vector2d& point)
+{
+  const Eigen::Vector3d normal = c.first_axis.cross(c.second_axis);
+  const double tilt = normal.dot(ground.down);
+  if (std::abs(tilt) < 1e-12)
+    return std::numeric_limits<double>::infinity();
+  const Eigen::Vector3d foot = ground.origin + point.x() * ground.along + point.y() * ground.across;
+  const double z = normal.dot(foot - c.centre) / tilt;
+  return (foot - z * ground.down - c.centre).norm() <= c.radius_m ? z : std::numeric_limits<double>::infinity();
+}
 } // namespace
 
 double two_circle_hull_height(const SpaceCircle& a, const SpaceCircle& b, const GroundFrame& ground,
@@ -64,8 +78,11 @@ double two_circle_hull_height(const SpaceCircle& a, const SpaceCircle& b, const 
       lowest = z;
       best = k;
     }
+  // A disc, where it is a face of the hull, lies lower than every segment;
+  // elsewhere it lies inside the hull, above its lower surface.
+  const double discs = std::min(disc_height(a, ground, point), disc_height(b, ground, point));
   if (!std::isfinite(lowest))
-    return lowest;
+    return discs;
   // Golden-section search between the best sample's neighbours.
   const double ratio = (std::sqrt(5.0) - 1) / 2;
   double lo = search.first_t + std::max(best - 1, 0) * step, hi = search.first_t + std::min(best + 1, samples - 1) * step;
@@ -90,6 +107,6 @@ double two_circle_hull_height(const SpaceCircle& a, const SpaceCircle& b, const 
       f2 = at(m2);
     }
   }
-  return std::min({lowest, f1, f2});
+  return std::min({lowest, f1, f2, discs});
 }
 } // namespace rollcheck::geometry

@@ -2,12 +2,14 @@
 // The height of the lower surface of the convex hull of two circles above a
 // ground plane that touches it, over a point of the ground. A boundary point
 // of the hull of two circles lies on a segment from one circle to the other
-// (or on one of their discs, when a disc is a face of the hull; not the case
-// near a ruling of the oloid, whose circle planes each cut the other circle),
-// so the height over (x, y) is
-//   z(x, y) = min over t of the height at (x, y) of the segments from A(t)
-// to the points B(s) whose ground projections lie on the line from A(t)'s
-// projection through (x, y), beyond (x, y).
+// or on one of their discs (a face of the hull beyond some rims of the
+// preprint's body; never near a ruling of the oloid, whose circle planes
+// each cut the other circle), and every segment and disc lies in the hull,
+// so the height over (x, y) is the least of
+//   min over t of the height at (x, y) of the segments from A(t) to the
+//   points B(s) whose ground projections lie on the line from A(t)'s
+//   projection through (x, y), beyond (x, y),
+// and the discs' heights there.
 // For each t those s solve k0 + kc cos s + ks sin s = 0 in closed form; the
 // minimum over t is taken over samples of [first_t, last_t] and refined by
 // golden-section search about the best sample. scripts/oloid_vertex.py

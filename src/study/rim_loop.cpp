@@ -166,7 +166,11 @@ std::vector<FlatRimNode> flat_rim_table(MPI_Comm comm, const RimLoopSettings& s,
   setup.steel_counter_face = s.end.counter_face == fem::CounterFace::block;
   setup.tolerance = s.end.tolerance;
   // Each rank solves its share; the others' values stay 0, so a sum shares them.
-  constexpr std::size_t per_end = 9;
+  // A solve that fails, or whose contact meets slopes too steep for
+  // half-space theory (an end beside a crease of the hull), marks its slot
+  // (the last value): every rank then refuses the table alike.
+  constexpr std::size_t per_end = 10;
+  constexpr double largest_slope = 0.1;
   std::vector<double> values;
   int job = 0;
   for (const std::vector<LoopEnd>& node_ends : ends)
@@ -174,11 +178,17 @@ std::vector<FlatRimNode> flat_rim_table(MPI_Comm comm, const RimLoopSettings& s,
     {
       std::array<double, per_end> v{};
       if (job++ % size == rank)
-      {
-        const FlatRimContact r = flat_rim_contact(setup, end);
-        v = {r.centre_of_pressure, r.end_line_load_n_per_m, r.end_radius_m, r.levels.back().peak_pressure_pa,
-             r.line_hertz_peak_pa, r.last_change, r.window_change, r.converged ? 1.0 : 0.0, r.wall_s};
-      }
+        try
+        {
+          const FlatRimContact r = flat_rim_contact(setup, end);
+          v = {r.centre_of_pressure, r.end_line_load_n_per_m, r.end_radius_m, r.levels.back().peak_pressure_pa,
+               r.line_hertz_peak_pa, r.last_change, r.window_change, r.converged ? 1.0 : 0.0, r.wall_s,
+               r.largest_slope > largest_slope ? 1.0 : 0.0};
+        }
+        catch (const ComputationError&)
+        {
+          v.back() = 1;
+        }
       values.insert(values.end(), v.begin(), v.end());
     }
   MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM, comm);
@@ -189,7 +199,13 @@ std::vector<FlatRimNode> flat_rim_table(MPI_Comm comm, const RimLoopSettings& s,
     FlatRimNode& node = table.emplace_back();
     node.interior_angle_rad = node_ends.front().interior_angle_rad;
     for (std::size_t k = 0; k < node_ends.size(); ++k, v += per_end)
+    {
+      if (v[per_end - 1] > 0.5)
+        throw ComputationError(fmt::format("the end of {:.2f} deg failed or met slopes above {} over its contact "
+                                           "(`rollcheck flat-rim` at that end says which)",
+                                           node.interior_angle_rad / degree, largest_slope));
       node.sides.push_back({v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7] > 0.5, v[8]});
+    }
   }
   return table;
 }
@@ -383,8 +399,20 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
   if (s.end.edge_radius_m > 0 && interior.loaded_ends > 0 && interior.loaded_end_angle_max_rad >= s.flat_rim_from_rad
       && result.fem_sds.circles.size() == 2)
   {
-    result.flat_from_rad = s.flat_rim_from_rad;
-    result.flat_table = flat_rim_table(comm, s, result.fem_sds, s.flat_rim_from_rad);
+    // Where half-space theory cannot stand for the body's flattest ends
+    // (the hull not found, or steep beside the contact), the FEM end table
+    // takes them, as for a body with no such ends; the JSON says why.
+    try
+    {
+      result.flat_table = flat_rim_table(comm, s, result.fem_sds, s.flat_rim_from_rad);
+      result.flat_from_rad = s.flat_rim_from_rad;
+    }
+    catch (const ComputationError& e)
+    {
+      result.flat_rim_refused = e.what();
+      if (rank == 0)
+        spdlog::warn("rim loop: no flat-rim table, the FEM end table takes every end: {}", e.what());
+    }
     for (const FlatRimNode& node : result.flat_table)
     {
       result.table_converged = result.table_converged && node.converged();
@@ -554,6 +582,7 @@ nlohmann::json to_json(const RimLoopResult& r)
           {"end_table_converged", r.table_converged},
           {"flat_rim_from_deg", r.flat_table.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.flat_from_rad / degree)},
           {"flat_rim_table", flat_table},
+          {"flat_rim_refused", r.flat_rim_refused.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.flat_rim_refused)},
           {"flat_rim_seam", seam},
           {"end_table_vs_direct", json_number(r.table_vs_direct)},
           {"end_aware_status", r.end_aware_status()},

@@ -147,6 +147,9 @@ struct RimLoopResult
   /// Ends from this angle on take the flat-rim table's ratio (pi: none do).
   double flat_from_rad = std::numbers::pi;
   std::vector<FlatRimNode> flat_table;
+  /// Why there is no flat-rim table although the loop has ends in its range
+  /// (empty: there is one, or none was due).
+  std::string flat_rim_refused;
   /// Largest |table - direct| of the end/interior ratio over the direct ends
   /// with one, over the larger of the direct ratio and 1 (the interior).
   std::optional<double> table_vs_direct;
