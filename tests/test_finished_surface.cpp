@@ -58,6 +58,21 @@ TEST(FinishedSurface, OloidHullAtAVertexIsItsSheetAndItsRim)
   EXPECT_NEAR(oloid.height(-5e-4, 5e-5) / 2.836e-05, 1.0, 1e-3);
 }
 
+// A truncated cone standing on its base: the base disc is a face of the hull,
+// so the lower surface over it is the ground itself, which no segment
+// between the circles reaches (they all rise from the base's rim).
+TEST(FinishedSurface, HullHeightFindsADiscThatIsAFace)
+{
+  const geometry::SpaceCircle base{Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), 1.0};
+  const geometry::SpaceCircle top{Eigen::Vector3d(0, 0, 1), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), 0.5};
+  const geometry::GroundFrame ground{Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
+                                     -Eigen::Vector3d::UnitZ()};
+  const geometry::SegmentSearch search{-std::numbers::pi, std::numbers::pi, 64};
+  EXPECT_NEAR(geometry::two_circle_hull_height(base, top, ground, search, 0.3, 0.2), 0.0, 1e-12);
+  EXPECT_NEAR(geometry::two_circle_hull_height(top, base, ground, search, -0.6, 0.1), 0.0, 1e-12);
+  EXPECT_FALSE(std::isfinite(geometry::two_circle_hull_height(base, top, ground, search, 1.2, 0.0)));
+}
+
 TEST(FinishedSurface, RollingBallRoundsACreaseAndLeavesAGentleSurface)
 {
   // A crease z = k |y| along x: rounded to k^2 r / 2 + y^2 / (2 r) for
