@@ -5,7 +5,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
-#include <optional>
+#include <limits>
 
 namespace rollcheck::study
 {

@@ -407,7 +407,7 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
       result.flat_table = flat_rim_table(comm, s, result.fem_sds, s.flat_rim_from_rad);
       result.flat_from_rad = s.flat_rim_from_rad;
     }
-    catch (const ComputationError& e)
+    catch (const std::runtime_error& e) // a failed solve, or no orientation at a node's angle (InputError)
     {
       result.flat_rim_refused = e.what();
       if (rank == 0)
