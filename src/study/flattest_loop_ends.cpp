@@ -43,6 +43,15 @@ Eigen::Vector3d chord(const Eigen::Vector3d& from, const Eigen::Vector3d& to, do
 FlattestLoopEnds flattest_loop_ends(std::span<const oracle::Circle> circles, const Eigen::Vector3d& centre_of_mass_m,
                                     std::span<const double> angles_rad, int loop_points)
 {
+  const std::vector<double> angles(angles_rad.begin(), angles_rad.end());
+  return flattest_loop_ends_below(circles, centre_of_mass_m, [&angles](double) { return angles; }, loop_points);
+}
+
+FlattestLoopEnds flattest_loop_ends_below(std::span<const oracle::Circle> circles,
+                                          const Eigen::Vector3d& centre_of_mass_m,
+                                          const std::function<std::vector<double>(double)>& angles_below,
+                                          int loop_points)
+{
   if (circles.size() != 2)
     throw InputError(fmt::format("flattest loop ends: a hull of two circles is needed, got {} circles", circles.size()));
   const Probe probe{circles, oracle::two_circle_body(circles), centre_of_mass_m};
@@ -97,7 +106,7 @@ FlattestLoopEnds flattest_loop_ends(std::span<const oracle::Circle> circles, con
   if (result.flattest.interior_angle_rad < best_angle)
     result.flattest = probe.at(direction(best_k), best_end);
 
-  for (const double target : angles_rad)
+  for (const double target : angles_below(result.flattest.interior_angle_rad))
   {
     // The walk starts from the loop's best point, which must lie above the target.
     if (!(target < best_angle))

@@ -17,6 +17,7 @@
 #include "oracle/rolling_dynamics.h"
 #include <Eigen/Core>
 #include <array>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -50,4 +51,10 @@ struct FlattestLoopEnds
 };
 FlattestLoopEnds flattest_loop_ends(std::span<const oracle::Circle> circles, const Eigen::Vector3d& centre_of_mass_m,
                                     std::span<const double> angles_rad, int loop_points = 4000);
+/// The same with the angles chosen from the flattest end's (a table up to
+/// it): `angles_below` gets that angle (rad) and returns the angles wanted.
+FlattestLoopEnds flattest_loop_ends_below(std::span<const oracle::Circle> circles,
+                                          const Eigen::Vector3d& centre_of_mass_m,
+                                          const std::function<std::vector<double>(double)>& angles_below,
+                                          int loop_points = 4000);
 } // namespace rollcheck::study

@@ -145,10 +145,12 @@ std::vector<FlatRimNode> flat_rim_table(MPI_Comm comm, const RimLoopSettings& s,
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
-  const double flattest = flattest_loop_ends(interior.circles, interior.centre_of_mass_m, {}).flattest.interior_angle_rad;
-  std::vector<double> angles = table_angles(std::min(from, flattest), flattest, s.flat_rim_step_rad);
-  angles.pop_back(); // the flattest itself
-  const FlattestLoopEnds found = flattest_loop_ends(interior.circles, interior.centre_of_mass_m, angles);
+  const FlattestLoopEnds found
+      = flattest_loop_ends_below(interior.circles, interior.centre_of_mass_m, [&](double flattest) {
+          std::vector<double> angles = table_angles(std::min(from, flattest), flattest, s.flat_rim_step_rad);
+          angles.pop_back(); // the flattest itself
+          return angles;
+        });
   std::vector<std::vector<LoopEnd>> ends;
   for (const std::array<LoopEnd, 2>& sides : found.at_angle)
   {
@@ -213,18 +215,13 @@ std::vector<FlatRimNode> flat_rim_table(MPI_Comm comm, const RimLoopSettings& s,
 
 double FlatRimNode::peak_pa() const
 {
-  double largest = 0;
-  for (const FlatRimSide& side : sides)
-    largest = std::max(largest, side.peak_pressure_pa);
-  return largest;
+  return std::ranges::max(sides, {}, &FlatRimSide::peak_pressure_pa).peak_pressure_pa;
 }
 
 double FlatRimNode::ratio() const
 {
-  double largest = 0;
-  for (const FlatRimSide& side : sides)
-    largest = std::max(largest, side.peak_pressure_pa / side.line_hertz_peak_pa);
-  return largest;
+  const auto ratio_of = [](const FlatRimSide& side) { return side.peak_pressure_pa / side.line_hertz_peak_pa; };
+  return ratio_of(std::ranges::max(sides, {}, ratio_of));
 }
 
 bool FlatRimNode::converged() const
