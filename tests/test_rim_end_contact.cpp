@@ -77,6 +77,33 @@ TEST(RimEndContact, SquareEndAgreesOnAnIndependentGrid)
   EXPECT_NEAR(grid.levels.back().far_peak_pa / grid.hertz_peak_pa, 1.0, 0.02);
 }
 
+TEST(RimEndContact, EdgeElementsCoverTheRoundedEdgesBand)
+{
+  // The size field by hand: h_e over the band |x - x_t| <= w on the surface
+  // within the edge zone, then growing with the distance from the band.
+  fem::RimEndSizes sizes;
+  sizes.edge_m = 1e-7;
+  sizes.edge_x_m = -4e-4;
+  sizes.edge_band_m = 2e-5;
+  sizes.edge_zone_m = 5e-5;
+  sizes.contact_m = 5e-6;
+  sizes.contact_zone_m = 5e-5;
+  sizes.far_m = 1e-3;
+  for (const double dx : {-2e-5, -1e-5, 0.0, 1e-5, 2e-5})
+  {
+    const double on_band[3] = {sizes.edge_x_m + dx, 3e-5, 0.0};
+    EXPECT_DOUBLE_EQ(fem::rim_end_element_size(sizes, on_band), sizes.edge_m) << dx;
+  }
+  const double beyond[3] = {sizes.edge_x_m + sizes.edge_band_m + 3e-6, 1e-5, 4e-6};
+  EXPECT_NEAR(fem::rim_end_element_size(sizes, beyond), sizes.edge_m + sizes.growth * 5e-6, 1e-15);
+  const double along[3] = {sizes.edge_x_m - sizes.edge_band_m - 3e-6, sizes.edge_zone_m + 4e-6, 0.0};
+  EXPECT_NEAR(fem::rim_end_element_size(sizes, along), sizes.edge_m + sizes.growth * 5e-6, 1e-15);
+  // No band: the line of the sharp edge alone.
+  sizes.edge_band_m = 0;
+  const double off_line[3] = {sizes.edge_x_m + 1e-5, 0.0, 0.0};
+  EXPECT_NEAR(fem::rim_end_element_size(sizes, off_line), sizes.edge_m + sizes.growth * 1e-5, 1e-15);
+}
+
 TEST(RimEndContact, OnlyFacesFacingThePlaneAreContactFacets)
 {
   // A square or acute end's other face never touches the plane; had its

@@ -120,6 +120,11 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   sizes.edge_m = std::min(edge_element_m, sizes.contact_m);
   sizes.edge_zone_m = 1.5 * b;
   sizes.edge_x_m = -study.fillet_start_m;
+  // A rounded edge's peak lies where the fillet leaves the sheet, within
+  // about its boundary layer s on either side (on the steel block at a
+  // square end 1.3 s onto the fillet, graded from the line alone at 4 h_e):
+  // the edge's elements cover +-2 s about that line (sharp: s = 0, the line).
+  sizes.edge_band_m = 2 * study.boundary_layer_m;
   sizes.far_m = H / 4;
   const bool block = s.counter_face == CounterFace::block;
   const RimEndGeometry geometry{s.radius_m, s.interior_angle_rad, s.edge_radius_m, H, L, study.flat_sheet};

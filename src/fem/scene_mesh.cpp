@@ -555,9 +555,10 @@ SceneParts rim_end_planes(double L, double tol)
 
 double rim_end_element_size(const RimEndSizes& sizes, const double* x)
 {
-  // Distances from the loaded part of the edge line (along y through
+  // Distances from the loaded part of the edge's band (along y about
   // (edge_x_m, 0, 0)) and from the contact strip (along -x).
-  const double to_edge = std::sqrt(std::pow(x[0] - sizes.edge_x_m, 2) + x[2] * x[2]
+  const double to_edge = std::sqrt(std::pow(std::max(std::abs(x[0] - sizes.edge_x_m) - sizes.edge_band_m, 0.0), 2)
+                                   + x[2] * x[2]
                                    + std::pow(std::max(x[1] - sizes.edge_zone_m, 0.0), 2));
   const double to_strip = std::sqrt(x[2] * x[2] + std::pow(std::max(x[1] - sizes.contact_zone_m, 0.0), 2)
                                     + std::pow(std::max(x[0], 0.0), 2));

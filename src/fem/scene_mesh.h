@@ -122,12 +122,13 @@ struct RimEndGeometry
 };
 
 /// Element size min(far, edge + growth d_edge, contact + growth d_strip),
-/// d_edge the distance from the line along y through (edge_x_m, 0, 0) for
-/// y < edge_zone_m (the sharp edge at x = 0, or where a fillet leaves the
-/// sheet), d_strip from the strip y < contact_zone_m along the ruling.
+/// d_edge the distance from the band |x - edge_x_m| <= edge_band_m on z = 0
+/// for y < edge_zone_m (the sharp edge at x = 0 with no band, or where a
+/// fillet leaves the sheet with the band its peak lies in), d_strip from the
+/// strip y < contact_zone_m along the ruling.
 struct RimEndSizes
 {
-  double edge_m = 0, edge_zone_m = 0, edge_x_m = 0;
+  double edge_m = 0, edge_zone_m = 0, edge_x_m = 0, edge_band_m = 0;
   double contact_m = 0, contact_zone_m = 0;
   double growth = 0.3;
   double far_m = 0;
