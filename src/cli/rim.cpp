@@ -104,7 +104,7 @@ const io::BoundSchema<RimCommand>& rim_schema()
         .integer("levels", "--levels", end(&RimEndSettings::levels), "", "Edge mesh levels (convergence needs 2)",
                  io::Bounds{1, 6})
         .real("tolerance", "--tolerance", end(&RimEndSettings::tolerance), "",
-              "Largest change of the end peak between the last two levels that counts as converged",
+              "Largest relative change of the end/interior pressure ratio between the last two levels that counts as converged",
               io::Bounds{0, 1, true, false})
         .real("penalty_c", "--penalty-c", end(&RimEndSettings::penalty_c), "",
               "Penalty kappa = c E / h(x), h the local element size", io::positive)

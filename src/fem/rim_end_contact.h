@@ -125,7 +125,7 @@ struct RimEndSettings
   /// Edge elements at the first level, h_e / b; each further level halves them.
   double edge_element_over_half_width = 1.0 / 8;
   int levels = 3;                    ///< 1 to 6; convergence needs 2
-  double tolerance = 0.03;           ///< the end pressure's change per level that counts as converged
+  double tolerance = 0.03;           ///< the end/interior ratio's relative change per level that counts as converged
   /// kappa = c E / h(x), h(x) the element size there (fem/scene_mesh.h
   /// rim_end_element_size): at c = 100 (the other scenes') the nodal
   /// pressures along the strip scattered by 4-5 %, at c = 10 by 2.4 %.
@@ -181,9 +181,9 @@ struct RimEndStudy
   std::optional<double> measured_exponent;
   /// Not singular: the end's pressure (a sharp square or acute edge's own
   /// pressure, a rounded edge's end peak) over the far side's at the last
-  /// level, its change between the last two levels over the larger of it and
-  /// the far side's (none with one level), and whether it is resolved and
-  /// the change below the tolerance.
+  /// level; that ratio's change between the last two levels over the larger
+  /// of it and 1 (none with one level); and whether it is resolved and the
+  /// change below the tolerance.
   std::optional<double> end_change;
   bool converged = false;
   std::optional<double> end_to_interior;
@@ -199,6 +199,14 @@ struct RimEndStudy
     return total;
   }
 };
+
+/// What a non-singular end reports at a level: a sharp edge's own pressure,
+/// or a rounded edge's end peak, over the far side's (the interior's) peak.
+double end_to_interior(const RimEndLevel& level, bool sharp_edge);
+
+/// The change of end_to_interior from `before` to `last` over the larger of
+/// its last value and 1: what `tolerance` judges.
+double end_to_interior_change(const RimEndLevel& before, const RimEndLevel& last, bool sharp_edge);
 
 /// Every rank gets the study. InputError for bad settings (naming the
 /// setting), ComputationError for a failed solve or an unresolved contact.
