@@ -270,8 +270,9 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
 
 double end_to_interior(const RimEndLevel& level, bool sharp_edge)
 {
-  // A rounded edge's peak: a square end's largest pressure near the end is
-  // the interior's, falling towards the edge, so the edge's own is the one.
+  // A sharp edge's own pressure, not the largest near it: at a square end
+  // that largest is the interior's, falling towards the edge. A rounded
+  // edge's peak on its fillet.
   return (sharp_edge ? level.edge_pressure_pa : level.end_peak_pa) / level.far_peak_pa;
 }
 
