@@ -15,12 +15,23 @@ namespace
 {
 constexpr double degree = std::numbers::pi / 180;
 
-study::EndTableNode node(double angle_deg, std::optional<double> end_to_interior)
+study::EndTableNode node(double angle_deg, std::optional<double> end_to_interior, double sheet_radius_m = 0.01)
 {
   study::EndTableNode n;
   n.interior_angle_rad = angle_deg * degree;
+  n.sheet_radius_m = sheet_radius_m;
   n.study.end_to_interior = end_to_interior;
   return n;
+}
+
+/// A loaded end at `angle_deg` with line Hertz's peak `line_hertz_pa` and R.
+study::LoadedEnd loaded_end(double angle_deg, double line_hertz_pa, double radius_m = 0.01)
+{
+  study::LoadedEnd end;
+  end.interior_angle_rad = angle_deg * degree;
+  end.line_hertz_pa = line_hertz_pa;
+  end.radius_m = radius_m;
+  return end;
 }
 } // namespace
 
@@ -59,31 +70,84 @@ TEST(RimLoop, EndTableInterpolatesLinearlyAndHoldsItsEnds)
   const std::vector<study::EndTableNode> table
       = {node(90, 0.2), node(100, 0.3), node(110, 0.4), node(120, 0.5), node(130, 0.6)};
   const double singular_from = std::numbers::pi;
-  EXPECT_NEAR(*study::end_table_ratio(table, 1, singular_from, 105 * degree), 0.35, 1e-12);
-  EXPECT_NEAR(*study::end_table_ratio(table, 2, singular_from, 105 * degree), 0.35, 1e-12);
-  EXPECT_NEAR(*study::end_table_ratio(table, 1, singular_from, 80 * degree), 0.2, 1e-12);
-  EXPECT_NEAR(*study::end_table_ratio(table, 1, singular_from, 140 * degree), 0.6, 1e-12);
+  EXPECT_NEAR(*study::end_table_ratio(table, 1, singular_from, 105 * degree, 1.0), 0.35, 1e-12);
+  EXPECT_NEAR(*study::end_table_ratio(table, 2, singular_from, 105 * degree, 1.0), 0.35, 1e-12);
+  EXPECT_NEAR(*study::end_table_ratio(table, 1, singular_from, 80 * degree, 1.0), 0.2, 1e-12);
+  EXPECT_NEAR(*study::end_table_ratio(table, 1, singular_from, 140 * degree, 1.0), 0.6, 1e-12);
 }
 
 TEST(RimLoop, EveryOtherNodeSeesOnlyItsOwnNodes)
 {
   // A kink at 100 deg that the table of every other node (90, 110) cannot see.
   const std::vector<study::EndTableNode> table = {node(90, 0.2), node(100, 1.0), node(110, 0.2)};
-  EXPECT_NEAR(*study::end_table_ratio(table, 1, std::numbers::pi, 100 * degree), 1.0, 1e-12);
-  EXPECT_NEAR(*study::end_table_ratio(table, 2, std::numbers::pi, 100 * degree), 0.2, 1e-12);
+  EXPECT_NEAR(*study::end_table_ratio(table, 1, std::numbers::pi, 100 * degree, 1.0), 1.0, 1e-12);
+  EXPECT_NEAR(*study::end_table_ratio(table, 2, std::numbers::pi, 100 * degree, 1.0), 0.2, 1e-12);
 }
 
 TEST(RimLoop, AboveTheSingularAngleThereIsNoRatio)
 {
   const std::vector<study::EndTableNode> table = {node(80, 0.1), node(90, 0.27)};
-  EXPECT_FALSE(study::end_table_ratio(table, 1, 90 * degree, 90.5 * degree).has_value());
-  EXPECT_TRUE(study::end_table_ratio(table, 1, 90 * degree, 90 * degree).has_value());
+  EXPECT_FALSE(study::end_table_ratio(table, 1, 90 * degree, 90.5 * degree, 1.0).has_value());
+  EXPECT_TRUE(study::end_table_ratio(table, 1, 90 * degree, 90 * degree, 1.0).has_value());
+}
+
+// A rounded edge's columns over the sheet's R: a ratio linear in the angle
+// and in log R, 2 + 0.01 (a - 90 deg) + 0.5 ln(R / 4 mm), is interpolated
+// exactly between them and held beyond them.
+TEST(RimLoop, EndTableInterpolatesAcrossItsColumnsInLogRadius)
+{
+  auto ratio = [](double angle_deg, double radius_mm) { return 2 + 0.01 * (angle_deg - 90) + 0.5 * std::log(radius_mm / 4); };
+  std::vector<study::EndTableNode> table;
+  for (const double radius_mm : {4.0, 8.0, 16.0})
+    for (const double angle : {80.0, 100.0, 120.0})
+      table.push_back(node(angle, ratio(angle, radius_mm), radius_mm * 1e-3));
+  const double open = std::numbers::pi;
+  EXPECT_NEAR(*study::end_table_ratio(table, 1, open, 110 * degree, 6e-3), ratio(110, 6.0), 1e-12);
+  EXPECT_NEAR(*study::end_table_ratio(table, 1, open, 85 * degree, 12e-3), ratio(85, 12.0), 1e-12);
+  // Every other column (4 and 16 mm) and angle (80 and 120 deg): still exact for this ratio.
+  EXPECT_NEAR(*study::end_table_ratio(table, 2, open, 110 * degree, 6e-3), ratio(110, 6.0), 1e-12);
+  // Held at the table's edges in both directions.
+  EXPECT_NEAR(*study::end_table_ratio(table, 1, open, 110 * degree, 2e-3), ratio(110, 4.0), 1e-12);
+  EXPECT_NEAR(*study::end_table_ratio(table, 1, open, 130 * degree, 32e-3), ratio(120, 16.0), 1e-12);
+  // Columns need an R to interpolate at.
+  EXPECT_THROW(study::end_table_ratio(table, 1, open, 110 * degree, 0.0), ComputationError);
+}
+
+TEST(RimLoop, EveryOtherColumnSeesOnlyItsOwnColumns)
+{
+  // The middle column (R = 8 mm) differs; every other column skips it.
+  std::vector<study::EndTableNode> table;
+  for (const auto& [radius_mm, value] : {std::pair{4.0, 2.0}, {8.0, 3.0}, {16.0, 2.0}})
+    for (const double angle : {80.0, 120.0})
+      table.push_back(node(angle, value, radius_mm * 1e-3));
+  EXPECT_NEAR(*study::end_table_ratio(table, 1, std::numbers::pi, 100 * degree, 8e-3), 3.0, 1e-12);
+  EXPECT_NEAR(*study::end_table_ratio(table, 2, std::numbers::pi, 100 * degree, 8e-3), 2.0, 1e-12);
+}
+
+// A loaded end reads the column of its own R (as finished_end has it).
+TEST(RimLoop, EndRatiosReadTheColumnOfTheEndsOwnRadius)
+{
+  study::EndRatios ratios;
+  ratios.largest_modelled_rad = 170 * degree;
+  for (const auto& [radius_mm, value] : {std::pair{2.0, 3.0}, {4.0, 2.5}, {8.0, 2.0}})
+    for (const double angle : {80.0, 120.0})
+      ratios.table.push_back(node(angle, value, radius_mm * 1e-3));
+  EXPECT_NEAR(*ratios(1, loaded_end(100, 1e9, 4e-3)), 2.5, 1e-12);
+  EXPECT_NEAR(*ratios(1, loaded_end(100, 1e9, 4e-3 * std::sqrt(2.0))), 2.25, 1e-12); // halfway in log R
+  // A part finished with r_e = 4 mm takes an end of R = 1 mm at R = r_e.
+  study::LoadedEnd sharper = loaded_end(100, 1e9, 1e-3);
+  sharper.load_ratio = 1e-4;
+  const study::LoadedEnd finished = study::finished_end(sharper, 4e-3);
+  EXPECT_EQ(finished.radius_m, 4e-3);
+  EXPECT_NEAR(finished.line_hertz_pa, 0.5e9, 1e-3);
+  EXPECT_NEAR(finished.load_ratio, 0.25e-4, 1e-18);
+  EXPECT_NEAR(*ratios(1, finished), 2.5, 1e-12);
 }
 
 TEST(RimLoop, ANodeWithoutARatioIsAnError)
 {
   const std::vector<study::EndTableNode> table = {node(90, 0.2), node(100, std::nullopt)};
-  EXPECT_THROW(study::end_table_ratio(table, 1, std::numbers::pi, 99 * degree), ComputationError);
+  EXPECT_THROW(study::end_table_ratio(table, 1, std::numbers::pi, 99 * degree, 1.0), ComputationError);
 }
 
 // On a steel block the loop's slices meet the block too: the pair's E*
@@ -132,11 +196,11 @@ TEST(RimLoop, FlatRimTableTakesOverFromItsFirstAngle)
     ratios.flat_table.push_back(n);
   }
   const double line_hertz = 1e9; // the end's own
-  EXPECT_NEAR(*ratios(1, 150 * degree, line_hertz), 1.8 + 0.16 * 50 / 60, 1e-12); // the end table
-  EXPECT_NEAR(*ratios(1, 160 * degree, line_hertz), 4.0, 1e-12); // the flat-rim table from here
-  EXPECT_NEAR(*ratios(1, 172.5 * degree, 2 * line_hertz), 1.35, 1e-12);
-  EXPECT_NEAR(*ratios(2, 175 * degree, line_hertz), 2.6, 1e-12); // every other node: 170, 180
-  EXPECT_NEAR(*ratios(1, 180 * degree, line_hertz), 2.2, 1e-12);
+  EXPECT_NEAR(*ratios(1, loaded_end(150, line_hertz)), 1.8 + 0.16 * 50 / 60, 1e-12); // the end table
+  EXPECT_NEAR(*ratios(1, loaded_end(160, line_hertz)), 4.0, 1e-12); // the flat-rim table from here
+  EXPECT_NEAR(*ratios(1, loaded_end(172.5, 2 * line_hertz)), 1.35, 1e-12);
+  EXPECT_NEAR(*ratios(2, loaded_end(175, line_hertz)), 2.6, 1e-12); // every other node: 170, 180
+  EXPECT_NEAR(*ratios(1, loaded_end(180, line_hertz)), 2.2, 1e-12);
   EXPECT_NEAR(ratios.flat_table.back().ratio(), 1.1, 1e-12);
   EXPECT_TRUE(ratios.flat_table.front().converged());
   ratios.flat_table.front().sides.back().converged = false;

@@ -158,10 +158,10 @@ TEST(FemSds, CylinderEndAwareScoresFollowTheEndFactor)
   settings.normal_load_n = 2e7;
   fem::SliceScaling table(study::slice_settings(settings), settings.table_nodes_per_decade);
   const std::vector<study::EndFactor> factors = {
-      [](double, double) { return std::optional<double>(0.27); }, // about the square end's on the rigid plane
-      [](double, double) { return std::optional<double>(1.0); },
-      [](double, double) { return std::optional<double>(2.0); },
-      [](double, double) { return std::optional<double>(); }};   // singular
+      [](const study::LoadedEnd&) { return std::optional<double>(0.27); }, // about the square end's on the rigid plane
+      [](const study::LoadedEnd&) { return std::optional<double>(1.0); },
+      [](const study::LoadedEnd&) { return std::optional<double>(2.0); },
+      [](const study::LoadedEnd&) { return std::optional<double>(); }};   // singular
   study::FemSdsResult result = study::run_fem_sds(MPI_COMM_WORLD, settings, table);
   study::LoopSds& loop = result.loop;
   loop.end_aware = study::end_aware_scores(MPI_COMM_WORLD, result.loop_samples, table, study::loop_settings(settings),

@@ -12,6 +12,7 @@
 #include "core/json_number.h"
 #include "fem/rim_end_contact.h"
 #include "study/rim_loop.h"
+#include <algorithm>
 #include <fmt/format.h>
 #include <mpi.h>
 #include <numbers>
@@ -53,6 +54,11 @@ const io::BoundSchema<RimCommand>& rim_schema()
               "With --body: largest spacing of the end table's interior angles (end models across the loop's "
               "range of loaded ends; the check halves it)",
               io::Bounds{0.5, 60}, std::numbers::pi / 180)
+        .real("end_table_radius_step", "--end-table-radius-step", &RimCommand::end_table_radius_step, "",
+              "With --body and a rounded edge: largest ratio between neighbouring columns of the end table over the "
+              "sheet's R (end models across the range of R at the loop's ends, all at the direct ends' median q; "
+              "the check halves them); 0: one column at the direct ends' median q and R",
+              io::Bounds{0, 100})
         .real("flat_rim_from_deg", "--flat-rim-from", &RimCommand::flat_rim_from_rad, "deg",
               "With --body and a rounded edge: loaded ends of at least this interior angle take the flat-rim table, "
               "the body's own ends solved in 3D by half-space theory (its surface near the end, its load along the "
@@ -114,6 +120,17 @@ const io::BoundSchema<RimCommand>& rim_schema()
     return s;
   }();
   return schema;
+}
+
+/// The end table's columns in words: its R, or its range of R.
+std::string table_columns_text(const study::RimLoopResult& r)
+{
+  if (r.table.empty() || r.table.front().sheet_radius_m == r.table.back().sheet_radius_m)
+    return fmt::format("R = {:.4g} m", r.reference_radius_m);
+  const auto angles = static_cast<std::size_t>(std::ranges::count_if(
+      r.table, [&](const study::EndTableNode& n) { return n.sheet_radius_m == r.table.front().sheet_radius_m; }));
+  return fmt::format("{} columns of R from {:.4g} to {:.4g} m ({} angles each)", r.table.size() / angles,
+                     r.table.front().sheet_radius_m, r.table.back().sheet_radius_m, angles);
 }
 
 nlohmann::json run_one_end(const fem::RimEndSettings& setup)
@@ -313,13 +330,13 @@ nlohmann::json run_loop(study::RimLoopSettings settings)
   }
   spdlog::info("\nrims of {} ({}), counter-face {}, edge {}:\n\n{}\nloaded rim ends over the loop: {} in {} of {} "
                "samples, interior angles {:.1f} to {:.1f} deg (singular above {:.2f} deg); end table of {} nodes "
-               "at q = {:.4g} N/m, R = {:.4g} m, against the direct ends {}{}\n{}\n\n",
+               "at q = {:.4g} N/m, {}, against the direct ends {}{}\n{}\n\n",
                r.fem_sds.body, r.fem_sds.source, j["counter_face"].get<std::string>(),
                r.end_setup.edge_radius_m > 0 ? fmt::format("rounded, r_e = {:.3g} m", r.end_setup.edge_radius_m)
                                              : "sharp",
                ends, loop.loaded_ends, loop.loaded_end_samples, loop.samples, loop.loaded_end_angle_min_rad / degree,
                loop.loaded_end_angle_max_rad / degree, r.singular_from_rad / degree, r.table.size(),
-               r.reference_load_n_per_m, r.reference_radius_m,
+               r.reference_load_n_per_m, table_columns_text(r),
                r.table_vs_direct ? fmt::format("{:.2f} %", 100 * *r.table_vs_direct) : "-", flat, scores);
   return j;
 }

@@ -335,9 +335,13 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
   study.singular = study.wedge_exponent < 0;
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
+  double first_edge_element = setup.edge_element_over_half_width * study.half_width_m;
+  if (setup.resolve_boundary_layer && !sharp)
+    // Just below s / 4 at the last level, so that the comparison below holds in floating point.
+    first_edge_element = std::min(first_edge_element, 0.999 * std::pow(2.0, setup.levels - 1) * study.boundary_layer_m / 4);
   for (int k = 0; k < setup.levels; ++k)
   {
-    const double h_e = setup.edge_element_over_half_width * study.half_width_m / std::pow(2.0, k);
+    const double h_e = first_edge_element / std::pow(2.0, k);
     study.levels.push_back(solve_level(comm, study, h_e, k + 1 == setup.levels && !setup.xdmf_path.empty(),
                                        study.levels.empty() ? nullptr : &study.levels.back()));
     const RimEndLevel& l = study.levels.back();

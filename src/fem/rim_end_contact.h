@@ -125,6 +125,11 @@ struct RimEndSettings
   /// Edge elements at the first level, h_e / b; each further level halves them.
   double edge_element_over_half_width = 1.0 / 8;
   int levels = 3;                    ///< 1 to 6; convergence needs 2
+  /// A rounded edge: where the last level's h_e would not resolve the
+  /// boundary layer s (h_e <= s / 4, s / b = 2 r_e / (pi R)), the first
+  /// level's is refined until it does (ends of large R against r_e: the rim
+  /// loop's end models set it).
+  bool resolve_boundary_layer = false;
   double tolerance = 0.03;           ///< the end/interior ratio's relative change per level that counts as converged
   /// kappa = c E / h(x), h(x) the element size there (fem/scene_mesh.h
   /// rim_end_element_size): at c = 100 (the other scenes') the nodal

@@ -25,6 +25,27 @@ double half_width_over_radius(double load_ratio)
   return std::sqrt(4 * load_ratio / std::numbers::pi);
 }
 
+} // namespace
+
+double half_width_m(const LoadedEnd& end)
+{
+  return half_width_over_radius(end.load_ratio) * end.radius_m;
+}
+
+LoadedEnd finished_end(LoadedEnd end, double edge_radius_m)
+{
+  if (end.radius_m < edge_radius_m)
+  {
+    const double sharper = end.radius_m / edge_radius_m;
+    end.line_hertz_pa *= std::sqrt(sharper);
+    end.load_ratio *= sharper;
+    end.radius_m = edge_radius_m;
+  }
+  return end;
+}
+
+namespace
+{
 SampleContact classify(const contact::ContactLocus& locus)
 {
   if (locus.ruling)
@@ -192,17 +213,11 @@ EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::
       points.emplace_back(p.face, fem_pressure(p.line_hertz_pa, p.load_ratio));
     bool outside_model = false;
     if (end_factor)
-      for (LoadedEnd end : ruling.ends)
+      for (const LoadedEnd& hull_end : ruling.ends)
       {
-        const bool finished = end.radius_m < edge_radius_m;
-        if (finished)
-        {
-          const double sharper = end.radius_m / edge_radius_m;
-          end.line_hertz_pa *= std::sqrt(sharper);
-          end.load_ratio *= sharper;
-          end.radius_m = edge_radius_m;
-          ++out.finished_ends;
-        }
+        const bool finished = hull_end.radius_m < edge_radius_m;
+        out.finished_ends += finished;
+        const LoadedEnd end = finished_end(hull_end, edge_radius_m);
         const double width_ratio = half_width_over_radius(end.load_ratio);
         if (!(width_ratio < fem::largest_half_width_over_radius))
         {
@@ -210,7 +225,7 @@ EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::
           outside_model = true;
           continue;
         }
-        const std::optional<double> factor = (*end_factor)(end.interior_angle_rad, end.line_hertz_pa);
+        const std::optional<double> factor = (*end_factor)(end);
         if (!factor)
         {
           ++out.singular_ends;

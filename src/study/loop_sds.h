@@ -87,11 +87,6 @@ struct LoopSource
   std::string description;
 };
 
-/// A loaded rim end's pressure over the interior FEM's at the end, from the
-/// end's interior angle (rad) and line Hertz's peak at its q and R (R = r_e
-/// where the finish sets it; the interior FEM's is that times the slices'
-/// factor); none: the end is singular.
-using EndFactor = std::function<std::optional<double>(double interior_angle_rad, double line_hertz_pa)>;
 
 struct LoopSdsSettings
 {
@@ -123,6 +118,24 @@ struct LoadedEnd
   double interior_angle_rad = 0;
   double radius_m = 0;
 };
+
+/// b of line Hertz at the end, sqrt(4 lambda / pi) R (lambda = q / (E* R),
+/// the load ratio).
+double half_width_m(const LoadedEnd& end);
+
+/// The end as a part finished with edge radius `edge_radius_m` has it: the
+/// rolling-ball blend leaves no radius of the surface below r_e, so an end
+/// whose sheet has R < r_e (near the sheet's apex, R -> 0) is taken at
+/// R = r_e, line Hertz's pressure scaled by (R / r_e)^1/2 and its load ratio
+/// by R / r_e (the hull's q: the blend's small rise over the apex, which
+/// would unload it, is not modelled). Other ends are returned unchanged.
+LoadedEnd finished_end(LoadedEnd end, double edge_radius_m);
+
+/// A loaded rim end's pressure over the interior FEM's at the end (the
+/// interior FEM's is line Hertz's peak times the slices' factor), from the
+/// end as finished (finished_end: its interior angle, line Hertz's peak and
+/// b at its q and R); none: the end is singular.
+using EndFactor = std::function<std::optional<double>(const LoadedEnd& finished)>;
 
 struct RulingSample
 {
@@ -233,13 +246,9 @@ LoopSds loop_sds(MPI_Comm comm, const LoopSamples& samples, fem::SliceScaling& t
 /// other node), from `table` as loop_sds left it; none when the loop has no
 /// ruling sample. Collective on `comm`.
 ///
-/// `edge_radius_m` > 0: the part is finished with that edge radius, the
-/// rolling-ball blend (a ball of radius r_e rolled inside the hull rounds
-/// every part of the surface it cannot touch), so no radius of the finished
-/// surface is below r_e. An end where the hull's sheet has R < r_e (near a
-/// sheet's apex, R -> 0) is taken at R = r_e: line Hertz's pressure scaled
-/// by (R / r_e)^1/2, its load ratio by R / r_e (the hull's q: the blend's
-/// small rise over the apex, which would unload it, is not modelled).
+/// `edge_radius_m` > 0: the part is finished with that edge radius (a ball
+/// of radius r_e rolled inside the hull rounds every part of the surface it
+/// cannot touch); every end is scored as finished_end has it.
 std::vector<EndAwareScores> end_aware_scores(MPI_Comm comm, const LoopSamples& samples,
                                              const fem::SliceScaling& table, const LoopSdsSettings& settings,
                                              std::span<const EndFactor> end_factors, double edge_radius_m);

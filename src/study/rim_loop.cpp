@@ -12,7 +12,9 @@
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
 #include <numbers>
+#include <span>
 #include <spdlog/spdlog.h>
 
 namespace rollcheck::study
@@ -68,6 +70,7 @@ fem::RimEndSettings end_settings(const RimLoopSettings& s, double radius_m, doub
   e.youngs_modulus_pa = s.loop.youngs_modulus_pa;
   e.poisson_ratio = s.loop.poisson_ratio;
   e.xdmf_path.clear(); // one end's fields, not the loop's
+  e.resolve_boundary_layer = true; // every end's ratio is a number of the end, not of the mesh
   // The fillet must stay small against the block (fem/rim_end_contact.h:
   // r_e < H / 10), and b varies from end to end: deepen the block where the
   // setting's H / b would be too shallow for this end's b.
@@ -129,7 +132,7 @@ std::vector<FlatRimNode> flat_rim_table(MPI_Comm comm, const RimLoopSettings& s,
 
 /// Nodes evenly over [lo, hi], an odd number of them (every other one is a
 /// table too), at most `step` apart; one where the range is a point.
-std::vector<double> table_angles(double lo, double hi, double step)
+std::vector<double> even_nodes(double lo, double hi, double step)
 {
   if (!(hi - lo > 1e-9))
     return {lo};
@@ -147,7 +150,7 @@ std::vector<FlatRimNode> flat_rim_table(MPI_Comm comm, const RimLoopSettings& s,
   MPI_Comm_size(comm, &size);
   const FlattestLoopEnds found
       = flattest_loop_ends_below(interior.circles, interior.centre_of_mass_m, [&](double flattest) {
-          std::vector<double> angles = table_angles(std::min(from, flattest), flattest, s.flat_rim_step_rad);
+          std::vector<double> angles = even_nodes(std::min(from, flattest), flattest, s.flat_rim_step_rad);
           angles.pop_back(); // the flattest itself
           return angles;
         });
@@ -250,18 +253,24 @@ double singular_from_angle(const fem::RimEndSettings& end)
 
 namespace
 {
-/// Linear interpolation over (angle, ratio) nodes, held at the ends.
-double interpolate_held(const std::vector<std::pair<double, double>>& nodes, double angle)
+/// Linear interpolation over (x, value) nodes ascending in x, held at the ends.
+double interpolate_held(const std::vector<std::pair<double, double>>& nodes, double x)
 {
-  if (angle <= nodes.front().first)
+  if (nodes.size() == 1 || x <= nodes.front().first)
     return nodes.front().second;
-  if (angle >= nodes.back().first)
+  if (x >= nodes.back().first)
     return nodes.back().second;
-  const auto right = std::upper_bound(nodes.begin(), nodes.end(), angle,
+  const auto right = std::upper_bound(nodes.begin(), nodes.end(), x,
                                       [](double a, const std::pair<double, double>& n) { return a < n.first; });
   const auto left = right - 1;
-  const double t = (angle - left->first) / (right->first - left->first);
+  const double t = (x - left->first) / (right->first - left->first);
   return (1 - t) * left->second + t * right->second;
+}
+
+/// Every stride-th of n nodes when there are 3 or more, else every one.
+std::size_t own_stride(int stride, std::size_t n)
+{
+  return n >= 3 ? static_cast<std::size_t>(stride) : 1;
 }
 
 double flat_rim_peak(const std::vector<FlatRimNode>& table, int stride, double interior_angle_rad)
@@ -274,32 +283,50 @@ double flat_rim_peak(const std::vector<FlatRimNode>& table, int stride, double i
 } // namespace
 
 std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, int stride, double singular_from_rad,
-                                      double interior_angle_rad)
+                                      double interior_angle_rad, double radius_m)
 {
   if (interior_angle_rad > singular_from_rad)
     return std::nullopt;
   if (table.empty())
     throw ComputationError("rim loop: a non-singular loaded end, but the end table is empty");
-  std::vector<std::pair<double, double>> nodes;
-  for (std::size_t k = 0; k < table.size(); k += static_cast<std::size_t>(stride))
+  std::vector<std::span<const EndTableNode>> columns;
+  for (auto first = table.begin(); first != table.end();)
   {
-    const EndTableNode& n = table[k];
-    if (!n.study.end_to_interior)
-      throw ComputationError(fmt::format("rim loop: the end table's node at {:.2f} deg has no end/interior ratio "
-                                         "(its rounded edge is not resolved)",
-                                         n.interior_angle_rad / degree));
-    nodes.emplace_back(n.interior_angle_rad, *n.study.end_to_interior);
+    const auto last = std::find_if(first, table.end(), [&](const EndTableNode& n) {
+      return n.sheet_radius_m != first->sheet_radius_m;
+    });
+    columns.emplace_back(first, last);
+    first = last;
   }
-  return interpolate_held(nodes, interior_angle_rad);
+  if (columns.size() > 1 && !(radius_m > 0))
+    throw ComputationError(fmt::format("rim loop: the end table's ratio needs R > 0, got {} m", radius_m));
+  std::vector<std::pair<double, double>> across;
+  for (std::size_t c = 0; c < columns.size(); c += own_stride(stride, columns.size()))
+  {
+    std::vector<std::pair<double, double>> nodes;
+    for (std::size_t k = 0; k < columns[c].size(); k += own_stride(stride, columns[c].size()))
+    {
+      const EndTableNode& n = columns[c][k];
+      if (!n.study.end_to_interior)
+        throw ComputationError(fmt::format("rim loop: the end table's node at {:.2f} deg, R = {:.4g} m has no "
+                                           "end/interior ratio (its rounded edge is not resolved)",
+                                           n.interior_angle_rad / degree, n.sheet_radius_m));
+      nodes.emplace_back(n.interior_angle_rad, *n.study.end_to_interior);
+    }
+    across.emplace_back(columns.size() > 1 ? std::log(columns[c].front().sheet_radius_m) : 0.0,
+                        interpolate_held(nodes, interior_angle_rad));
+  }
+  return interpolate_held(across, columns.size() > 1 ? std::log(radius_m) : 0.0);
 }
 
-std::optional<double> EndRatios::operator()(int stride, double interior_angle_rad, double line_hertz_pa) const
+std::optional<double> EndRatios::operator()(int stride, const LoadedEnd& end) const
 {
-  const auto own = [stride](std::size_t nodes) { return nodes >= 3 ? stride : 1; };
-  if (!flat_table.empty() && interior_angle_rad >= flat_from_rad)
-    return flat_rim_peak(flat_table, own(flat_table.size()), interior_angle_rad) / line_hertz_pa;
-  return end_table_ratio(table, own(table.size()), singular_from_rad,
-                         std::clamp(interior_angle_rad, smallest_modelled_angle, largest_modelled_rad));
+  if (!flat_table.empty() && end.interior_angle_rad >= flat_from_rad)
+    return flat_rim_peak(flat_table, static_cast<int>(own_stride(stride, flat_table.size())), end.interior_angle_rad)
+           / end.line_hertz_pa;
+  return end_table_ratio(table, stride, singular_from_rad,
+                         std::clamp(end.interior_angle_rad, smallest_modelled_angle, largest_modelled_rad),
+                         end.radius_m);
 }
 
 std::optional<double> RimLoopResult::worst_end_to_interior() const
@@ -370,6 +397,39 @@ std::string RimLoopResult::end_aware_status() const
   return text;
 }
 
+namespace
+{
+/// The range of R over the loaded ends the end table stands for: the loop's
+/// (as finished_end has them, inside the end model, below `flat_from_rad`)
+/// and the directly modelled ones; none without such ends.
+std::optional<std::pair<double, double>> sheet_radius_range(MPI_Comm comm, const LoopSamples& samples,
+                                                            const std::vector<RimLoopEnd>& direct,
+                                                            double edge_radius_m, double flat_from_rad)
+{
+  double lo = std::numeric_limits<double>::infinity(), hi = 0;
+  auto add = [&](double radius) {
+    lo = std::min(lo, radius);
+    hi = std::max(hi, radius);
+  };
+  for (const RulingSample& ruling : samples.rulings)
+    for (const LoadedEnd& hull_end : ruling.ends)
+    {
+      const LoadedEnd end = finished_end(hull_end, edge_radius_m);
+      if (end.interior_angle_rad < flat_from_rad
+          && half_width_m(end) < fem::largest_half_width_over_radius * end.radius_m)
+        add(end.radius_m);
+    }
+  for (const RimLoopEnd& e : direct)
+    if (e.outside_model.empty() && e.interior_angle_rad < flat_from_rad)
+      add(e.study.setup.radius_m);
+  MPI_Allreduce(MPI_IN_PLACE, &lo, 1, MPI_DOUBLE, MPI_MIN, comm);
+  MPI_Allreduce(MPI_IN_PLACE, &hi, 1, MPI_DOUBLE, MPI_MAX, comm);
+  if (!(hi > 0))
+    return std::nullopt;
+  return std::pair{lo, hi};
+}
+} // namespace
+
 RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
 {
   // The interior's slices meet the same counter-face as the ends: on a steel
@@ -380,6 +440,9 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
   if (!(s.end_table_step_rad > 0) || !std::isfinite(s.end_table_step_rad))
     throw InputError(fmt::format("rim --body: end_table_step_deg must be positive and finite, got {}",
                                  s.end_table_step_rad / degree));
+  if (!(s.end_table_radius_step == 0 || s.end_table_radius_step > 1) || !std::isfinite(s.end_table_radius_step))
+    throw InputError(fmt::format("rim --body: end_table_radius_step must be 0 (one column) or above 1, got {}",
+                                 s.end_table_radius_step));
   const auto start = std::chrono::steady_clock::now();
   fem::ensure_petsc();
   int rank = 0;
@@ -446,17 +509,31 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
                                    interior.loaded_ends, s.loop.orientations));
     result.reference_load_n_per_m = median(loads);
     result.reference_radius_m = median(radii);
-    for (const double angle : table_angles(std::min(lo, hi), hi, s.end_table_step_rad))
+    std::vector<double> columns{result.reference_radius_m};
+    const auto range = s.end.edge_radius_m > 0 && s.end_table_radius_step > 0
+                           ? sheet_radius_range(comm, result.fem_sds.loop_samples, result.ends, s.end.edge_radius_m,
+                                                result.flat_from_rad)
+                           : std::nullopt;
+    if (range)
     {
-      EndTableNode node{angle, fem::solve_rim_end(
-                                   comm, end_settings(s, result.reference_radius_m, result.reference_load_n_per_m, angle))};
-      result.table_converged = result.table_converged && node.study.converged;
-      if (rank == 0)
-        spdlog::info("rim loop: end table at {:.2f} deg: end/interior {} ({})", angle / degree,
-                     node.study.end_to_interior ? fmt::format("{:.4f}", *node.study.end_to_interior) : "none",
-                     node.study.converged ? "converged" : "NOT converged");
-      result.table.push_back(std::move(node));
+      columns.clear();
+      for (const double log_radius :
+           even_nodes(std::log(range->first), std::log(range->second), std::log(s.end_table_radius_step)))
+        columns.push_back(std::exp(log_radius));
     }
+    for (const double radius : columns)
+      for (const double angle : even_nodes(std::min(lo, hi), hi, s.end_table_step_rad))
+      {
+        EndTableNode node{angle, radius,
+                          fem::solve_rim_end(comm, end_settings(s, radius, result.reference_load_n_per_m, angle))};
+        result.table_converged = result.table_converged && node.study.converged;
+        if (rank == 0)
+          spdlog::info("rim loop: end table at {:.2f} deg, R = {:.4g} m (r_e / b = {:.3g}): end/interior {} ({})",
+                       angle / degree, radius, s.end.edge_radius_m / node.study.half_width_m,
+                       node.study.end_to_interior ? fmt::format("{:.4f}", *node.study.end_to_interior) : "none",
+                       node.study.converged ? "converged" : "NOT converged");
+        result.table.push_back(std::move(node));
+      }
     for (RimLoopEnd& e : result.ends)
     {
       if (flat && e.interior_angle_rad >= result.flat_from_rad)
@@ -466,7 +543,8 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
           e.table_ratio = flat_rim_peak(result.flat_table, 1, e.interior_angle_rad) / e.study.hertz_peak_pa;
         continue;
       }
-      e.table_ratio = end_table_ratio(result.table, 1, result.singular_from_rad, e.modelled_angle_rad);
+      e.table_ratio
+          = end_table_ratio(result.table, 1, result.singular_from_rad, e.modelled_angle_rad, e.study.setup.radius_m);
       if (e.table_ratio && e.study.end_to_interior && e.study.resolved && !e.study.singular)
         // Over the larger of the end's and the interior's pressure, as the end
         // model's own change: an acute end's ratio tends to 0.
@@ -478,10 +556,10 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
                            largest_angle(s.end)};
     for (const int stride : {1, 2})
       if (stride == 1 || result.table.size() >= 3 || result.flat_table.size() >= 3)
-        factors.push_back([ratios, stride](double angle, double line_hertz) { return ratios(stride, angle, line_hertz); });
+        factors.push_back([ratios, stride](const LoadedEnd& end) { return ratios(stride, end); });
   }
   else if (interior.loaded_ends > 0)
-    factors.push_back([](double, double) { return std::optional<double>(); }); // every loaded end singular
+    factors.push_back([](const LoadedEnd&) { return std::optional<double>(); }); // every loaded end singular
   // The interior's scores with the ends', from the samples it mapped.
   result.loop = result.fem_sds.loop;
   result.loop.end_aware = end_aware_scores(comm, result.fem_sds.loop_samples, slices, loop_settings(s.loop), factors,
@@ -556,9 +634,17 @@ nlohmann::json to_json(const RimLoopResult& r)
   // uniform load) against the body's own end (flat-rim).
   nlohmann::json seam = nullptr;
   if (!r.flat_table.empty() && !r.table.empty() && r.table.back().study.end_to_interior)
+  {
+    // At the R of the first flat-rim node's side with the largest ratio.
+    const FlatRimSide& side = std::ranges::max(r.flat_table.front().sides, {}, [](const FlatRimSide& f) {
+      return f.peak_pressure_pa / f.line_hertz_peak_pa;
+    });
+    const double radius = std::max(side.end_radius_m, r.end_setup.edge_radius_m);
     seam = {{"interior_angle_deg", r.flat_from_rad / degree},
-            {"end_table_ratio", *end_table_ratio(r.table, 1, r.singular_from_rad, r.flat_from_rad)},
+            {"sheet_radius_m", radius},
+            {"end_table_ratio", *end_table_ratio(r.table, 1, r.singular_from_rad, r.flat_from_rad, radius)},
             {"flat_rim_ratio", r.flat_table.front().ratio()}};
+  }
   const fem::RimEndSettings& setup = r.end_setup;
   return {{"body", r.fem_sds.body},
           {"loop", r.fem_sds.source},

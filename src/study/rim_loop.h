@@ -13,16 +13,20 @@
 // when its boundary layer is resolved (fem/rim_end_contact.h).
 //
 // Over the whole loop the end's pressure is taken as the end/interior ratio
-// times the FEM pressure at the end. The ratio comes from a table over the
-// interior angle: end models at evenly spaced angles across the loop's range
-// (at the median q and R of the directly modelled ends), interpolated
-// linearly. The table is a reduction (the ratio depends on the angle and, for
-// a rounded edge, on r_e / b, which varies with q and R) and is checked
-// twice: against the direct end models at their own q and R
-// (`table_vs_direct`), and by the end-aware scores from every other node of
-// the table (the change when the table's nodes halve). A sharp edge's
-// singular ends make the end-aware scores singular: reported as such, with
-// the number of loaded ends that are.
+// times the FEM pressure at the end. The ratio comes from a table: end
+// models at evenly spaced interior angles across the loop's range, and for a
+// rounded edge at geometrically spaced R across the range of the loop's ends
+// (its columns), all at the directly modelled ends' median q, interpolated
+// linearly in the angle and in log R. A rounded end's ratio depends on r_e /
+// R (its boundary layer s / b = 2 r_e / (pi R)) far more than on q: at the
+// preprint's body's 91.9 deg end, with b held, 2.353, 2.888 and 3.58 at R =
+// 2.96, 5.93 and 11.9 mm; with R held, 2.802 at twice q (docs/rims.md). A
+// sharp edge's ratio has no such length: one column, at the median q and R.
+// The table is a reduction and is checked twice: against the direct end
+// models at their own q and R (`table_vs_direct`), and by the end-aware
+// scores from every other node of the table, in both directions (the change
+// when its nodes halve). A sharp edge's singular ends make the end-aware
+// scores singular: reported as such, with the number of loaded ends that are.
 //
 // A rounded edge's flattest ends (interior angle from flat_rim_from_rad,
 // 160 deg, on) take the flat-rim table instead: the loop's own ends at
@@ -70,6 +74,11 @@ struct RimLoopSettings
   fem::RimEndSettings end;
   /// Largest spacing of the end table's nodes over the interior angle.
   double end_table_step_rad = 10 * std::numbers::pi / 180;
+  /// A rounded edge: the largest ratio between neighbouring columns' R in
+  /// the end table (> 1), or 0 for one column at the direct ends' median q
+  /// and R (the reduction that put the preprint's body's table 4.7 % from its
+  /// direct ends, docs/rims.md).
+  double end_table_radius_step = 2;
   /// A rounded edge's ends of at least this interior angle are solved in 3D
   /// on the body's own loop by half-space theory (flat-rim: its surface, its
   /// load along the ruling, its balance), nodes at most flat_rim_step_rad
@@ -132,6 +141,8 @@ struct RimLoopEnd
 struct EndTableNode
 {
   double interior_angle_rad = 0;
+  /// The node's column: R of its end model.
+  double sheet_radius_m = 0;
   fem::RimEndStudy study;
 };
 
@@ -140,10 +151,14 @@ struct RimLoopResult
   fem::RimEndSettings end_setup;     ///< the settings' end models (counter-face, edge, material)
   FemSdsResult fem_sds;              ///< the interior: loop scores and the K orientations
   std::vector<RimLoopEnd> ends;
-  double reference_load_n_per_m = 0, reference_radius_m = 0; ///< of the end table
+  /// The directly modelled ends' median q and R: the end table's q, and
+  /// its R when it has one column.
+  double reference_load_n_per_m = 0, reference_radius_m = 0;
   /// Interior angles above this are singular (a sharp edge; pi when rounded).
   double singular_from_rad = 0;
-  std::vector<EndTableNode> table;   ///< over the loop's non-singular loaded ends' angles below flat_from_rad
+  /// Over the loop's non-singular loaded ends' angles below flat_from_rad,
+  /// column by column (ascending R), each over the angles.
+  std::vector<EndTableNode> table;
   /// Ends from this angle on take the flat-rim table's ratio (pi: none do).
   double flat_from_rad = std::numbers::pi;
   std::vector<FlatRimNode> flat_table;
@@ -183,17 +198,20 @@ struct RimLoopResult
 /// ComputationError from the FEM.
 RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings);
 
-/// The table's end/interior ratio at `interior_angle_rad`, interpolating
-/// linearly between the nodes `stride` apart (held at the ends); none when
-/// the angle lies above `singular_from_rad`.
+/// The table's end/interior ratio at `interior_angle_rad` and the sheet's
+/// `radius_m` (unused with one column): within each column linear in the
+/// angle, across them linear in log R, held at
+/// the table's edges; in a direction with 3 or more nodes by every
+/// `stride`-th (the check of its spacing). None when the angle lies above
+/// `singular_from_rad`.
 std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, int stride, double singular_from_rad,
-                                      double interior_angle_rad);
+                                      double interior_angle_rad, double radius_m);
 
-/// The loop's end/interior ratio by the end's interior angle: from
-/// flat_from_rad on the flat-rim table's peak at the angle over the end's
-/// line Hertz peak, below it the end table's ratio (the angle held to
-/// [60 deg, largest_modelled_rad]); each table by every stride-th node when
-/// it has 3 or more (the check of its spacing), else by all.
+/// The loop's end/interior ratio of a loaded end (as finished_end has it):
+/// from flat_from_rad on the flat-rim table's peak at its interior angle
+/// over its line Hertz peak, below it the end table's ratio at its angle
+/// (held to [60 deg, largest_modelled_rad]) and R; each table by every
+/// stride-th node when it has 3 or more (the check of its spacing), else by all.
 struct EndRatios
 {
   std::vector<EndTableNode> table;
@@ -201,7 +219,7 @@ struct EndRatios
   double flat_from_rad = std::numbers::pi;
   double singular_from_rad = std::numbers::pi;
   double largest_modelled_rad = std::numbers::pi;
-  std::optional<double> operator()(int stride, double interior_angle_rad, double line_hertz_pa) const;
+  std::optional<double> operator()(int stride, const LoadedEnd& end) const;
 };
 
 /// The smallest interior angle whose sharp edge is singular against the
