@@ -62,13 +62,15 @@ def loop_ratio(j):
 
 def run(command, path, env):
     """One `rollcheck rim` run: its JSON at path, its log (with the per-end
-    table) beside it."""
-    done = subprocess.run(command + ["--json", path], env=env, stdout=subprocess.DEVNULL,
-                          stderr=subprocess.PIPE, text=True)
-    with open(path[:-len(".json")] + ".log", "w") as log:
-        log.write(" ".join(command) + "\n" + done.stderr)
+    table) beside it, written as the run goes (a long run can be followed)."""
+    log_path = path[:-len(".json")] + ".log"
+    with open(log_path, "w") as log:
+        log.write(" ".join(command) + "\n")
+        log.flush()
+        done = subprocess.run(command + ["--json", path], env=env, stdout=subprocess.DEVNULL, stderr=log)
     if done.returncode != 0:
-        sys.exit(f"rim_peaks: {' '.join(command)} failed ({done.returncode}):\n{done.stderr[-2000:]}")
+        with open(log_path) as log:
+            sys.exit(f"rim_peaks: {' '.join(command)} failed ({done.returncode}):\n{log.read()[-2000:]}")
 
 
 def main():

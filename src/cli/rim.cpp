@@ -57,7 +57,8 @@ const io::BoundSchema<RimCommand>& rim_schema()
         .real("end_table_radius_step", "--end-table-radius-step", &RimCommand::end_table_radius_step, "",
               "With --body and a rounded edge: largest ratio between neighbouring columns of the end table over the "
               "sheet's R (end models across the range of R at the loop's ends, all at the direct ends' median q; "
-              "the check halves them); 0: one column at the direct ends' median q and R",
+              "the check halves them; columns at small R cost most, their block 10.5 r_e deep); 0: one column at the "
+              "direct ends' median q and R",
               io::Bounds{0, 100})
         .real("flat_rim_from_deg", "--flat-rim-from", &RimCommand::flat_rim_from_rad, "deg",
               "With --body and a rounded edge: loaded ends of at least this interior angle take the flat-rim table, "
