@@ -15,21 +15,9 @@
 
 namespace rollcheck::study
 {
-namespace
+double half_width_over_radius(const LoadedEnd& end)
 {
-/// A loaded end's b / R by line Hertz, sqrt(4 q / (pi E* R)) = sqrt(4 lambda / pi):
-/// line contact holds while it is below fem::largest_half_width_over_radius
-/// (the end model's own limit).
-double half_width_over_radius(double load_ratio)
-{
-  return std::sqrt(4 * load_ratio / std::numbers::pi);
-}
-
-} // namespace
-
-double half_width_m(const LoadedEnd& end)
-{
-  return half_width_over_radius(end.load_ratio) * end.radius_m;
+  return std::sqrt(4 * end.load_ratio / std::numbers::pi);
 }
 
 LoadedEnd finished_end(LoadedEnd end, double edge_radius_m)
@@ -218,7 +206,7 @@ EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::
         const bool finished = hull_end.radius_m < edge_radius_m;
         out.finished_ends += finished;
         const LoadedEnd end = finished_end(hull_end, edge_radius_m);
-        const double width_ratio = half_width_over_radius(end.load_ratio);
+        const double width_ratio = half_width_over_radius(end);
         if (!(width_ratio < fem::largest_half_width_over_radius))
         {
           ++out.outside_model_ends;

@@ -87,7 +87,6 @@ struct LoopSource
   std::string description;
 };
 
-
 struct LoopSdsSettings
 {
   double normal_load_n = 100.0;        ///< F, through the centre of mass (the preprint's)
@@ -119,9 +118,10 @@ struct LoadedEnd
   double radius_m = 0;
 };
 
-/// b of line Hertz at the end, sqrt(4 lambda / pi) R (lambda = q / (E* R),
-/// the load ratio).
-double half_width_m(const LoadedEnd& end);
+/// The end's b / R by line Hertz, sqrt(4 q / (pi E* R)) = sqrt(4 lambda / pi)
+/// (lambda the load ratio): line contact holds while it is below
+/// fem::largest_half_width_over_radius (the end model's own limit).
+double half_width_over_radius(const LoadedEnd& end);
 
 /// The end as a part finished with edge radius `edge_radius_m` has it: the
 /// rolling-ball blend leaves no radius of the surface below r_e, so an end

@@ -416,7 +416,7 @@ std::optional<std::pair<double, double>> sheet_radius_range(MPI_Comm comm, const
     {
       const LoadedEnd end = finished_end(hull_end, edge_radius_m);
       if (end.interior_angle_rad < flat_from_rad
-          && half_width_m(end) < fem::largest_half_width_over_radius * end.radius_m)
+          && half_width_over_radius(end) < fem::largest_half_width_over_radius)
         add(end.radius_m);
     }
   for (const RimLoopEnd& e : direct)
