@@ -13,8 +13,11 @@
 // boundary-layer refinement that the rim loop's end models use
 // (RimEndSettings::resolve_boundary_layer): an end of large R against its
 // edge radius has a thin layer, s / b = 2 r_e / (pi R), that a coarse first
-// level leaves unresolved (about 40 s on 2 processes).
+// level leaves unresolved (about 40 s on 2 processes); and the flat sheet
+// standing in for the cylinder where the loop's block is deeper than R
+// (about 100 s).
 #include "contact/edge_on_elastic_block_exponent.h"
+#include "contact/hertz.h"
 #include "fem/rim_end_contact.h"
 #include <cmath>
 #include <cstdio>
@@ -153,3 +156,41 @@ TEST(RimEndResolution, CoarseFirstLevelIsRefinedUntilTheBoundaryLayerIsResolved)
               *study.end_to_interior);
   EXPECT_NEAR(*study.end_to_interior / 3.5889, 1.0, 0.03);
 }
+
+TEST(RimEndContact, FlatSheetStandsInForTheCylinderWhereTheBlockIsDeeperThanR)
+{
+  // rim --body deepens a fillet's block to a few r_e, deeper than R at the
+  // oloid's ends of small R, where the cylinder sheet cannot hold it: the
+  // flat sheet (half-space theory, b << R) takes over. Against the cylinder
+  // at the deepest block it holds (H = R), at a bearing's load (q of p0 =
+  // 2 GPa at R = 10 mm) and a fillet of 3 b on a 120 deg rim, both resolved.
+  fem::RimEndSettings s;
+  s.interior_angle_rad = 120 * std::numbers::pi / 180;
+  s.load_n_per_m = 571769.86;
+  s.radius_m = 5e-3;
+  s.edge_element_over_half_width = 1.0 / 64;
+  s.levels = 2;
+  const double b = contact::line_contact(s.load_n_per_m, s.radius_m,
+                                         contact::effective_modulus(s.youngs_modulus_pa, s.poisson_ratio, false),
+                                         s.poisson_ratio)
+                       .half_width_m;
+  s.edge_radius_m = 3 * b;
+  s.depth_over_half_width = 45;
+  ASSERT_LT(s.radius_m, s.depth_over_half_width * b);
+  const fem::RimEndStudy flat = fem::solve_rim_end(MPI_COMM_WORLD, s);
+  s.depth_over_half_width = std::floor(s.radius_m / b);
+  const fem::RimEndStudy cylinder = fem::solve_rim_end(MPI_COMM_WORLD, s);
+  for (const fem::RimEndStudy* study : {&flat, &cylinder})
+    std::printf("%s sheet: end / interior %.4f\n", study->flat_sheet ? "flat" : "cylinder",
+                study->end_to_interior.value_or(std::nan("")));
+  EXPECT_TRUE(flat.flat_sheet);
+  EXPECT_FALSE(cylinder.flat_sheet);
+  for (const fem::RimEndStudy* study : {&flat, &cylinder})
+  {
+    EXPECT_TRUE(study->resolved);
+    EXPECT_TRUE(study->converged) << study->end_change.value_or(std::nan(""));
+    ASSERT_TRUE(study->end_to_interior.has_value());
+  }
+  EXPECT_NEAR(*flat.end_to_interior / *cylinder.end_to_interior, 1.0, 0.03);
+}
+

@@ -57,9 +57,14 @@ const io::BoundSchema<RimCommand>& rim_schema()
         .real("end_table_radius_step", "--end-table-radius-step", &RimCommand::end_table_radius_step, "",
               "With --body and a rounded edge: largest ratio between neighbouring columns of the end table over the "
               "sheet's R (end models across the range of R at the loop's ends, all at the direct ends' median q; "
-              "the check halves them; columns at small R cost most, their block 10.5 r_e deep); 0: one column at the "
-              "direct ends' median q and R",
+              "the check halves them; columns at small R cost most, their block --block-depth r_e deep); 0: one column "
+              "at the direct ends' median q and R",
               io::Bounds{0, 100})
+        .real("depth_over_edge_radius", "--block-depth", &RimCommand::depth_over_edge_radius, "",
+              "With --body and a rounded edge: each end model's block at least this many edge radii deep (H >= c r_e "
+              "at every end, however small its b; above 4 for the fillet to fit). An acute end's ratio falls as the "
+              "block deepens (docs/rims.md, \"The block's depth\")",
+              io::Bounds{4, 100, true, false})
         .real("flat_rim_from_deg", "--flat-rim-from", &RimCommand::flat_rim_from_rad, "deg",
               "With --body and a rounded edge: loaded ends of at least this interior angle take the flat-rim table, "
               "the body's own ends solved in 3D by half-space theory (its surface near the end, its load along the "

@@ -300,15 +300,16 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
       = contact::line_contact(setup.load_n_per_m, setup.radius_m, study.effective_modulus_pa, setup.poisson_ratio);
   study.half_width_m = hertz.half_width_m;
   study.hertz_peak_pa = hertz.peak_pressure_pa;
-  if (setup.edge_radius_m >= 0.1 * setup.depth_over_half_width * study.half_width_m)
+  if (setup.edge_radius_m >= largest_edge_radius_over_depth * setup.depth_over_half_width * study.half_width_m)
     throw InputError(fmt::format("rim: edge_radius_m {} m is not small against the block's depth H = {:.3g} m "
-                                 "(at most H / 10)",
-                                 setup.edge_radius_m, setup.depth_over_half_width * study.half_width_m));
+                                 "(at most {} H)",
+                                 setup.edge_radius_m, setup.depth_over_half_width * study.half_width_m,
+                                 largest_edge_radius_over_depth));
   const bool sharp = !(setup.edge_radius_m > 0);
   const double depth_m = setup.depth_over_half_width * study.half_width_m;
   // Flat where the cylinder hardly rises across the block (R >= 20 H), and
   // where it cannot hold the block at all (R < H: a fillet's block deepened
-  // to 10.5 r_e at an end of small R, rim --body): half-space theory's
+  // to a few r_e at an end of small R, rim --body): half-space theory's
   // reduction, exact in the gap wherever the contact can reach (b << R).
   study.flat_sheet
       = setup.sheet == SheetModel::flat || block || setup.mesh == RimEndMesh::grid

@@ -578,10 +578,10 @@ SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& g, const RimEn
   if (!(g.interior_angle_rad >= std::numbers::pi / 3 && g.interior_angle_rad < std::numbers::pi))
     throw InputError(fmt::format("rim end: the interior angle must lie in [60, 180) deg, got {} deg",
                                  g.interior_angle_rad * 180 / std::numbers::pi));
-  if (!(g.edge_radius_m >= 0 && g.edge_radius_m < 0.1 * H) || (!g.flat_sheet && g.radius_m < H))
-    throw InputError(fmt::format("rim end: need 0 <= edge radius < H / 10, and R >= H for the cylinder sheet (edge "
+  if (!(g.edge_radius_m >= 0 && g.edge_radius_m < largest_edge_radius_over_depth * H) || (!g.flat_sheet && g.radius_m < H))
+    throw InputError(fmt::format("rim end: need 0 <= edge radius < {} H, and R >= H for the cylinder sheet (edge "
                                  "radius {} m, R = {} m, H = {} m)",
-                                 g.edge_radius_m, g.radius_m, H));
+                                 largest_edge_radius_over_depth, g.edge_radius_m, g.radius_m, H));
   // OpenCASCADE's tolerances are absolute (1e-7): the geometry is built with
   // H as the unit and the mesh scaled back.
   const RimEndGeometry unit{g.radius_m / H, g.interior_angle_rad, g.edge_radius_m / H, 1.0, L / H, g.flat_sheet};

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/json_number.h"
 #include "fem/petsc_session.h"
+#include "fem/scene_mesh.h"
 #include "fem/slice_scaling.h"
 #include "oracle/contact_density.h"
 #include <algorithm>
@@ -71,11 +72,11 @@ fem::RimEndSettings end_settings(const RimLoopSettings& s, double radius_m, doub
   e.poisson_ratio = s.loop.poisson_ratio;
   e.xdmf_path.clear(); // one end's fields, not the loop's
   e.resolve_boundary_layer = true; // every end's ratio is a number of the end, not of the mesh
-  // The fillet must stay small against the block (fem/rim_end_contact.h:
-  // r_e < H / 10), and b varies from end to end: deepen the block where the
-  // setting's H / b would be too shallow for this end's b.
+  // The fillet must fit in the block, and b varies from end to end: deepen
+  // the block where the setting's H / b would be too shallow for this end's b.
   if (e.edge_radius_m > 0)
-    e.depth_over_half_width = std::max(e.depth_over_half_width, 10.5 * e.edge_radius_m / half_width(e));
+    e.depth_over_half_width
+        = std::max(e.depth_over_half_width, s.depth_over_edge_radius * e.edge_radius_m / half_width(e));
   return e;
 }
 
@@ -440,6 +441,10 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
   if (!(s.end_table_step_rad > 0) || !std::isfinite(s.end_table_step_rad))
     throw InputError(fmt::format("rim --body: end_table_step_deg must be positive and finite, got {}",
                                  s.end_table_step_rad / degree));
+  if (!(s.depth_over_edge_radius * fem::largest_edge_radius_over_depth > 1) || !std::isfinite(s.depth_over_edge_radius))
+    throw InputError(fmt::format("rim --body: depth_over_edge_radius must exceed {} (the fillet inside the block), "
+                                 "got {}",
+                                 1 / fem::largest_edge_radius_over_depth, s.depth_over_edge_radius));
   if (!(s.end_table_radius_step == 0 || s.end_table_radius_step > 1) || !std::isfinite(s.end_table_radius_step))
     throw InputError(fmt::format("rim --body: end_table_radius_step must be 0 (one column) or above 1, got {}",
                                  s.end_table_radius_step));

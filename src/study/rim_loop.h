@@ -70,8 +70,15 @@ struct RimLoopSettings
   }();
   /// The end models: counter-face, edge radius, mesh levels, tolerance. Their
   /// radius, line load, interior angle and material are set per end, and
-  /// with a rounded edge the depth H / b at least 10.5 r_e / b of the end.
+  /// with a rounded edge the depth H / b at least depth_over_edge_radius
+  /// r_e / b of the end.
   fem::RimEndSettings end;
+  /// A rounded edge: every end model's block at least this many r_e deep
+  /// however small the end's b (above 1 / fem::largest_edge_radius_over_depth,
+  /// for the fillet to fit). Not a reduction to make freely: an acute end's
+  /// ratio depends on it (docs/rims.md, "The block's depth": 8 % higher at
+  /// 4 r_e than at 10.5 r_e at 66.7 deg, R = r_e).
+  double depth_over_edge_radius = 10.5;
   /// Largest spacing of the end table's nodes over the interior angle.
   double end_table_step_rad = 10 * std::numbers::pi / 180;
   /// A rounded edge: the largest ratio between neighbouring columns' R in
