@@ -84,6 +84,30 @@ TEST(RimLoop, EveryOtherNodeSeesOnlyItsOwnNodes)
   EXPECT_NEAR(*study::end_table_ratio(table, 2, std::numbers::pi, 100 * degree, 1.0), 0.2, 1e-12);
 }
 
+TEST(RimLoop, EndTableAnglesAreDenserBelowTheSquareEndWhenAsked)
+{
+  auto degrees = [](const std::vector<double>& angles) {
+    std::vector<double> d;
+    for (const double a : angles)
+      d.push_back(std::round(a / degree * 1e6) / 1e6);
+    return d;
+  };
+  // The preprint's body's range, 60 to 170 deg: even at 45 deg, 27.5 apart.
+  EXPECT_EQ(degrees(study::end_table_angles(60 * degree, 170 * degree, 45 * degree, 0)),
+            (std::vector<double>{60, 87.5, 115, 142.5, 170}));
+  // 15 deg below the square end, 45 above: 60, 75, 90 and 90, 130, 170, so
+  // every other node (60, 90, 170) is the table of twice the steps.
+  const std::vector<double> split = degrees(study::end_table_angles(60 * degree, 170 * degree, 45 * degree, 15 * degree));
+  EXPECT_EQ(split, (std::vector<double>{60, 75, 90, 130, 170}));
+  // A range wholly on one side of 90 deg takes that side's step.
+  EXPECT_EQ(degrees(study::end_table_angles(60 * degree, 90 * degree, 45 * degree, 10 * degree)),
+            (std::vector<double>{60, 67.5, 75, 82.5, 90}));
+  EXPECT_EQ(degrees(study::end_table_angles(100 * degree, 170 * degree, 45 * degree, 10 * degree)),
+            (std::vector<double>{100, 135, 170}));
+  EXPECT_EQ(degrees(study::end_table_angles(75 * degree, 75 * degree, 45 * degree, 10 * degree)),
+            (std::vector<double>{75}));
+}
+
 TEST(RimLoop, AboveTheSingularAngleThereIsNoRatio)
 {
   const std::vector<study::EndTableNode> table = {node(80, 0.1), node(90, 0.27)};

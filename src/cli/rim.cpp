@@ -54,6 +54,10 @@ const io::BoundSchema<RimCommand>& rim_schema()
               "With --body: largest spacing of the end table's interior angles (end models across the loop's "
               "range of loaded ends; the check halves it)",
               io::Bounds{0.5, 60}, std::numbers::pi / 180)
+        .real("end_table_acute_step_deg", "--end-table-acute-step", &RimCommand::end_table_acute_step_rad, "deg",
+              "With --body: below 90 deg, largest spacing of the end table's interior angles instead (a node at 90 "
+              "deg), where an acute rounded end's ratio bends; 0: --end-table-step throughout",
+              io::Bounds{0, 60}, std::numbers::pi / 180)
         .real("end_table_radius_step", "--end-table-radius-step", &RimCommand::end_table_radius_step, "",
               "With --body and a rounded edge: largest ratio between neighbouring columns of the end table over the "
               "sheet's R (end models across the range of R at the loop's ends, all at the direct ends' median q; "

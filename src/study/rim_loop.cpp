@@ -137,7 +137,8 @@ std::vector<double> even_nodes(double lo, double hi, double step)
 {
   if (!(hi - lo > 1e-9))
     return {lo};
-  const int halves = std::max(1, static_cast<int>(std::ceil((hi - lo) / (2 * step))));
+  // Less 1e-9: a range of exactly 2 k steps (30 deg at 15, in radians) has k halves, not k + 1.
+  const int halves = std::max(1, static_cast<int>(std::ceil((hi - lo) / (2 * step) - 1e-9)));
   std::vector<double> angles;
   for (int k = 0; k <= 2 * halves; ++k)
     angles.push_back(lo + (hi - lo) * k / (2 * halves));
@@ -250,6 +251,21 @@ double singular_from_angle(const fem::RimEndSettings& end)
     (singular(mid) ? hi : lo) = mid;
   }
   return hi;
+}
+
+std::vector<double> end_table_angles(double lo, double hi, double step_rad, double acute_step_rad)
+{
+  constexpr double square = std::numbers::pi / 2;
+  if (!(acute_step_rad > 0))
+    return even_nodes(lo, hi, step_rad);
+  if (hi <= square + 1e-9)
+    return even_nodes(lo, hi, acute_step_rad);
+  if (lo >= square - 1e-9)
+    return even_nodes(lo, hi, step_rad);
+  std::vector<double> angles = even_nodes(lo, square, acute_step_rad);
+  const std::vector<double> obtuse = even_nodes(square, hi, step_rad);
+  angles.insert(angles.end(), obtuse.begin() + 1, obtuse.end());
+  return angles;
 }
 
 namespace
@@ -441,6 +457,9 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
   if (!(s.end_table_step_rad > 0) || !std::isfinite(s.end_table_step_rad))
     throw InputError(fmt::format("rim --body: end_table_step_deg must be positive and finite, got {}",
                                  s.end_table_step_rad / degree));
+  if (!(s.end_table_acute_step_rad >= 0) || !std::isfinite(s.end_table_acute_step_rad))
+    throw InputError(fmt::format("rim --body: end_table_acute_step_deg must be 0 (the table's step) or positive, got {}",
+                                 s.end_table_acute_step_rad / degree));
   if (!(s.depth_over_edge_radius * fem::largest_edge_radius_over_depth > 1) || !std::isfinite(s.depth_over_edge_radius))
     throw InputError(fmt::format("rim --body: depth_over_edge_radius must exceed {} (the fillet inside the block), "
                                  "got {}",
@@ -527,7 +546,7 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
         columns.push_back(std::exp(log_radius));
     }
     for (const double radius : columns)
-      for (const double angle : even_nodes(std::min(lo, hi), hi, s.end_table_step_rad))
+      for (const double angle : end_table_angles(std::min(lo, hi), hi, s.end_table_step_rad, s.end_table_acute_step_rad))
       {
         EndTableNode node{angle, radius,
                           fem::solve_rim_end(comm, end_settings(s, radius, result.reference_load_n_per_m, angle))};

@@ -81,6 +81,12 @@ struct RimLoopSettings
   double depth_over_edge_radius = 10.5;
   /// Largest spacing of the end table's nodes over the interior angle.
   double end_table_step_rad = 10 * std::numbers::pi / 180;
+  /// Below the square end (90 deg), if positive, the largest spacing there
+  /// instead, with a node at 90 deg: an acute rounded end's ratio rises
+  /// steeply towards 90 deg and bends (the preprint's body at R = 8.2 mm:
+  /// 2.369, 3.075, 3.347 at 60, 87.5, 115 deg), above it is nearly flat, so
+  /// a table even in the angle misses the acute ends first (docs/rims.md).
+  double end_table_acute_step_rad = 0;
   /// A rounded edge: the largest ratio between neighbouring columns' R in
   /// the end table (> 1), or 0 for one column at the direct ends' median q
   /// and R (the reduction that put the preprint's body's table 4.7 % from its
@@ -228,6 +234,13 @@ struct EndRatios
   double largest_modelled_rad = std::numbers::pi;
   std::optional<double> operator()(int stride, const LoadedEnd& end) const;
 };
+
+/// The end table's interior angles over [lo, hi]: evenly, at most `step_rad`
+/// apart, an odd number of them (every other one is a table too); with
+/// `acute_step_rad` > 0 and 90 deg inside the range, [lo, 90 deg] and
+/// [90 deg, hi] each so, the first at most `acute_step_rad` apart (their
+/// union is odd again, 90 deg an even node). One node where lo = hi.
+std::vector<double> end_table_angles(double lo, double hi, double step_rad, double acute_step_rad);
 
 /// The smallest interior angle whose sharp edge is singular against the
 /// counter-face (bisection on the wedge exponent), pi when none is.

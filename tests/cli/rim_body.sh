@@ -24,6 +24,7 @@ check_json "end-aware FEM-SDS is a number with its status, beside the interior's
    and (.end_aware_status | type) == "string"' "$tmp/cylinder.json"
 for args in "--body sphere:fem-sds covers" "--body cylinder --end-table-step 0:end_table_step_deg" \
             "--body cylinder --end-table-radius-step 0.5:end_table_radius_step" \
+            "--body cylinder --end-table-acute-step -5:end_table_acute_step_deg" \
             "--body cylinder --block-depth 4:depth_over_edge_radius" \
             "--body cylinder --orientations 0:orientations"; do
   "$bin" -q rim ${args%%:*} --json "$tmp/bad.json" > "$tmp/bad.log" 2>&1; rc=$?
