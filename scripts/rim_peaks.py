@@ -95,7 +95,7 @@ def main():
     rows = ["| body | faces | loaded rim ends (samples) | singular ends | ends outside the model (samples) "
             "| worst end / orientation peak (direct ends) "
             "| loop's end peak / interior peak | FEM-SDS | with the ends | FEM-FDS | with the ends "
-            "| end table vs direct | flat-rim table (the loop's own flattest ends) | status | s |",
+            "| end table vs direct | flat-rim table (the loop's own flattest ends) | status | run time (s) |",
             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     wanted = set(args.only.split(",")) if args.only else None
     for label, body in BODIES:

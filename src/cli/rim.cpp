@@ -290,7 +290,7 @@ nlohmann::json run_loop(study::RimLoopSettings settings)
     return j;
   constexpr double degree = std::numbers::pi / 180;
   std::string ends = "| orientation | end | interior angle (deg) | q (N/m) | R (mm) | b (um) | wedge exponent | FEM: "
-                     "exponent or end/interior | end peak / orientation's peak | end table | s |\n"
+                     "exponent or end/interior | end peak / orientation's peak | end table | run time (s) |\n"
                      "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const study::RimLoopEnd& e : r.ends)
   {

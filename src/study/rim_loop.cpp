@@ -685,7 +685,8 @@ nlohmann::json to_json(const RimLoopResult& r)
           {"finished_ends", r.loop.end_aware.empty() ? 0 : r.loop.end_aware[0].finished_ends},
           {"end_table", table},
           {"end_table_load_n_per_m", r.reference_load_n_per_m},
-          {"end_table_sheet_radius_m", r.reference_radius_m},
+          // The table's R only when it has one column; its nodes carry their own.
+          {"direct_ends_median_sheet_radius_m", r.reference_radius_m},
           {"end_table_converged", r.table_converged},
           {"flat_rim_from_deg", r.flat_table.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.flat_from_rad / degree)},
           {"flat_rim_table", flat_table},
