@@ -256,12 +256,10 @@ double singular_from_angle(const fem::RimEndSettings& end)
 std::vector<double> end_table_angles(double lo, double hi, double step_rad, double acute_step_rad)
 {
   constexpr double square = std::numbers::pi / 2;
-  if (!(acute_step_rad > 0))
+  if (!(acute_step_rad > 0) || lo >= square - 1e-9)
     return even_nodes(lo, hi, step_rad);
   if (hi <= square + 1e-9)
     return even_nodes(lo, hi, acute_step_rad);
-  if (lo >= square - 1e-9)
-    return even_nodes(lo, hi, step_rad);
   std::vector<double> angles = even_nodes(lo, square, acute_step_rad);
   const std::vector<double> obtuse = even_nodes(square, hi, step_rad);
   angles.insert(angles.end(), obtuse.begin() + 1, obtuse.end());
