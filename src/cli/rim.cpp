@@ -159,6 +159,7 @@ nlohmann::json run_one_end(const fem::RimEndSettings& setup)
         centre_line.push_back({n.x_m, n.pressure_pa});
     levels.push_back({{"edge_element_m", l.edge_element_m},
                       {"dofs", l.dofs},
+                      {"approach_m", l.approach_m},
                       {"load_steps", l.load_steps},
                       {"newton_iterations", l.newton_iterations},
                       {"krylov_iterations", l.krylov_iterations},

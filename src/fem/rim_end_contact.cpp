@@ -30,7 +30,8 @@ void validate(const RimEndSettings& s)
         std::pair{s.youngs_modulus_pa, "youngs_modulus_pa"}, std::pair{s.depth_over_half_width, "depth_over_half_width"},
         std::pair{s.length_over_depth, "length_over_depth"},
         std::pair{s.edge_element_over_half_width, "edge_element_over_half_width"},
-        std::pair{s.tolerance, "tolerance"}, std::pair{s.penalty_c, "penalty_c"}})
+        std::pair{s.tolerance, "tolerance"}, std::pair{s.penalty_c, "penalty_c"},
+        std::pair{s.first_approach_scale, "first_approach_scale"}})
     if (!std::isfinite(value) || value <= 0)
       throw InputError(fmt::format("rim: {} must be positive and finite, got {}", name, value));
   if (!(s.interior_angle_rad >= std::numbers::pi / 3 && s.interior_angle_rad < std::numbers::pi))
@@ -187,8 +188,10 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   // shift, and that plus a line contact's approach for the top.
   const double shift = 0.5 * b * b / s.radius_m;
   const LineApproach line = line_contact_approach(s.load_n_per_m, H, b, study.effective_modulus_pa);
+  level.estimated_approach_m = shift + line.approach_m;
   const LoadControlReport report
-      = reach_force(problem, s.load_n_per_m, previous ? previous->approach_m : shift + line.approach_m, shift,
+      = reach_force(problem, s.load_n_per_m,
+                    previous ? previous->approach_m : s.first_approach_scale * level.estimated_approach_m, shift,
                     line.exponent, 2e-3,
                     world_rank() == 0 ? spdlog::level::info : spdlog::level::debug,
                     [&] { return far_line_load(surface(), -L, tol); });
@@ -346,6 +349,8 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
     study.levels.push_back(solve_level(comm, study, h_e, k + 1 == setup.levels && !setup.xdmf_path.empty(),
                                        study.levels.empty() ? nullptr : &study.levels.back()));
     const RimEndLevel& l = study.levels.back();
+    if (k == 0)
+      study.approach_over_estimate = l.approach_m / l.estimated_approach_m;
     if (rank == 0)
       spdlog::info("rim level {}: h_e = {:.3g} b, {} dofs, far q {:.5g} N/m, far p {:.5g} Pa, end peak {:.5g} Pa "
                    "at x = {:.3g} b, edge {:.5g} Pa, {:.1f} s",

@@ -138,6 +138,11 @@ struct RimEndSettings
   std::string petsc_options;         ///< prefix "hertz_" (default: 3D GMRES + GAMG)
   /// The last level's fields (fem/write_fields.h), if set: a .xdmf in a writable folder.
   std::filesystem::path xdmf_path;
+  /// The first level's load control starts from this times line contact's
+  /// approach with H as the radius (fem/load_control.h), which overshoots a
+  /// held block's by about 20 %: 1, or a solved neighbour's
+  /// RimEndStudy::approach_over_estimate (the rim loop's end table).
+  double first_approach_scale = 1;
 };
 
 /// A surface node on the ruling's centre line y = 0: position along the
@@ -165,6 +170,7 @@ struct RimEndLevel
   std::vector<CentreLineNode> centre_line;
   std::int64_t dofs = 0;
   double approach_m = 0;             ///< the top's approach that carries q_far
+  double estimated_approach_m = 0;   ///< line contact's estimate of it (unscaled)
   int load_steps = 0, newton_iterations = 0, krylov_iterations = 0;
   double wall_s = 0;
 };
@@ -195,6 +201,10 @@ struct RimEndStudy
   double plane_strain_change = 0;    ///< |p(-L/2) / p(-L) - 1| at the last level
   double plane_strain_noise = 0;     ///< its standard error (the nodal pressures' scatter)
   std::vector<RimEndLevel> levels;
+  /// The first level's converged approach over the unscaled estimate it
+  /// started from: what starts a neighbouring end (same q, R, H) close to
+  /// its own.
+  double approach_over_estimate = 0;
   /// The wall time of every level together.
   double wall_s() const
   {
