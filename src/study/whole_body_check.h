@@ -46,6 +46,7 @@
 #include <mpi.h>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -174,10 +175,18 @@ struct WholeBodyCheck
   double worst_along = 0;                ///< largest |peak_difference| over the stations
   std::optional<double> worst_end;       ///< largest |difference| over the ends (none if one is singular)
   double worst_load = 0;                 ///< largest |load_difference| over the stations
+  /// The orientation's interior peak as fem-sds takes it, the largest over
+  /// the stations: the whole body's over the slices' - 1 (not a pass
+  /// criterion; what a station's misstated load costs the scores).
+  double largest_peak_difference = 0;
   bool pass = false;
   std::string verdict;
   double slices_s = 0, ends_s = 0, body_s = 0, wall_s = 0; ///< body_s: mesh + solve of the whole body
 };
+
+/// The largest of the whole body's station peaks over the largest of the
+/// slices' - 1 (the two may lie at different stations).
+double largest_peak_difference(std::span<const StationComparison> stations);
 
 /// Every rank gets the result; rank 0 logs progress. InputError for bad
 /// settings or a body without a whole-body mesh; ComputationError from the FEM.
