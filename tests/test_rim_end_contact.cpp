@@ -86,11 +86,11 @@ TEST(RimEndContact, StartingFromANeighboursApproachSavesLoadStepsNotAccuracy)
   fem::RimEndSettings s;
   s.levels = 1;
   const fem::RimEndStudy neighbour = fem::solve_rim_end(MPI_COMM_WORLD, s);
-  EXPECT_GT(neighbour.approach_over_estimate, 0.6);
-  EXPECT_LT(neighbour.approach_over_estimate, 0.95);
+  EXPECT_GT(neighbour.approach_over_estimate(), 0.6);
+  EXPECT_LT(neighbour.approach_over_estimate(), 0.95);
   s.interior_angle_rad = 85 * degree;
   const fem::RimEndStudy cold = fem::solve_rim_end(MPI_COMM_WORLD, s);
-  s.first_approach_scale = neighbour.approach_over_estimate;
+  s.first_approach_scale = neighbour.approach_over_estimate();
   const fem::RimEndStudy warm = fem::solve_rim_end(MPI_COMM_WORLD, s);
   const fem::RimEndLevel &c = cold.levels.front(), &w = warm.levels.front();
   std::printf("load steps %d cold, %d warm; Newton %d, %d\n", c.load_steps, w.load_steps, c.newton_iterations,

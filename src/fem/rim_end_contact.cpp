@@ -349,8 +349,6 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
     study.levels.push_back(solve_level(comm, study, h_e, k + 1 == setup.levels && !setup.xdmf_path.empty(),
                                        study.levels.empty() ? nullptr : &study.levels.back()));
     const RimEndLevel& l = study.levels.back();
-    if (k == 0)
-      study.approach_over_estimate = l.approach_m / l.estimated_approach_m;
     if (rank == 0)
       spdlog::info("rim level {}: h_e = {:.3g} b, {} dofs, far q {:.5g} N/m, far p {:.5g} Pa, end peak {:.5g} Pa "
                    "at x = {:.3g} b, edge {:.5g} Pa, {:.1f} s",

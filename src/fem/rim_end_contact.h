@@ -204,7 +204,10 @@ struct RimEndStudy
   /// The first level's converged approach over the unscaled estimate it
   /// started from: what starts a neighbouring end (same q, R, H) close to
   /// its own.
-  double approach_over_estimate = 0;
+  double approach_over_estimate() const
+  {
+    return levels.empty() ? 1.0 : levels.front().approach_m / levels.front().estimated_approach_m;
+  }
   /// The wall time of every level together.
   double wall_s() const
   {

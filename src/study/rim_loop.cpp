@@ -553,7 +553,7 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
         fem::RimEndSettings settings = end_settings(s, radius, result.reference_load_n_per_m, angle);
         settings.first_approach_scale = approach_over_estimate;
         EndTableNode node{angle, radius, fem::solve_rim_end(comm, settings)};
-        approach_over_estimate = node.study.approach_over_estimate;
+        approach_over_estimate = node.study.approach_over_estimate();
         result.table_converged = result.table_converged && node.study.converged;
         if (rank == 0)
           spdlog::info("rim loop: end table at {:.2f} deg, R = {:.4g} m (r_e / b = {:.3g}): end/interior {} ({})",
