@@ -53,6 +53,13 @@ const io::BoundSchema<study::WholeBodyCheckSettings>& whole_body_schema()
         .integer("stations", "--stations", &WholeBodyCheckSettings::stations, "",
                  "Plane-strain slices along the loaded ruling, compared with the whole body's peak there",
                  io::Bounds{2, 200})
+        .choice("load_rule", "--load-rule", &WholeBodyCheckSettings::load_rule,
+                "How the slices and end models share F along the ruling: locus (the contact locus's no-tension "
+                "linear rule, fem-sds's) or sections (each section across the ruling in plane strain under one "
+                "rigid approach and tilt of the held cut, balanced for F and its moment; both ends loaded)",
+                {{"locus", study::LoadRule::locus}, {"sections", study::LoadRule::sections}})
+        .integer("rule_stations", "--rule-stations", &WholeBodyCheckSettings::rule_stations, "",
+                 "Sections of the sections' load rule (midpoint rule along the ruling)", io::Bounds{4, 200})
         .real("crease_margin", "--crease-margin", &WholeBodyCheckSettings::crease_margin, "",
               "Fraction of the ruling kept clear inside each loaded end for the stations (fem-sds's 5 %)",
               io::Bounds{0, 0.25, true, true})

@@ -1,8 +1,8 @@
 #include "fem/slice_contact.h"
 #include "fem/hertz_solve.h"
 #include "fem/petsc_session.h"
+#include "fem/share_out.h"
 #include "core/error.h"
-#include <array>
 #include <fmt/format.h>
 
 namespace rollcheck::fem
@@ -10,9 +10,9 @@ namespace rollcheck::fem
 namespace
 {
 // A slice's result travels between ranks as these doubles.
-constexpr int packed_size = 11;
+constexpr std::size_t packed_size = 11;
 
-std::array<double, packed_size> pack(const SliceFem& r)
+std::vector<double> pack(const SliceFem& r)
 {
   return {r.peak_pressure_pa,
           r.refined_peak_pressure_pa,
@@ -79,32 +79,13 @@ SliceFem solve_slice(const SliceLoad& load, const SliceSettings& settings)
 std::vector<SliceFem> solve_slices(MPI_Comm comm, std::span<const SliceLoad> slices, const SliceSettings& settings)
 {
   ensure_petsc();
-  int rank = 0, size = 1;
-  MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &size);
-  std::vector<double> packed(slices.size() * packed_size, 0.0);
-  std::string failure;
-  for (std::size_t i = rank; i < slices.size() && failure.empty(); i += size)
-  {
-    if (!(slices[i].load_n_per_m > 0))
-      continue;
-    try
-    {
-      const auto values = pack(solve_slice(slices[i], settings));
-      std::copy(values.begin(), values.end(), packed.begin() + i * packed_size);
-    }
-    catch (const std::exception& e)
-    {
-      failure = fmt::format("slice at {:.6g} m (R = {:.6g} m, q = {:.6g} N/m) on rank {}: {}", slices[i].position_m,
-                            slices[i].radius_m, slices[i].load_n_per_m, rank, e.what());
-    }
-  }
-  int failed = failure.empty() ? 0 : 1;
-  MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MAX, comm);
-  if (failed)
-    throw ComputationError(failure.empty() ? std::string("plane-strain slice solve failed on another rank")
-                                           : "plane-strain slice solve failed: " + failure);
-  MPI_Allreduce(MPI_IN_PLACE, packed.data(), static_cast<int>(packed.size()), MPI_DOUBLE, MPI_SUM, comm);
+  const std::vector<double> packed = share_out(
+      comm, slices.size(), packed_size, [&](std::size_t i) { return pack(solve_slice(slices[i], settings)); },
+      [&](std::size_t i) {
+        return fmt::format("slice at {:.6g} m (R = {:.6g} m, q = {:.6g} N/m)", slices[i].position_m,
+                           slices[i].radius_m, slices[i].load_n_per_m);
+      },
+      "plane-strain slice solve", [&](std::size_t i) { return !(slices[i].load_n_per_m > 0); });
   std::vector<SliceFem> results(slices.size());
   for (std::size_t i = 0; i < slices.size(); ++i)
   {

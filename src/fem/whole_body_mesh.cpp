@@ -207,42 +207,17 @@ SectionMap section_map(const MappedBodyPose& pose, double x, double z_c, double 
   return m;
 }
 
-/// The reference mesh's nodes (x, y, z) mapped onto the body and sheared at
-/// the ends (fem/whole_body_mesh.h), in place.
-void map_onto_body(std::vector<double>& nodes, const MappedBodyPose& pose, const std::vector<double>& planes,
-                   double r_ref)
+double reference_half_width(const MappedBodyPose& pose)
 {
-  const double z_G = pose.cut_height_m, z_c = 0.5 * z_G, L = pose.length_m, zone = pose.end_zone_m;
-  const double reference_half_width = std::sqrt(r_ref * r_ref - (z_G - r_ref) * (z_G - r_ref));
-  const double t0 = std::tan(pose.end_overhang_rad[0]), tL = std::tan(pose.end_overhang_rad[1]);
-  std::vector<SectionMap> maps;
-  for (const double a : planes)
-    maps.push_back(section_map(pose, std::clamp(a, zone, L - zone), z_c, reference_half_width));
-  const double same_plane = 1e-6 * (planes[1] - planes[0]);
-  for (std::size_t i = 0; i < nodes.size(); i += 3)
-  {
-    const double a = nodes[i], y = nodes[i + 1], z = nodes[i + 2];
-    const std::size_t k = std::lower_bound(planes.begin(), planes.end(), a - same_plane) - planes.begin();
-    if (k >= planes.size() || std::abs(planes[k] - a) > same_plane)
-      throw ComputationError(fmt::format("whole-body map: a node at x = {:.9g} m lies on no layer plane", a));
-    const SectionMap& m = maps[k];
-    const double rho = std::hypot(y, z - z_c);
-    Eigen::Vector3d p = m.centre;
-    if (rho > 0)
-    {
-      const double psi = angle_from_down(y, z, z_c);
-      const double body_psi = m.body_angle(psi);
-      const Eigen::Vector3d d(0, std::sin(body_psi), -std::cos(body_psi));
-      double reach = pose.chord(m.centre, d)[1];
-      if (d.z() > 0)
-        reach = std::min(reach, (z_G - z_c) / d.z());
-      p += rho / segment_distance(r_ref, z_G, z_c, psi) * reach * d;
-    }
-    const double shear = a < zone ? -t0 * (1 - a / zone) : a > L - zone ? tL * (1 - (L - a) / zone) : 0.0;
-    nodes[i] = a + p.z() * shear;
-    nodes[i + 1] = p.y();
-    nodes[i + 2] = p.z();
-  }
+  const double r_ref = pose.reference_radius_m, z_G = pose.cut_height_m;
+  return std::sqrt(r_ref * r_ref - (z_G - r_ref) * (z_G - r_ref));
+}
+
+/// The station whose section the mesh carries at a: a itself, frozen at the
+/// end zones' inner ends within them.
+double section_station(const MappedBodyPose& pose, double a)
+{
+  return std::clamp(a, pose.end_zone_m, pose.length_m - pose.end_zone_m);
 }
 
 /// z_f(a, y): the height of the mapped mesh's lower face at station a (its
@@ -250,8 +225,63 @@ void map_onto_body(std::vector<double>& nodes, const MappedBodyPose& pose, const
 /// vertical chord there.
 double faceted_sheet_height(const MappedBodyPose& pose, double a, double y)
 {
-  const double station = std::clamp(a, pose.end_zone_m, pose.length_m - pose.end_zone_m);
-  return pose.chord(Eigen::Vector3d(station, y, 0), Eigen::Vector3d(0, 0, 1))[0];
+  return pose.chord(Eigen::Vector3d(section_station(pose, a), y, 0), Eigen::Vector3d(0, 0, 1))[0];
+}
+
+/// The reference section's point (y, z) mapped onto the body's section of
+/// map `m` (fem/whole_body_mesh.h): its (y, z) there.
+Eigen::Vector2d map_section_point(const MappedBodyPose& pose, const SectionMap& m, double r_ref, double y, double z)
+{
+  const double z_G = pose.cut_height_m, z_c = m.centre.z();
+  const double rho = std::hypot(y, z - z_c);
+  Eigen::Vector3d p = m.centre;
+  if (rho > 0)
+  {
+    const double psi = angle_from_down(y, z, z_c);
+    const double body_psi = m.body_angle(psi);
+    const Eigen::Vector3d d(0, std::sin(body_psi), -std::cos(body_psi));
+    double reach = pose.chord(m.centre, d)[1];
+    if (d.z() > 0)
+      reach = std::min(reach, (z_G - z_c) / d.z());
+    p += rho / segment_distance(r_ref, z_G, z_c, psi) * reach * d;
+  }
+  return {p.y(), p.z()};
+}
+
+/// The reference mesh's nodes (x, y, z) mapped onto the body and sheared at
+/// the ends (fem/whole_body_mesh.h), in place.
+void map_onto_body(std::vector<double>& nodes, const MappedBodyPose& pose, const std::vector<double>& planes,
+                   double r_ref)
+{
+  const double z_c = 0.5 * pose.cut_height_m, L = pose.length_m, zone = pose.end_zone_m;
+  const double t0 = std::tan(pose.end_overhang_rad[0]), tL = std::tan(pose.end_overhang_rad[1]);
+  std::vector<SectionMap> maps;
+  for (const double a : planes)
+    maps.push_back(section_map(pose, section_station(pose, a), z_c, reference_half_width(pose)));
+  const double same_plane = 1e-6 * (planes[1] - planes[0]);
+  for (std::size_t i = 0; i < nodes.size(); i += 3)
+  {
+    const double a = nodes[i];
+    const std::size_t k = std::lower_bound(planes.begin(), planes.end(), a - same_plane) - planes.begin();
+    if (k >= planes.size() || std::abs(planes[k] - a) > same_plane)
+      throw ComputationError(fmt::format("whole-body map: a node at x = {:.9g} m lies on no layer plane", a));
+    const Eigen::Vector2d p = map_section_point(pose, maps[k], r_ref, nodes[i + 1], nodes[i + 2]);
+    const double shear = a < zone ? -t0 * (1 - a / zone) : a > L - zone ? tL * (1 - (L - a) / zone) : 0.0;
+    nodes[i] = a + p.y() * shear;
+    nodes[i + 1] = p.x();
+    nodes[i + 2] = p.y();
+  }
+}
+
+/// The exact sheet z_s = R - sqrt(R^2 - y^2) at station a (R linear along the
+/// ruling) over the mesh's faceted face there, within |y| < R / 20 (beyond it
+/// 0: fem/whole_body_mesh.h).
+double sheet_gap(const MappedBodyPose& pose, double a, double y)
+{
+  const double R = pose.radius_m[0] + (pose.radius_m[1] - pose.radius_m[0]) * a / pose.length_m;
+  if (!(std::abs(y) < 0.05 * R))
+    return 0.0;
+  return R - std::sqrt(R * R - y * y) - faceted_sheet_height(pose, a, y);
 }
 
 /// The position a along the ruling of a point of the sheared mesh (the
@@ -282,6 +312,17 @@ void check_sizes(const WholeBodySizes& sizes, double size_m)
     throw InputError(fmt::format("whole-body mesh: contact elements of {:.3g} m are below 1e-8 of the body ({:.3g} m), "
                                  "which gmsh does not mesh reliably",
                                  sizes.contact_m, size_m));
+}
+/// InputError for a mapped pose without a length, cut, reference or radii.
+void check_pose(const MappedBodyPose& pose)
+{
+  const double L = pose.length_m, z_G = pose.cut_height_m, r_ref = pose.reference_radius_m;
+  if (!(L > 0) || !(z_G > 0) || !(r_ref > 0.5 * z_G) || !(pose.radius_m[0] > 0 && pose.radius_m[1] > 0)
+      || !pose.chord)
+    throw InputError(fmt::format("whole-body mapped body: need L > 0 ({} m), a cut height z_G > 0 ({} m), a "
+                                 "reference radius above z_G / 2 ({} m), radii R > 0 ({}, {} m) and the body's "
+                                 "chords",
+                                 L, z_G, r_ref, pose.radius_m[0], pose.radius_m[1]));
 }
 } // namespace
 
@@ -341,13 +382,8 @@ WholeBodyMesh build_cylinder_body_mesh(MPI_Comm comm, const CylinderPose& pose, 
 
 WholeBodyMesh build_mapped_body_mesh(MPI_Comm comm, const MappedBodyPose& pose, const WholeBodySizes& sizes)
 {
+  check_pose(pose);
   const double L = pose.length_m, z_G = pose.cut_height_m, r_ref = pose.reference_radius_m, zone = pose.end_zone_m;
-  if (!(L > 0) || !(z_G > 0) || !(r_ref > 0.5 * z_G) || !(pose.radius_m[0] > 0 && pose.radius_m[1] > 0)
-      || !pose.chord)
-    throw InputError(fmt::format("whole-body mapped body: need L > 0 ({} m), a cut height z_G > 0 ({} m), a "
-                                 "reference radius above z_G / 2 ({} m), radii R > 0 ({}, {} m) and the body's "
-                                 "chords",
-                                 L, z_G, r_ref, pose.radius_m[0], pose.radius_m[1]));
   for (const double t : pose.end_overhang_rad)
     // The shear x = a + z s(a) stays monotone in a (no fold) while
     // 1 - z_G |tan t| / zone > 1/2 for an acute end (s growing along a).
@@ -382,18 +418,62 @@ WholeBodyMesh build_mapped_body_mesh(MPI_Comm comm, const MappedBodyPose& pose, 
       = mesh.geometry().index_map()->size_global() / static_cast<std::int64_t>(result.planes_m.size());
   scene.wall_s = result.gmsh_s;
   result.along = [pose](const double* x) { return mapped_along(pose, x); };
-  result.initial_gap = [pose](const double* x) {
-    const double a = mapped_along(pose, x);
-    const double R = pose.radius_m[0] + (pose.radius_m[1] - pose.radius_m[0]) * a / pose.length_m;
-    if (!(std::abs(x[1]) < 0.05 * R))
-      return 0.0;
-    return R - std::sqrt(R * R - x[1] * x[1]) - faceted_sheet_height(pose, a, x[1]);
-  };
+  result.initial_gap = [pose](const double* x) { return sheet_gap(pose, mapped_along(pose, x), x[1]); };
   // Up an end face an element above the edge: within a thousandth of the
   // end layer of the faceted sheet is on it.
   result.on_sheet = [pose, tol = 1e-3 * sizes.end_layer_m](const double* x) {
     return x[2] - faceted_sheet_height(pose, mapped_along(pose, x), x[1]) < tol;
   };
+  return result;
+}
+
+WholeBodyMesh build_mapped_section_mesh(MPI_Comm comm, const MappedBodyPose& pose, double station_m,
+                                        double thickness_m, const WholeBodySizes& sizes)
+{
+  check_pose(pose);
+  const double L = pose.length_m, z_G = pose.cut_height_m, r_ref = pose.reference_radius_m;
+  if (!(station_m >= 0 && station_m <= L) || !(thickness_m > 0))
+    throw InputError(fmt::format("whole-body section: the station {} m must lie on the ruling [0, {}] m and the "
+                                 "thickness {} m be positive",
+                                 station_m, L, thickness_m));
+  check_sizes(sizes, std::max(r_ref, L));
+  WholeBodyMesh result;
+  result.length_m = thickness_m;
+  result.planes_m = {station_m, station_m + thickness_m};
+  const double a = section_station(pose, station_m);
+  result.scene.mesh = distribute(
+      comm,
+      [&] {
+        RawMesh raw = mesh_extruded_segment(r_ref, z_G, {0.0, thickness_m}, sizes);
+        const SectionMap map = section_map(pose, a, 0.5 * z_G, reference_half_width(pose));
+        for (std::size_t i = 0; i < raw.x.size(); i += 3)
+        {
+          const Eigen::Vector2d p = map_section_point(pose, map, r_ref, raw.x[i + 1], raw.x[i + 2]);
+          raw.x[i] += station_m;
+          raw.x[i + 1] = p.x();
+          raw.x[i + 2] = p.y();
+        }
+        return raw;
+      },
+      result.gmsh_s);
+  SceneMesh& scene = result.scene;
+  const dolfinx::mesh::Mesh& mesh = *scene.mesh;
+  const double tol = 1e-9 * std::max(r_ref, L);
+  scene.top_facets = boundary_facets(mesh, [&](double, double, double z) { return std::abs(z - z_G) < tol; });
+  scene.symmetry_x_facets = boundary_facets(mesh, [&](double x, double, double) {
+    return std::abs(x - station_m) < tol || std::abs(x - station_m - thickness_m) < tol;
+  });
+  const std::vector<std::int32_t> others
+      = boundary_facets(mesh, [&](double, double, double z) { return std::abs(z - z_G) >= tol; });
+  const std::vector<double> normal_z = outward_normal_z(mesh, others);
+  for (std::size_t i = 0; i < others.size(); ++i)
+    if (normal_z[i] < -1e-6)
+      scene.contact_facets.push_back(others[i]);
+  scene.symmetry_multiplicity = 1;
+  result.section_nodes = mesh.geometry().index_map()->size_global() / 2;
+  scene.wall_s = result.gmsh_s;
+  result.along = [station_m](const double*) { return station_m; };
+  result.initial_gap = [pose, a](const double* x) { return sheet_gap(pose, a, x[1]); };
   return result;
 }
 } // namespace rollcheck::fem

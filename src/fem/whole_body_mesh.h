@@ -146,4 +146,14 @@ WholeBodyMesh build_cylinder_body_mesh(MPI_Comm comm, const CylinderPose& pose, 
 /// sizes (naming them), ComputationError when gmsh or the mapping fails (a
 /// section whose centre lies outside the body, a fold); every rank gets its part.
 WholeBodyMesh build_mapped_body_mesh(MPI_Comm comm, const MappedBodyPose& pose, const WholeBodySizes& sizes);
+
+/// The body's own section at station_m as a plane-strain slab (the
+/// sections' load rule, study/section_load_rule.h): the reference segment
+/// mapped onto the section as build_mapped_body_mesh maps its node plane
+/// there (frozen in the end zones the same way), one layer of thickness_m
+/// along x. Its two faces are symmetry_x_facets: u_x = 0 on every node is
+/// plane strain. Top: the cut z = z_G; contact: the facets facing down, with
+/// the whole body's initial gap (the exact sheet) at the station.
+WholeBodyMesh build_mapped_section_mesh(MPI_Comm comm, const MappedBodyPose& pose, double station_m,
+                                        double thickness_m, const WholeBodySizes& sizes);
 } // namespace rollcheck::fem

@@ -28,6 +28,13 @@ namespace
 {
 constexpr double deg = std::numbers::pi / 180;
 
+/// How a rigid-plane solve starts: the approach and its load exponent, and
+/// the body's first shift down.
+struct RigidStart
+{
+  double approach_m, exponent, shift_m;
+};
+
 void check_settings(const WholeBodyCheckSettings& s)
 {
   if (s.body.body != "cylinder" && s.body.body != "oloid")
@@ -56,6 +63,7 @@ void check_settings(const WholeBodyCheckSettings& s)
   require(s.layers_across_length >= 2, "layers_across_length must be at least 2");
   require(s.penalty_c > 0, "penalty_c must be positive");
   require(s.stations >= 2, "stations must be at least 2");
+  require(s.rule_stations >= 4 && s.rule_stations <= 200, "rule_stations must lie in [4, 200]");
   require(s.crease_margin > 0 && s.crease_margin < 0.25, "crease_margin must lie in (0, 0.25)");
   require(s.end_levels >= 1 && s.end_levels <= 6, "end_levels must lie in [1, 6]");
   require(s.end_edge_element > 0 && s.end_edge_element <= 1, "end_edge_element must lie in (0, 1]");
@@ -145,7 +153,59 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
   r.loaded_to = c < 1.0 / 3 ? 3 * c : 1.0;
   r.rim_overhang_rad = contact::rim_overhang(circles, 0, 1, ruling);
   auto radius_at = [&](double f) { return (1 - f) * ruling.start_radius_m + f * ruling.end_radius_m; };
-  auto load_at = [&](double f) { return oracle::line_load(F, c, L, f); };
+  std::function<double(double)> load_at = [&](double f) { return oracle::line_load(F, c, L, f); };
+  const std::vector<double> fractions = slice_fractions(r.loaded_from, r.loaded_to, s.crease_margin, s.stations);
+  // The whole body's section sizes, from b along the loaded ruling.
+  auto b_range = [&] {
+    std::array<double, 2> range{INFINITY, 0};
+    for (const double f : fractions)
+    {
+      const double b = half_width(load_at(f), radius_at(f), E_star);
+      range = {std::min(range[0], b), std::max(range[1], b)};
+    }
+    return range;
+  };
+  fem::WholeBodySizes& sizes = r.sizes;
+  auto size_section = [&] {
+    const auto [smallest_b, largest_b] = b_range();
+    sizes.contact_m = smallest_b / s.contact_elements;
+    sizes.strip_half_width_m = s.strip_over_half_width * largest_b;
+    sizes.growth = s.section_growth;
+    sizes.far_m = s.body.radius_m / 8;
+  };
+  size_section();
+  // The line-contact estimate of the approach of a section's top at height
+  // R (fem/load_control.h) starts load control; the body starts shifted down
+  // by the height of its surface at the contact's edge (the slab's start).
+  auto rigid_start = [&](double b, double R) {
+    const fem::LineApproach estimate = fem::line_contact_approach(load_at(c), R, b, E_star);
+    return RigidStart{estimate.approach_m, estimate.exponent, 0.5 * b * b / R};
+  };
+  if (s.load_rule == LoadRule::sections)
+  {
+    if (r.loaded_from > 0 || r.loaded_to < 1)
+      throw InputError(fmt::format("load_rule sections: direction {} deg loads only part of the ruling (c = {:.4f} "
+                                   "outside [1/3, 2/3]); the sections' rule balances a ruling loaded end to end",
+                                   s.direction_deg, c));
+    const double b = half_width(load_at(c), radius_at(c), E_star);
+    fem::SectionSettings section;
+    section.youngs_modulus_pa = s.youngs_modulus_pa;
+    section.poisson_ratio = s.poisson_ratio;
+    section.penalty_c = s.penalty_c;
+    const RigidStart rigid = rigid_start(b, radius_at(c));
+    section.first_shift_m = rigid.shift_m;
+    SectionLoadRuleSettings rule;
+    rule.stations = s.rule_stations;
+    r.section_rule = section_load_rule(comm, mapped_pose(s, ruling, r.centre_of_mass_height_m, r.rim_overhang_rad), F,
+                                       c * L, rigid.approach_m, sizes, section, rule);
+    load_at = [&r, L](double f) { return r.section_rule->load_at(f * L); };
+    size_section();
+    if (log)
+      spdlog::info("section load rule: {} sections of {} DOFs, {} passes, F {:.6g} N, centre of pressure {:.6f} L, "
+                   "{:.1f} s",
+                   s.rule_stations, r.section_rule->section_dofs, r.section_rule->passes, r.section_rule->force_n,
+                   r.section_rule->centre_of_pressure_m / L, r.section_rule->wall_s);
+  }
   r.half_width_m = half_width(load_at(c), radius_at(c), E_star);
   if (log)
     spdlog::info("whole-body check, {}: ruling L = {:.5g} m, R = {:.5g}..{:.5g} m, c = {:.4f}, loaded {:.3f}..{:.3f}, "
@@ -154,7 +214,6 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
                  r.rim_overhang_rad[0] / deg, r.rim_overhang_rad[1] / deg, r.half_width_m, r.half_width_m / L);
 
   // Slices at the stations and at both loaded ends.
-  const std::vector<double> fractions = slice_fractions(r.loaded_from, r.loaded_to, s.crease_margin, s.stations);
   std::vector<fem::SliceLoad> loads;
   for (const double f : fractions)
     loads.push_back({f * L, radius_at(f), load_at(f)});
@@ -244,27 +303,16 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
   }
   r.ends_s = fem::wall_seconds_since(comm, clock);
 
-  // The whole body, sized from b along the loaded ruling.
+  // The whole body, its ends sized from the ends' b.
   clock = std::chrono::steady_clock::now();
-  double smallest_b = INFINITY, largest_b = 0;
-  for (const fem::SliceLoad& l : loads)
-  {
-    smallest_b = std::min(smallest_b, half_width(l.load_n_per_m, l.radius_m, E_star));
-    largest_b = std::max(largest_b, half_width(l.load_n_per_m, l.radius_m, E_star));
-  }
   if (!std::isfinite(smallest_end_b))
-    smallest_end_b = smallest_b;
+    smallest_end_b = b_range()[0];
   const double radius = s.body.radius_m;
-  fem::WholeBodySizes& sizes = r.sizes;
-  sizes.contact_m = smallest_b / s.contact_elements;
-  sizes.strip_half_width_m = s.strip_over_half_width * largest_b;
-  sizes.growth = s.section_growth;
-  sizes.far_m = radius / 8;
   sizes.end_layer_m = s.body_end_layer * smallest_end_b;
   if (!s.end_layers_only)
   {
     sizes.edge_m = sizes.end_layer_m;
-    sizes.edge_zone_m = s.end_zone_over_half_width * largest_b;
+    sizes.edge_zone_m = s.end_zone_over_half_width * b_range()[1];
   }
   sizes.layer_growth = s.layer_growth;
   sizes.largest_layer_m = L / s.layers_across_length;
@@ -288,13 +336,10 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
   load.poisson_ratio = s.poisson_ratio;
   load.penalty_c = s.penalty_c;
   load.contact_element_m = sizes.contact_m;
-  // The line-contact estimate of the approach of a section's top at height
-  // R (fem/load_control.h) starts load control; the body starts shifted down
-  // by the height of its surface at the contact's edge (the slab's start).
-  const fem::LineApproach estimate = fem::line_contact_approach(load_at(c), radius_at(c), r.half_width_m, E_star);
-  load.first_approach_m = estimate.approach_m;
-  load.approach_exponent = estimate.exponent;
-  load.first_shift_m = 0.5 * r.half_width_m * r.half_width_m / radius_at(c);
+  const RigidStart rigid = rigid_start(r.half_width_m, radius_at(c));
+  load.first_approach_m = rigid.approach_m;
+  load.approach_exponent = rigid.exponent;
+  load.first_shift_m = rigid.shift_m;
   load.edge_half_width_m = 0.5 * smallest_end_b;
   r.fem = fem::solve_whole_body(comm, mesh, load);
   r.body_s = fem::wall_seconds_since(comm, clock);
@@ -305,7 +350,7 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     StationComparison st;
     st.position_m = loads[k].position_m;
     st.radius_m = loads[k].radius_m;
-    st.locus_load_n_per_m = loads[k].load_n_per_m;
+    st.rule_load_n_per_m = loads[k].load_n_per_m;
     st.slice_peak_pa = slices[k].peak_pressure_pa;
     st.hertz_peak_pa = slices[k].hertz_peak_pressure_pa;
     st.body_peak_pa = fem::interpolate_planes(r.fem.plane_x_m, r.fem.plane_peak_pa, st.position_m);
@@ -370,7 +415,7 @@ nlohmann::json to_json(const WholeBodyCheck& r)
   for (const StationComparison& st : r.stations)
     stations.push_back({{"position_m", st.position_m},
                         {"radius_m", st.radius_m},
-                        {"locus_load_n_per_m", st.locus_load_n_per_m},
+                        {"rule_load_n_per_m", st.rule_load_n_per_m},
                         {"hertz_peak_pa", st.hertz_peak_pa},
                         {"slice_peak_pa", st.slice_peak_pa},
                         {"body_peak_pa", st.body_peak_pa},
@@ -463,6 +508,8 @@ nlohmann::json to_json(const WholeBodyCheck& r)
             {"edge_pressure_pa", {r.fem.edge_pressure_pa[0], r.fem.edge_pressure_pa[1]}},
             {"planes_x_m_peak_pa_load_n_per_m", planes},
             {"solve_s", r.fem.solve_s}}},
+          {"load_rule", s.load_rule == LoadRule::sections ? "sections" : "locus"},
+          {"section_load_rule", r.section_rule ? to_json(*r.section_rule) : nlohmann::json()},
           {"stations", stations},
           {"ends", ends},
           {"worst_along", r.worst_along},
@@ -486,11 +533,11 @@ double largest_peak_difference(std::span<const StationComparison> stations)
 
 std::string markdown_table(const WholeBodyCheck& r)
 {
-  std::string t = "| station s / L | R (m) | q locus (N/m) | q body / locus - 1 | slice p (MPa) | body p (MPa) | body / "
+  std::string t = "| station s / L | R (m) | q rule (N/m) | q body / rule - 1 | slice p (MPa) | body p (MPa) | body / "
                   "slice - 1 | the same at the body's q |\n|---|---|---|---|---|---|---|---|\n";
   for (const StationComparison& st : r.stations)
     t += fmt::format("| {:.4f} | {:.5g} | {:.5g} | {:+.2f} % | {:.5g} | {:.5g} | {:+.2f} % | {:+.2f} % |\n",
-                     st.position_m / r.length_m, st.radius_m, st.locus_load_n_per_m, 100 * st.load_difference(),
+                     st.position_m / r.length_m, st.radius_m, st.rule_load_n_per_m, 100 * st.load_difference(),
                      st.slice_peak_pa / 1e6, st.body_peak_pa / 1e6, 100 * st.peak_difference(),
                      100 * st.peak_difference_at_body_load());
   t += fmt::format("\nThe largest over the stations (fem-sds's peak): body / slices - 1 = {:+.2f} %\n",

@@ -40,6 +40,7 @@
 #include "fem/rim_end_contact.h"
 #include "fem/slice_contact.h"
 #include "fem/whole_body_contact.h"
+#include "study/section_load_rule.h"
 #include "geometry/body.h"
 #include <array>
 #include <cmath>
@@ -56,6 +57,15 @@ enum class EndModelDepth
 {
   body,
   local
+};
+
+/// How the reduced models share F along the ruling: the contact locus's
+/// no-tension linear rule (fem-sds's), or each section's own compliance
+/// under one rigid approach and tilt (study/section_load_rule.h).
+enum class LoadRule
+{
+  locus,
+  sections
 };
 
 struct WholeBodyCheckSettings
@@ -81,6 +91,8 @@ struct WholeBodyCheckSettings
   int layers_across_length = 24;    ///< the largest layer is L / this
   double penalty_c = 100;           ///< the whole body's kappa = c E / h_c (the slices' c)
   int stations = 9;                 ///< slices along the ruling
+  LoadRule load_rule = LoadRule::locus; ///< the slices' and end models' q(s)
+  int rule_stations = 16;           ///< the sections' load rule's N
   double crease_margin = 0.05;      ///< stations this fraction of the ruling inside its loaded ends (fem-sds's)
   int slice_refine = -1;            ///< the slices' level (SliceSettings::refine)
   /// The end models' block: as deep as the whole body's held section (the
@@ -112,19 +124,19 @@ struct WholeBodyCheckSettings
 struct StationComparison
 {
   double position_m = 0, radius_m = 0;
-  double locus_load_n_per_m = 0;    ///< q(s) of the locus
+  double rule_load_n_per_m = 0;     ///< q(s) of the load rule (the locus's or the sections')
   double slice_peak_pa = 0;         ///< plane strain under q(s)
   double hertz_peak_pa = 0;         ///< line Hertz under q(s)
   double body_peak_pa = 0;          ///< the whole body's peak across the ruling
   double body_load_n_per_m = 0;     ///< the whole body's line load
   double peak_difference() const { return body_peak_pa / slice_peak_pa - 1; }
-  double load_difference() const { return body_load_n_per_m / locus_load_n_per_m - 1; }
+  double load_difference() const { return body_load_n_per_m / rule_load_n_per_m - 1; }
   /// The whole body's peak against the slice's scaled to the whole body's
   /// own line load there, p ~ sqrt(q) (line Hertz at fixed R): what is left
   /// when the load distribution's difference is taken out.
   double peak_difference_at_body_load() const
   {
-    return body_peak_pa / (slice_peak_pa * std::sqrt(body_load_n_per_m / locus_load_n_per_m)) - 1;
+    return body_peak_pa / (slice_peak_pa * std::sqrt(body_load_n_per_m / rule_load_n_per_m)) - 1;
   }
 };
 
@@ -170,6 +182,7 @@ struct WholeBodyCheck
   std::size_t node_planes = 0;
   double gmsh_s = 0;
   fem::WholeBodyFem fem;
+  std::optional<SectionLoadRule> section_rule; ///< with LoadRule::sections
   std::vector<StationComparison> stations;
   std::vector<EndComparison> ends;       ///< the loaded ends
   double worst_along = 0;                ///< largest |peak_difference| over the stations
