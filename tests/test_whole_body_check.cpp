@@ -122,3 +122,40 @@ TEST(WholeBodyCheckQuick, RefusesACoarseOloidHull)
   s.body.points = 16;
   EXPECT_THROW(study::run_whole_body_check(MPI_COMM_WORLD, s), InputError);
 }
+
+TEST(WholeBodyCheckQuick, RefusesTheSectionsRuleOnAPartlyLoadedRuling)
+{
+  // The oloid at 22.5 deg: c = 0.282, the no-tension rule loads 3c of the
+  // ruling; the sections' rule balances a ruling loaded end to end.
+  fem::ensure_petsc();
+  study::WholeBodyCheckSettings s;
+  s.body.body = "oloid";
+  s.body.radius_m = 0.01;
+  s.direction_deg = 22.5;
+  s.load_rule = study::LoadRule::sections;
+  EXPECT_THROW(study::run_whole_body_check(MPI_COMM_WORLD, s), InputError);
+}
+
+TEST(WholeBodyCheck, OloidSectionsRuleMeetsTheInteriorStationsWithinThreePercent)
+{
+  // The sections' rule (study/section_load_rule.h) at the orientation of
+  // OloidAgreesWith...: away from the end zones the whole body's peaks meet
+  // slices under the sections' q within the check's 3 %; at the stations 5 %
+  // inside the ends the sections, without their neighbours' shear, are
+  // softer than the whole body (docs/whole-body.md), so those two are not
+  // asserted.
+  fem::ensure_petsc();
+  study::WholeBodyCheckSettings s;
+  s.body.body = "oloid";
+  s.body.radius_m = 0.01;
+  s.direction_deg = 67.5;
+  s.load_rule = study::LoadRule::sections;
+  const study::WholeBodyCheck check = study::run_whole_body_check(MPI_COMM_WORLD, s);
+  ASSERT_TRUE(check.section_rule.has_value());
+  EXPECT_NEAR(check.section_rule->force_n, s.normal_load_n, 1e-3 * s.normal_load_n);
+  EXPECT_NEAR(check.section_rule->centre_of_pressure_m / check.length_m, check.centre_of_pressure, 1e-3);
+  ASSERT_EQ(check.stations.size(), static_cast<std::size_t>(s.stations));
+  for (std::size_t k = 1; k + 1 < check.stations.size(); ++k)
+    EXPECT_LE(std::abs(check.stations[k].peak_difference()), s.tolerance) << "station " << k;
+  EXPECT_LE(std::abs(check.largest_peak_difference), s.tolerance);
+}
