@@ -13,6 +13,19 @@
 
 using namespace rollcheck;
 
+namespace
+{
+/// The 10 mm oloid (L = 17.32 mm) at `direction_deg`, F = 100 N, steel.
+study::WholeBodyCheckSettings oloid_settings(double direction_deg)
+{
+  study::WholeBodyCheckSettings s;
+  s.body.body = "oloid";
+  s.body.radius_m = 0.01;
+  s.direction_deg = direction_deg;
+  return s;
+}
+} // namespace
+
 TEST(WholeBodyCheck, CylinderAgreesWithSlicesAndEndModelsWithinThreePercent)
 {
   fem::ensure_petsc();
@@ -53,10 +66,7 @@ TEST(WholeBodyCheck, CylinderAgreesWithSlicesAndEndModelsWithinThreePercent)
 TEST(WholeBodyCheck, OloidAgreesWithSlicesAndItsAcuteEndWithinThreePercent)
 {
   fem::ensure_petsc();
-  study::WholeBodyCheckSettings s;
-  s.body.body = "oloid";
-  s.body.radius_m = 0.01;
-  s.direction_deg = 67.5;
+  study::WholeBodyCheckSettings s = oloid_settings(67.5);
   ASSERT_DOUBLE_EQ(s.tolerance, 0.03);
   const study::WholeBodyCheck check = study::run_whole_body_check(MPI_COMM_WORLD, s);
 
@@ -116,9 +126,7 @@ TEST(WholeBodyCheckQuick, RefusesABodyWithoutAWholeBodyMesh)
 TEST(WholeBodyCheckQuick, RefusesACoarseOloidHull)
 {
   fem::ensure_petsc();
-  study::WholeBodyCheckSettings s;
-  s.body.body = "oloid";
-  s.body.radius_m = 0.01;
+  study::WholeBodyCheckSettings s = oloid_settings(0);
   s.body.points = 16;
   EXPECT_THROW(study::run_whole_body_check(MPI_COMM_WORLD, s), InputError);
 }
@@ -128,10 +136,7 @@ TEST(WholeBodyCheckQuick, RefusesTheSectionsRuleOnAPartlyLoadedRuling)
   // The oloid at 22.5 deg: c = 0.282, the no-tension rule loads 3c of the
   // ruling; the sections' rule balances a ruling loaded end to end.
   fem::ensure_petsc();
-  study::WholeBodyCheckSettings s;
-  s.body.body = "oloid";
-  s.body.radius_m = 0.01;
-  s.direction_deg = 22.5;
+  study::WholeBodyCheckSettings s = oloid_settings(22.5);
   s.load_rule = study::LoadRule::sections;
   EXPECT_THROW(study::run_whole_body_check(MPI_COMM_WORLD, s), InputError);
 }
@@ -145,10 +150,7 @@ TEST(WholeBodyCheck, OloidSectionsRuleMeetsTheInteriorStationsWithinThreePercent
   // softer than the whole body (docs/whole-body.md), so those two are not
   // asserted.
   fem::ensure_petsc();
-  study::WholeBodyCheckSettings s;
-  s.body.body = "oloid";
-  s.body.radius_m = 0.01;
-  s.direction_deg = 67.5;
+  study::WholeBodyCheckSettings s = oloid_settings(67.5);
   s.load_rule = study::LoadRule::sections;
   const study::WholeBodyCheck check = study::run_whole_body_check(MPI_COMM_WORLD, s);
   ASSERT_TRUE(check.section_rule.has_value());

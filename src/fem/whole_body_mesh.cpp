@@ -313,6 +313,20 @@ void check_sizes(const WholeBodySizes& sizes, double size_m)
                                  "which gmsh does not mesh reliably",
                                  sizes.contact_m, size_m));
 }
+/// A mapped mesh's top facets (the cut z = z_G) and contact facets (the
+/// others facing down: the sheet, and an obtuse end's face).
+void mark_cut_and_contact(SceneMesh& scene, double z_G, double tol)
+{
+  const dolfinx::mesh::Mesh& mesh = *scene.mesh;
+  scene.top_facets = boundary_facets(mesh, [&](double, double, double z) { return std::abs(z - z_G) < tol; });
+  const std::vector<std::int32_t> others
+      = boundary_facets(mesh, [&](double, double, double z) { return std::abs(z - z_G) >= tol; });
+  const std::vector<double> normal_z = outward_normal_z(mesh, others);
+  for (std::size_t i = 0; i < others.size(); ++i)
+    if (normal_z[i] < -1e-6)
+      scene.contact_facets.push_back(others[i]);
+}
+
 /// InputError for a mapped pose without a length, cut, reference or radii.
 void check_pose(const MappedBodyPose& pose)
 {
@@ -406,13 +420,7 @@ WholeBodyMesh build_mapped_body_mesh(MPI_Comm comm, const MappedBodyPose& pose, 
   SceneMesh& scene = result.scene;
   const dolfinx::mesh::Mesh& mesh = *scene.mesh;
   const double tol = 1e-9 * std::max(r_ref, L);
-  scene.top_facets = boundary_facets(mesh, [&](double, double, double z) { return std::abs(z - z_G) < tol; });
-  const std::vector<std::int32_t> others
-      = boundary_facets(mesh, [&](double, double, double z) { return std::abs(z - z_G) >= tol; });
-  const std::vector<double> normal_z = outward_normal_z(mesh, others);
-  for (std::size_t i = 0; i < others.size(); ++i)
-    if (normal_z[i] < -1e-6)
-      scene.contact_facets.push_back(others[i]);
+  mark_cut_and_contact(scene, z_G, tol);
   scene.symmetry_multiplicity = 1;
   result.section_nodes
       = mesh.geometry().index_map()->size_global() / static_cast<std::int64_t>(result.planes_m.size());
@@ -459,16 +467,10 @@ WholeBodyMesh build_mapped_section_mesh(MPI_Comm comm, const MappedBodyPose& pos
   SceneMesh& scene = result.scene;
   const dolfinx::mesh::Mesh& mesh = *scene.mesh;
   const double tol = 1e-9 * std::max(r_ref, L);
-  scene.top_facets = boundary_facets(mesh, [&](double, double, double z) { return std::abs(z - z_G) < tol; });
+  mark_cut_and_contact(scene, z_G, tol);
   scene.symmetry_x_facets = boundary_facets(mesh, [&](double x, double, double) {
     return std::abs(x - station_m) < tol || std::abs(x - station_m - thickness_m) < tol;
   });
-  const std::vector<std::int32_t> others
-      = boundary_facets(mesh, [&](double, double, double z) { return std::abs(z - z_G) >= tol; });
-  const std::vector<double> normal_z = outward_normal_z(mesh, others);
-  for (std::size_t i = 0; i < others.size(); ++i)
-    if (normal_z[i] < -1e-6)
-      scene.contact_facets.push_back(others[i]);
   scene.symmetry_multiplicity = 1;
   result.section_nodes = mesh.geometry().index_map()->size_global() / 2;
   scene.wall_s = result.gmsh_s;
