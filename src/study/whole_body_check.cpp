@@ -153,12 +153,13 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
   r.loaded_to = c < 1.0 / 3 ? 3 * c : 1.0;
   r.rim_overhang_rad = contact::rim_overhang(circles, 0, 1, ruling);
   auto radius_at = [&](double f) { return (1 - f) * ruling.start_radius_m + f * ruling.end_radius_m; };
-  std::function<double(double)> load_at = [&](double f) { return oracle::line_load(F, c, L, f); };
+  auto locus_load_at = [&](double f) { return oracle::line_load(F, c, L, f); };
+  std::function<double(double)> load_at = locus_load_at;
   const std::vector<double> fractions = slice_fractions(r.loaded_from, r.loaded_to, s.crease_margin, s.stations);
   // The whole body's section sizes, from the locus's b along the loaded
-  // ruling whichever the load rule: one reference for both rules (its
-  // station readings move by 0.13 % at most on the sections' rule's finer
-  // strip, docs/whole-body.md).
+  // ruling (and its end layers from the locus's b at the ends) whichever the
+  // load rule: one reference for both rules (its station readings move by
+  // 0.13 % at most on a finer strip, docs/whole-body.md).
   double smallest_b = INFINITY, largest_b = 0;
   for (const double f : fractions)
   {
@@ -293,7 +294,9 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
                        ? fmt::format("edge / interior {:.4f}{}", *end.end_model.end_to_interior,
                                      end.end_model.converged ? "" : " (NOT converged)")
                        : std::string("no ratio"));
-    smallest_end_b = std::min(smallest_end_b, end.half_width_m);
+    // The whole body's end layers from the locus's b there, whichever the rule.
+    smallest_end_b
+        = std::min(smallest_end_b, half_width(locus_load_at(end_fractions[e]), end.radius_m, E_star));
     r.ends.push_back(std::move(end));
   }
   r.ends_s = fem::wall_seconds_since(comm, clock);
