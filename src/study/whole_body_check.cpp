@@ -156,16 +156,19 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
   auto locus_load_at = [&](double f) { return oracle::line_load(F, c, L, f); };
   std::function<double(double)> load_at = locus_load_at;
   const std::vector<double> fractions = slice_fractions(r.loaded_from, r.loaded_to, s.crease_margin, s.stations);
-  // The whole body's section sizes, from the locus's b along the loaded
-  // ruling (and its end layers from the locus's b at the ends) whichever the
-  // load rule: one reference for both rules (its station readings move by
-  // 0.13 % at most on a finer strip, docs/whole-body.md).
+  // The whole body's section sizes, from the locus's b at the stations and
+  // the loaded ends (its end layers too, below) whichever the load rule: one
+  // reference for both rules (its station readings move by 0.13 % at most
+  // on a finer strip, docs/whole-body.md).
   double smallest_b = INFINITY, largest_b = 0;
-  for (const double f : fractions)
-  {
-    smallest_b = std::min(smallest_b, half_width(load_at(f), radius_at(f), E_star));
-    largest_b = std::max(largest_b, half_width(load_at(f), radius_at(f), E_star));
-  }
+  std::vector<double> sized_at = fractions;
+  sized_at.insert(sized_at.end(), {r.loaded_from, r.loaded_to});
+  for (const double f : sized_at)
+    if (locus_load_at(f) > 0)
+    {
+      smallest_b = std::min(smallest_b, half_width(locus_load_at(f), radius_at(f), E_star));
+      largest_b = std::max(largest_b, half_width(locus_load_at(f), radius_at(f), E_star));
+    }
   fem::WholeBodySizes& sizes = r.sizes;
   sizes.contact_m = smallest_b / s.contact_elements;
   sizes.strip_half_width_m = s.strip_over_half_width * largest_b;
