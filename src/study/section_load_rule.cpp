@@ -88,6 +88,7 @@ SectionLoadRule section_load_rule(MPI_Comm comm, const fem::MappedBodyPose& pose
     throw InputError(fmt::format("section load rule: need F > 0 ({} N), x_G on the ruling ({} m of {} m) and a "
                                  "first approach > 0 ({} m)",
                                  force_n, x_G, L, first_approach_m));
+  fem::ensure_petsc();
   const auto start = std::chrono::steady_clock::now();
   const bool log = fem::world_rank() == 0;
   const std::size_t n = static_cast<std::size_t>(settings.stations);
