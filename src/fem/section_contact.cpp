@@ -47,6 +47,10 @@ std::vector<SectionFem> solve_sections(MPI_Comm comm, const MappedBodyPose& pose
 {
   if (stations_m.size() != approaches_m.size())
     throw InputError(fmt::format("sections: {} stations but {} approaches", stations_m.size(), approaches_m.size()));
+  for (const double station : stations_m)
+    if (!(station >= 0 && station <= pose.length_m))
+      throw InputError(fmt::format("sections: a station at {} m lies off the ruling [0, {}] m", station,
+                                   pose.length_m));
   for (const double delta : approaches_m)
     if (!(delta > 0))
       throw InputError(fmt::format("sections: an approach of {} m; approaches must be positive", delta));

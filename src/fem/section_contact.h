@@ -9,7 +9,9 @@
 // u_x = 0 on both faces, its cut z = z_G moved rigidly down by delta against
 // the rigid frictionless plane, the exact sheet in the initial gap, the
 // penalty kappa = c E / h_c of the whole body: the whole body's section
-// without its neighbours. Its line load is the top face's reaction over the
+// without its neighbours, meshed as the whole body's interior (the sizes
+// passed; the whole body's end refinement near the contact line is not
+// needed for a section's load). Its line load is the top face's reaction over the
 // layer's thickness. Displacement control needs one Newton solve per
 // approach. The sections are independent problems, so the ranks share them
 // out (fem/share_out.h).
@@ -46,8 +48,9 @@ struct SectionFem
 
 /// Section i at stations_m[i] pressed by approaches_m[i] (the two spans as
 /// long); `sizes` as the whole body's (its contact_m the layer's thickness
-/// too). Every rank gets every result. InputError for bad input;
-/// ComputationError on every rank when a solve fails on any.
+/// too). Every rank gets every result. InputError for spans of different
+/// lengths, an approach <= 0 or a station off the ruling; ComputationError
+/// on every rank when a solve fails on any.
 std::vector<SectionFem> solve_sections(MPI_Comm comm, const MappedBodyPose& pose, std::span<const double> stations_m,
                                        std::span<const double> approaches_m, const WholeBodySizes& sizes,
                                        const SectionSettings& settings);

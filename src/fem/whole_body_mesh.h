@@ -153,7 +153,8 @@ WholeBodyMesh build_mapped_body_mesh(MPI_Comm comm, const MappedBodyPose& pose, 
 /// there (frozen in the end zones the same way), one layer of thickness_m
 /// along x. Its two faces are symmetry_x_facets: u_x = 0 on every node is
 /// plane strain. Top: the cut z = z_G; contact: the facets facing down, with
-/// the whole body's initial gap (the exact sheet) at the station.
+/// the exact sheet's initial gap at the station the section is frozen at
+/// (in the end zones R there, where the whole body takes R at its own a).
 WholeBodyMesh build_mapped_section_mesh(MPI_Comm comm, const MappedBodyPose& pose, double station_m,
                                         double thickness_m, const WholeBodySizes& sizes);
 } // namespace rollcheck::fem

@@ -304,7 +304,7 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
   }
   r.ends_s = fem::wall_seconds_since(comm, clock);
 
-  // The whole body, its ends sized from the ends' b.
+  // The whole body, its end layers sized from the locus's b at the ends.
   clock = std::chrono::steady_clock::now();
   if (!std::isfinite(smallest_end_b))
     smallest_end_b = smallest_b;

@@ -4,9 +4,12 @@
 // whole and pressed on the rigid plane in 3D (fem/whole_body_mesh.h,
 // fem/whole_body_contact.h), against the reduced models fem-sds and rim use:
 //  - along the ruling: the plane-strain slices (fem/slice_contact.h) at
-//    stations between the crease margins, each under the contact locus's
-//    line load q(s) and radius R(s) (contact/contact_locus.h: F through the
-//    centre of mass, the no-tension linear rule); the whole body's peak
+//    stations between the crease margins, each under the load rule's line
+//    load q(s) and radius R(s): the contact locus's (contact/contact_locus.h:
+//    F through the centre of mass, the no-tension linear rule; fem-sds's,
+//    the default) or the body's own sections' (study/section_load_rule.h,
+//    LoadRule::sections); the end models under the rule's q at the ends;
+//    the whole body is meshed from the locus's b either way; its peak
 //    across the ruling at each station (its node planes interpolated)
 //    against the slice's peak;
 //  - at both loaded ends: the end model (fem/rim_end_contact.h) under the
@@ -30,7 +33,7 @@
 //    against the end model's at the body's end layer (matched mesh: one
 //    level, h_e = body_end_layer b).
 //  - the load distribution: the whole body's line load at each station
-//    against the locus's q(s), and its centre of pressure (held at the
+//    against the rule's q(s), and its centre of pressure (held at the
 //    centre of mass's foot by the solver).
 // Passes when every station and both ends agree within `tolerance` (3 %).
 //
@@ -109,7 +112,8 @@ struct WholeBodyCheckSettings
   /// 0.95-0.98 of Hertz's p0 and its edge did not converge.
   int end_contact_elements = 12;
   /// The whole body's end layers (and, unless end_layers_only, its section
-  /// near the contact line at the ends), h / b of the ends' smallest b.
+  /// near the contact line at the ends), h / b of the smallest of the locus's
+  /// b at the loaded ends.
   double body_end_layer = 1.0 / 16;
   /// Unless set, the whole body's section is refined to the end layer's
   /// size within end_zone_over_half_width b of the contact line, so that its
