@@ -149,11 +149,9 @@ SectionLoadRule section_load_rule(MPI_Comm comm, const fem::MappedBodyPose& pose
     throw ComputationError(fmt::format("section load rule: the sections' loads still differ by {:.2e} from the "
                                        "model's after {} passes (tolerance {:.1e})",
                                        rule.last_change, rule.passes, settings.tolerance));
-  // delta_0 and t of the last solves (the approaches they were solved at).
-  rule.approach_at_centre_of_mass_m = rule.approach_m.front() + (x_G - rule.stations_m.front())
-                                          * (rule.approach_m.back() - rule.approach_m.front())
-                                          / (rule.stations_m.back() - rule.stations_m.front());
-  rule.tilt_rad = (rule.approach_m.back() - rule.approach_m.front()) / (rule.stations_m.back() - rule.stations_m.front());
+  // The balance the last solves' approaches came from.
+  rule.approach_at_centre_of_mass_m = balanced[0];
+  rule.tilt_rad = balanced[1];
   double moment = 0;
   for (std::size_t k = 0; k < n; ++k)
   {

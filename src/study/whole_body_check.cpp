@@ -164,10 +164,11 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
   std::vector<double> sized_at = fractions;
   sized_at.insert(sized_at.end(), {r.loaded_from, r.loaded_to});
   for (const double f : sized_at)
-    if (locus_load_at(f) > 0)
+    if (const double q = locus_load_at(f); q > 0)
     {
-      smallest_b = std::min(smallest_b, half_width(locus_load_at(f), radius_at(f), E_star));
-      largest_b = std::max(largest_b, half_width(locus_load_at(f), radius_at(f), E_star));
+      const double b = half_width(q, radius_at(f), E_star);
+      smallest_b = std::min(smallest_b, b);
+      largest_b = std::max(largest_b, b);
     }
   fem::WholeBodySizes& sizes = r.sizes;
   sizes.contact_m = smallest_b / s.contact_elements;
