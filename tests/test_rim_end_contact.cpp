@@ -154,6 +154,18 @@ TEST(RimEndContact, ConvergenceJudgesTheEndToInteriorRatio)
   EXPECT_NEAR(fem::end_to_interior_change(coarse, fine, true), -0.05, 1e-12);
 }
 
+TEST(RimEndContact, CentreLinePressureIsTheMeanOverItsWindow)
+{
+  // What the whole-body check matches an end model to the interior with
+  // (study/whole_body_check.h): the nodes within the window, both bounds
+  // included, and never a window too sparse to average.
+  fem::RimEndLevel level;
+  level.centre_line = {{-3.0, 10.0}, {-2.0, 20.0}, {-1.5, 40.0}, {-1.0, 30.0}, {0.0, 5.0}};
+  EXPECT_DOUBLE_EQ(fem::centre_line_pressure(level, -1.5, 0.5), 30.0);
+  EXPECT_DOUBLE_EQ(fem::centre_line_pressure(level, -2.5, 0.5), 15.0);
+  EXPECT_THROW(fem::centre_line_pressure(level, -0.4, 0.45), ComputationError);
+}
+
 TEST(RimEndContact, OnlyFacesFacingThePlaneAreContactFacets)
 {
   // A square or acute end's other face never touches the plane; had its

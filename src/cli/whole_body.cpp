@@ -55,11 +55,27 @@ const io::BoundSchema<study::WholeBodyCheckSettings>& whole_body_schema()
                  io::Bounds{2, 200})
         .choice("load_rule", "--load-rule", &WholeBodyCheckSettings::load_rule,
                 "How the slices and end models share F along the ruling: locus (the contact locus's no-tension "
-                "linear rule, fem-sds's) or sections (each section across the ruling in plane strain under one "
-                "rigid approach and tilt of the held cut, balanced for F and its moment; both ends loaded)",
-                {{"locus", study::LoadRule::locus}, {"sections", study::LoadRule::sections}})
+                "linear rule, fem-sds's), sections (each section across the ruling in plane strain under one "
+                "rigid approach and tilt of the held cut, balanced for F and its moment; both ends loaded) or "
+                "coarse-body (the whole body meshed coarsely, its line load on each node plane). Under sections "
+                "and coarse-body an end model is matched to the rule near the edge (--end-match)",
+                {{"locus", study::LoadRule::locus},
+                 {"sections", study::LoadRule::sections},
+                 {"coarse-body", study::LoadRule::coarse_body}})
         .integer("rule_stations", "--rule-stations", &WholeBodyCheckSettings::rule_stations, "",
                  "Sections of the sections' load rule (midpoint rule along the ruling)", io::Bounds{4, 200})
+        .integer("rule_contact_elements", "--rule-contact-elements",
+                 &WholeBodyCheckSettings::rule_contact_elements, "",
+                 "The coarse-body load rule's elements across b (the whole body's: --contact-elements)",
+                 io::Bounds{2, 40})
+        .real("rule_end_layer", "--rule-end-layer", &WholeBodyCheckSettings::rule_end_layer, "",
+              "The coarse-body load rule's end layers, h / b (the whole body's: --body-end-layer)",
+              io::Bounds{0, 1, true, false})
+        .real("end_match_over_half_width", "--end-match", &WholeBodyCheckSettings::end_match_over_half_width, "",
+              "Under the sections and coarse-body rules: the end models are matched to the rule this many b (the "
+              "locus's at the end) from the edge, their reading over their own pressure there times the slice at "
+              "the rule's q there",
+              io::Bounds{1, 100})
         .real("crease_margin", "--crease-margin", &WholeBodyCheckSettings::crease_margin, "",
               "Fraction of the ruling kept clear inside each loaded end for the stations (fem-sds's 5 %)",
               io::Bounds{0, 0.25, true, true})

@@ -271,6 +271,11 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
 }
 } // namespace
 
+double centre_line_pressure(const RimEndLevel& level, double x_m, double half_window_m)
+{
+  return centre_line_mean(level.centre_line, x_m - half_window_m, x_m + half_window_m).mean;
+}
+
 double end_to_interior(const RimEndLevel& level, bool sharp_edge)
 {
   // A sharp edge's own pressure, not the largest near it: at a square end

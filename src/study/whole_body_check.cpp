@@ -64,6 +64,10 @@ void check_settings(const WholeBodyCheckSettings& s)
   require(s.penalty_c > 0, "penalty_c must be positive");
   require(s.stations >= 2, "stations must be at least 2");
   require(s.rule_stations >= 4 && s.rule_stations <= 200, "rule_stations must lie in [4, 200]");
+  require(s.rule_contact_elements >= 2 && s.rule_contact_elements <= 40, "rule_contact_elements must lie in [2, 40]");
+  require(s.rule_end_layer > 0 && s.rule_end_layer <= 1, "rule_end_layer must lie in (0, 1]");
+  require(s.end_match_over_half_width >= 1 && s.end_match_over_half_width <= 100,
+          "end_match_over_half_width must lie in [1, 100]");
   require(s.crease_margin > 0 && s.crease_margin < 0.25, "crease_margin must lie in (0, 0.25)");
   require(s.end_levels >= 1 && s.end_levels <= 6, "end_levels must lie in [1, 6]");
   require(s.end_edge_element > 0 && s.end_edge_element <= 1, "end_edge_element must lie in (0, 1]");
@@ -76,14 +80,13 @@ void check_settings(const WholeBodyCheckSettings& s)
 
 double half_width(double q, double R, double E_star) { return std::sqrt(4 * q * R / (std::numbers::pi * E_star)); }
 
-/// An acute end model's largest pressure within 2 b of the edge over its far
-/// side's, at its last level, if it changed by less than `tolerance` from the
-/// level before.
-std::optional<double> converged_near_edge_peak(const fem::RimEndStudy& end, double tolerance)
+/// An end model's reading over its reference pressure at its last level, if
+/// that ratio changed by less than `tolerance` from the level before.
+std::optional<double> converged_ratio(const fem::RimEndStudy& end,
+                                      const std::function<double(const fem::RimEndLevel&)>& ratio, double tolerance)
 {
   if (end.levels.size() < 2)
     return std::nullopt;
-  auto ratio = [](const fem::RimEndLevel& l) { return l.end_peak_pa / l.far_peak_pa; };
   const double last = ratio(end.levels.back()), before = ratio(end.levels[end.levels.size() - 2]);
   if (!(std::abs(last / before - 1) < tolerance))
     return std::nullopt;
@@ -118,6 +121,8 @@ fem::MappedBodyPose mapped_pose(const WholeBodyCheckSettings& s, const oracle::R
   return pose;
 }
 } // namespace
+
+bool softens_ends(LoadRule rule) { return rule != LoadRule::locus; }
 
 WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings& s)
 {
@@ -170,17 +175,67 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
       smallest_b = std::min(smallest_b, b);
       largest_b = std::max(largest_b, b);
     }
+  // The whole body's end layers from the locus's b at the loaded ends.
+  const std::array<double, 2> end_fractions{r.loaded_from, r.loaded_to};
+  double smallest_end_b = INFINITY;
+  for (const double f : end_fractions)
+    if (const double q = locus_load_at(f); q > 0)
+      smallest_end_b = std::min(smallest_end_b, half_width(q, radius_at(f), E_star));
+  if (!std::isfinite(smallest_end_b))
+    smallest_end_b = smallest_b;
   fem::WholeBodySizes& sizes = r.sizes;
   sizes.contact_m = smallest_b / s.contact_elements;
   sizes.strip_half_width_m = s.strip_over_half_width * largest_b;
   sizes.growth = s.section_growth;
   sizes.far_m = s.body.radius_m / 8;
+  sizes.layer_growth = s.layer_growth;
+  sizes.largest_layer_m = L / s.layers_across_length;
+  sizes.end_layer_m = s.body_end_layer * smallest_end_b;
+  if (!s.end_layers_only)
+  {
+    sizes.edge_m = sizes.end_layer_m;
+    sizes.edge_zone_m = s.end_zone_over_half_width * largest_b;
+  }
   // The line-contact estimate of the approach of a section's top at height
   // R (fem/load_control.h) starts load control; the body starts shifted down
   // by the height of its surface at the contact's edge (the slab's start).
   auto rigid_start = [&](double b, double R) {
     const fem::LineApproach estimate = fem::line_contact_approach(load_at(c), R, b, E_star);
     return RigidStart{estimate.approach_m, estimate.exponent, 0.5 * b * b / R};
+  };
+  // The whole body at `body_sizes`, its load control started from line
+  // contact at b.
+  struct BodySolve
+  {
+    fem::WholeBodyFem fem;
+    std::size_t node_planes;
+    std::int64_t section_nodes;
+    double gmsh_s;
+  };
+  auto solve_body = [&](const fem::WholeBodySizes& body_sizes, double b) {
+    const fem::WholeBodyMesh mesh
+        = s.body.body == "cylinder"
+              ? fem::build_cylinder_body_mesh(comm, {s.body.radius_m, L, r.centre_of_mass_height_m}, body_sizes)
+              : fem::build_mapped_body_mesh(
+                  comm, mapped_pose(s, ruling, r.centre_of_mass_height_m, r.rim_overhang_rad), body_sizes);
+    if (log)
+      spdlog::info("whole-body mesh: {} node planes, {} nodes per section, contact elements {:.3g} m (b / {:.3g}), "
+                   "end layers {:.3g} m, gmsh {:.1f} s",
+                   mesh.planes_m.size(), mesh.section_nodes, body_sizes.contact_m, b / body_sizes.contact_m,
+                   body_sizes.end_layer_m, mesh.gmsh_s);
+    fem::WholeBodyLoad load;
+    load.force_n = F;
+    load.centre_of_mass_along_m = c * L;
+    load.youngs_modulus_pa = s.youngs_modulus_pa;
+    load.poisson_ratio = s.poisson_ratio;
+    load.penalty_c = s.penalty_c;
+    load.contact_element_m = body_sizes.contact_m;
+    const RigidStart rigid = rigid_start(b, radius_at(c));
+    load.first_approach_m = rigid.approach_m;
+    load.approach_exponent = rigid.exponent;
+    load.first_shift_m = rigid.shift_m;
+    load.edge_half_width_m = 0.5 * smallest_end_b;
+    return BodySolve{fem::solve_whole_body(comm, mesh, load), mesh.planes_m.size(), mesh.section_nodes, mesh.gmsh_s};
   };
   if (s.load_rule == LoadRule::sections)
   {
@@ -197,14 +252,33 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     section.first_shift_m = rigid.shift_m;
     SectionLoadRuleSettings rule;
     rule.stations = s.rule_stations;
+    // Each section as the whole body's interior (without its end refinement).
+    fem::WholeBodySizes interior = sizes;
+    interior.edge_m = interior.edge_zone_m = 0;
     r.section_rule = section_load_rule(comm, mapped_pose(s, ruling, r.centre_of_mass_height_m, r.rim_overhang_rad), F,
-                                       c * L, rigid.approach_m, sizes, section, rule);
+                                       c * L, rigid.approach_m, interior, section, rule);
     load_at = [&r, L](double f) { return r.section_rule->load_at(f * L); };
     if (log)
       spdlog::info("section load rule: {} sections of {} DOFs, {} passes, F {:.6g} N, centre of pressure {:.6f} L, "
                    "{:.1f} s",
                    s.rule_stations, r.section_rule->section_dofs, r.section_rule->passes, r.section_rule->force_n,
                    r.section_rule->centre_of_pressure_m / L, r.section_rule->wall_s);
+  }
+  if (s.load_rule == LoadRule::coarse_body)
+  {
+    auto clock = std::chrono::steady_clock::now();
+    fem::WholeBodySizes coarse = sizes;
+    coarse.contact_m = smallest_b / s.rule_contact_elements;
+    coarse.end_layer_m = s.rule_end_layer * smallest_end_b;
+    coarse.edge_m = coarse.edge_zone_m = 0;
+    BodySolve solved = solve_body(coarse, half_width(load_at(c), radius_at(c), E_star));
+    r.coarse_body = WholeBodyCheck::CoarseBody{coarse, solved.node_planes, std::move(solved.fem),
+                                               fem::wall_seconds_since(comm, clock)};
+    load_at = [&r, L](double f) {
+      return fem::interpolate_planes(r.coarse_body->fem.plane_x_m, r.coarse_body->fem.plane_load_n_per_m, f * L);
+    };
+    if (log)
+      spdlog::info("coarse body load rule: {} DOFs, {:.1f} s", r.coarse_body->fem.dofs, r.coarse_body->wall_s);
   }
   r.half_width_m = half_width(load_at(c), radius_at(c), E_star);
   if (log)
@@ -213,17 +287,23 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
                  r.body, L, ruling.start_radius_m, ruling.end_radius_m, c, r.loaded_from, r.loaded_to,
                  r.rim_overhang_rad[0] / deg, r.rim_overhang_rad[1] / deg, r.half_width_m, r.half_width_m / L);
 
-  // Slices at the stations and at both loaded ends.
+  // Slices at the stations and at both loaded ends, or under a rule that
+  // softens the ends d_m inside them (EndComparison). The rim ends loaded
+  // are the locus's.
+  const bool matched = softens_ends(s.load_rule);
   std::vector<fem::SliceLoad> loads;
   for (const double f : fractions)
     loads.push_back({f * L, radius_at(f), load_at(f)});
-  const std::array<double, 2> end_fractions{r.loaded_from, r.loaded_to};
   std::vector<int> loaded_ends;
+  std::array<double, 2> read_at{}; // where each end's q and slice are taken (fractions of L)
+  std::array<double, 2> match_distance_m{};
   for (int e = 0; e < 2; ++e)
-    if (load_at(end_fractions[e]) > 0)
+    if (const double q = locus_load_at(end_fractions[e]); q > 0)
     {
       loaded_ends.push_back(e);
-      loads.push_back({end_fractions[e] * L, radius_at(end_fractions[e]), load_at(end_fractions[e])});
+      match_distance_m[e] = s.end_match_over_half_width * half_width(q, radius_at(end_fractions[e]), E_star);
+      read_at[e] = end_fractions[e] + (matched ? (e == 0 ? 1 : -1) * match_distance_m[e] / L : 0.0);
+      loads.push_back({read_at[e] * L, radius_at(read_at[e]), load_at(read_at[e])});
     }
   fem::SliceSettings slice;
   slice.youngs_modulus_pa = s.youngs_modulus_pa;
@@ -237,14 +317,13 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
 
   // The end models at the loaded ends.
   clock = std::chrono::steady_clock::now();
-  double smallest_end_b = INFINITY;
   for (std::size_t k = 0; k < loaded_ends.size(); ++k)
   {
     const int e = loaded_ends[k];
     EndComparison end;
     end.position_m = end_fractions[e] * L;
     end.radius_m = radius_at(end_fractions[e]);
-    end.load_n_per_m = load_at(end_fractions[e]);
+    end.load_n_per_m = load_at(read_at[e]);
     end.half_width_m = half_width(end.load_n_per_m, end.radius_m, E_star);
     end.interior_angle_deg = 90 + r.rim_overhang_rad[e] / deg;
     end.slice_peak_pa = slices[fractions.size() + k].peak_pressure_pa;
@@ -282,68 +361,60 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     });
     end.end_model = same != r.ends.end() ? same->end_model : fem::solve_rim_end(comm, rim);
     end.near_edge_peak = !end.end_model.singular && end.interior_angle_deg < 90;
-    if (end.near_edge_peak)
+    const fem::RimEndSettings& setup = end.end_model.setup;
+    if (matched)
+      end.matched_at_m = match_distance_m[e];
+    auto reference = [&](const fem::RimEndLevel& l) {
+      // The mean over a quarter of the distance either way: the end model's
+      // elements along the ruling grow away from the edge.
+      return end.matched_at_m ? fem::centre_line_pressure(l, -*end.matched_at_m, 0.25 * *end.matched_at_m)
+                              : l.far_peak_pa;
+    };
+    if (!end.end_model.singular)
     {
-      if (const std::optional<double> ratio = converged_near_edge_peak(end.end_model, s.tolerance))
-        end.predicted_edge_pa = *ratio * end.slice_peak_pa;
+      if (end.near_edge_peak || end.matched_at_m)
+        end.end_model_ratio = converged_ratio(
+            end.end_model,
+            [&](const fem::RimEndLevel& l) {
+              return (end.near_edge_peak ? l.end_peak_pa : l.edge_pressure_pa) / reference(l);
+            },
+            s.tolerance);
+      else if (end.end_model.converged)
+        end.end_model_ratio = end.end_model.end_to_interior;
     }
-    else if (!end.end_model.singular && end.end_model.converged && end.end_model.end_to_interior)
-      end.predicted_edge_pa = *end.end_model.end_to_interior * end.slice_peak_pa;
+    if (end.end_model_ratio)
+      end.predicted_edge_pa = *end.end_model_ratio * end.slice_peak_pa;
+    if (end.end_model.singular && !end.end_model.levels.empty())
+    {
+      const auto& levels = end.end_model.levels;
+      auto mismatch = [&](const fem::RimEndLevel& l) { return std::abs(std::log(l.edge_element_m / sizes.end_layer_m)); };
+      const auto nearest = std::min_element(levels.begin(), levels.end(), [&](const auto& a, const auto& b) {
+        return mismatch(a) < mismatch(b);
+      });
+      end.matched_level = static_cast<std::size_t>(nearest - levels.begin());
+      end.matched_edge_pa = nearest->edge_pressure_pa / reference(*nearest) * end.slice_peak_pa;
+    }
     if (log)
-      spdlog::info("end model at {} (a = {:.2f} deg, H = {:.4g} b, {} mesh): {}", e == 0 ? "the start" : "the end",
-                   end.interior_angle_deg, end.end_model.setup.depth_over_half_width,
-                   end.end_model.setup.mesh == fem::RimEndMesh::grid ? "grid" : "Delaunay",
-                   end.end_model.singular ? "singular"
-                   : end.end_model.end_to_interior
-                       ? fmt::format("edge / interior {:.4f}{}", *end.end_model.end_to_interior,
-                                     end.end_model.converged ? "" : " (NOT converged)")
-                       : std::string("no ratio"));
-    // The whole body's end layers from the locus's b there, whichever the rule.
-    smallest_end_b
-        = std::min(smallest_end_b, half_width(locus_load_at(end_fractions[e]), end.radius_m, E_star));
+      spdlog::info("end model at {} (a = {:.2f} deg, H = {:.4g} b, {} mesh): {}{}", e == 0 ? "the start" : "the end",
+                   end.interior_angle_deg, setup.depth_over_half_width,
+                   setup.mesh == fem::RimEndMesh::grid ? "grid" : "Delaunay",
+                   end.end_model.singular ? std::string("singular")
+                   : end.end_model_ratio  ? fmt::format("{} / reference {:.4f}", end.near_edge_peak ? "near-edge peak" : "edge",
+                                                       *end.end_model_ratio)
+                                          : std::string("NOT converged"),
+                   end.matched_at_m ? fmt::format(" (matched to the rule {:.4g} m from the edge)", *end.matched_at_m)
+                                    : std::string(" (against its far side)"));
     r.ends.push_back(std::move(end));
   }
   r.ends_s = fem::wall_seconds_since(comm, clock);
 
-  // The whole body, its end layers sized from the locus's b at the ends.
+  // The whole body (the reference).
   clock = std::chrono::steady_clock::now();
-  if (!std::isfinite(smallest_end_b))
-    smallest_end_b = smallest_b;
-  const double radius = s.body.radius_m;
-  sizes.end_layer_m = s.body_end_layer * smallest_end_b;
-  if (!s.end_layers_only)
-  {
-    sizes.edge_m = sizes.end_layer_m;
-    sizes.edge_zone_m = s.end_zone_over_half_width * largest_b;
-  }
-  sizes.layer_growth = s.layer_growth;
-  sizes.largest_layer_m = L / s.layers_across_length;
-  const fem::WholeBodyMesh mesh
-      = s.body.body == "cylinder"
-            ? fem::build_cylinder_body_mesh(comm, {radius, L, r.centre_of_mass_height_m}, sizes)
-            : fem::build_mapped_body_mesh(comm, mapped_pose(s, ruling, r.centre_of_mass_height_m, r.rim_overhang_rad),
-                                          sizes);
-  r.node_planes = mesh.planes_m.size();
-  r.section_nodes = mesh.section_nodes;
-  r.gmsh_s = mesh.gmsh_s;
-  if (log)
-    spdlog::info("whole-body mesh: {} node planes, {} nodes per section, contact elements {:.3g} m (b / {:.3g}), end "
-                 "layers {:.3g} m, gmsh {:.1f} s",
-                 r.node_planes, r.section_nodes, sizes.contact_m, r.half_width_m / sizes.contact_m, sizes.end_layer_m,
-                 r.gmsh_s);
-  fem::WholeBodyLoad load;
-  load.force_n = F;
-  load.centre_of_mass_along_m = c * L;
-  load.youngs_modulus_pa = s.youngs_modulus_pa;
-  load.poisson_ratio = s.poisson_ratio;
-  load.penalty_c = s.penalty_c;
-  load.contact_element_m = sizes.contact_m;
-  const RigidStart rigid = rigid_start(r.half_width_m, radius_at(c));
-  load.first_approach_m = rigid.approach_m;
-  load.approach_exponent = rigid.exponent;
-  load.first_shift_m = rigid.shift_m;
-  load.edge_half_width_m = 0.5 * smallest_end_b;
-  r.fem = fem::solve_whole_body(comm, mesh, load);
+  BodySolve body = solve_body(sizes, r.half_width_m);
+  r.fem = std::move(body.fem);
+  r.node_planes = body.node_planes;
+  r.section_nodes = body.section_nodes;
+  r.gmsh_s = body.gmsh_s;
   r.body_s = fem::wall_seconds_since(comm, clock);
 
   // The comparison.
@@ -379,17 +450,8 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     }
     else
       ends_compared = false;
-    if (end.end_model.singular && !end.end_model.levels.empty())
-    {
-      const auto& levels = end.end_model.levels;
-      auto mismatch = [&](const fem::RimEndLevel& l) { return std::abs(std::log(l.edge_element_m / sizes.end_layer_m)); };
-      const auto nearest = std::min_element(levels.begin(), levels.end(), [&](const auto& a, const auto& b) {
-        return mismatch(a) < mismatch(b);
-      });
-      end.matched_level = static_cast<std::size_t>(nearest - levels.begin());
-      end.matched_edge_pa = nearest->edge_pressure_pa / nearest->far_peak_pa * end.slice_peak_pa;
+    if (end.matched_edge_pa)
       end.matched_difference = end.body_edge_pa / *end.matched_edge_pa - 1;
-    }
   }
   if (ends_compared && !r.ends.empty())
     r.worst_end = worst_end;
@@ -410,6 +472,43 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
                  r.ends_s, r.body_s);
   return r;
 }
+
+namespace
+{
+nlohmann::json planes_json(const fem::WholeBodyFem& fem)
+{
+  nlohmann::json planes = nlohmann::json::array();
+  for (std::size_t k = 0; k < fem.plane_x_m.size(); ++k)
+    planes.push_back({fem.plane_x_m[k], fem.plane_peak_pa[k], fem.plane_load_n_per_m[k]});
+  return planes;
+}
+
+/// The end model's centre-line pressure within 100 b of the edge (x <= 0),
+/// where a rule may be matched to it.
+nlohmann::json centre_line_json(const fem::RimEndLevel& level, double half_width_m)
+{
+  nlohmann::json line = nlohmann::json::array();
+  const double reach = 100 * half_width_m;
+  for (const fem::CentreLineNode& node : level.centre_line)
+    if (node.x_m >= -reach)
+      line.push_back({node.x_m, node.pressure_pa});
+  return line;
+}
+
+nlohmann::json coarse_body_json(const WholeBodyCheck::CoarseBody& coarse)
+{
+  return {{"contact_element_m", coarse.sizes.contact_m},
+          {"end_layer_m", coarse.sizes.end_layer_m},
+          {"node_planes", coarse.node_planes},
+          {"dofs", coarse.fem.dofs},
+          {"reaction_n", coarse.fem.reaction_n},
+          {"centre_of_pressure", coarse.fem.centre_of_pressure_m / coarse.fem.plane_x_m.back()},
+          {"approach_m", coarse.fem.approach_m},
+          {"tilt_rad", coarse.fem.tilt_rad},
+          {"planes_x_m_peak_pa_load_n_per_m", planes_json(coarse.fem)},
+          {"wall_s", coarse.wall_s}};
+}
+} // namespace
 
 nlohmann::json to_json(const WholeBodyCheck& r)
 {
@@ -436,6 +535,7 @@ nlohmann::json to_json(const WholeBodyCheck& r)
                         {"edge_pressure_pa", l.edge_pressure_pa},
                         {"end_peak_pa", l.end_peak_pa},
                         {"end_peak_x_m", l.end_peak_x_m},
+                        {"centre_line_x_m_pressure_pa", centre_line_json(l, e.end_model.half_width_m)},
                         {"wall_s", l.wall_s}});
     ends.push_back({{"position_m", e.position_m},
                     {"radius_m", e.radius_m},
@@ -449,6 +549,8 @@ nlohmann::json to_json(const WholeBodyCheck& r)
                     {"end_model_end_to_interior", json_number(e.end_model.end_to_interior)},
                     {"end_model_change", json_number(e.end_model.end_change)},
                     {"end_model_levels", levels},
+                    {"matched_at_m", json_number(e.matched_at_m)},
+                    {"end_model_ratio", json_number(e.end_model_ratio)},
                     {"slice_peak_pa", e.slice_peak_pa},
                     {"predicted_edge_pa", json_number(e.predicted_edge_pa)},
                     {"compared", e.near_edge_peak ? "near-edge peak (acute end)" : "edge"},
@@ -463,9 +565,6 @@ nlohmann::json to_json(const WholeBodyCheck& r)
                     {"matched_edge_pa", json_number(e.matched_edge_pa)},
                     {"matched_difference", json_number(e.matched_difference)}});
   }
-  nlohmann::json planes = nlohmann::json::array();
-  for (std::size_t k = 0; k < r.fem.plane_x_m.size(); ++k)
-    planes.push_back({r.fem.plane_x_m[k], r.fem.plane_peak_pa[k], r.fem.plane_load_n_per_m[k]});
   const WholeBodyCheckSettings& s = r.settings;
   return {{"body", r.body},
           {"direction_deg", s.direction_deg},
@@ -508,10 +607,13 @@ nlohmann::json to_json(const WholeBodyCheck& r)
             {"load_steps", r.fem.load_steps},
             {"newton_iterations", r.fem.newton_iterations},
             {"edge_pressure_pa", {r.fem.edge_pressure_pa[0], r.fem.edge_pressure_pa[1]}},
-            {"planes_x_m_peak_pa_load_n_per_m", planes},
+            {"planes_x_m_peak_pa_load_n_per_m", planes_json(r.fem)},
             {"solve_s", r.fem.solve_s}}},
-          {"load_rule", s.load_rule == LoadRule::sections ? "sections" : "locus"},
+          {"load_rule", s.load_rule == LoadRule::sections      ? "sections"
+                        : s.load_rule == LoadRule::coarse_body ? "coarse-body"
+                                                               : "locus"},
           {"section_load_rule", r.section_rule ? to_json(*r.section_rule) : nlohmann::json()},
+          {"coarse_body_load_rule", r.coarse_body ? coarse_body_json(*r.coarse_body) : nlohmann::json()},
           {"stations", stations},
           {"ends", ends},
           {"worst_along", r.worst_along},
@@ -544,7 +646,7 @@ std::string markdown_table(const WholeBodyCheck& r)
                      100 * st.peak_difference_at_body_load());
   t += fmt::format("\nThe largest over the stations (fem-sds's peak): body / slices - 1 = {:+.2f} %\n",
                    100 * r.largest_peak_difference);
-  t += "\n| end | interior angle (deg) | end model | end model edge / interior | predicted edge (MPa) | body edge "
+  t += "\n| end | interior angle (deg) | end model | end model edge / its reference (far side, or at the station) | predicted edge (MPa) | body edge "
        "(MPa) | body edge / its interior | body / predicted - 1 | singular only: body / end model at matched h_e - 1 "
        "(secondary) |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const EndComparison& e : r.ends)
@@ -561,7 +663,10 @@ std::string markdown_table(const WholeBodyCheck& r)
                                        e.end_model.wedge_exponent)
                      : e.end_model.converged ? "converged"
                                              : "NOT converged",
-                     e.end_model.end_to_interior ? fmt::format("{:.4f}", *e.end_model.end_to_interior) : "-",
+                     e.end_model_ratio ? fmt::format("{:.4f}{}", *e.end_model_ratio,
+                                                     e.matched_at_m ? fmt::format(" (at {:.3g} m)", *e.matched_at_m)
+                                                                    : std::string())
+                                       : "-",
                      e.predicted_edge_pa ? fmt::format("{:.5g}", *e.predicted_edge_pa / 1e6) : "-",
                      e.body_edge_pa / 1e6, e.body_edge_pa / e.body_interior_pa,
                      e.difference ? fmt::format("{:+.2f} %", 100 * *e.difference) : "-",

@@ -7,9 +7,12 @@
 //    stations between the crease margins, each under the load rule's line
 //    load q(s) and radius R(s): the contact locus's (contact/contact_locus.h:
 //    F through the centre of mass, the no-tension linear rule; fem-sds's,
-//    the default) or the body's own sections' (study/section_load_rule.h,
-//    LoadRule::sections); the end models under the rule's q at the ends;
-//    the whole body is meshed from the locus's b either way; its peak
+//    the default), the body's own sections' (study/section_load_rule.h,
+//    LoadRule::sections) or the whole body's at a coarse mesh
+//    (LoadRule::coarse_body); the end models under the rule's q at the
+//    ends, or at the nearest station where the rule softens the ends itself
+//    (EndComparison); the whole body is meshed from the locus's b under
+//    every rule; its peak
 //    across the ruling at each station (its node planes interpolated)
 //    against the slice's peak;
 //  - at both loaded ends: the end model (fem/rim_end_contact.h) under the
@@ -63,13 +66,27 @@ enum class EndModelDepth
 };
 
 /// How the reduced models share F along the ruling: the contact locus's
-/// no-tension linear rule (fem-sds's), or each section's own compliance
-/// under one rigid approach and tilt (study/section_load_rule.h).
+/// no-tension linear rule (fem-sds's); each section's own compliance under
+/// one rigid approach and tilt (study/section_load_rule.h); or the whole
+/// body meshed coarsely (b / rule_contact_elements across the ruling, end
+/// layers of rule_end_layer b, no refinement at the ends), its line load on
+/// each node plane: the body's 3D compliance, the sections coupled along the
+/// ruling, at a quarter of the fine mesh's DOFs. The contact's local
+/// compliance is then off by its coarse strip, nearly uniformly along the
+/// ruling, which the load's distribution hardly feels (docs/whole-body.md
+/// has the measured difference from the fine body's line load).
 enum class LoadRule
 {
   locus,
-  sections
+  sections,
+  coarse_body
 };
+
+/// Whether a rule's line load already falls towards the ends, as the body's
+/// own does (the sections', the coarse body's): an end model under it is
+/// matched to the rule near the edge, not at its far side, so that the
+/// end's softening is not counted twice (EndComparison).
+bool softens_ends(LoadRule rule);
 
 struct WholeBodyCheckSettings
 {
@@ -96,6 +113,9 @@ struct WholeBodyCheckSettings
   int stations = 9;                 ///< slices along the ruling
   LoadRule load_rule = LoadRule::locus; ///< the slices' and end models' q(s)
   int rule_stations = 16;           ///< the sections' load rule's N
+  int rule_contact_elements = 2;    ///< the coarse body's elements across b (the fine body's: contact_elements)
+  double rule_end_layer = 0.5;      ///< the coarse body's end layers, h / b (the fine body's: body_end_layer)
+  double end_match_over_half_width = 4; ///< d_m / b, where an end model meets a rule that softens the ends
   double crease_margin = 0.05;      ///< stations this fraction of the ruling inside its loaded ends (fem-sds's)
   int slice_refine = -1;            ///< the slices' level (SliceSettings::refine)
   /// The end models' block: as deep as the whole body's held section (the
@@ -144,19 +164,35 @@ struct StationComparison
   }
 };
 
+/// The end models' reading of a loaded end.
+/// Under the locus's rule (uniform towards the end) the end model, loaded by
+/// the rule's q at the end, stands for the whole end zone: its edge over its
+/// far side (plane strain, the interior) times the slice at the end's q.
+/// Under a rule that softens the ends itself (softens_ends) the end model is
+/// matched to the rule a short distance d_m from the edge (global-local
+/// matching): loaded by the rule's q at d_m, its reading over its own
+/// centre-line pressure at d_m, times the slice at the rule's q and R there.
+/// d_m = end_match_over_half_width b (the locus's b at the end, 4 by
+/// default): inside it lies the edge's own 3D zone (an acute end's near-edge
+/// peak within 2 b), beyond it the coarse body's line load meets the fine
+/// body's within 1 % (docs/whole-body.md).
 struct EndComparison
 {
   double position_m = 0, radius_m = 0, load_n_per_m = 0, half_width_m = 0;
   double interior_angle_deg = 90;
   fem::RimEndStudy end_model;            ///< its levels, exponent, ratio
-  double slice_peak_pa = 0;              ///< plane strain at the end's q and R
+  /// Matched to the rule d_m from the edge: d_m (none: at the end model's far side).
+  std::optional<double> matched_at_m;
+  double slice_peak_pa = 0;              ///< plane strain at the rule's q and R at the end, or at d_m
   /// What is compared: the edge's own pressure (square), or at an acute end,
   /// whose edge pressure falls towards zero under refinement (0.317, 0.279
   /// of the interior at h_e = b/16, b/32 for the oloid's 87.2 deg end), the
   /// largest pressure within 2 b of the edge (the end model's end_peak_pa,
   /// the whole body's largest node-plane peak there).
   bool near_edge_peak = false;
-  std::optional<double> predicted_edge_pa; ///< the end model's ratio x slice_peak (not singular, converged)
+  /// The end model's reading over its pressure where it is matched, at its last level.
+  std::optional<double> end_model_ratio;
+  std::optional<double> predicted_edge_pa; ///< end_model_ratio x slice_peak (not singular, converged)
   double body_near_edge_peak_pa = 0;     ///< the whole body's largest plane peak within 2 b of the edge
   double body_edge_pa = 0;               ///< the whole body's
   double body_interior_pa = 0;           ///< the whole body's peak at the nearest station
@@ -187,6 +223,15 @@ struct WholeBodyCheck
   double gmsh_s = 0;
   fem::WholeBodyFem fem;
   std::optional<SectionLoadRule> section_rule; ///< with LoadRule::sections
+  /// With LoadRule::coarse_body: its mesh and solve (its q on each node plane).
+  struct CoarseBody
+  {
+    fem::WholeBodySizes sizes;
+    std::size_t node_planes = 0;
+    fem::WholeBodyFem fem;
+    double wall_s = 0;
+  };
+  std::optional<CoarseBody> coarse_body;
   std::vector<StationComparison> stations;
   std::vector<EndComparison> ends;       ///< the loaded ends
   double worst_along = 0;                ///< largest |peak_difference| over the stations
