@@ -154,16 +154,19 @@ TEST(RimEndContact, ConvergenceJudgesTheEndToInteriorRatio)
   EXPECT_NEAR(fem::end_to_interior_change(coarse, fine, true), -0.05, 1e-12);
 }
 
-TEST(RimEndContact, CentreLinePressureIsTheMeanOverItsWindow)
+TEST(RimEndContact, CentreLinePressureIsLinearBetweenItsNodes)
 {
-  // What the whole-body check matches an end model to the interior with
-  // (study/whole_body_check.h): the nodes within the window, both bounds
-  // included, and never a window too sparse to average.
+  // What the whole-body check matches an end model to a load rule with
+  // (study/whole_body_check.h): linear between the nodes either side, a node
+  // itself exactly, nothing beyond the line.
   fem::RimEndLevel level;
-  level.centre_line = {{-3.0, 10.0}, {-2.0, 20.0}, {-1.5, 40.0}, {-1.0, 30.0}, {0.0, 5.0}};
-  EXPECT_DOUBLE_EQ(fem::centre_line_pressure(level, -1.5, 0.5), 30.0);
-  EXPECT_DOUBLE_EQ(fem::centre_line_pressure(level, -2.5, 0.5), 15.0);
-  EXPECT_THROW(fem::centre_line_pressure(level, -0.4, 0.45), ComputationError);
+  level.centre_line = {{-3.0, 10.0}, {-2.0, 20.0}, {-1.0, 40.0}, {0.0, 5.0}};
+  EXPECT_DOUBLE_EQ(fem::centre_line_pressure_at(level, -2.0), 20.0);
+  EXPECT_DOUBLE_EQ(fem::centre_line_pressure_at(level, -1.25), 35.0);
+  EXPECT_DOUBLE_EQ(fem::centre_line_pressure_at(level, -3.0), 10.0);
+  EXPECT_DOUBLE_EQ(fem::centre_line_pressure_at(level, 0.0), 5.0);
+  EXPECT_THROW(fem::centre_line_pressure_at(level, -3.5), ComputationError);
+  EXPECT_THROW(fem::centre_line_pressure_at(level, 0.5), ComputationError);
 }
 
 TEST(RimEndContact, OnlyFacesFacingThePlaneAreContactFacets)

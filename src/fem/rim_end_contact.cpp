@@ -271,9 +271,18 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
 }
 } // namespace
 
-double centre_line_pressure(const RimEndLevel& level, double x_m, double half_window_m)
+double centre_line_pressure_at(const RimEndLevel& level, double x_m)
 {
-  return centre_line_mean(level.centre_line, x_m - half_window_m, x_m + half_window_m).mean;
+  const auto& line = level.centre_line; // sorted by x
+  const auto after = std::lower_bound(line.begin(), line.end(), x_m,
+                                      [](const CentreLineNode& n, double x) { return n.x_m < x; });
+  if (after == line.end() || (after == line.begin() && after->x_m != x_m))
+    throw ComputationError(fmt::format("rim: x = {:.3g} m lies outside the centre line", x_m));
+  if (after->x_m == x_m)
+    return after->pressure_pa;
+  const CentreLineNode& before = *(after - 1);
+  const double t = (x_m - before.x_m) / (after->x_m - before.x_m);
+  return (1 - t) * before.pressure_pa + t * after->pressure_pa;
 }
 
 double end_to_interior(const RimEndLevel& level, bool sharp_edge)

@@ -222,11 +222,10 @@ struct RimEndStudy
 /// or a rounded edge's end peak, over the far side's (the interior's) peak.
 double end_to_interior(const RimEndLevel& level, bool sharp_edge);
 
-/// The mean centre-line pressure over x in [x_m - half_window_m, x_m +
-/// half_window_m] (the edge at x = 0, the far side at -L): what the end model
-/// carries at a distance -x_m from its edge. ComputationError with fewer
-/// than 2 nodes there.
-double centre_line_pressure(const RimEndLevel& level, double x_m, double half_window_m);
+/// The centre-line pressure at x_m (the edge at x = 0, the far side at -L),
+/// linear between the two nodes either side: what the end model carries at
+/// a distance -x_m from its edge. ComputationError outside the centre line.
+double centre_line_pressure_at(const RimEndLevel& level, double x_m);
 
 /// The change of end_to_interior from `before` to `last` over the larger of
 /// its last value and 1: what `tolerance` judges.

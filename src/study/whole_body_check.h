@@ -10,7 +10,7 @@
 //    the default), the body's own sections' (study/section_load_rule.h,
 //    LoadRule::sections) or the whole body's at a coarse mesh
 //    (LoadRule::coarse_body); the end models under the rule's q at the
-//    ends, or at the nearest station where the rule softens the ends itself
+//    ends, or d_m inside them where the rule softens the ends itself
 //    (EndComparison); the whole body is meshed from the locus's b under
 //    every rule; its peak
 //    across the ruling at each station (its node planes interpolated)
@@ -22,14 +22,16 @@
 //    (fem/scene_mesh.h build_square_end_grid_mesh: gmsh's Delaunay end at
 //    that depth has about 1e6 DOFs a level) solved by MUMPS LU (GAMG stalled
 //    on the deep grid). Not singular (square or acute on the rigid plane):
-//    its converged edge pressure over its plane-strain interior, times the
-//    slice's peak at the end's q and R, is the reduced models' edge
-//    pressure, against the whole body's (mean nodal pressure of the end
+//    its converged edge pressure over its plane-strain interior (or, under
+//    a rule that softens the ends, over its own pressure at d_m), times the
+//    slice's peak at the end's q and R (or the rule's q and R at d_m), is
+//    the reduced models' edge pressure, against the whole body's (mean nodal pressure of the end
 //    plane's nodes with |y| <= b / 2, end layers of body_end_layer b).
 //    Acute: the edge's own pressure falls to zero under refinement, so the
 //    largest pressure within 2 b of the edge is compared instead, converged
-//    when its ratio to the far side's changes by less than `tolerance`
-//    between the end model's last two levels.
+//    when its ratio to the far side's changes by less than `tolerance` (of
+//    the larger of it and 1, the rim scene's measure) between the end
+//    model's last two levels.
 //    Singular (obtuse): no number is compared; the check reports the end
 //    singular (the wedge's exponent; `rollcheck rim` measures its growth)
 //    and does not pass; as a secondary reading only, the whole body's edge
@@ -181,8 +183,9 @@ struct EndComparison
   double position_m = 0, radius_m = 0, load_n_per_m = 0, half_width_m = 0;
   double interior_angle_deg = 90;
   fem::RimEndStudy end_model;            ///< its levels, exponent, ratio
-  /// Matched to the rule d_m from the edge: d_m (none: at the end model's far side).
-  std::optional<double> matched_at_m;
+  /// d_m, where the end model meets a rule that softens the ends (none:
+  /// the end model against its far side).
+  std::optional<double> rule_match_distance_m;
   double slice_peak_pa = 0;              ///< plane strain at the rule's q and R at the end, or at d_m
   /// What is compared: the edge's own pressure (square), or at an acute end,
   /// whose edge pressure falls towards zero under refinement (0.317, 0.279
@@ -190,8 +193,10 @@ struct EndComparison
   /// largest pressure within 2 b of the edge (the end model's end_peak_pa,
   /// the whole body's largest node-plane peak there).
   bool near_edge_peak = false;
-  /// The end model's reading over its pressure where it is matched, at its last level.
-  std::optional<double> end_model_ratio;
+  /// The end model's reading over its reference pressure (far side, or at
+  /// d_m) at its last level, if converged, and that ratio's change from the
+  /// level before (over the larger of it and 1).
+  std::optional<double> end_model_ratio, end_model_ratio_change;
   std::optional<double> predicted_edge_pa; ///< end_model_ratio x slice_peak (not singular, converged)
   double body_near_edge_peak_pa = 0;     ///< the whole body's largest plane peak within 2 b of the edge
   double body_edge_pa = 0;               ///< the whole body's
