@@ -635,6 +635,7 @@ nlohmann::json to_json(const WholeBodyCheck& r)
           {"worst_load", r.worst_load},
           {"largest_peak_difference", r.largest_peak_difference},
           {"tolerance", s.tolerance},
+          {"end_match_over_half_width", s.end_match_over_half_width},
           {"pass", r.pass},
           {"verdict", r.verdict},
           {"wall_s", {{"slices", r.slices_s}, {"end_models", r.ends_s}, {"whole_body", r.body_s}, {"total", r.wall_s}}}};
