@@ -12,9 +12,8 @@
 //    (LoadRule::coarse_body); the end models under the rule's q at the
 //    ends, or d_m inside them where the rule softens the ends itself
 //    (EndComparison); the whole body is meshed from the locus's b under
-//    every rule; its peak
-//    across the ruling at each station (its node planes interpolated)
-//    against the slice's peak;
+//    every rule; its peak across the ruling at each station (its node
+//    planes interpolated) against the slice's peak;
 //  - at both loaded ends: the end model (fem/rim_end_contact.h) under the
 //    end's q and R at its interior angle 90 deg + the rim's lean
 //    (contact/rim_overhang.h), its block as deep as the whole body's held
@@ -25,8 +24,9 @@
 //    its converged edge pressure over its plane-strain interior (or, under
 //    a rule that softens the ends, over its own pressure at d_m), times the
 //    slice's peak at the end's q and R (or the rule's q and R at d_m), is
-//    the reduced models' edge pressure, against the whole body's (mean nodal pressure of the end
-//    plane's nodes with |y| <= b / 2, end layers of body_end_layer b).
+//    the reduced models' edge pressure, against the whole body's (mean
+//    nodal pressure of the end plane's nodes with |y| <= b / 2, end layers
+//    of body_end_layer b).
 //    Acute: the edge's own pressure falls to zero under refinement, so the
 //    largest pressure within 2 b of the edge is compared instead, converged
 //    when its ratio to the far side's changes by less than `tolerance` (of
