@@ -27,6 +27,16 @@ study::WholeBodyCheckSettings oloid_settings(double direction_deg)
   s.direction_deg = direction_deg;
   return s;
 }
+
+/// The oloid at --direction 67.5 (OloidAgreesWith...'s orientation) checked
+/// under `rule`, with the settings it ran.
+std::pair<study::WholeBodyCheckSettings, study::WholeBodyCheck> oloid_check_under(study::LoadRule rule)
+{
+  fem::ensure_petsc();
+  study::WholeBodyCheckSettings s = oloid_settings(67.5);
+  s.load_rule = rule;
+  return {s, study::run_whole_body_check(MPI_COMM_WORLD, s)};
+}
 } // namespace
 
 TEST(WholeBodyCheck, CylinderAgreesWithSlicesAndEndModelsWithinThreePercent)
@@ -189,10 +199,7 @@ TEST(WholeBodyCheck, OloidSectionsRuleMeetsTheInteriorStationsWithinThreePercent
   // inside the ends the sections, without their neighbours' shear, are
   // softer than the whole body (docs/whole-body.md), so those two are not
   // asserted.
-  fem::ensure_petsc();
-  study::WholeBodyCheckSettings s = oloid_settings(67.5);
-  s.load_rule = study::LoadRule::sections;
-  const study::WholeBodyCheck check = study::run_whole_body_check(MPI_COMM_WORLD, s);
+  const auto [s, check] = oloid_check_under(study::LoadRule::sections);
   ASSERT_TRUE(check.section_rule.has_value());
   EXPECT_NEAR(check.section_rule->force_n, s.normal_load_n, 1e-3 * s.normal_load_n);
   EXPECT_NEAR(check.section_rule->centre_of_pressure_m / check.length_m, check.centre_of_pressure, 1e-3);
@@ -209,10 +216,7 @@ TEST(WholeBodyCheck, OloidCoarseBodyRuleMeetsEveryStationAndTheAcuteEndWithinThr
   // slices and end models take; the fine whole body is the reference. The
   // reduction itself is checked too: the coarse body's line load at every
   // station within 1 % of the fine body's.
-  fem::ensure_petsc();
-  study::WholeBodyCheckSettings s = oloid_settings(67.5);
-  s.load_rule = study::LoadRule::coarse_body;
-  const study::WholeBodyCheck check = study::run_whole_body_check(MPI_COMM_WORLD, s);
+  const auto [s, check] = oloid_check_under(study::LoadRule::coarse_body);
   ASSERT_TRUE(check.coarse_body.has_value());
   EXPECT_NEAR(check.coarse_body->fem.reaction_n, s.normal_load_n, 1e-3 * s.normal_load_n);
   EXPECT_LT(check.coarse_body->fem.dofs, check.fem.dofs / 2);

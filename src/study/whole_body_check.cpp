@@ -80,17 +80,27 @@ void check_settings(const WholeBodyCheckSettings& s)
 
 double half_width(double q, double R, double E_star) { return std::sqrt(4 * q * R / (std::numbers::pi * E_star)); }
 
+struct RatioOverLevels
+{
+  double last, change;
+};
+
 /// An end model's reading over its reference pressure at its last level,
 /// and that ratio's change from the level before over the larger of it and
 /// 1 (the rim scene's measure, fem::end_to_interior_change: a square edge's
 /// ratio of about 0.5 is judged against the interior); none with one level.
-std::optional<std::array<double, 2>> ratio_and_change(const fem::RimEndStudy& end,
-                                                      const std::function<double(const fem::RimEndLevel&)>& ratio)
+std::optional<RatioOverLevels> ratio_over_levels(const fem::RimEndStudy& end,
+                                                 const std::function<double(const fem::RimEndLevel&)>& ratio)
 {
   if (end.levels.size() < 2)
     return std::nullopt;
   const double last = ratio(end.levels.back()), before = ratio(end.levels[end.levels.size() - 2]);
-  return std::array<double, 2>{last, (last - before) / std::max(last, 1.0)};
+  return RatioOverLevels{last, (last - before) / std::max(last, 1.0)};
+}
+
+std::string load_rule_name(LoadRule rule)
+{
+  return rule == LoadRule::sections ? "sections" : rule == LoadRule::coarse_body ? "coarse-body" : "locus";
 }
 
 /// The body in the whole body's frame (fem/whole_body_mesh.h): x along the
@@ -175,12 +185,17 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
       smallest_b = std::min(smallest_b, b);
       largest_b = std::max(largest_b, b);
     }
-  // The whole body's end layers from the locus's b at the loaded ends.
+  // The locus's b at the loaded ends (0 where the locus leaves an end
+  // unloaded): the whole body's end layers, d_m and the near-edge reach.
   const std::array<double, 2> end_fractions{r.loaded_from, r.loaded_to};
+  std::array<double, 2> locus_end_b{};
   double smallest_end_b = INFINITY;
-  for (const double f : end_fractions)
-    if (const double q = locus_load_at(f); q > 0)
-      smallest_end_b = std::min(smallest_end_b, half_width(q, radius_at(f), E_star));
+  for (int e = 0; e < 2; ++e)
+    if (const double q = locus_load_at(end_fractions[e]); q > 0)
+    {
+      locus_end_b[e] = half_width(q, radius_at(end_fractions[e]), E_star);
+      smallest_end_b = std::min(smallest_end_b, locus_end_b[e]);
+    }
   if (!std::isfinite(smallest_end_b))
     smallest_end_b = smallest_b;
   fem::WholeBodySizes& sizes = r.sizes;
@@ -212,12 +227,17 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     std::int64_t section_nodes;
     double gmsh_s;
   };
+  // The body's sections ray cast against its hull, built once: the oloid's
+  // whole bodies and any body's sections' rule share it.
+  const bool extruded = s.body.body == "cylinder";
+  const std::optional<fem::MappedBodyPose> pose
+      = extruded && s.load_rule != LoadRule::sections
+            ? std::nullopt
+            : std::optional(mapped_pose(s, ruling, r.centre_of_mass_height_m, r.rim_overhang_rad));
   auto solve_body = [&](const fem::WholeBodySizes& body_sizes, double b) {
     const fem::WholeBodyMesh mesh
-        = s.body.body == "cylinder"
-              ? fem::build_cylinder_body_mesh(comm, {s.body.radius_m, L, r.centre_of_mass_height_m}, body_sizes)
-              : fem::build_mapped_body_mesh(
-                  comm, mapped_pose(s, ruling, r.centre_of_mass_height_m, r.rim_overhang_rad), body_sizes);
+        = extruded ? fem::build_cylinder_body_mesh(comm, {s.body.radius_m, L, r.centre_of_mass_height_m}, body_sizes)
+                   : fem::build_mapped_body_mesh(comm, *pose, body_sizes);
     if (log)
       spdlog::info("whole-body mesh: {} node planes, {} nodes per section, contact elements {:.3g} m (b / {:.3g}), "
                    "end layers {:.3g} m, gmsh {:.1f} s",
@@ -243,7 +263,7 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     throw InputError(fmt::format("load_rule {}: direction {} deg loads only part of the ruling (c = {:.4f} outside "
                                  "[1/3, 2/3]); the rule is matched to the end models at both rim ends, loaded end to "
                                  "end",
-                                 s.load_rule == LoadRule::sections ? "sections" : "coarse-body", s.direction_deg, c));
+                                 load_rule_name(s.load_rule), s.direction_deg, c));
   if (s.load_rule == LoadRule::sections)
   {
     const double b = half_width(load_at(c), radius_at(c), E_star);
@@ -258,8 +278,7 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     // Each section as the whole body's interior (without its end refinement).
     fem::WholeBodySizes interior = sizes;
     interior.edge_m = interior.edge_zone_m = 0;
-    r.section_rule = section_load_rule(comm, mapped_pose(s, ruling, r.centre_of_mass_height_m, r.rim_overhang_rad), F,
-                                       c * L, rigid.approach_m, interior, section, rule);
+    r.section_rule = section_load_rule(comm, *pose, F, c * L, rigid.approach_m, interior, section, rule);
     load_at = [&r, L](double f) { return r.section_rule->load_at(f * L); };
     if (log)
       spdlog::info("section load rule: {} sections of {} DOFs, {} passes, F {:.6g} N, centre of pressure {:.6f} L, "
@@ -299,12 +318,10 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     loads.push_back({f * L, radius_at(f), load_at(f)});
   std::vector<int> loaded_ends;
   std::array<double, 2> read_at_fraction{}; // where each end's q and slice are taken
-  std::array<double, 2> locus_end_b{};       // the unit of d_m and of the near-edge reading's reach
   for (int e = 0; e < 2; ++e)
-    if (const double q = locus_load_at(end_fractions[e]); q > 0)
+    if (locus_end_b[e] > 0)
     {
       loaded_ends.push_back(e);
-      locus_end_b[e] = half_width(q, radius_at(end_fractions[e]), E_star);
       const double inward = (e == 0 ? 1 : -1) * s.end_match_over_half_width * locus_end_b[e] / L;
       read_at_fraction[e] = end_fractions[e] + (match_near_edge ? inward : 0.0);
       loads.push_back({read_at_fraction[e] * L, radius_at(read_at_fraction[e]), load_at(read_at_fraction[e])});
@@ -378,13 +395,13 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     {
       if (end.near_edge_peak || end.rule_match_distance_m)
       {
-        if (const auto ratio = ratio_and_change(end.end_model, [&](const fem::RimEndLevel& l) {
+        if (const auto ratio = ratio_over_levels(end.end_model, [&](const fem::RimEndLevel& l) {
               return (end.near_edge_peak ? l.end_peak_pa : l.edge_pressure_pa) / reference(l);
             }))
         {
-          end.end_model_ratio_change = (*ratio)[1];
-          if (std::abs((*ratio)[1]) < s.tolerance)
-            end.end_model_ratio = (*ratio)[0];
+          end.end_model_ratio_change = ratio->change;
+          if (std::abs(ratio->change) < s.tolerance)
+            end.end_model_ratio = ratio->last;
         }
       }
       else
@@ -623,9 +640,7 @@ nlohmann::json to_json(const WholeBodyCheck& r)
             {"edge_pressure_pa", {r.fem.edge_pressure_pa[0], r.fem.edge_pressure_pa[1]}},
             {"planes_x_m_peak_pa_load_n_per_m", planes_json(r.fem)},
             {"solve_s", r.fem.solve_s}}},
-          {"load_rule", s.load_rule == LoadRule::sections      ? "sections"
-                        : s.load_rule == LoadRule::coarse_body ? "coarse-body"
-                                                               : "locus"},
+          {"load_rule", load_rule_name(s.load_rule)},
           {"section_load_rule", r.section_rule ? to_json(*r.section_rule) : nlohmann::json()},
           {"coarse_body_load_rule", r.coarse_body ? coarse_body_json(*r.coarse_body, r.length_m) : nlohmann::json()},
           {"stations", stations},
