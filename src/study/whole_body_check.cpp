@@ -691,8 +691,8 @@ std::string markdown_table(const WholeBodyCheck& r)
                                            ? fmt::format("{:.3f}", *e.end_model.measured_exponent)
                                            : std::string("not"),
                                        e.end_model.wedge_exponent)
-                     : e.end_model.converged ? "converged"
-                                             : "NOT converged",
+                     : e.end_model_ratio ? "converged"
+                                         : "NOT converged",
                      e.end_model_ratio ? fmt::format("{:.4f}{}", *e.end_model_ratio,
                                                      e.rule_match_distance_m
                                                          ? fmt::format(" (d_m {:.3g} m)", *e.rule_match_distance_m)
