@@ -75,7 +75,8 @@ TEST(WholeBodyCheck, CylinderAgreesWithSlicesAndEndModelsWithinThreePercent)
 // mesh against the slices along the ruling and the end models at both ends
 // (the acute end by its largest pressure within 2 b of the edge).
 // The obtuse end is singular on the rigid plane: reported, never compared as
-// a number, so the check as a whole does not pass.
+// a number, so the check as a whole does not pass: its outcome is singular
+// ends, every comparison with a value being within the tolerance.
 TEST(WholeBodyCheck, OloidAgreesWithSlicesAndItsAcuteEndWithinThreePercent)
 {
   fem::ensure_petsc();
@@ -105,10 +106,11 @@ TEST(WholeBodyCheck, OloidAgreesWithSlicesAndItsAcuteEndWithinThreePercent)
   EXPECT_TRUE(obtuse.matched_difference.has_value());
   // Its one end-model level sits at the body's end layer (the matched mesh).
   ASSERT_EQ(obtuse.end_model.levels.size(), 1u);
-  EXPECT_NEAR(obtuse.end_model.levels[0].edge_element_m / obtuse.half_width_m, s.body_end_layer, 1e-6);
+  EXPECT_NEAR(obtuse.end_model.levels[0].edge_element_m / check.sizes.end_layer_m, 1.0, 1e-9);
   // What the stations' misstated load costs fem-sds's peak of this orientation.
   EXPECT_LE(std::abs(check.largest_peak_difference), s.tolerance);
   EXPECT_FALSE(check.pass) << "a singular end never passes";
+  EXPECT_EQ(check.outcome, study::WholeBodyOutcome::singular_ends) << check.verdict;
 }
 
 TEST(WholeBodyCheckQuick, LargestPeakComparesTheLargestOfEachEvenAtDifferentStations)
@@ -126,6 +128,28 @@ TEST(WholeBodyCheckQuick, LargestPeakComparesTheLargestOfEachEvenAtDifferentStat
   }
   EXPECT_NEAR(study::largest_peak_difference(stations), 216.5 / 221.32 - 1, 1e-12);
   EXPECT_DOUBLE_EQ(study::largest_peak_difference({}), 0.0);
+}
+
+TEST(WholeBodyCheckQuick, OutcomeSetsSingularEndsApartFromFailures)
+{
+  // Ends as the oloid's at --direction 67.5: an acute end compared, an
+  // obtuse end singular in its end model.
+  std::vector<study::EndComparison> ends(2);
+  ends[0].difference = -0.0124;
+  ends[1].end_model.singular = true;
+  const double tolerance = 0.03;
+  EXPECT_EQ(study::check_outcome(0.0022, ends, tolerance), study::WholeBodyOutcome::singular_ends);
+  EXPECT_EQ(study::check_outcome(0.0496, ends, tolerance), study::WholeBodyOutcome::fail); // a station beyond
+  ends[0].difference = 0.0421;
+  EXPECT_EQ(study::check_outcome(0.0022, ends, tolerance), study::WholeBodyOutcome::fail); // the finite end beyond
+  ends[0].difference = -0.0124;
+  ends[1].end_model.singular = false; // no value and no singularity: its end model did not converge
+  EXPECT_EQ(study::check_outcome(0.0022, ends, tolerance), study::WholeBodyOutcome::fail);
+  ends[1].difference = 0.0164; // the cylinder's: both ends compared
+  EXPECT_EQ(study::check_outcome(0.0034, ends, tolerance), study::WholeBodyOutcome::pass);
+  EXPECT_EQ(study::check_outcome(0.0034, {}, tolerance), study::WholeBodyOutcome::fail); // no loaded end
+  EXPECT_EQ(study::check_outcome(NAN, ends, tolerance), study::WholeBodyOutcome::fail);
+  EXPECT_EQ(study::outcome_name(study::WholeBodyOutcome::singular_ends), "SINGULAR ENDS");
 }
 
 TEST(WholeBodyCheckQuick, RefusesABodyWithoutAWholeBodyMesh)
@@ -232,5 +256,11 @@ TEST(WholeBodyCheck, OloidCoarseBodyRuleMeetsEveryStationAndTheAcuteEndWithinThr
   ASSERT_TRUE(acute.rule_match_distance_m.has_value()) << "under a softening rule the end model meets it near the edge";
   ASSERT_TRUE(acute.difference.has_value()) << "the acute end model's near-edge peak did not converge";
   EXPECT_LE(std::abs(*acute.difference), s.tolerance);
-  EXPECT_TRUE(check.ends[1].end_model.singular);
+  const study::EndComparison& obtuse = check.ends[1];
+  EXPECT_TRUE(obtuse.end_model.singular);
+  // Its secondary reading's end model sits at the body's end layer, though
+  // its b is the rule's at the match point, not the locus's.
+  ASSERT_EQ(obtuse.end_model.levels.size(), 1u);
+  EXPECT_NEAR(obtuse.end_model.levels[0].edge_element_m / check.sizes.end_layer_m, 1.0, 1e-9);
+  EXPECT_EQ(check.outcome, study::WholeBodyOutcome::singular_ends) << check.verdict;
 }

@@ -211,6 +211,20 @@ struct EndComparison
   std::optional<double> matched_difference; ///< body / matched - 1
 };
 
+/// The check's outcome. pass: every station and every loaded end within the
+/// tolerance. singular_ends: every station and every end that has a value
+/// within it, the other ends singular in the end model (a sharp obtuse
+/// edge: no value exists to compare, only its exponent and the secondary
+/// matched-mesh reading), so `pass` stays false. fail: a station or a
+/// finite end beyond the tolerance, or an end model that did not converge.
+enum class WholeBodyOutcome
+{
+  pass,
+  singular_ends,
+  fail
+};
+
+
 struct WholeBodyCheck
 {
   WholeBodyCheckSettings settings;
@@ -246,10 +260,19 @@ struct WholeBodyCheck
   /// the stations: the whole body's over the slices' - 1 (not a pass
   /// criterion; what a station's misstated load costs the scores).
   double largest_peak_difference = 0;
-  bool pass = false;
+  WholeBodyOutcome outcome = WholeBodyOutcome::fail;
+  bool pass = false;                     ///< outcome == pass
   std::string verdict;
   double slices_s = 0, ends_s = 0, body_s = 0, wall_s = 0; ///< body_s: mesh + solve of the whole body
 };
+
+/// The outcome of a check whose stations' largest |peak difference| is
+/// worst_along and whose loaded ends are compared (`difference` set),
+/// singular in their end model, or neither (not converged).
+WholeBodyOutcome check_outcome(double worst_along, std::span<const EndComparison> ends, double tolerance);
+
+/// "PASS", "SINGULAR ENDS", "FAIL": the verdict's first word(s) and the JSON's `outcome`.
+std::string outcome_name(WholeBodyOutcome outcome);
 
 /// The largest of the whole body's station peaks over the largest of the
 /// slices' - 1 (the two may lie at different stations).
