@@ -31,5 +31,5 @@ for name in ["cylinder", "oloid"]:
     print(f"| {name} | {r['load_rule']} | {m['dofs']} | {m['node_planes']} x {m['section_nodes']} | {rule['wall_s']:.1f} "
           f"| {w['slices']:.1f} | {w['end_models']:.1f} "
           f"| {w['whole_body']:.1f} | {total:.1f} | {total / budget:.2f} | {100 * r['worst_along']:.2f} % | {end} "
-          f"| {'PASS' if r['pass'] else 'FAIL'} |")
+          f"| {r['outcome']} |")
 PY
