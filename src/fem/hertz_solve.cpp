@@ -11,6 +11,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
+#include <set>
 #include <spdlog/spdlog.h>
 #include <sys/resource.h>
 
@@ -24,7 +25,10 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 void flag(HertzResult& result, const std::string& name, const std::string& warning, int rank)
 {
   result.flags.push_back(name);
-  if (rank == 0)
+  // A loop solves hundreds of slices and table nodes alike: each warning
+  // text once per process (every result still carries its flags).
+  static std::set<std::string> warned;
+  if (rank == 0 && warned.insert(warning).second)
     spdlog::warn("{}", warning);
 }
 } // namespace
