@@ -1,8 +1,9 @@
 // `rollcheck whole-body`: issue 14's fuller check at small scale
 // (study/whole_body_check.h): one orientation of the body meshed whole and
 // pressed on the rigid plane in 3D, against the plane-strain slices along
-// the ruling and the end models at its loaded ends; pass or fail against the
-// tolerance (3 %). Also the scene "whole-body" of case files. Exit 0 when
+// the ruling and the end models at its loaded ends; PASS, SINGULAR ENDS
+// (every comparison with a value within the tolerance, 3 %, an end singular)
+// or FAIL. Also the scene "whole-body" of case files. Exit 0 when
 // the check ran (its verdict is in the output), 1 when a solve failed.
 // Built for both executables (src/cli/CMakeLists.txt): only rollcheck-fem
 // (ROLLCHECK_FEM) has the subcommand; rollcheck hands the command line over.
@@ -130,7 +131,8 @@ void add_whole_body_command(CLI::App& app)
                     "Issue 14's whole-body check: one orientation of the body (r1 = 10 mm) meshed whole (gmsh "
                     "OpenCASCADE, layers along the ruling) and pressed on the rigid plane in 3D under F through its "
                     "centre of mass, against the plane-strain slices along the ruling and the end models (rollcheck "
-                    "rim) at its loaded ends; PASS or FAIL against --tolerance",
+                    "rim) at its loaded ends; PASS, SINGULAR ENDS (every comparison that has a value within "
+                    "--tolerance, a sharp obtuse end singular: no value to compare) or FAIL",
                     whole_body_schema().schema(), run_whole_body);
 }
 #else

@@ -694,7 +694,9 @@ WholeBodyOutcome check_outcome(double worst_along, std::span<const EndComparison
 
 std::string outcome_name(WholeBodyOutcome outcome)
 {
-  return outcome == WholeBodyOutcome::pass ? "PASS" : outcome == WholeBodyOutcome::singular_ends ? "SINGULAR ENDS" : "FAIL";
+  return outcome == WholeBodyOutcome::pass            ? "PASS"
+         : outcome == WholeBodyOutcome::singular_ends ? "SINGULAR ENDS"
+                                                      : "FAIL";
 }
 
 double largest_peak_difference(std::span<const StationComparison> stations)
