@@ -85,7 +85,7 @@ TEST(SliceScaling, TheSliceScalesWithItsRadiusAndTheTableMeetsDirectSolves)
 // A slice's mesh is graded from its b; gmsh's nodes follow b's last digits,
 // so two loads equal but for their last bits (a whole body's q through
 // MUMPS's parallel sums) meshed differently and their peaks differed by up to
-// 0.18 % (docs/whole-body.md). The mesh is now sized from b rounded to 9
+// 0.18 % (docs/whole-body.md). A slice is now solved at q rounded to 9
 // significant digits: such loads give one mesh, so peaks equal to the load's
 // own relative change.
 TEST(SliceContact, LoadsEqualButForTheirLastBitsGiveTheSamePeak)

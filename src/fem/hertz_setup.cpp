@@ -4,7 +4,6 @@
 #include "core/error.h"
 #include <cmath>
 #include <fmt/format.h>
-#include <string>
 
 namespace rollcheck::fem
 {
@@ -110,14 +109,9 @@ HertzReference hertz_reference(const HertzSettings& s)
 MeshGrading mesh_grading(const HertzSettings& s, const HertzReference& ref)
 {
   const int refine = s.refine >= 0 ? s.refine : default_refine(s.model, s.degree);
-  // gmsh's nodes follow the sizes' last digits: two loads equal but for their
-  // last bits (a whole body's q through MUMPS's parallel sums) meshed apart
-  // and their peaks differed by up to 0.18 %. Sized from c_H rounded to 9
-  // significant digits they share one mesh (tests/test_slice_contact.cpp).
-  const double contact_size_m = std::stod(fmt::format("{:.8e}", ref.contact_size_m));
-  return contact_grading(contact_size_m,
+  return contact_grading(ref.contact_size_m,
                          s.contact_element_size_m > 0 ? s.contact_element_size_m
-                                                      : contact_element_size(contact_size_m, refine),
+                                                      : contact_element_size(ref.contact_size_m, refine),
                          s.radius_m);
 }
 
