@@ -149,6 +149,8 @@ TEST(WholeBodyCheckQuick, OutcomeSetsSingularEndsApartFromFailures)
   EXPECT_EQ(study::check_outcome(0.0034, ends, tolerance), study::WholeBodyOutcome::pass);
   EXPECT_EQ(study::check_outcome(0.0034, {}, tolerance), study::WholeBodyOutcome::fail); // no loaded end
   EXPECT_EQ(study::check_outcome(NAN, ends, tolerance), study::WholeBodyOutcome::fail);
+  ends[1].difference = NAN;
+  EXPECT_EQ(study::check_outcome(0.0034, ends, tolerance), study::WholeBodyOutcome::fail);
   EXPECT_EQ(study::outcome_name(study::WholeBodyOutcome::singular_ends), "SINGULAR ENDS");
 }
 

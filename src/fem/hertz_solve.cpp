@@ -25,10 +25,12 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 void flag(HertzResult& result, const std::string& name, const std::string& warning, int rank)
 {
   result.flags.push_back(name);
-  // A loop solves hundreds of slices and table nodes alike: each warning
-  // text once per process (every result still carries its flags).
+  // A loop solves hundreds of slices and table nodes alike: each kind of
+  // warning once per process, the first one's text (the result carries its
+  // flags). Processes solve alone (MPI_COMM_SELF slices) or together, never
+  // in threads.
   static std::set<std::string> warned;
-  if (rank == 0 && warned.insert(warning).second)
+  if (rank == 0 && warned.insert(name).second)
     spdlog::warn("{}", warning);
 }
 } // namespace

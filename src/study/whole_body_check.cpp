@@ -99,6 +99,14 @@ std::optional<RatioOverLevels> ratio_over_levels(const fem::RimEndStudy& end,
   return RatioOverLevels{last, (last - before) / std::max(last, 1.0)};
 }
 
+/// largest = max(largest, x), but a NaN x wins (std::max would drop it),
+/// so that a NaN comparison fails the check.
+void keep_largest(double& largest, double x)
+{
+  if (!(x <= largest))
+    largest = x;
+}
+
 std::string load_rule_name(LoadRule rule)
 {
   return rule == LoadRule::sections ? "sections" : rule == LoadRule::coarse_body ? "coarse-body" : "locus";
@@ -463,8 +471,8 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     st.hertz_peak_pa = slices[k].hertz_peak_pressure_pa;
     st.body_peak_pa = fem::interpolate_planes(r.fem.plane_x_m, r.fem.plane_peak_pa, st.position_m);
     st.body_load_n_per_m = fem::interpolate_planes(r.fem.plane_x_m, r.fem.plane_load_n_per_m, st.position_m);
-    r.worst_along = std::max(r.worst_along, std::abs(st.peak_difference()));
-    r.worst_load = std::max(r.worst_load, std::abs(st.load_difference()));
+    keep_largest(r.worst_along, std::abs(st.peak_difference()));
+    keep_largest(r.worst_load, std::abs(st.load_difference()));
     r.stations.push_back(st);
   }
   r.largest_peak_difference = largest_peak_difference(r.stations);
@@ -483,7 +491,7 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     if (end.predicted_edge_pa)
     {
       end.difference = (end.near_edge_peak ? end.body_near_edge_peak_pa : end.body_edge_pa) / *end.predicted_edge_pa - 1;
-      worst_end = std::max(worst_end, std::abs(*end.difference));
+      keep_largest(worst_end, std::abs(*end.difference));
     }
     else
     {
@@ -492,7 +500,7 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
         singular_ends.push_back(
             fmt::format("{} singular (the wedge's exponent {:.3f})", where, end.end_model.wedge_exponent));
       else
-        unconverged_ends.push_back(fmt::format("{}'s end model did not converge", where));
+        unconverged_ends.push_back(fmt::format("the end model at {} did not converge", where));
     }
     if (end.matched_edge_pa)
       end.matched_difference = end.body_edge_pa / *end.matched_edge_pa - 1;

@@ -214,8 +214,9 @@ struct EndComparison
 /// The check's outcome. pass: every station and every loaded end within the
 /// tolerance. singular_ends: every station and every end that has a value
 /// within it, the other ends singular in the end model (a sharp obtuse
-/// edge: no value exists to compare, only its exponent and the secondary
-/// matched-mesh reading), so `pass` stays false. fail: a station or a
+/// edge: no value exists to compare; reported with the wedge's exponent
+/// and, where solved, the secondary matched-mesh reading), so `pass` stays
+/// false. fail: a station or a
 /// finite end beyond the tolerance, or an end model that did not converge.
 enum class WholeBodyOutcome
 {
@@ -223,7 +224,6 @@ enum class WholeBodyOutcome
   singular_ends,
   fail
 };
-
 
 struct WholeBodyCheck
 {
