@@ -36,11 +36,14 @@
 //    singular (the wedge's exponent; `rollcheck rim` measures its growth)
 //    and does not pass; as a secondary reading only, the whole body's edge
 //    against the end model's at the body's end layer (matched mesh: one
-//    level, h_e = body_end_layer b).
+//    level, h_e the body's end layer, body_end_layer times the smaller b of
+//    the locus's ends).
 //  - the load distribution: the whole body's line load at each station
 //    against the rule's q(s), and its centre of pressure (held at the
 //    centre of mass's foot by the solver).
-// Passes when every station and both ends agree within `tolerance` (3 %).
+// PASS when every station and both ends agree within `tolerance` (3 %);
+// SINGULAR ENDS when every station and every end with a value do and the
+// other ends are singular; FAIL otherwise (WholeBodyOutcome).
 //
 // Bodies: the cylinder (its section extruded) and the oloid (the cylinder's
 // reference mesh mapped onto its sections, fem/whole_body_mesh.h
