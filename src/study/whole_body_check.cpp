@@ -487,7 +487,8 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     for (std::size_t k = 0; k < r.fem.plane_x_m.size(); ++k)
       if (std::abs(r.fem.plane_x_m[k] - end.position_m) <= 2 * locus_end_b[at_start ? 0 : 1])
         end.body_near_edge_peak_pa = std::max(end.body_near_edge_peak_pa, r.fem.plane_peak_pa[k]);
-    const std::string where = fmt::format("the ruling's {} ({:.2f} deg)", at_start ? "start" : "end", end.interior_angle_deg);
+    const std::string where
+        = fmt::format("the ruling's {} ({:.2f} deg)", at_start ? "start" : "end", end.interior_angle_deg);
     if (end.predicted_edge_pa)
     {
       end.difference = (end.near_edge_peak ? end.body_near_edge_peak_pa : end.body_edge_pa) / *end.predicted_edge_pa - 1;

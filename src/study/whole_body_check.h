@@ -219,8 +219,8 @@ struct EndComparison
 /// within it, the other ends singular in the end model (a sharp obtuse
 /// edge: no value exists to compare; reported with the wedge's exponent
 /// and, where solved, the secondary matched-mesh reading), so `pass` stays
-/// false. fail: a station or a
-/// finite end beyond the tolerance, or an end model that did not converge.
+/// false. fail: a station or a finite end beyond the tolerance, or an end
+/// model that did not converge.
 enum class WholeBodyOutcome
 {
   pass,
