@@ -200,6 +200,24 @@ TEST(RimLoop, SteelBlockGivesTheLoopThePairsModulus)
   EXPECT_EQ(r.loop.end_aware[0].singular_ends, r.loop.loaded_ends);
 }
 
+// Refused flat-rim nodes (a crease beside the 160 deg end) cost only the
+// nodes up to the last of them: the table starts after it, one node later
+// where that keeps an odd count, so every other node still ends on the
+// flattest; a refused flattest node refuses it all.
+TEST(RimLoop, FlatRimTableStartsAfterItsLastRefusedNode)
+{
+  const auto start = [](std::vector<bool> refused) { return study::flat_rim_table_start(refused); };
+  EXPECT_EQ(start({false, false, false, false, false}), 0u);
+  EXPECT_EQ(start({true, false, false, false, false}), 2u);  // 3 nodes kept, not 4
+  EXPECT_EQ(start({true, true, false, false, false}), 2u);   // 3 kept
+  EXPECT_EQ(start({false, true, false, false, false}), 2u);  // a refused node inside: after it
+  EXPECT_EQ(start({true, false, true, false, false}), 4u);   // 1 kept: the flattest alone
+  EXPECT_EQ(start({true, false, false}), 2u);
+  EXPECT_EQ(start({false, false, true}), std::nullopt);      // the flattest refused
+  EXPECT_EQ(start({true}), std::nullopt);
+  EXPECT_EQ(start({false}), 0u);
+}
+
 // A rounded edge's flattest ends take the flat-rim table (the loop's own
 // ends by half-space theory) from its first angle on: its peak at the angle
 // over the end's line Hertz peak. Below it the end table, held at its last

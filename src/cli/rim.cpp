@@ -338,6 +338,8 @@ nlohmann::json run_loop(study::RimLoopSettings settings)
       flat += fmt::format(" deg; where the tables meet the end table gives {:.3f}", seam["end_table_ratio"].get<double>());
     else
       flat += " deg";
+    if (!r.flat_rim_refused.empty())
+      flat += " (" + r.flat_rim_refused + ")";
   }
   spdlog::info("\nrims of {} ({}), counter-face {}, edge {}:\n\n{}\nloaded rim ends over the loop: {} in {} of {} "
                "samples, interior angles {:.1f} to {:.1f} deg (singular above {:.2f} deg); end table of {} nodes "

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <limits>
 #include <numbers>
 #include <span>
@@ -127,9 +128,14 @@ std::vector<RimLoopEnd> direct_ends(MPI_Comm comm, const RimLoopSettings& s, con
 
 /// The flat-rim table over [from, the loop's flattest loaded end]: the
 /// loop's own ends at those angles solved by half-space theory, the solves
-/// shared out over the ranks (each is serial).
-std::vector<FlatRimNode> flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, const FemSdsResult& interior,
-                                        double from);
+/// shared out over the ranks (each is serial); from flat_rim_table_start's
+/// node on when some are refused, `refused` then naming them.
+struct FlatRimTable
+{
+  std::vector<FlatRimNode> nodes;
+  std::string refused;
+};
+FlatRimTable flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, const FemSdsResult& interior, double from);
 
 /// Nodes evenly over [lo, hi], an odd number of them (every other one is a
 /// table too), at most `step` apart; one where the range is a point.
@@ -144,8 +150,7 @@ std::vector<double> even_nodes(double lo, double hi, double step)
     angles.push_back(lo + (hi - lo) * k / (2 * halves));
   return angles;
 }
-std::vector<FlatRimNode> flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, const FemSdsResult& interior,
-                                        double from)
+FlatRimTable flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, const FemSdsResult& interior, double from)
 {
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
@@ -175,7 +180,7 @@ std::vector<FlatRimNode> flat_rim_table(MPI_Comm comm, const RimLoopSettings& s,
   // Each rank solves its share; the others' values stay 0, so a sum shares them.
   // A solve that fails, or whose contact meets slopes too steep for
   // half-space theory (an end beside a crease of the hull), marks its slot
-  // (the last value): every rank then refuses the table alike.
+  // (the last value): every rank then refuses that node alike.
   constexpr std::size_t per_end = 10;
   constexpr double largest_slope = 0.1;
   std::vector<double> values;
@@ -200,21 +205,33 @@ std::vector<FlatRimNode> flat_rim_table(MPI_Comm comm, const RimLoopSettings& s,
     }
   MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM, comm);
   std::vector<FlatRimNode> table;
+  std::vector<bool> refused;
+  std::vector<std::string> refused_angles;
   const double* v = values.data();
   for (const std::vector<LoopEnd>& node_ends : ends)
   {
     FlatRimNode& node = table.emplace_back();
     node.interior_angle_rad = node_ends.front().interior_angle_rad;
+    refused.push_back(false);
     for (std::size_t k = 0; k < node_ends.size(); ++k, v += per_end)
     {
-      if (v[per_end - 1] > 0.5)
-        throw ComputationError(fmt::format("the end of {:.2f} deg failed or met slopes above {} over its contact "
-                                           "(`rollcheck flat-rim` at that end says which)",
-                                           node.interior_angle_rad / degree, largest_slope));
+      refused.back() = refused.back() || v[per_end - 1] > 0.5;
       node.sides.push_back({v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7] > 0.5, v[8]});
     }
+    if (refused.back())
+      refused_angles.push_back(fmt::format("{:.2f}", node.interior_angle_rad / degree));
   }
-  return table;
+  if (refused_angles.empty())
+    return {std::move(table), ""};
+  const std::string why = fmt::format("the ends of {} deg failed or met slopes above {} over their contact "
+                                      "(`rollcheck flat-rim` at such an end says which)",
+                                      fmt::join(refused_angles, ", "), largest_slope);
+  const std::optional<std::size_t> start = flat_rim_table_start(refused);
+  if (!start)
+    throw ComputationError(why);
+  table.erase(table.begin(), table.begin() + static_cast<std::ptrdiff_t>(*start));
+  return {std::move(table), fmt::format("{}; the table starts at {:.2f} deg, the FEM end table takes the ends below",
+                                        why, table.front().interior_angle_rad / degree)};
 }
 } // namespace
 
@@ -251,6 +268,19 @@ double singular_from_angle(const fem::RimEndSettings& end)
     (singular(mid) ? hi : lo) = mid;
   }
   return hi;
+}
+
+std::optional<std::size_t> flat_rim_table_start(const std::vector<bool>& refused)
+{
+  const auto last_refused = std::find(refused.rbegin(), refused.rend(), true);
+  if (last_refused == refused.rend())
+    return 0;
+  std::size_t start = refused.size() - static_cast<std::size_t>(last_refused - refused.rbegin());
+  if ((refused.size() - start) % 2 == 0)
+    ++start;
+  if (start >= refused.size())
+    return std::nullopt;
+  return start;
 }
 
 std::vector<double> end_table_angles(double lo, double hi, double step_rad, double acute_step_rad)
@@ -486,8 +516,13 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
     // takes them, as for a body with no such ends; the JSON says why.
     try
     {
-      result.flat_table = flat_rim_table(comm, s, result.fem_sds, s.flat_rim_from_rad);
-      result.flat_from_rad = s.flat_rim_from_rad;
+      FlatRimTable flat = flat_rim_table(comm, s, result.fem_sds, s.flat_rim_from_rad);
+      result.flat_table = std::move(flat.nodes);
+      result.flat_rim_refused = std::move(flat.refused);
+      result.flat_from_rad
+          = result.flat_rim_refused.empty() ? s.flat_rim_from_rad : result.flat_table.front().interior_angle_rad;
+      if (!result.flat_rim_refused.empty() && rank == 0)
+        spdlog::warn("rim loop: {}", result.flat_rim_refused);
     }
     catch (const std::runtime_error& e) // a failed solve, or no orientation at a node's angle (InputError)
     {

@@ -175,8 +175,9 @@ struct RimLoopResult
   /// Ends from this angle on take the flat-rim table's ratio (pi: none do).
   double flat_from_rad = std::numbers::pi;
   std::vector<FlatRimNode> flat_table;
-  /// Why there is no flat-rim table although the loop has ends in its range
-  /// (empty: there is one, or none was due).
+  /// Why the flat-rim table does not start at flat_rim_from_rad although
+  /// the loop has ends there: the refused nodes, or why there is none
+  /// (empty: it starts there, or none was due).
   std::string flat_rim_refused;
   /// Largest |table - direct| of the end/interior ratio over the direct ends
   /// with one, over the larger of the direct ratio and 1 (the interior).
@@ -241,6 +242,15 @@ struct EndRatios
 /// [90 deg, hi] each so, the first at most `acute_step_rad` apart (their
 /// union is odd again, 90 deg an even node). One node where lo = hi.
 std::vector<double> end_table_angles(double lo, double hi, double step_rad, double acute_step_rad);
+
+/// Where the flat-rim table starts when some of its nodes are refused (a
+/// failed solve, or contact on slopes too steep for half-space theory, as
+/// beside a crease of the hull): the first node after the last refused one,
+/// moved one on where needed to keep the kept nodes odd in number (every
+/// other one, the check of the spacing, still ends on the flattest). None
+/// when the flattest node is refused or too few are left. `refused` is in
+/// ascending angle.
+std::optional<std::size_t> flat_rim_table_start(const std::vector<bool>& refused);
 
 /// The smallest interior angle whose sharp edge is singular against the
 /// counter-face (bisection on the wedge exponent), pi when none is.
