@@ -29,8 +29,9 @@
 // scores singular: reported as such, with the number of loaded ends that are.
 //
 // A rounded edge's flattest ends (interior angle from flat_rim_from_rad,
-// 160 deg, on) take the flat-rim table instead: the loop's own ends at
-// angles 2.5 deg apart up to its flattest (study/flattest_loop_ends.h),
+// 160 deg, on; where half-space theory is refused at some nodes, from
+// flat_rim_table_start's) take the flat-rim table instead: the loop's own
+// ends at angles 2.5 deg apart up to its flattest (study/flattest_loop_ends.h),
 // solved in 3D by half-space theory on the hull's own surface with the
 // ruling's own load and the body's balance (study/flat_rim_contact.h); an
 // end's pressure is the table's peak at its angle (interpolated: the
