@@ -230,8 +230,9 @@ FlatRimTable flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, const FemSd
   if (!start)
     throw ComputationError(why);
   table.erase(table.begin(), table.begin() + static_cast<std::ptrdiff_t>(*start));
-  return {std::move(table), fmt::format("{}; the table starts at {:.2f} deg, the FEM end table takes the ends below",
-                                        why, table.front().interior_angle_rad / degree)};
+  std::string refused_nodes = fmt::format("{}; the table starts at {:.2f} deg, the FEM end table takes the ends below",
+                                          why, table.front().interior_angle_rad / degree);
+  return {std::move(table), std::move(refused_nodes)};
 }
 } // namespace
 
