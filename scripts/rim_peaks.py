@@ -123,7 +123,9 @@ def main():
         flat = j.get("flat_rim_table") or []
         flat_text = (f"{len(flat)} nodes from {flat[0]['interior_angle_deg']:.1f} deg, ratios "
                      f"{min(n['ratio'] for n in flat):.3f}-{max(n['ratio'] for n in flat):.3f}"
-                     + ("" if all(n["converged"] for n in flat) else " (a node NOT converged)")) if flat else "-"
+                     + ("" if all(n["converged"] for n in flat) else " (a node NOT converged)")
+                     + ("; the nodes below refused" if j.get("flat_rim_refused") else "")) if flat else (
+            "refused" if j.get("flat_rim_refused") else "-")
         rows.append(
             f"| {label} | {j['interior']['n_faces']} | {loop['loaded_ends']} ({loop['loaded_end_samples']} of {loop['samples']}) "
             f"| {singular} ({100 * singular / max(loop['loaded_ends'], 1):.0f} %) "
