@@ -178,9 +178,10 @@ FlatRimTable flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, const FemSd
   setup.steel_counter_face = s.end.counter_face == fem::CounterFace::block;
   setup.tolerance = s.end.tolerance;
   // Each rank solves its share; the others' values stay 0, so a sum shares them.
-  // A solve that fails, or whose contact meets slopes too steep for
-  // half-space theory (an end beside a crease of the hull), marks its slot
-  // (the last value): every rank then refuses that node alike.
+  // The last value of a slot is the contact's largest slope, or -1 for a
+  // failed solve: a node whose solve failed or whose contact meets slopes
+  // too steep for half-space theory (an end beside a crease of the hull)
+  // is refused alike on every rank.
   constexpr std::size_t per_end = 10;
   constexpr double largest_slope = 0.1;
   std::vector<double> values;
@@ -195,11 +196,11 @@ FlatRimTable flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, const FemSd
           const FlatRimContact r = flat_rim_contact(setup, end);
           v = {r.centre_of_pressure, r.end_line_load_n_per_m, r.end_radius_m, r.levels.back().peak_pressure_pa,
                r.line_hertz_peak_pa, r.last_change, r.window_change, r.converged ? 1.0 : 0.0, r.wall_s,
-               r.largest_slope > largest_slope ? 1.0 : 0.0};
+               r.largest_slope};
         }
         catch (const ComputationError&)
         {
-          v.back() = 1;
+          v.back() = -1;
         }
       values.insert(values.end(), v.begin(), v.end());
     }
@@ -212,19 +213,24 @@ FlatRimTable flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, const FemSd
   {
     FlatRimNode& node = table.emplace_back();
     node.interior_angle_rad = node_ends.front().interior_angle_rad;
-    refused.push_back(false);
+    bool failed = false;
+    double slope = 0;
     for (std::size_t k = 0; k < node_ends.size(); ++k, v += per_end)
     {
-      refused.back() = refused.back() || v[per_end - 1] > 0.5;
+      failed = failed || v[per_end - 1] < 0;
+      slope = std::max(slope, v[per_end - 1]);
       node.sides.push_back({v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7] > 0.5, v[8]});
     }
+    refused.push_back(failed || slope > largest_slope);
     if (refused.back())
-      refused_angles.push_back(fmt::format("{:.2f}", node.interior_angle_rad / degree));
+      refused_angles.push_back(failed ? fmt::format("{:.2f} deg (its solve failed)", node.interior_angle_rad / degree)
+                                      : fmt::format("{:.2f} deg (slope {:.3f})", node.interior_angle_rad / degree,
+                                                    slope));
   }
   if (refused_angles.empty())
     return {std::move(table), ""};
-  const std::string why = fmt::format("the ends of {} deg failed or met slopes above {} over their contact "
-                                      "(`rollcheck flat-rim` at such an end says which)",
+  const std::string why = fmt::format("half-space theory refused at the ends of {} (it needs slopes of at most "
+                                      "{} over the contact)",
                                       fmt::join(refused_angles, ", "), largest_slope);
   const std::optional<std::size_t> start = flat_rim_table_start(refused);
   if (!start)
