@@ -23,9 +23,12 @@
 #include <dolfinx/fem/FunctionSpace.h>
 #include <dolfinx/la/Vector.h>
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <span>
+#include <utility>
+#include <vector>
 #include <petscksp.h>
 
 namespace rollcheck::fem
@@ -76,6 +79,11 @@ struct PairPressure
 };
 
 class PenaltyContact;
+
+/// Interface nodes grouped by place: `nodes` holds (x, y, global index,
+/// contact area) per node; each group is the nodes within `tol` of one
+/// place (a twin pair, or a lone node).
+std::vector<std::vector<std::pair<std::int64_t, double>>> interface_twins(std::span<const double> nodes, double tol);
 
 /// The upper body's contact nodes owned by this process (those with contact
 /// area, on its contact facets), paired with the lower body: at the
