@@ -56,7 +56,7 @@ def findings(audit):
                     f"{cell(decisive_value(claim, modes))} |")
     quick = " (`--quick`)" if audit.get("quick") else ""
     rows.append("")
-    rows.append(f"Regenerate with `bash scripts/audit.sh` (`rollcheck audit --json results/audit.json`){quick}; "
+    rows.append(f"Regenerate with `bash scripts/audit.sh` (`rollcheck audit --json results/audit/audit.json`){quick}; "
                 "docs/audit.md has every mode, rule and command.")
     return "\n".join(rows)
 
