@@ -198,8 +198,10 @@ FlatRimTable flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, const FemSd
                r.line_hertz_peak_pa, r.last_change, r.window_change, r.converged ? 1.0 : 0.0, r.wall_s,
                r.largest_slope};
         }
-        catch (const ComputationError&)
+        catch (const ComputationError& e)
         {
+          // Logged where it failed: the slot carries only the fact.
+          spdlog::warn("rim loop: flat-rim at {:.2f} deg failed: {}", end.interior_angle_rad / degree, e.what());
           v.back() = -1;
         }
       values.insert(values.end(), v.begin(), v.end());
