@@ -674,32 +674,37 @@ std::vector<std::vector<std::pair<std::int64_t, double>>> interface_twins(std::s
   // joined (the U optimum's 170 deg end on steel met one such pair at
   // h_e = b/64).
   using Cell = std::pair<double, double>;
-  std::map<Cell, std::vector<std::pair<std::int64_t, double>>> at_place;
-  std::map<Cell, std::array<double, 2>> place;
+  struct AtPlace
+  {
+    std::array<double, 2> place; // the first node's
+    std::vector<std::pair<std::int64_t, double>> nodes;
+  };
+  std::map<Cell, AtPlace> at_place;
   for (std::size_t i = 0; i + 3 < nodes.size(); i += 4)
   {
-    const Cell cell{std::round(nodes[i] / tol), std::round(nodes[i + 1] / tol)};
-    at_place[cell].push_back({static_cast<std::int64_t>(nodes[i + 2]), nodes[i + 3]});
-    place.emplace(cell, std::array<double, 2>{nodes[i], nodes[i + 1]});
+    AtPlace& at = at_place.try_emplace({std::round(nodes[i] / tol), std::round(nodes[i + 1] / tol)},
+                                       AtPlace{{nodes[i], nodes[i + 1]}, {}})
+                      .first->second;
+    at.nodes.push_back({static_cast<std::int64_t>(nodes[i + 2]), nodes[i + 3]});
   }
   for (auto it = at_place.begin(); it != at_place.end(); ++it)
-    for (int dx = -1; dx <= 1 && it->second.size() == 1; ++dx)
-      for (int dy = -1; dy <= 1 && it->second.size() == 1; ++dy)
+    for (int dx = -1; dx <= 1 && it->second.nodes.size() == 1; ++dx)
+      for (int dy = -1; dy <= 1 && it->second.nodes.size() == 1; ++dy)
       {
         const auto other = at_place.find({it->first.first + dx, it->first.second + dy});
-        if (other == at_place.end() || other == it || other->second.size() != 1)
+        if (other == at_place.end() || other == it || other->second.nodes.size() != 1)
           continue;
-        const std::array<double, 2>& a = place.at(it->first);
-        const std::array<double, 2>& b = place.at(other->first);
+        const std::array<double, 2>& a = it->second.place;
+        const std::array<double, 2>& b = other->second.place;
         if (std::hypot(a[0] - b[0], a[1] - b[1]) < tol)
         {
-          it->second.push_back(other->second.front());
+          it->second.nodes.push_back(other->second.nodes.front());
           at_place.erase(other);
         }
       }
   std::vector<std::vector<std::pair<std::int64_t, double>>> twins;
   for (auto& [cell, at] : at_place)
-    twins.push_back(std::move(at));
+    twins.push_back(std::move(at.nodes));
   return twins;
 }
 
