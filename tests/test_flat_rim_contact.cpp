@@ -5,6 +5,9 @@
 #include "study/flat_rim_contact.h"
 #include "contact/hertz.h"
 #include "core/error.h"
+#include "geometry/body.h"
+#include "oracle/rolling_dynamics.h"
+#include "oracle/rolling_study.h"
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
@@ -148,6 +151,59 @@ TEST(FlatRimContact, EndSurfaceIsTheHullNearTheLoopsEnd)
       EXPECT_NEAR(across * across / rise / radius, 1.0, 2e-3) << angle_deg << " deg, x' = " << along;
     }
   }
+}
+
+// The family's U optimum (centre-line family, theta 74.1 deg, d = 0.757,
+// rho = 1.071; r1 = 10 mm) on the steel block at its loop's end of this
+// angle, the side walked backwards, with cells of b / 2 and one level
+// (each failure below is the same as at the loop's b / 4 and b / 8).
+namespace
+{
+study::FlatRimContact u_optimum_on_steel(double interior_angle_deg)
+{
+  geometry::BodySpec u_optimum;
+  u_optimum.body = "roller";
+  u_optimum.family = geometry::RollerFamily::centre_line;
+  u_optimum.genome = {74.1, 0.757, 1.071, 2};
+  u_optimum.radius_m = 0.01;
+  const Eigen::Vector3d centre_of_mass =
+      oracle::mass_model_of_mesh(geometry::make_body(u_optimum), 1.0).centre_of_mass_m;
+  const double angles[1] = {interior_angle_deg * std::numbers::pi / 180};
+  const study::LoopEnd end =
+      study::flattest_loop_ends(oracle::line_contact_circles(u_optimum), centre_of_mass, angles).at_angle[0][1];
+  study::FlatRimSettings s;
+  s.steel_counter_face = true;
+  s.cells_per_half_width = 2;
+  s.levels = 1;
+  const study::FlatRimContact r = study::flat_rim_contact(s, end);
+  const study::FlatRimLevel& l = r.levels.back();
+  expect_balance(r, l, s.normal_load_n);
+  EXPECT_NEAR(l.far_peak_pa / l.far_line_hertz_pa, 1.0, 0.01);
+  EXPECT_LT(std::abs(r.window_change), s.tolerance);
+  EXPECT_LT(r.largest_slope, 0.1);
+  return r;
+}
+} // namespace
+
+// At 176 deg the balance raises the line load beyond the window above the
+// locus's, and the contact at the doubled window's far edge outgrows the
+// width sized from the locus's load: it reached the border across until
+// the window widened.
+TEST(FlatRimContact, ContactWiderThanTheLocusSaysWidensTheWindow)
+{
+  const study::FlatRimContact r = u_optimum_on_steel(176);
+  EXPECT_GT(r.across_scale, 1.0);
+  EXPECT_EQ(r.after_over_half_width, study::FlatRimSettings{}.after_over_half_width);
+}
+
+// At 164 deg the doubled window of 200 b covers 72 % of the ruling (c =
+// 0.235: the loaded 71 %): the rule beyond cannot balance the body with it
+// until the window shortens.
+TEST(FlatRimContact, ABodyThatCannotBalanceWithTheWindowShortensIt)
+{
+  const study::FlatRimContact r = u_optimum_on_steel(164);
+  EXPECT_LT(r.after_over_half_width, study::FlatRimSettings{}.after_over_half_width);
+  EXPECT_EQ(r.across_scale, 1.0);
 }
 
 TEST(FlatRimContact, RefusesBadInput)

@@ -86,12 +86,13 @@ nlohmann::json run_flat_rim(const io::Parameters& p)
                         setup.end_angle_rad < std::numbers::pi ? "" : "the vertex, ", r.centre_of_pressure,
                         r.end_radius_m, setup.normal_load_n, r.end_line_load_n_per_m);
   spdlog::info("\n{}, counter-face {}, edge radius {} m: b = {:.4g} m (R = {:.4g} m), E* = {:.4g} Pa\n\n{}\npeak {:.5g} Pa "
-               "({}: {:+.2f} % at the last level, {:+.2f} % with the first level's window twice as long); line Hertz at the end's q with R = max(R_end, r_e) gives {:.5g} Pa "
+               "({}: {:+.2f} % at the last level, {:+.2f} % with the first level's window twice as long; the window "
+               "{:.4g} b along the ruling, {:.3g} times --across across); line Hertz at the end's q with R = max(R_end, r_e) gives {:.5g} Pa "
                "(peak / that = {:.4f}); the rounded surface lies {:.3g} m above the ground at the end; largest slope "
                "over the contact {:.3f} (half-space theory)\n",
                what, setup.steel_counter_face ? "steel" : "rigid", setup.edge_radius_m, r.half_width_m,
                r.reference_radius_m, r.effective_modulus_pa, table, peak, r.converged ? "converged" : "NOT converged",
-               100 * r.last_change, 100 * r.window_change, r.line_hertz_peak_pa, peak / r.line_hertz_peak_pa, r.end_lift_m, r.largest_slope);
+               100 * r.last_change, 100 * r.window_change, r.after_over_half_width, r.across_scale, r.line_hertz_peak_pa, peak / r.line_hertz_peak_pa, r.end_lift_m, r.largest_slope);
   nlohmann::json j = study::to_json(r);
   j["counter_face"] = setup.steel_counter_face ? "steel" : "rigid";
   j["edge_radius_m"] = setup.edge_radius_m;

@@ -261,9 +261,10 @@ HalfSpaceContact solve_half_space_contact(const HalfSpaceDeflection& deflection,
     {
       const bool border = i == 0 || j == 0 || j + 1 == grid.ny || (i + 1 == grid.nx && !settings.contact_continues_past_last_x);
       if (border && p[i * grid.ny + j] > 0)
-        throw ComputationError(fmt::format("half-space contact: the contact reaches the grid's border at cell ({}, {}) "
-                                           "(x = {:.4g} m, y = {:.4g} m): the grid must hold the whole contact",
-                                           i, j, grid.x(i), grid.y(j)));
+        throw ContactBeyondGrid(fmt::format("half-space contact: the contact reaches the grid's border at cell ({}, "
+                                            "{}) (x = {:.4g} m, y = {:.4g} m): the grid must hold the whole contact",
+                                            i, j, grid.x(i), grid.y(j)),
+                                j == 0 || j + 1 == grid.ny);
     }
   result.pressure_pa = std::move(p);
   return result;

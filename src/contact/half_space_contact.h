@@ -20,6 +20,7 @@
 // Half-space theory needs the surfaces' slopes small across the contact (as
 // Hertz's theory does); the grid must hold the whole contact with unloaded
 // cells at its border (the solver refuses a loaded border cell).
+#include "core/error.h"
 #include <complex>
 #include <cstddef>
 #include <span>
@@ -84,11 +85,20 @@ struct HalfSpaceContact
   double largest_gap_violation_m = 0; ///< max over unloaded cells of (delta - h - u), <= 0 when solved
 };
 
+/// The contact reached a border cell of the grid: `across` when at j = 0
+/// or ny - 1 (a wider grid across holds it), else at an end along x.
+struct ContactBeyondGrid : ComputationError
+{
+  ContactBeyondGrid(const std::string& what, bool reached_across) : ComputationError(what), across(reached_across) {}
+  bool across = false;
+};
+
 /// Solves the contact for total force `force_n` across the initial gap
 /// `gap_m` (per cell, m). `initial_pressure_pa` (optional, per cell) starts
 /// the iteration, e.g. from a nearby solve. Throws InputError on a gap or
 /// force that is not finite or a negative force, ComputationError when the
-/// iteration does not converge or the contact reaches the grid's border.
+/// iteration does not converge, ContactBeyondGrid when the contact reaches
+/// the grid's border.
 HalfSpaceContact solve_half_space_contact(const HalfSpaceDeflection& deflection, std::span<const double> gap_m,
                                           double force_n, const HalfSpaceContactSettings& settings = {},
                                           std::span<const double> initial_pressure_pa = {});

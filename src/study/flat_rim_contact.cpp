@@ -237,8 +237,15 @@ void read_level(FlatRimLevel& level, const std::vector<double>& pressure, const 
   }
 }
 
+/// The ruling beyond the window cannot balance the body with it: the window
+/// covers too much of the loaded ruling.
+struct WindowCannotBalance : ComputationError
+{
+  using ComputationError::ComputationError;
+};
+
 FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double effective_modulus, double half_width,
-                         double cell, double& largest_slope, double& end_lift)
+                         double cell, double across_scale, double& largest_slope, double& end_lift)
 {
   const auto start = std::chrono::steady_clock::now();
   const auto cells_over = [&](double length) { return static_cast<std::size_t>(std::ceil(length / cell)); };
@@ -255,7 +262,7 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
   for (double x = after; x < end.load.length_m; x += cell)
     widest = std::max(widest, 1.6 * contact::line_contact(end.load.at(x), radius_at(x), effective_modulus,
                                                            s.poisson_ratio).half_width_m);
-  const std::size_t half_across = cells_over(widest);
+  const std::size_t half_across = cells_over(across_scale * widest);
   const std::size_t ny = 2 * half_across + 1;
   const std::size_t window_nx = cells_over(before) + after_cells + 1;
   const std::size_t first_cell = cells_over(before); // x' = 0 at this column
@@ -354,7 +361,7 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
       // The step went too far (a long window's load answers strongly to the
       // rule beyond it): back to half of it.
       if (balance == 0 || balance > 40)
-        throw ComputationError(fmt::format("flat rim: the ruling beyond the window cannot balance the body "
+        throw WindowCannotBalance(fmt::format("flat rim: the ruling beyond the window cannot balance the body "
                                            "(window {:.3g} m of the ruling's {:.3g} m)",
                                            after, end.ruling_length_m));
       last_step /= 2;
@@ -367,7 +374,7 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
     if (residual.cwiseAbs().maxCoeff() < 1e-4)
       break;
     if (balance > 40)
-      throw ComputationError("flat rim: the body's balance did not settle");
+      throw WindowCannotBalance("flat rim: the body's balance did not settle");
     if (balance > 0)
       balance_jacobian += (residual - last_residual - balance_jacobian * last_step) * last_step.transpose()
                           / last_step.squaredNorm();
@@ -419,7 +426,42 @@ void check_settings(const FlatRimSettings& s)
   check_angle(s.end_angle_rad, "--end-angle");
 }
 
-/// The levels and the longer window of one end, into `result`.
+/// The levels and the longer window of one end at the settings' window,
+/// into `result`; the window widens across where the contact outgrows it.
+void solve_window(const FlatRimSettings& s, const EndProblem& end, FlatRimContact& result)
+{
+  result.levels.clear();
+  result.largest_slope = 0;
+  const auto level_at = [&](const FlatRimSettings& settings, double cell, double& largest_slope, double& end_lift) {
+    for (;;)
+      try
+      {
+        return solve_level(settings, end, result.effective_modulus_pa, result.half_width_m, cell,
+                           result.across_scale, largest_slope, end_lift);
+      }
+      catch (const contact::ContactBeyondGrid& e)
+      {
+        if (!e.across || result.across_scale > 2)
+          throw;
+        result.across_scale *= 1.5;
+      }
+  };
+  // The window's length: the first level again with the window twice as
+  // long (the half-space's reach along the ruling is long: the end's extra
+  // line load decays over tens of b). First, as the solve most likely to
+  // need a shorter or wider window.
+  FlatRimSettings longer = s;
+  longer.after_over_half_width *= 2;
+  const double first_cell = result.half_width_m / s.cells_per_half_width;
+  double unused_slope = 0, unused_lift = 0;
+  result.longer_window_peak_pa = level_at(longer, first_cell, unused_slope, unused_lift).peak_pressure_pa;
+  for (int k = 0; k < s.levels; ++k)
+    result.levels.push_back(level_at(s, first_cell / std::pow(2.0, k), result.largest_slope, result.end_lift_m));
+}
+
+/// The levels and the longer window of one end, into `result`: at the
+/// settings' window, or shortened where the ruling beyond cannot balance
+/// the body with it.
 void solve_end(const FlatRimSettings& s, const EndProblem& end, FlatRimContact& result)
 {
   const auto start = std::chrono::steady_clock::now();
@@ -428,21 +470,20 @@ void solve_end(const FlatRimSettings& s, const EndProblem& end, FlatRimContact& 
                                                           result.effective_modulus_pa, s.poisson_ratio);
   result.half_width_m = at_end.half_width_m;
   result.line_hertz_peak_pa = at_end.peak_pressure_pa;
-  for (int k = 0; k < s.levels; ++k)
-  {
-    const double cell = result.half_width_m / (s.cells_per_half_width * std::pow(2.0, k));
-    result.levels.push_back(solve_level(s, end, result.effective_modulus_pa, result.half_width_m, cell,
-                                        result.largest_slope, result.end_lift_m));
-  }
-  // The window's length: the first level again with the window twice as
-  // long (the half-space's reach along the ruling is long: the end's extra
-  // line load decays over tens of b).
-  FlatRimSettings longer = s;
-  longer.after_over_half_width *= 2;
-  double unused_slope = 0, unused_lift = 0;
-  result.longer_window_peak_pa = solve_level(longer, end, result.effective_modulus_pa, result.half_width_m,
-                                             result.levels.front().cell_m, unused_slope, unused_lift)
-                                     .peak_pressure_pa;
+  FlatRimSettings window = s;
+  for (int shortened = 0;; ++shortened)
+    try
+    {
+      solve_window(window, end, result);
+      break;
+    }
+    catch (const WindowCannotBalance&)
+    {
+      if (shortened == 3)
+        throw;
+      window.after_over_half_width *= 0.75;
+    }
+  result.after_over_half_width = window.after_over_half_width;
   result.window_change = result.longer_window_peak_pa / result.levels.front().peak_pressure_pa - 1;
   if (result.levels.size() >= 2)
     result.last_change =
@@ -572,6 +613,8 @@ nlohmann::json to_json(const FlatRimContact& r)
           {"last_change", r.last_change},
           {"longer_window_peak_pa", r.longer_window_peak_pa},
           {"window_change", r.window_change},
+          {"after_over_half_width", r.after_over_half_width},
+          {"across_scale", r.across_scale},
           {"converged", r.converged},
           {"wall_s", r.wall_s},
           {"levels", levels}};

@@ -41,6 +41,13 @@
 //    balances (F through the centre of mass's foot; Broyden on the rule's q
 //    at the end and its slope): the load the finished end does not take
 //    moves along the ruling. No rotation about the ruling.
+//    Where the window (or its doubled check) covers so much of the loaded
+//    ruling that the rule beyond cannot balance the body with it (a short
+//    ruling, or a load close to the end), the window shortens by a quarter
+//    at a time, at most three times (to 42 % of `after`); where the contact
+//    outgrows the window across (the balanced load beyond it rising above
+//    the locus's), the window widens by half at a time, at most twice. Both
+//    are reported; neither changes an end that solved at the settings.
 // Levels halve the cells; the peak is converged when it changes by less
 // than `tolerance` at the last level and when the first level's window is
 // doubled along the ruling (the half-space's reach along a line contact is
@@ -127,6 +134,8 @@ struct FlatRimContact
   double window_change = 0;             ///< that against the first level's
   bool converged = false;               ///< both changes below the tolerance
   double wall_s = 0;                    ///< every level and the longer window
+  double after_over_half_width = 0;     ///< the window's `after` used (the settings', or shortened)
+  double across_scale = 1;              ///< the window's width across over the settings' (widened: > 1)
 };
 
 /// The settings' scene: the straight rim (interior_angle_rad > 0) or the

@@ -182,7 +182,7 @@ FlatRimTable flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, const FemSd
   // failed solve: a node whose solve failed or whose contact meets slopes
   // too steep for half-space theory (an end beside a crease of the hull)
   // is refused alike on every rank.
-  constexpr std::size_t per_end = 10;
+  constexpr std::size_t per_end = 12;
   constexpr double largest_slope = 0.1;
   std::vector<double> values;
   int job = 0;
@@ -196,7 +196,7 @@ FlatRimTable flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, const FemSd
           const FlatRimContact r = flat_rim_contact(setup, end);
           v = {r.centre_of_pressure, r.end_line_load_n_per_m, r.end_radius_m, r.levels.back().peak_pressure_pa,
                r.line_hertz_peak_pa, r.last_change, r.window_change, r.converged ? 1.0 : 0.0, r.wall_s,
-               r.largest_slope};
+               r.after_over_half_width, r.across_scale, r.largest_slope};
         }
         catch (const ComputationError& e)
         {
@@ -221,7 +221,7 @@ FlatRimTable flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, const FemSd
     {
       failed = failed || v[per_end - 1] < 0;
       slope = std::max(slope, v[per_end - 1]);
-      node.sides.push_back({v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7] > 0.5, v[8]});
+      node.sides.push_back({v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7] > 0.5, v[8], v[9], v[10]});
     }
     refused.push_back(failed || slope > largest_slope);
     if (refused.back())
@@ -703,7 +703,9 @@ nlohmann::json to_json(const RimLoopResult& r)
                        {"last_change", side.last_change},
                        {"window_change", side.window_change},
                        {"converged", side.converged},
-                       {"wall_s", side.wall_s}});
+                       {"wall_s", side.wall_s},
+                       {"after_over_half_width", side.after_over_half_width},
+                       {"across_scale", side.across_scale}});
     flat_table.push_back({{"interior_angle_deg", n.interior_angle_rad / degree},
                           {"peak_pressure_pa", n.peak_pa()},
                           {"ratio", n.ratio()},

@@ -115,6 +115,8 @@ struct FlatRimSide
   double last_change = 0, window_change = 0;
   bool converged = false;
   double wall_s = 0;
+  double after_over_half_width = 0;  ///< the window along the ruling (shortened where the body could not balance)
+  double across_scale = 1;           ///< the window's width across over the set one (widened: > 1)
 };
 
 /// One node of the flat-rim table: the loop's orientations whose loaded end
