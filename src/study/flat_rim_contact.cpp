@@ -362,8 +362,8 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
       // rule beyond it): back to half of it.
       if (balance == 0 || balance > 40)
         throw WindowCannotBalance(fmt::format("flat rim: the ruling beyond the window cannot balance the body "
-                                           "(window {:.3g} m of the ruling's {:.3g} m)",
-                                           after, end.ruling_length_m));
+                                              "(window {:.3g} m of the ruling's {:.3g} m)",
+                                              after, end.ruling_length_m));
       last_step /= 2;
       rule -= last_step;
       load = LineLoad::no_tension(rule[0] * q_scale, rule[1] * slope_scale, end.ruling_length_m);

@@ -142,7 +142,9 @@ struct FlatRimContact
 /// oloid's loop end at end_angle_rad. Throws InputError for a non-positive
 /// radius, load, edge radius or modulus or an angle outside [150, 180] deg,
 /// ComputationError when a solve fails (the contact reaching the window's
-/// border across or beyond P names the setting to widen).
+/// border beyond P, or across once the window has widened twice, names the
+/// setting to widen; a window shortened three times that still cannot
+/// balance the body says so).
 FlatRimContact flat_rim_contact(const FlatRimSettings& settings);
 /// A loaded end of any two-circle body's loop (study/flattest_loop_ends.h),
 /// its q from F (the settings' normal_load_n) and c by the locus's rule; the
