@@ -206,6 +206,17 @@ TEST(FlatRimContact, ABodyThatCannotBalanceWithTheWindowShortensIt)
   EXPECT_EQ(r.across_scale, 1.0);
 }
 
+// At 174 deg a step of the body's balance put a rule beyond the window
+// that ends just past it, its q at the end extrapolated to 200 times the
+// locus's and 150 times F on the window: the contact then spread to the
+// window's corner. Such a step is halved back, and where halving does not
+// help the window shortens.
+TEST(FlatRimContact, ABalanceStepThatLoadsTheWindowBeyondFShortensIt)
+{
+  const study::FlatRimContact r = u_optimum_on_steel(174);
+  EXPECT_LT(r.after_over_half_width, study::FlatRimSettings{}.after_over_half_width);
+}
+
 TEST(FlatRimContact, RefusesBadInput)
 {
   study::FlatRimSettings s = straight_rim(120);

@@ -382,6 +382,20 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
     last_residual = residual;
     rule += last_step;
     load = LineLoad::no_tension(rule[0] * q_scale, rule[1] * slope_scale, end.ruling_length_m);
+    // A rule that ends inside the window, or puts more than F on it, leaves
+    // nothing beyond to balance with (a window over most of the loaded
+    // ruling: its rule's q at the end extrapolates a short load beyond it):
+    // back to half the step.
+    for (int halving = 0; !(load.length_m > after && load.load_to(after) < force); ++halving)
+    {
+      if (halving == 10)
+        throw WindowCannotBalance(fmt::format("flat rim: the rule beyond the window ends inside it or loads it "
+                                              "beyond F (window {:.3g} m of the ruling's {:.3g} m)",
+                                              after, end.ruling_length_m));
+      last_step /= 2;
+      rule -= last_step;
+      load = LineLoad::no_tension(rule[0] * q_scale, rule[1] * slope_scale, end.ruling_length_m);
+    }
   }
   level.balanced_end_line_load_n_per_m = load.at_end_n_per_m;
   level.balanced_slope_n_per_m2 = load.slope_n_per_m2;
