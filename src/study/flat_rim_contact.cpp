@@ -344,6 +344,19 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
   Eigen::Vector2d rule(1.0, end.load.slope_n_per_m2 / slope_scale), last_residual = Eigen::Vector2d::Zero(),
                                                                        last_step = Eigen::Vector2d::Zero();
   Eigen::Matrix2d balance_jacobian = -2 * Eigen::Matrix2d::Identity();
+  const auto rule_load = [&] {
+    return LineLoad::no_tension(rule[0] * q_scale, rule[1] * slope_scale, end.ruling_length_m);
+  };
+  // Back to half the last step.
+  const auto halve_step = [&] {
+    last_step /= 2;
+    rule -= last_step;
+    load = rule_load();
+  };
+  const auto cannot_balance = [&](const char* why) {
+    return WindowCannotBalance(fmt::format("flat rim: {} (window {:.3g} m of the ruling's {:.3g} m)", why, after,
+                                           end.ruling_length_m));
+  };
   for (int balance = 0;; ++balance)
   {
     match_window(load, beyond.deflection(load));
@@ -361,12 +374,8 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
       // The step went too far (a long window's load answers strongly to the
       // rule beyond it): back to half of it.
       if (balance == 0 || balance > 40)
-        throw WindowCannotBalance(fmt::format("flat rim: the ruling beyond the window cannot balance the body "
-                                              "(window {:.3g} m of the ruling's {:.3g} m)",
-                                              after, end.ruling_length_m));
-      last_step /= 2;
-      rule -= last_step;
-      load = LineLoad::no_tension(rule[0] * q_scale, rule[1] * slope_scale, end.ruling_length_m);
+        throw cannot_balance("the ruling beyond the window cannot balance the body");
+      halve_step();
       continue;
     }
     const Eigen::Vector2d residual
@@ -374,14 +383,14 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
     if (residual.cwiseAbs().maxCoeff() < 1e-4)
       break;
     if (balance > 40)
-      throw WindowCannotBalance("flat rim: the body's balance did not settle");
+      throw cannot_balance("the body's balance did not settle");
     if (balance > 0)
       balance_jacobian += (residual - last_residual - balance_jacobian * last_step) * last_step.transpose()
                           / last_step.squaredNorm();
     last_step = -balance_jacobian.colPivHouseholderQr().solve(residual);
     last_residual = residual;
     rule += last_step;
-    load = LineLoad::no_tension(rule[0] * q_scale, rule[1] * slope_scale, end.ruling_length_m);
+    load = rule_load();
     // A rule that ends inside the window, or puts more than F on it, leaves
     // nothing beyond to balance with (a window over most of the loaded
     // ruling: its rule's q at the end extrapolates a short load beyond it):
@@ -389,12 +398,8 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
     for (int halving = 0; !(load.length_m > after && load.load_to(after) < force); ++halving)
     {
       if (halving == 10)
-        throw WindowCannotBalance(fmt::format("flat rim: the rule beyond the window ends inside it or loads it "
-                                              "beyond F (window {:.3g} m of the ruling's {:.3g} m)",
-                                              after, end.ruling_length_m));
-      last_step /= 2;
-      rule -= last_step;
-      load = LineLoad::no_tension(rule[0] * q_scale, rule[1] * slope_scale, end.ruling_length_m);
+        throw cannot_balance("the rule beyond the window ends inside it or loads it beyond F");
+      halve_step();
     }
   }
   level.balanced_end_line_load_n_per_m = load.at_end_n_per_m;
