@@ -46,8 +46,11 @@
 //    ruling, or a load close to the end), the window shortens by a quarter
 //    at a time, at most three times (to 42 % of `after`); where the contact
 //    outgrows the window across (the balanced load beyond it rising above
-//    the locus's), the window widens by half at a time, at most twice. Both
-//    are reported; neither changes an end that solved at the settings.
+//    the locus's), the window widens by half at a time, at most twice. A
+//    balance step whose rule beyond the window ends inside it or puts more
+//    than F on it is halved back (at most ten times; then the window
+//    shortens). The window used is reported; none of this changes an end
+//    that solved at the settings.
 // Levels halve the cells; the peak is converged when it changes by less
 // than `tolerance` at the last level and when the first level's window is
 // doubled along the ruling (the half-space's reach along a line contact is
