@@ -6,8 +6,6 @@
 #include "contact/hertz.h"
 #include "core/error.h"
 #include "geometry/body.h"
-#include "oracle/rolling_dynamics.h"
-#include "oracle/rolling_study.h"
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
@@ -83,7 +81,7 @@ TEST(FlatRimContact, OloidVertexBalancesTheBodyAndConverges)
   const study::FlatRimContact r = study::flat_rim_contact(s);
   ASSERT_EQ(r.levels.size(), 2u);
   EXPECT_NEAR(r.centre_of_pressure, 0.25, 1e-12);
-  const double length = std::sqrt(3.0) * s.radius_m;
+  const double length = std::sqrt(3.0) * s.body.radius_m;
   EXPECT_NEAR(r.ruling_length_m / length, 1.0, 1e-12);
   EXPECT_NEAR(r.end_line_load_n_per_m / (8 * s.normal_load_n / (3 * length)), 1.0, 1e-12);
   EXPECT_TRUE(r.converged) << r.last_change << " " << r.window_change;
@@ -112,7 +110,7 @@ TEST(FlatRimContact, OloidLoopEndBalancesTheBody)
   {
     study::FlatRimSettings s;
     s.levels = 1;
-    const study::LoopEnd end = study::oloid_loop_end(s.radius_m, angle_deg * std::numbers::pi / 180);
+    const study::LoopEnd end = study::body_loop_end(s.body, angle_deg * std::numbers::pi / 180);
     const study::FlatRimContact r = study::flat_rim_contact(s, end);
     EXPECT_NEAR(r.interior_angle_rad * 180 / std::numbers::pi, angle_deg, 1e-6);
     EXPECT_NEAR(r.centre_of_pressure, end.centre_of_pressure_from_end(), 1e-12);
@@ -135,7 +133,7 @@ TEST(FlatRimContact, EndSurfaceIsTheHullNearTheLoopsEnd)
 {
   for (const double angle_deg : {165.0, 175.0})
   {
-    const study::LoopEnd end = study::oloid_loop_end(0.01, angle_deg * std::numbers::pi / 180);
+    const study::LoopEnd end = study::body_loop_end(study::FlatRimSettings{}.body, angle_deg * std::numbers::pi / 180);
     // The section along the ruling leaves the end at the lean's slope and
     // curves (it cuts the rim's ridge obliquely): the slope at the end by
     // Richardson extrapolation from 5 and 10 um beyond it.
@@ -166,16 +164,14 @@ study::FlatRimContact u_optimum_on_steel(double interior_angle_deg)
   u_optimum.family = geometry::RollerFamily::centre_line;
   u_optimum.genome = {74.1, 0.757, 1.071, 2};
   u_optimum.radius_m = 0.01;
-  const Eigen::Vector3d centre_of_mass =
-      oracle::mass_model_of_mesh(geometry::make_body(u_optimum), 1.0).centre_of_mass_m;
-  const double angles[1] = {interior_angle_deg * std::numbers::pi / 180};
-  const study::LoopEnd end =
-      study::flattest_loop_ends(oracle::line_contact_circles(u_optimum), centre_of_mass, angles).at_angle[0][1];
   study::FlatRimSettings s;
+  s.body = u_optimum;
+  s.end_angle_rad = interior_angle_deg * std::numbers::pi / 180;
+  s.loop_side = 1;
   s.steel_counter_face = true;
   s.cells_per_half_width = 2;
   s.levels = 1;
-  const study::FlatRimContact r = study::flat_rim_contact(s, end);
+  const study::FlatRimContact r = study::flat_rim_contact(s);
   const study::FlatRimLevel& l = r.levels.back();
   expect_balance(r, l, s.normal_load_n);
   EXPECT_NEAR(l.far_peak_pa / l.far_line_hertz_pa, 1.0, 0.01);

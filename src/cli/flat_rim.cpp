@@ -22,16 +22,20 @@ const io::BoundSchema<study::FlatRimSettings>& flat_rim_schema()
   using S = study::FlatRimSettings;
   static const io::BoundSchema<S> schema = [] {
     io::BoundSchema<S> s("flat-rim");
-    s.real("radius_m", "--radius", &S::radius_m, "m", "r1 of the oloid (the rim scenes' 10 mm body)", io::positive)
-        .real("normal_load_n", "--load", &S::normal_load_n, "N",
+    s.include(body_schema(), [](S& settings) -> geometry::BodySpec& { return settings.body; });
+    s.real("normal_load_n", "--load", &S::normal_load_n, "N",
               "Force F pressing the body onto the counter-face through its centre of mass (rim --body's)",
               io::positive)
         .real("end_angle_deg", "--end-angle", &S::end_angle_rad, "deg",
-              "The oloid's loop orientation whose loaded end has this interior angle (150-180 deg; 180: the vertex, "
-              "c = 1/4; below it the loop's forward side, the other side being its mirror image)",
+              "The body's loop orientation whose loaded end has this interior angle (150-180 deg; 180: the loop's "
+              "flattest end, the oloid's vertex, c = 1/4; below it on the loop's side --side from there)",
               io::Bounds{150, 180}, std::numbers::pi / 180)
+        .choice("loop_side", "--side", &S::loop_side,
+                "With --end-angle below the flattest: the orientation walking the loop forwards or backwards from "
+                "its flattest end (the oloid's two are mirror images; rim --body's flat-rim table solves both)",
+                {{"forward", 0}, {"backward", 1}})
         .real("interior_angle_deg", "--interior-angle", &S::interior_angle_rad, "deg",
-              "0: the oloid's vertex. Else a straight rim of this interior angle (150-180 deg: the rim's other face "
+              "0: the body's loop end (--end-angle). Else a straight rim of this interior angle (150-180 deg: the rim's other face "
               "leans by 180 deg - a) across a sheet of radius R, flattened with its profile in the gap: `rim`'s one end",
               io::Bounds{0, 180, false, false}, std::numbers::pi / 180)
         .real("sheet_radius_m", "--sheet-radius", &S::sheet_radius_m, "m",
@@ -80,10 +84,12 @@ nlohmann::json run_flat_rim(const io::Parameters& p)
       setup.interior_angle_rad > 0
           ? fmt::format("straight rim of {:.4g} deg across a sheet of R = {} m, q = {} N/m", setup.interior_angle_rad * 180 / std::numbers::pi,
                         setup.sheet_radius_m, setup.load_n_per_m)
-          : fmt::format("oloid r1 = {} m at its loop's end of {:.4f} deg ({}c = {:.4f} from the end, hull's R there "
+          : fmt::format("{} r1 = {} m at its loop's end of {:.4f} deg ({}c = {:.4f} from the end, hull's R there "
                         "{:.4g} m), F = {} N, q = {:.6g} N/m at the end",
-                        setup.radius_m, r.interior_angle_rad * 180 / std::numbers::pi,
-                        setup.end_angle_rad < std::numbers::pi ? "" : "the vertex, ", r.centre_of_pressure,
+                        setup.body.body, setup.body.radius_m, r.interior_angle_rad * 180 / std::numbers::pi,
+                        setup.end_angle_rad < std::numbers::pi ? (setup.loop_side == 0 ? "forwards, " : "backwards, ")
+                                                               : "the flattest, ",
+                        r.centre_of_pressure,
                         r.end_radius_m, setup.normal_load_n, r.end_line_load_n_per_m);
   spdlog::info("\n{}, counter-face {}, edge radius {} m: b = {:.4g} m (R = {:.4g} m), E* = {:.4g} Pa\n\n{}\npeak {:.5g} Pa "
                "({}: {:+.2f} % at the last level, {:+.2f} % with the first level's window twice as long; the window "
@@ -97,7 +103,8 @@ nlohmann::json run_flat_rim(const io::Parameters& p)
   j["counter_face"] = setup.steel_counter_face ? "steel" : "rigid";
   j["edge_radius_m"] = setup.edge_radius_m;
   j["normal_load_n"] = setup.normal_load_n;
-  j["radius_m"] = setup.radius_m;
+  j["body"] = setup.body.body;
+  j["radius_m"] = setup.body.radius_m;
   j["interior_angle_deg"] = setup.interior_angle_rad * 180 / std::numbers::pi;
   j["peak_over_line_hertz"] = peak / r.line_hertz_peak_pa;
   return j;

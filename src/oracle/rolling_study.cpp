@@ -111,15 +111,20 @@ RealRolling sphere_rolling(const geometry::BodySpec& spec, const RollingStudyPar
 }
 } // namespace
 
+geometry::SurfaceMesh mass_mesh(const geometry::BodySpec& spec, int mass_points)
+{
+  geometry::BodySpec fine = spec;
+  fine.points = fine.sections = mass_points;
+  return geometry::make_body(fine);
+}
+
 RealRolling real_rolling(const geometry::BodySpec& spec, const RollingStudyParameters& p)
 {
   validate(p);
   if (spec.body == "sphere")
     return sphere_rolling(spec, p);
   const TwoCircleBody body = two_circle_body(line_contact_circles(spec));
-  geometry::BodySpec fine_spec = spec;
-  fine_spec.points = fine_spec.sections = p.mass_points;
-  const geometry::SurfaceMesh fine = geometry::make_body(fine_spec);
+  const geometry::SurfaceMesh fine = mass_mesh(spec, p.mass_points);
   const MassModel mass = mass_model_of_mesh(fine, p.mass_kg);
   RealRolling run;
   run.surface_area_m2 = geometry::mass_properties(fine).area_m2;

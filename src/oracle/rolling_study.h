@@ -67,6 +67,9 @@ std::vector<Circle> line_contact_circles(const geometry::BodySpec& spec);
 /// Runs the dynamics. InputError for bodies the rolling model does not cover
 /// (uv-sphere, hemisphere, rollers of three or more circles) and for bad parameters.
 RealRolling real_rolling(const geometry::BodySpec& spec, const RollingStudyParameters& parameters);
+/// The body's mesh for its mass and area, as real_rolling builds it:
+/// `mass_points` samples per circle (or cylinder sides).
+geometry::SurfaceMesh mass_mesh(const geometry::BodySpec& spec, int mass_points);
 
 struct RollingStudyResult
 {

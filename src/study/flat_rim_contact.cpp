@@ -4,8 +4,9 @@
 #include "core/error.h"
 #include "geometry/rolling_ball_opening.h"
 #include "geometry/two_circle_hull_height.h"
-#include "geometry/two_circle_roller.h"
 #include "oracle/contact_density.h"
+#include "oracle/rolling_dynamics.h"
+#include "oracle/rolling_study.h"
 #include "oracle/support_set.h"
 #include <Eigen/Dense>
 #include <algorithm>
@@ -422,7 +423,7 @@ namespace
 {
 void check_settings(const FlatRimSettings& s)
 {
-  for (const auto& [value, name] : {std::pair{s.radius_m, "--radius"}, {s.normal_load_n, "--load"},
+  for (const auto& [value, name] : {std::pair{s.body.radius_m, "--radius"}, {s.normal_load_n, "--load"},
                                     {s.edge_radius_m, "--edge-radius"}, {s.youngs_modulus_pa, "--youngs-modulus"},
                                     {s.sheet_radius_m, "--sheet-radius"}, {s.load_n_per_m, "--load-per-length"},
                                     {s.cells_per_half_width, "--cells"}, {s.before_over_half_width, "--before"},
@@ -518,23 +519,30 @@ double end_hull_height(const LoopEnd& end, double along_m, double across_m)
   return RulingEndSurface(end).height(along_m, across_m);
 }
 
-LoopEnd oloid_loop_end(double radius_m, double interior_angle_rad)
+LoopEnd body_loop_end(const geometry::BodySpec& body, double interior_angle_rad, int loop_side)
 {
-  const std::vector<oracle::Circle> circles
-      = oracle::roller_circles({90, 1, 1, 2}, geometry::RollerFamily::centre_line, radius_m);
-  // Midway between the circles' centres: the oloid's symmetry.
-  const Eigen::Vector3d centre_of_mass = 0.5 * (circles[0].centre_m + circles[1].centre_m);
+  if (loop_side != 0 && loop_side != 1)
+    throw InputError(fmt::format("flat-rim: the loop's side must be 0 (forwards) or 1 (backwards), got {}", loop_side));
+  if (!body.mesh_file.empty() || (body.body != "oloid" && body.body != "paper-oloid" && body.body != "roller"))
+    throw InputError(fmt::format("flat-rim: body '{}' is not the hull of two circles (oloid, paper-oloid, roller)",
+                                 body.mesh_file.empty() ? body.body : body.mesh_file));
+  const std::vector<oracle::Circle> circles = oracle::line_contact_circles(body);
+  const Eigen::Vector3d centre_of_mass
+      = body.body == "oloid"
+            ? Eigen::Vector3d(0.5 * (circles[0].centre_m + circles[1].centre_m))
+            : oracle::mass_model_of_mesh(oracle::mass_mesh(body, oracle::RollingStudyParameters{}.mass_points), 1.0)
+                  .centre_of_mass_m;
   if (interior_angle_rad >= std::numbers::pi)
     return flattest_loop_ends(circles, centre_of_mass, {}).flattest;
   const double angles[1] = {interior_angle_rad};
-  return flattest_loop_ends(circles, centre_of_mass, angles).at_angle[0][0];
+  return flattest_loop_ends(circles, centre_of_mass, angles).at_angle[0][loop_side];
 }
 
 FlatRimContact flat_rim_contact(const FlatRimSettings& s)
 {
   check_settings(s);
   if (s.interior_angle_rad == 0)
-    return flat_rim_contact(s, oloid_loop_end(s.radius_m, s.end_angle_rad));
+    return flat_rim_contact(s, body_loop_end(s.body, s.end_angle_rad, s.loop_side));
   FlatRimContact result;
   result.effective_modulus_pa = contact::effective_modulus(s.youngs_modulus_pa, s.poisson_ratio, s.steel_counter_face);
   result.interior_angle_rad = s.interior_angle_rad;

@@ -4,7 +4,8 @@
 // FEM end model is weakest (a fillet arc shorter than its boundary layer,
 // the end table's last node standing for 178.5-180 deg).
 //
-// The oloid at a vertex orientation (the default): at c = 1/4 (and 3/4) it
+// The oloid at a vertex orientation (the default; any two-circle body's loop
+// end of a given angle with `body`): at c = 1/4 (and 3/4) it
 // stands on the ruling from P, rim circle A's point at -60 deg, to B's far
 // point; the ruling is A's tangent at P (the rim's interior angle is
 // 180 deg), the sheet's radius across the ruling falls to 0 at P
@@ -14,8 +15,8 @@
 // rolled inside it; the FEM end table takes such an end as line Hertz at
 // R = r_e times a straight rim's factor, an estimate from above. Here it is
 // solved as it is; so is any loaded end of a two-circle body's loop (a
-// LoopEnd, study/flattest_loop_ends.h: the oloid's by `end_angle_rad`,
-// rim --body's flat-rim table by the loop's own angles). Or
+// LoopEnd, study/flattest_loop_ends.h: the settings' body's by
+// `end_angle_rad`, rim --body's flat-rim table by the loop's own angles). Or
 // (`interior_angle_rad` > 0) a straight rim across a flattened sheet of
 // radius R under a uniform line load q, `rim`'s one end, to check this
 // reduction against the FEM end model.
@@ -58,6 +59,7 @@
 // contact held to a uniform load the end's peak keeps growing with the
 // held length, as line contacts in half-space theory have no plane-strain
 // limit).
+#include "geometry/body.h"
 #include "study/flattest_loop_ends.h"
 #include <nlohmann/json_fwd.hpp>
 #include <numbers>
@@ -68,16 +70,26 @@ namespace rollcheck::study
 /// Below this interior angle the rim's other face is too steep for half-space theory.
 constexpr double smallest_flat_rim_angle_rad = 150 * std::numbers::pi / 180;
 
+/// The true oloid of r1 = 10 mm, the body of the rim scenes' rounded loops.
+inline geometry::BodySpec rim_scene_oloid()
+{
+  geometry::BodySpec oloid;
+  oloid.radius_m = 0.01;
+  return oloid;
+}
+
 struct FlatRimSettings
 {
-  double radius_m = 0.01;         ///< r1 of the oloid (the rim scenes' 10 mm body)
+  /// A two-circle body (by default the rim scenes' oloid, r1 = 10 mm).
+  geometry::BodySpec body = rim_scene_oloid();
   double normal_load_n = 800;     ///< F through the centre of mass (rim --body's)
-  /// The oloid's loop orientation whose loaded end has this interior angle
-  /// (rad): pi is the vertex (c = 1/4), below it the orientation on the loop's
-  /// forward side (the other is its mirror image).
+  /// The body's loop orientation whose loaded end has this interior angle
+  /// (rad): pi is the loop's flattest end (the oloid's vertex, c = 1/4),
+  /// below it the orientation on the loop's side `loop_side` from there.
   double end_angle_rad = std::numbers::pi;
+  int loop_side = 0;              ///< 0: walking the loop forwards, 1: backwards (the oloid's mirror image)
   /// > 0: a straight rim of this interior angle (rad) across a flattened sheet
-  /// instead of the oloid's vertex, with:
+  /// instead of the body's loop end, with:
   double interior_angle_rad = 0;
   double sheet_radius_m = 1e-3;   ///< R of that sheet
   double load_n_per_m = 1.2e5;    ///< its uniform line load q
@@ -142,8 +154,9 @@ struct FlatRimContact
 };
 
 /// The settings' scene: the straight rim (interior_angle_rad > 0) or the
-/// oloid's loop end at end_angle_rad. Throws InputError for a non-positive
-/// radius, load, edge radius or modulus or an angle outside [150, 180] deg,
+/// body's loop end at end_angle_rad. Throws InputError for a non-positive
+/// radius, load, edge radius or modulus, an angle outside [150, 180] deg or
+/// a body that is not the hull of two circles,
 /// ComputationError when a solve fails (the contact reaching the window's
 /// border beyond P, or across once the window has widened twice, names the
 /// setting to widen; a window shortened three times that still cannot
@@ -157,8 +170,13 @@ FlatRimContact flat_rim_contact(const FlatRimSettings& settings, const LoopEnd& 
 /// height (m) above the ground at x' along the ruling from the end (negative:
 /// beyond it) and y across (geometry/two_circle_hull_height.h).
 double end_hull_height(const LoopEnd& end, double along_m, double across_m);
-/// The oloid (r1) at its loop's end of this interior angle (pi: the vertex).
-LoopEnd oloid_loop_end(double radius_m, double interior_angle_rad);
+/// A two-circle body at its loop's end of this interior angle (pi: the
+/// loop's flattest, the oloid's vertex), on the loop's side `loop_side` (0
+/// forwards, 1 backwards) from the flattest. The centre of mass is the
+/// rolling loop's (oracle::mass_mesh), except the oloid's: midway between
+/// its circles' centres by symmetry, exactly, so that its vertex has
+/// c = 1/4 exactly.
+LoopEnd body_loop_end(const geometry::BodySpec& body, double interior_angle_rad, int loop_side = 0);
 
 nlohmann::json to_json(const FlatRimContact& result);
 } // namespace rollcheck::study

@@ -6,8 +6,8 @@
 # of 100 b and of 200 b (half-space theory's slopes, here tan 10 deg, and the
 # two models' far fields, the FEM's block 160 b deep and the window, differ:
 # 1.974 and 2.010 against 1.9655 measured); bad input exits 2 naming the
-# option (an end of the oloid's loop too steep for half-space theory as
-# well), before any output.
+# option (an end of the oloid's loop too steep for half-space theory, a
+# body that is no hull of two circles as well), before any output.
 set -u
 source "$(dirname "$0")/lib.sh"
 bin=$1; here=$2; tmp=$3
@@ -29,5 +29,7 @@ expect 2 "interior-angle" -- "$bin" flat-rim --interior-angle 120 --json "$tmp/s
 expect 2 "edge-radius" -- "$bin" flat-rim --edge-radius -1 --json "$tmp/negative.json"
 expect 2 "end-angle" -- "$bin" flat-rim --end-angle 140 --json "$tmp/steep_end.json"
 expect 2 "no-such-folder" -- "$bin" flat-rim --json "$tmp/no-such-folder/out.json"
-check '[[ ! -e $tmp/steep.json && ! -e $tmp/negative.json && ! -e $tmp/steep_end.json ]]' "a refused run left no output"
+expect 2 "body 'sphere' is not the hull of two circles" -- "$bin" flat-rim --body sphere --json "$tmp/sphere.json"
+check '[[ ! -e $tmp/steep.json && ! -e $tmp/negative.json && ! -e $tmp/steep_end.json && ! -e $tmp/sphere.json ]]' \
+  "a refused run left no output"
 exit $fail
