@@ -151,21 +151,23 @@ TEST(FlatRimContact, EndSurfaceIsTheHullNearTheLoopsEnd)
   }
 }
 
-// The family's U optimum (centre-line family, theta 74.1 deg, d = 0.757,
-// rho = 1.071; r1 = 10 mm) on the steel block at its loop's end of this
-// angle, the side walked backwards, with cells of b / 2 and one level
-// (each failure below is the same as at the loop's b / 4 and b / 8).
+// A centre-line roller of r1 = 10 mm (the family's U optimum, theta 74.1
+// deg, d = 0.757, rho = 1.071, unless given) on the steel block at its
+// loop's end of this angle, the side walked backwards, with cells of b / 2
+// and one level (each failure below is the same as at the loop's b / 4 and
+// b / 8).
 namespace
 {
-study::FlatRimContact u_optimum_on_steel(double interior_angle_deg)
+study::FlatRimContact u_optimum_on_steel(double interior_angle_deg,
+                                         geometry::RollerGenome genome = {74.1, 0.757, 1.071, 2})
 {
-  geometry::BodySpec u_optimum;
-  u_optimum.body = "roller";
-  u_optimum.family = geometry::RollerFamily::centre_line;
-  u_optimum.genome = {74.1, 0.757, 1.071, 2};
-  u_optimum.radius_m = 0.01;
+  geometry::BodySpec roller;
+  roller.body = "roller";
+  roller.family = geometry::RollerFamily::centre_line;
+  roller.genome = genome;
+  roller.radius_m = 0.01;
   study::FlatRimSettings s;
-  s.body = u_optimum;
+  s.body = roller;
   s.end_angle_rad = interior_angle_deg * std::numbers::pi / 180;
   s.loop_side = 1;
   s.steel_counter_face = true;
@@ -211,6 +213,17 @@ TEST(FlatRimContact, ABalanceStepThatLoadsTheWindowBeyondFShortensIt)
 {
   const study::FlatRimContact r = u_optimum_on_steel(174);
   EXPECT_LT(r.after_over_half_width, study::FlatRimSettings{}.after_over_half_width);
+}
+
+// The FEM-SDS optimum (112.7, 1.000, 0.999) at its 160 deg end walked
+// backwards: the hull beyond that end lies on segments from its rim circle
+// more than 0.15 rad from the end, where the surface's search once stopped
+// ("the hull's surface was not found over the window"), refusing rim
+// --body's whole flat-rim table on steel.
+TEST(FlatRimContact, TheHullIsFoundBeyondTheFemSdsOptimumsEnd)
+{
+  const study::FlatRimContact r = u_optimum_on_steel(160, {112.7, 1.000, 0.999, 2});
+  EXPECT_NEAR(r.interior_angle_rad * 180 / std::numbers::pi, 160.0, 1e-6);
 }
 
 TEST(FlatRimContact, RefusesBadInput)

@@ -32,8 +32,10 @@ struct RulingEndSurface
   geometry::SpaceCircle b;
   geometry::GroundFrame ground;
   // The surface within a few r_e of the end lies on segments from A within
-  // 0.15 rad of it (1.5 mm at r1 = 10 mm).
-  geometry::SegmentSearch search{-0.15, 0.15, 48};
+  // 0.3 rad of it (3 mm at r1 = 10 mm): 0.15 rad missed the hull beyond the
+  // FEM-SDS optimum's 160 deg end (test TheHullIsFoundBeyondTheFemSdsOptimumsEnd);
+  // the samples keep their spacing.
+  geometry::SegmentSearch search{-0.3, 0.3, 96};
 
   explicit RulingEndSurface(const LoopEnd& e)
       : a(space_circle(e.circles[static_cast<std::size_t>(e.end)], e.point_m())),
