@@ -158,8 +158,8 @@ TEST(FlatRimContact, EndSurfaceIsTheHullNearTheLoopsEnd)
 // b / 8).
 namespace
 {
-study::FlatRimContact u_optimum_on_steel(double interior_angle_deg,
-                                         geometry::RollerGenome genome = {74.1, 0.757, 1.071, 2})
+study::FlatRimContact centre_line_roller_on_steel(double interior_angle_deg,
+                                                  geometry::RollerGenome genome = {74.1, 0.757, 1.071, 2})
 {
   geometry::BodySpec roller;
   roller.body = "roller";
@@ -189,7 +189,7 @@ study::FlatRimContact u_optimum_on_steel(double interior_angle_deg,
 // the window widened.
 TEST(FlatRimContact, ContactWiderThanTheLocusSaysWidensTheWindow)
 {
-  const study::FlatRimContact r = u_optimum_on_steel(176);
+  const study::FlatRimContact r = centre_line_roller_on_steel(176);
   EXPECT_GT(r.across_scale, 1.0);
   EXPECT_EQ(r.after_over_half_width, study::FlatRimSettings{}.after_over_half_width);
 }
@@ -199,7 +199,7 @@ TEST(FlatRimContact, ContactWiderThanTheLocusSaysWidensTheWindow)
 // until the window shortens.
 TEST(FlatRimContact, ABodyThatCannotBalanceWithTheWindowShortensIt)
 {
-  const study::FlatRimContact r = u_optimum_on_steel(164);
+  const study::FlatRimContact r = centre_line_roller_on_steel(164);
   EXPECT_LT(r.after_over_half_width, study::FlatRimSettings{}.after_over_half_width);
   EXPECT_EQ(r.across_scale, 1.0);
 }
@@ -211,7 +211,7 @@ TEST(FlatRimContact, ABodyThatCannotBalanceWithTheWindowShortensIt)
 // help the window shortens.
 TEST(FlatRimContact, ABalanceStepThatLoadsTheWindowBeyondFShortensIt)
 {
-  const study::FlatRimContact r = u_optimum_on_steel(174);
+  const study::FlatRimContact r = centre_line_roller_on_steel(174);
   EXPECT_LT(r.after_over_half_width, study::FlatRimSettings{}.after_over_half_width);
 }
 
@@ -222,7 +222,7 @@ TEST(FlatRimContact, ABalanceStepThatLoadsTheWindowBeyondFShortensIt)
 // --body's whole flat-rim table on steel.
 TEST(FlatRimContact, TheHullIsFoundBeyondTheFemSdsOptimumsEnd)
 {
-  const study::FlatRimContact r = u_optimum_on_steel(160, {112.7, 1.000, 0.999, 2});
+  const study::FlatRimContact r = centre_line_roller_on_steel(160, {112.7, 1.000, 0.999, 2});
   EXPECT_NEAR(r.interior_angle_rad * 180 / std::numbers::pi, 160.0, 1e-6);
 }
 
