@@ -156,7 +156,7 @@ struct FlatRimContact
 /// The settings' scene: the straight rim (interior_angle_rad > 0) or the
 /// body's loop end at end_angle_rad. Throws InputError for a non-positive
 /// radius, load, edge radius or modulus, an angle outside [150, 180] deg or
-/// a body that is not the hull of two circles,
+/// a body other than the oloids and rollers (the cylinder's ends are square),
 /// ComputationError when a solve fails (the contact reaching the window's
 /// border beyond P, or across once the window has widened twice, names the
 /// setting to widen; a window shortened three times that still cannot
