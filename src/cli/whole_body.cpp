@@ -30,7 +30,12 @@ const io::BoundSchema<study::WholeBodyCheckSettings>& whole_body_schema()
         .real("direction_deg", "--direction", &WholeBodyCheckSettings::direction_deg, "deg",
               "The orientation: the ground's normal (body frame) nearest to (cos a, sin a, 0) on the body's contact "
               "curve; the cylinder's axis is the body's z, so every a is a generator",
-              io::Bounds{-360, 360});
+              io::Bounds{-360, 360})
+        .real("scan_step_deg", "--scan-directions", &WholeBodyCheckSettings::scan_step_deg, "deg",
+              "Above 0: solve nothing; list the orientations of the directions 0, step, ... below 360 deg (the "
+              "locus's c and loaded part, R, interior angle, q and b at each end, the wedge exponent at a loaded "
+              "obtuse end), to choose --direction from",
+              io::Bounds{0, 360});
     add_material(s, &WholeBodyCheckSettings::youngs_modulus_pa, &WholeBodyCheckSettings::poisson_ratio);
     s.real("normal_load_n", "--load", &WholeBodyCheckSettings::normal_load_n, "N",
            "Force F pressing the body onto the rigid plane along the vertical through its centre of mass (the "
@@ -117,7 +122,18 @@ const io::BoundSchema<study::WholeBodyCheckSettings>& whole_body_schema()
 
 nlohmann::json run_whole_body(const io::Parameters& p)
 {
-  const study::WholeBodyCheck check = study::run_whole_body_check(MPI_COMM_WORLD, whole_body_schema().bind(p));
+  const study::WholeBodyCheckSettings settings = whole_body_schema().bind(p);
+  if (settings.scan_step_deg > 0)
+  {
+    const auto scan = study::scan_whole_body_orientations(settings, settings.scan_step_deg);
+    if (fem::world_rank() == 0)
+      spdlog::info("\norientations of {}:\n\n{}", geometry::body_label(settings.body), study::orientation_table(scan));
+    nlohmann::json rows = nlohmann::json::array();
+    for (const auto& o : scan)
+      rows.push_back(study::to_json(o));
+    return {{"body", geometry::body_label(settings.body)}, {"normal_load_n", settings.normal_load_n}, {"orientations", rows}};
+  }
+  const study::WholeBodyCheck check = study::run_whole_body_check(MPI_COMM_WORLD, settings);
   // Tables go to the log (stderr), so that `--json -` stays JSON alone.
   if (fem::world_rank() == 0)
     spdlog::info("\nwhole-body check, {}:\n\n{}\n{}\n", check.body, study::markdown_table(check), check.verdict);

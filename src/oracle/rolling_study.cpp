@@ -39,25 +39,32 @@ void validate(const RollingStudyParameters& p)
 
 } // namespace
 
+void require_line_contact(const geometry::BodySpec& spec)
+{
+  if (!spec.mesh_file.empty())
+    throw InputError(fmt::format("mesh file '{}': the exact body is needed (the circles whose hull it is), give --body "
+                                 "oloid, paper-oloid, roller or cylinder",
+                                 spec.mesh_file));
+  if (spec.body == "roller" && spec.genome.n_circles != 2)
+    throw InputError(fmt::format("roller of {} circles: the hull of two circles is needed (--circles 2)",
+                                 spec.genome.n_circles));
+  if (spec.body != "oloid" && spec.body != "paper-oloid" && spec.body != "roller" && spec.body != "cylinder")
+    throw InputError(fmt::format("body '{}' is not the hull of two circles (oloid, paper-oloid, roller, cylinder), "
+                                 "whose contact is a ruling; a sphere's point contact is `rollcheck hertz`",
+                                 spec.body));
+}
+
 std::vector<Circle> line_contact_circles(const geometry::BodySpec& spec)
 {
+  require_line_contact(spec);
   const geometry::RollerGenome oloid{90.0, 1.0, 1.0, 2};
   if (spec.body == "oloid")
     return roller_circles(oloid, geometry::RollerFamily::centre_line, spec.radius_m);
   if (spec.body == "paper-oloid")
     return roller_circles(oloid, geometry::RollerFamily::paper, spec.radius_m);
   if (spec.body == "roller")
-  {
-    if (spec.genome.n_circles != 2)
-      throw InputError(fmt::format("rolling study: rollers of {} circles are not modelled (two circles only)",
-                                   spec.genome.n_circles));
     return roller_circles(spec.genome, spec.family, spec.radius_m);
-  }
-  if (spec.body == "cylinder")
-    return cylinder_rims(spec.radius_m, spec.height_m);
-  throw InputError(fmt::format("rolling study: body '{}' is not modelled (oloid, paper-oloid, roller, cylinder, "
-                               "sphere)",
-                               spec.body));
+  return cylinder_rims(spec.radius_m, spec.height_m);
 }
 
 namespace

@@ -60,8 +60,14 @@ struct RealRolling
   MassModel mass;
 };
 
-/// The circles whose hull is the body (two-circle rollers, the oloids, the
-/// cylinder as the hull of its rims); InputError for other bodies.
+/// InputError unless `spec` is an exact body that is the hull of two circles
+/// (the oloid, the preprint's body, a two-circle roller, the cylinder as the
+/// hull of its rims), whose contact with a plane is a ruling: not a mesh
+/// file, a sphere (point contact: `rollcheck hertz`) or a roller of more
+/// circles. Every scene that follows rulings (fem-sds, rim, flat-rim,
+/// whole-body) starts here.
+void require_line_contact(const geometry::BodySpec& spec);
+/// The circles whose hull is the body (require_line_contact).
 std::vector<Circle> line_contact_circles(const geometry::BodySpec& spec);
 
 /// Runs the dynamics. InputError for bodies the rolling model does not cover

@@ -59,19 +59,6 @@ Models models_of(const FemSdsSettings& s)
   return m;
 }
 
-/// The contact locus needs the body's exact circles: only hulls of circles.
-void require_hull_of_circles(const geometry::BodySpec& body)
-{
-  if (!body.mesh_file.empty())
-    throw InputError(fmt::format("mesh_file '{}': fem-sds needs the exact body (its circles), give --body "
-                                 "oloid|paper-oloid|roller|cylinder",
-                                 body.mesh_file));
-  if (body.body != "oloid" && body.body != "paper-oloid" && body.body != "roller" && body.body != "cylinder")
-    throw InputError(fmt::format("body '{}': fem-sds covers the hulls of circles (oloid, paper-oloid, roller, "
-                                 "cylinder), whose contact is a ruling; a sphere's point contact is `rollcheck hertz`",
-                                 body.body));
-}
-
 /// One loop of real rolling; `uniformity`, if given, gets U of its contact
 /// density on `mesh` (oracle/uniformity_score.h).
 LoopSource rolling_source(const FemSdsSettings& s, const geometry::SurfaceMesh& mesh, bool& contact_held,
@@ -136,7 +123,7 @@ struct Scene
 
 Scene make_scene(const FemSdsSettings& s, bool with_uniformity)
 {
-  require_hull_of_circles(s.body);
+  oracle::require_line_contact(s.body);
   Scene scene;
   scene.models = models_of(s);
   const Models& m = scene.models;
@@ -336,7 +323,7 @@ std::vector<double> slice_fractions(double loaded_from, double loaded_to, double
 
 FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s)
 {
-  require_hull_of_circles(s.body);
+  oracle::require_line_contact(s.body);
   fem::SliceScaling table(models_of(s).slice, s.table_nodes_per_decade);
   return run_fem_sds(comm, s, table);
 }
@@ -344,7 +331,7 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s)
 FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScaling& table)
 {
   const auto start = std::chrono::steady_clock::now();
-  require_hull_of_circles(s.body);
+  oracle::require_line_contact(s.body);
   fem::ensure_petsc();
   int rank = 0;
   MPI_Comm_rank(comm, &rank);

@@ -525,11 +525,10 @@ LoopEnd body_loop_end(const geometry::BodySpec& body, double interior_angle_rad,
 {
   if (loop_side != 0 && loop_side != 1)
     throw InputError(fmt::format("flat-rim: the loop's side must be 0 (forwards) or 1 (backwards), got {}", loop_side));
-  if (!body.mesh_file.empty() || (body.body != "oloid" && body.body != "paper-oloid" && body.body != "roller"))
-    throw InputError(fmt::format("flat-rim: body '{}' is not the hull of two circles with rim ends of 150-180 deg "
-                                 "(oloid, paper-oloid, roller; the cylinder's ends are square)",
-                                 body.mesh_file.empty() ? body.body : body.mesh_file));
   const std::vector<oracle::Circle> circles = oracle::line_contact_circles(body);
+  if (body.body == "cylinder")
+    throw InputError("flat-rim: body 'cylinder': its ruling ends are square (90 deg), no rim end of 150-180 deg; a "
+                     "square end is `rollcheck rim --interior-angle 90`");
   const Eigen::Vector3d centre_of_mass
       = body.body == "oloid"
             ? Eigen::Vector3d(0.5 * (circles[0].centre_m + circles[1].centre_m))

@@ -143,6 +143,96 @@ fem::MappedBodyPose mapped_pose(const WholeBodyCheckSettings& s, const oracle::R
 
 bool softens_ends(LoadRule rule) { return rule != LoadRule::locus; }
 
+double WholeBodyOrientation::interior_angle_deg(int end) const
+{
+  return 90 + rim_overhang_rad[static_cast<std::size_t>(end)] / deg;
+}
+
+WholeBodyOrientation whole_body_orientation(const WholeBodyCheckSettings& s, double direction_deg)
+{
+  const std::vector<oracle::Circle> circles = oracle::line_contact_circles(s.body);
+  const oracle::TwoCircleBody two = oracle::two_circle_body(circles);
+  const oracle::MassModel mass = oracle::mass_model_of_mesh(geometry::make_body(s.body), 1.0);
+  WholeBodyOrientation o;
+  o.direction_deg = direction_deg;
+  const Eigen::Vector3d hint(std::cos(direction_deg * deg), std::sin(direction_deg * deg), 0.0);
+  o.ruling = oracle::ruling_at(two, oracle::contact_curve_point(two, hint));
+  const Eigen::Vector3d& G = mass.centre_of_mass_m;
+  const double L = o.ruling.length_m, c = (G - o.ruling.start_m).dot(o.ruling.axis) / L;
+  o.centre_of_pressure = c;
+  o.centre_of_mass_height_m = (o.ruling.start_m - G).dot(o.ruling.direction);
+  o.rim_overhang_rad = contact::rim_overhang(circles, 0, 1, o.ruling);
+  // c within 1e-9 of an end (the preprint's body at direction 0, where its
+  // sheet's radius at the other end is unbounded): balanced on a point.
+  o.in_equilibrium = c > 1e-9 && c < 1 - 1e-9;
+  if (!o.in_equilibrium)
+    return o;
+  o.loaded_from = c < 1.0 / 3 ? 0.0 : c > 2.0 / 3 ? 1 - 3 * (1 - c) : 0.0;
+  o.loaded_to = c < 1.0 / 3 ? 3 * c : 1.0;
+  const double E_star = contact::effective_modulus(s.youngs_modulus_pa, s.poisson_ratio, false);
+  for (int e = 0; e < 2; ++e)
+    if (const double q = oracle::line_load(s.normal_load_n, c, L, e); q > 0)
+    {
+      o.end_load_n_per_m[e] = q;
+      // R rounds to about -1e-19 m at an apex (the oloid's vertex): b = 0 there.
+      o.end_half_width_m[e] = half_width(q, std::max(o.radius_m(e), 0.0), E_star);
+    }
+  return o;
+}
+
+std::vector<WholeBodyOrientation> scan_whole_body_orientations(const WholeBodyCheckSettings& s, double step_deg)
+{
+  if (!(step_deg > 0 && step_deg <= 360))
+    throw InputError(fmt::format("scan step {} deg: must lie in (0, 360]", step_deg));
+  std::vector<WholeBodyOrientation> scan;
+  for (int k = 0; k * step_deg < 360 - 1e-9; ++k)
+    scan.push_back(whole_body_orientation(s, k * step_deg));
+  return scan;
+}
+
+std::string orientation_table(std::span<const WholeBodyOrientation> orientations)
+{
+  std::string t = "| direction (deg) | c | loaded part | R start, end (mm) | interior angle start, end (deg) | q start, "
+                  "end (N/m) | b start, end (um) | wedge exponent at a loaded obtuse end |\n"
+                  "|---|---|---|---|---|---|---|---|\n";
+  for (const WholeBodyOrientation& o : orientations)
+  {
+    std::string exponents;
+    for (int e = 0; e < 2; ++e)
+      if (const double angle = o.interior_angle_deg(e); o.end_load_n_per_m[e] > 0 && angle > 90)
+        // At 180 deg (the oloid's vertex) the rim is flat: no wedge.
+        exponents += fmt::format("{}{}: {}", exponents.empty() ? "" : ", ", e == 0 ? "start" : "end",
+                                 angle < 180 - 1e-6
+                                     ? fmt::format("{:.3f}", contact::edge_on_rigid_plane_exponent(angle * deg))
+                                     : "flat, no wedge");
+    t += fmt::format("| {:.2f} | {:.4f} | {} | {:.3f}, {:.3f} | {:.2f}, {:.2f} | {:.4g}, {:.4g} | {:.3f}, {:.3f} | {} "
+                     "|\n",
+                     o.direction_deg, o.centre_of_pressure,
+                     o.in_equilibrium ? fmt::format("{:.3f}-{:.3f}", o.loaded_from, o.loaded_to) : "none (c at or beyond an end)",
+                     std::max(o.ruling.start_radius_m, 0.0) * 1e3, std::max(o.ruling.end_radius_m, 0.0) * 1e3,
+                     o.interior_angle_deg(0),
+                     o.interior_angle_deg(1), o.end_load_n_per_m[0], o.end_load_n_per_m[1],
+                     o.end_half_width_m[0] * 1e6, o.end_half_width_m[1] * 1e6, exponents.empty() ? "-" : exponents);
+  }
+  return t;
+}
+
+nlohmann::json to_json(const WholeBodyOrientation& o)
+{
+  return {{"direction_deg", o.direction_deg},
+          {"length_m", o.ruling.length_m},
+          {"start_radius_m", o.ruling.start_radius_m},
+          {"end_radius_m", o.ruling.end_radius_m},
+          {"centre_of_pressure", o.centre_of_pressure},
+          {"in_equilibrium", o.in_equilibrium},
+          {"loaded_from", o.loaded_from},
+          {"loaded_to", o.loaded_to},
+          {"rim_overhang_deg", {o.rim_overhang_rad[0] / deg, o.rim_overhang_rad[1] / deg}},
+          {"interior_angle_deg", {o.interior_angle_deg(0), o.interior_angle_deg(1)}},
+          {"end_load_n_per_m", o.end_load_n_per_m},
+          {"end_half_width_m", o.end_half_width_m}};
+}
+
 WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings& s)
 {
   check_settings(s);
@@ -155,38 +245,25 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
   const double F = s.normal_load_n, E_star = contact::effective_modulus(s.youngs_modulus_pa, s.poisson_ratio, false);
   r.effective_modulus_pa = E_star;
 
-  // The orientation's locus: ruling, radii, centre of pressure, loaded part.
-  const std::vector<oracle::Circle> circles = oracle::line_contact_circles(s.body);
-  const oracle::TwoCircleBody two = oracle::two_circle_body(circles);
-  const oracle::MassModel mass = oracle::mass_model_of_mesh(geometry::make_body(s.body), 1.0);
-  const Eigen::Vector3d hint(std::cos(s.direction_deg * deg), std::sin(s.direction_deg * deg), 0.0);
-  const oracle::Ruling ruling = oracle::ruling_at(two, oracle::contact_curve_point(two, hint));
-  const double L = ruling.length_m;
-  r.length_m = L;
-  r.start_radius_m = ruling.start_radius_m;
-  r.end_radius_m = ruling.end_radius_m;
-  const Eigen::Vector3d G = mass.centre_of_mass_m;
-  const double c = (G - ruling.start_m).dot(ruling.axis) / L;
-  r.centre_of_pressure = c;
-  r.centre_of_mass_height_m = (ruling.start_m - G).dot(ruling.direction);
-  if (!(c > 0 && c < 1))
+  r.orientation = whole_body_orientation(s, s.direction_deg);
+  const WholeBodyOrientation& o = r.orientation;
+  const oracle::Ruling& ruling = o.ruling;
+  const double L = ruling.length_m, c = o.centre_of_pressure;
+  if (!o.in_equilibrium)
     throw InputError(fmt::format("direction {} deg: the centre of mass's foot lies outside the ruling (c = {:.4f}): "
                                  "the body tips, no line contact in equilibrium",
                                  s.direction_deg, c));
-  r.loaded_from = c < 1.0 / 3 ? 0.0 : c > 2.0 / 3 ? 1 - 3 * (1 - c) : 0.0;
-  r.loaded_to = c < 1.0 / 3 ? 3 * c : 1.0;
-  r.rim_overhang_rad = contact::rim_overhang(circles, 0, 1, ruling);
   auto radius_at = [&](double f) { return (1 - f) * ruling.start_radius_m + f * ruling.end_radius_m; };
   auto locus_load_at = [&](double f) { return oracle::line_load(F, c, L, f); };
   std::function<double(double)> load_at = locus_load_at;
-  const std::vector<double> fractions = slice_fractions(r.loaded_from, r.loaded_to, s.crease_margin, s.stations);
+  const std::vector<double> fractions = slice_fractions(o.loaded_from, o.loaded_to, s.crease_margin, s.stations);
   // The whole body's section sizes, from the locus's b at the stations and
   // the loaded ends (its end layers too, below) whichever the load rule: one
   // reference for both rules (its station readings move by 0.13 % at most
   // on a finer strip, docs/whole-body.md).
   double smallest_b = INFINITY, largest_b = 0;
   std::vector<double> sized_at = fractions;
-  sized_at.insert(sized_at.end(), {r.loaded_from, r.loaded_to});
+  sized_at.insert(sized_at.end(), {o.loaded_from, o.loaded_to});
   for (const double f : sized_at)
     if (const double q = locus_load_at(f); q > 0)
     {
@@ -196,15 +273,12 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     }
   // The locus's b at the loaded ends (0 where the locus leaves an end
   // unloaded): the whole body's end layers, d_m and the near-edge reach.
-  const std::array<double, 2> end_fractions{r.loaded_from, r.loaded_to};
-  std::array<double, 2> locus_end_b{};
+  const std::array<double, 2> end_fractions{o.loaded_from, o.loaded_to};
+  const std::array<double, 2>& locus_end_b = o.end_half_width_m;
   double smallest_end_b = INFINITY;
-  for (int e = 0; e < 2; ++e)
-    if (const double q = locus_load_at(end_fractions[e]); q > 0)
-    {
-      locus_end_b[e] = half_width(q, radius_at(end_fractions[e]), E_star);
-      smallest_end_b = std::min(smallest_end_b, locus_end_b[e]);
-    }
+  for (const double b : locus_end_b)
+    if (b > 0)
+      smallest_end_b = std::min(smallest_end_b, b);
   if (!std::isfinite(smallest_end_b))
     smallest_end_b = smallest_b;
   fem::WholeBodySizes& sizes = r.sizes;
@@ -242,10 +316,10 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
   const std::optional<fem::MappedBodyPose> pose
       = extruded && s.load_rule != LoadRule::sections
             ? std::nullopt
-            : std::optional(mapped_pose(s, ruling, r.centre_of_mass_height_m, r.rim_overhang_rad));
+            : std::optional(mapped_pose(s, ruling, o.centre_of_mass_height_m, o.rim_overhang_rad));
   auto solve_body = [&](const fem::WholeBodySizes& body_sizes, double b) {
     const fem::WholeBodyMesh mesh
-        = extruded ? fem::build_cylinder_body_mesh(comm, {s.body.radius_m, L, r.centre_of_mass_height_m}, body_sizes)
+        = extruded ? fem::build_cylinder_body_mesh(comm, {s.body.radius_m, L, o.centre_of_mass_height_m}, body_sizes)
                    : fem::build_mapped_body_mesh(comm, *pose, body_sizes);
     if (log)
       spdlog::info("whole-body mesh: {} node planes, {} nodes per section, contact elements {:.3g} m (b / {:.3g}), "
@@ -268,7 +342,7 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
   };
   // The rules that soften the ends read their q at the locus's stations and
   // d_m inside its loaded ends: a ruling loaded end to end.
-  if (softens_ends(s.load_rule) && (r.loaded_from > 0 || r.loaded_to < 1))
+  if (softens_ends(s.load_rule) && (o.loaded_from > 0 || o.loaded_to < 1))
     throw InputError(fmt::format("load_rule {}: direction {} deg loads only part of the ruling (c = {:.4f} outside "
                                  "[1/3, 2/3]); the rule is matched to the end models at both rim ends, loaded end to "
                                  "end",
@@ -315,8 +389,8 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
   if (log)
     spdlog::info("whole-body check, {}: ruling L = {:.5g} m, R = {:.5g}..{:.5g} m, c = {:.4f}, loaded {:.3f}..{:.3f}, "
                  "rim leans {:.2f}, {:.2f} deg, b = {:.4g} m (b / L = {:.3g})",
-                 r.body, L, ruling.start_radius_m, ruling.end_radius_m, c, r.loaded_from, r.loaded_to,
-                 r.rim_overhang_rad[0] / deg, r.rim_overhang_rad[1] / deg, r.half_width_m, r.half_width_m / L);
+                 r.body, L, ruling.start_radius_m, ruling.end_radius_m, c, o.loaded_from, o.loaded_to,
+                 o.rim_overhang_rad[0] / deg, o.rim_overhang_rad[1] / deg, r.half_width_m, r.half_width_m / L);
 
   // Slices at the stations and at both loaded ends, or under a rule that
   // softens the ends d_m inside them (EndComparison). The rim ends loaded
@@ -355,7 +429,7 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     end.radius_m = radius_at(end_fractions[e]);
     end.load_n_per_m = load_at(read_at_fraction[e]);
     end.half_width_m = half_width(end.load_n_per_m, end.radius_m, E_star);
-    end.interior_angle_deg = 90 + r.rim_overhang_rad[e] / deg;
+    end.interior_angle_deg = 90 + o.rim_overhang_rad[e] / deg;
     end.slice_peak_pa = slices[fractions.size() + k].peak_pressure_pa;
     fem::RimEndSettings rim;
     rim.radius_m = end.radius_m;
@@ -381,7 +455,7 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
     rim.tolerance = s.tolerance;
     if (s.end_depth == EndModelDepth::body)
     {
-      rim.depth_over_half_width = r.centre_of_mass_height_m / end.half_width_m;
+      rim.depth_over_half_width = o.centre_of_mass_height_m / end.half_width_m;
       rim.petsc_options = "-hertz_ksp_type preonly -hertz_pc_type lu -hertz_pc_factor_mat_solver_type mumps";
     }
     // Square and near-square ends on the structured grid (sheared): gmsh's
@@ -621,6 +695,9 @@ nlohmann::json to_json(const WholeBodyCheck& r)
                     {"matched_difference", json_number(e.matched_difference)}});
   }
   const WholeBodyCheckSettings& s = r.settings;
+  nlohmann::json ruling = to_json(r.orientation);
+  ruling["half_width_m"] = r.half_width_m;
+  ruling["half_width_over_length"] = r.half_width_m / r.orientation.ruling.length_m;
   return {{"body", r.body},
           {"direction_deg", s.direction_deg},
           {"normal_load_n", s.normal_load_n},
@@ -628,16 +705,7 @@ nlohmann::json to_json(const WholeBodyCheck& r)
           {"poisson_ratio", s.poisson_ratio},
           {"end_depth", s.end_depth == EndModelDepth::body ? "body" : "local"},
           {"effective_modulus_pa", r.effective_modulus_pa},
-          {"ruling",
-           {{"length_m", r.length_m},
-            {"start_radius_m", r.start_radius_m},
-            {"end_radius_m", r.end_radius_m},
-            {"centre_of_pressure", r.centre_of_pressure},
-            {"loaded_from", r.loaded_from},
-            {"loaded_to", r.loaded_to},
-            {"rim_overhang_deg", {r.rim_overhang_rad[0] / deg, r.rim_overhang_rad[1] / deg}},
-            {"half_width_m", r.half_width_m},
-            {"half_width_over_length", r.half_width_m / r.length_m}}},
+          {"ruling", ruling},
           {"mesh",
            {{"contact_element_m", r.sizes.contact_m},
             {"strip_half_width_m", r.sizes.strip_half_width_m},
@@ -651,12 +719,12 @@ nlohmann::json to_json(const WholeBodyCheck& r)
             {"node_planes", r.node_planes},
             {"section_nodes", r.section_nodes},
             {"dofs", r.fem.dofs},
-            {"cut_height_m", r.centre_of_mass_height_m},
+            {"cut_height_m", r.orientation.centre_of_mass_height_m},
             {"gmsh_s", r.gmsh_s}}},
           {"whole_body",
            {{"force_n", r.fem.force_n},
             {"reaction_n", r.fem.reaction_n},
-            {"centre_of_pressure", r.fem.centre_of_pressure_m / r.length_m},
+            {"centre_of_pressure", r.fem.centre_of_pressure_m / r.orientation.ruling.length_m},
             {"approach_m", r.fem.approach_m},
             {"tilt_rad", r.fem.tilt_rad},
             {"load_steps", r.fem.load_steps},
@@ -666,7 +734,7 @@ nlohmann::json to_json(const WholeBodyCheck& r)
             {"solve_s", r.fem.solve_s}}},
           {"load_rule", load_rule_name(s.load_rule)},
           {"section_load_rule", r.section_rule ? to_json(*r.section_rule) : nlohmann::json()},
-          {"coarse_body_load_rule", r.coarse_body ? coarse_body_json(*r.coarse_body, r.length_m) : nlohmann::json()},
+          {"coarse_body_load_rule", r.coarse_body ? coarse_body_json(*r.coarse_body, r.orientation.ruling.length_m) : nlohmann::json()},
           {"stations", stations},
           {"ends", ends},
           {"worst_along", r.worst_along},
@@ -723,7 +791,7 @@ std::string markdown_table(const WholeBodyCheck& r)
                   "slice - 1 | the same at the body's q |\n|---|---|---|---|---|---|---|---|\n";
   for (const StationComparison& st : r.stations)
     t += fmt::format("| {:.4f} | {:.5g} | {:.5g} | {:+.2f} % | {:.5g} | {:.5g} | {:+.2f} % | {:+.2f} % |\n",
-                     st.position_m / r.length_m, st.radius_m, st.rule_load_n_per_m, 100 * st.load_difference(),
+                     st.position_m / r.orientation.ruling.length_m, st.radius_m, st.rule_load_n_per_m, 100 * st.load_difference(),
                      st.slice_peak_pa / 1e6, st.body_peak_pa / 1e6, 100 * st.peak_difference(),
                      100 * st.peak_difference_at_body_load());
   t += fmt::format("\nThe largest over the stations (fem-sds's peak): body / slices - 1 = {:+.2f} %\n",
@@ -732,7 +800,7 @@ std::string markdown_table(const WholeBodyCheck& r)
        "(MPa) | body edge / its interior | body / predicted - 1 | singular only: body / end model at matched h_e - 1 "
        "(secondary) |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const EndComparison& e : r.ends)
-    t += fmt::format("| {:.4f} | {:.2f} | {} | {} | {} | {:.5g} | {:.4f} | {} | {} |\n", e.position_m / r.length_m,
+    t += fmt::format("| {:.4f} | {:.2f} | {} | {} | {} | {:.5g} | {:.4f} | {} | {} |\n", e.position_m / r.orientation.ruling.length_m,
                      e.interior_angle_deg,
                      e.near_edge_peak ? fmt::format("acute: near-edge peak {}, body's {:.5g} MPa",
                                                     e.predicted_edge_pa ? "converged" : "NOT converged",

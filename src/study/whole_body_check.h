@@ -53,6 +53,7 @@
 #include "fem/whole_body_contact.h"
 #include "study/section_load_rule.h"
 #include "geometry/body.h"
+#include "oracle/rolling_dynamics.h"
 #include <array>
 #include <cmath>
 #include <mpi.h>
@@ -106,6 +107,9 @@ struct WholeBodyCheckSettings
   /// The orientation: the ground's normal u (body frame, pointing into the
   /// ground) nearest to (cos a, sin a, 0) on the body's contact curve.
   double direction_deg = 0;
+  /// Above 0: no check; the orientations of the directions this far apart
+  /// (scan_whole_body_orientations), to choose a direction from.
+  double scan_step_deg = 0;
   double normal_load_n = 100;       ///< F (the preprint's)
   double youngs_modulus_pa = 200e9; ///< steel (the preprint's)
   double poisson_ratio = 0.3;       ///< steel (the preprint's)
@@ -149,6 +153,43 @@ struct WholeBodyCheckSettings
   double end_zone_over_half_width = 1.0;
   double tolerance = 0.03;          ///< largest relative difference that passes
 };
+
+/// The orientation of one direction as the check takes it: the ruling on
+/// the body's contact curve whose ground normal is nearest (cos a, sin a, 0)
+/// (oracle::contact_curve_point, oracle::ruling_at), the locus's centre of
+/// pressure c = (G - s_1) . b / L and its no-tension loaded part
+/// (oracle::line_load: both ends loaded for 1/3 <= c <= 2/3, else the
+/// nearer one), the rims' leans (contact::rim_overhang; interior angle 90
+/// deg + lean), and at each end the locus's line load and line Hertz's b
+/// (0 where the end is unloaded). Out of equilibrium (c outside (0, 1),
+/// the body tips) nothing is loaded. A scan of directions (`whole-body
+/// --scan-directions`) shows where an orientation's ends are square enough
+/// to check.
+struct WholeBodyOrientation
+{
+  double direction_deg = 0;
+  oracle::Ruling ruling{};
+  double centre_of_pressure = 0;         ///< the locus's c (fraction of L)
+  double centre_of_mass_height_m = 0;    ///< where the body is cut and held
+  bool in_equilibrium = false;           ///< 0 < c < 1
+  double loaded_from = 0, loaded_to = 0; ///< fractions of L
+  std::array<double, 2> rim_overhang_rad{};
+  std::array<double, 2> end_load_n_per_m{}, end_half_width_m{};
+  double interior_angle_deg(int end) const;
+  double radius_m(int end) const { return end == 0 ? ruling.start_radius_m : ruling.end_radius_m; }
+};
+
+/// `settings.body` (cylinder or oloid: any hull of two circles) at
+/// `direction_deg` under settings' F, E and nu. InputError for a body that is
+/// not a hull of two circles; ComputationError where no ruling is found.
+WholeBodyOrientation whole_body_orientation(const WholeBodyCheckSettings& settings, double direction_deg);
+/// Directions 0, step, 2 step, ... below 360 deg (step in (0, 360]).
+std::vector<WholeBodyOrientation> scan_whole_body_orientations(const WholeBodyCheckSettings& settings,
+                                                               double step_deg);
+/// One row per direction: c, the loaded part, R, interior angle, q and b at
+/// each end, the rigid plane's wedge exponent at a loaded obtuse end.
+std::string orientation_table(std::span<const WholeBodyOrientation> orientations);
+nlohmann::json to_json(const WholeBodyOrientation& orientation);
 
 struct StationComparison
 {
@@ -232,11 +273,7 @@ struct WholeBodyCheck
 {
   WholeBodyCheckSettings settings;
   std::string body;                      ///< geometry::body_label
-  double length_m = 0, start_radius_m = 0, end_radius_m = 0;
-  double centre_of_pressure = 0;         ///< the locus's c (fraction of L)
-  double centre_of_mass_height_m = 0;    ///< where the body is cut and held
-  double loaded_from = 0, loaded_to = 0; ///< fractions of L
-  std::array<double, 2> rim_overhang_rad{};
+  WholeBodyOrientation orientation;
   double effective_modulus_pa = 0;       ///< E / (1 - nu^2), the rigid plane
   double half_width_m = 0;               ///< line Hertz's b at the centre of mass's foot
   fem::WholeBodySizes sizes;
