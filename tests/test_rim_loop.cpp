@@ -200,7 +200,7 @@ TEST(RimLoop, SteelBlockGivesTheLoopThePairsModulus)
   EXPECT_EQ(r.loop.end_aware[0].singular_ends, r.loop.loaded_ends);
 }
 
-// Refused flat-rim nodes (a crease beside the 160 deg end) cost only the
+// Refused flat-rim nodes (slopes above 0.1, a failed solve) cost only the
 // nodes up to the last of them: the table starts after it, one node later
 // where that keeps an odd count, so every other node still ends on the
 // flattest; a refused flattest node refuses it all.
