@@ -85,6 +85,10 @@ fem::RimEndSettings end_settings(const RimLoopSettings& s, double radius_m, doub
 std::vector<RimLoopEnd> direct_ends(MPI_Comm comm, const RimLoopSettings& s, const FemSdsResult& interior)
 {
   std::vector<RimLoopEnd> ends;
+  // Each end's load control starts from the end before's converged approach
+  // over its estimate, as the end table's nodes do: the estimate overshoots
+  // a held block's approach by about 20 % whatever the end's q and R.
+  double approach_over_estimate = 1;
   for (const FemSdsOrientation& r : interior.orientations)
   {
     if (!r.solved)
@@ -102,8 +106,9 @@ std::vector<RimLoopEnd> direct_ends(MPI_Comm comm, const RimLoopSettings& s, con
       e.interior_angle_rad = std::numbers::pi / 2 + r.rim_overhang_rad[static_cast<std::size_t>(end)];
       // A rounded part's finish leaves no radius below r_e (study/loop_sds.h end_aware_scores).
       const double hull_radius = end == 0 ? ruling.start_radius_m : ruling.end_radius_m;
-      const fem::RimEndSettings settings
+      fem::RimEndSettings settings
           = end_settings(s, std::max(hull_radius, s.end.edge_radius_m), q, e.interior_angle_rad);
+      settings.first_approach_scale = approach_over_estimate;
       e.modelled_angle_rad = settings.interior_angle_rad;
       const double b = half_width(settings);
       if (!(b < fem::largest_half_width_over_radius * settings.radius_m))
@@ -117,6 +122,7 @@ std::vector<RimLoopEnd> direct_ends(MPI_Comm comm, const RimLoopSettings& s, con
         continue;
       }
       e.study = fem::solve_rim_end(comm, settings);
+      approach_over_estimate = e.study.approach_over_estimate();
       e.interior_peak_pa = r.fem_peak_pa;
       if (e.study.end_to_interior && e.study.resolved && !e.study.singular)
         e.end_peak_pa = *e.study.end_to_interior * e.study.levels.back().far_peak_pa;
@@ -589,8 +595,12 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
     }
     // Each node's load control starts from the node before's converged
     // approach over its estimate (neighbours differ in angle or R only): one
-    // load step fewer than from the estimate, which overshoots by about 20 %.
+    // load step fewer than from the estimate, which overshoots by about 20 %;
+    // the first node from the last direct end's.
     double approach_over_estimate = 1;
+    for (const RimLoopEnd& e : result.ends)
+      if (!e.study.levels.empty())
+        approach_over_estimate = e.study.approach_over_estimate();
     for (const double radius : columns)
       for (const double angle : end_table_angles(std::min(lo, hi), hi, s.end_table_step_rad, s.end_table_acute_step_rad))
       {
