@@ -29,6 +29,7 @@ using Clock = std::chrono::steady_clock;
 constexpr const char* prefix = "hertz_"; ///< of every solver option
 constexpr int max_newton_iterations = 40;
 constexpr double newton_rtol = 1e-10;  ///< on ||du|| / ||u||
+constexpr double converged_residual = 1e-8; ///< ||F|| over the solve's largest after a full step
 constexpr int max_line_search_halvings = 12;
 
 double seconds_since(Clock::time_point start)
@@ -367,10 +368,29 @@ NewtonReport PenaltyContact::solve()
   Vec du_petsc = dolfinx::la::petsc::create_vector_wrap(du);
   std::vector<T> u_before;
   std::string failure;
+  // Once the set of penetrating points stops changing, a full step leaves
+  // only the linear solve's own residual (see the header): a residual below
+  // converged_residual of the largest since the first iteration's ends the
+  // solve there, without the solve that would confirm it by an increment of
+  // the linear solve's tolerance. (The first residual, under the new
+  // approach's jump, is left out of the scale: a stricter test.) On a rim
+  // end on steel the converged residuals fell to 1e-15 to 2e-9 of that
+  // scale, the others stayed above 7.9e-6 (docs/rims.md, "Speed").
+  double largest_residual = 0;
+  bool full_step = false;
   for (int it = 1; it <= max_newton_iterations && failure.empty(); ++it)
   {
     auto start = Clock::now();
     assemble_residual(b);
+    const double residual = dolfinx::la::norm(b);
+    spdlog::debug("Newton {}: residual {:.3e} of the largest {:.3e}", it, residual, largest_residual);
+    if (it > 2 && full_step && residual <= converged_residual * largest_residual)
+    {
+      report.assembly_s += seconds_since(start);
+      break;
+    }
+    if (it > 1)
+      largest_residual = std::max(largest_residual, residual);
     assemble_jacobian();
     const double energy_before = energy();
     report.assembly_s += seconds_since(start);
@@ -412,6 +432,7 @@ NewtonReport PenaltyContact::solve()
     }
     report.assembly_s += seconds_since(start);
 
+    full_step = alpha == 1.0;
     const double du_norm = dolfinx::la::norm(du), u_norm = dolfinx::la::norm(*_u->x());
     report.final_relative_increment = u_norm > 0 ? alpha * du_norm / u_norm : 0.0;
     spdlog::debug("Newton {}: |du|/|u| = {:.3e}, step {}, {} Krylov its", it, report.final_relative_increment,

@@ -4,8 +4,10 @@
 // and a semismooth Newton solver with an energy line search.
 //
 // Newton: the penalty term <-g>_+ is piecewise linear, so within one set of
-// penetrating quadrature points the problem is linear and Newton ends one
-// step after that set stops changing. The total energy is convex, and a step
+// penetrating quadrature points the problem is linear and Newton ends with
+// the step after which that set stops changing: the residual is then the
+// linear solve's own (below 1e-8 of the solve's largest), or the next
+// increment is (1e-10 of the displacement). The total energy is convex, and a step
 // that raises it is halved (Armijo backtracking on the energy), which makes
 // the iteration globally convergent. Every linear solve's KSPConvergedReason
 // is checked: a diverged solve raises ComputationError, never a result.
