@@ -226,6 +226,24 @@ TEST(FlatRimContact, TheHullIsFoundBeyondTheFemSdsOptimumsEnd)
   EXPECT_NEAR(r.interior_angle_rad * 180 / std::numbers::pi, 160.0, 1e-6);
 }
 
+// Extra levels are added only while the peak's last change is at least the
+// tolerance: none once it is below (a tolerance of 1), up to the cap when it
+// never is (a tolerance of 1e-12), each halving the cells again.
+TEST(FlatRimContact, ExtraLevelsAreAddedOnlyWhileThePeakMoves)
+{
+  study::FlatRimSettings s = straight_rim(170);
+  s.cells_per_half_width = 2;
+  s.levels = 2;
+  s.extra_levels = 1;
+  s.tolerance = 1;
+  EXPECT_EQ(study::flat_rim_contact(s).levels.size(), 2u);
+  s.tolerance = 1e-12;
+  const study::FlatRimContact moving = study::flat_rim_contact(s);
+  ASSERT_EQ(moving.levels.size(), 3u);
+  EXPECT_FALSE(moving.converged);
+  EXPECT_DOUBLE_EQ(moving.levels[2].cell_m, moving.levels[1].cell_m / 2);
+}
+
 TEST(FlatRimContact, RefusesBadInput)
 {
   study::FlatRimSettings s = straight_rim(120);
@@ -235,6 +253,9 @@ TEST(FlatRimContact, RefusesBadInput)
   EXPECT_THROW(study::flat_rim_contact(s), InputError);
   s = straight_rim(170);
   s.load_n_per_m = std::nan("");
+  EXPECT_THROW(study::flat_rim_contact(s), InputError);
+  s = straight_rim(170);
+  s.extra_levels = -1;
   EXPECT_THROW(study::flat_rim_contact(s), InputError);
   // A flat end (180 deg) lets the contact run on past the window's start:
   // refused, not truncated.

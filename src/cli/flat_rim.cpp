@@ -53,6 +53,10 @@ const io::BoundSchema<study::FlatRimSettings>& flat_rim_schema()
            "Cells across b (line Hertz's half-width at the end's q with R = max(R_end, r_e); the oloid's apex: r_e) at the first level; each level doubles it",
            io::Bounds{2, 64})
         .integer("levels", "--levels", &S::levels, "", "Grid levels (convergence needs 2)", io::Bounds{1, 4})
+        .integer("extra_levels", "--extra-levels", &S::extra_levels, "",
+                 "Levels beyond --levels, added one at a time while the peak changes by --tolerance or more "
+                 "between the last two (rim --body's flat-rim table adds one)",
+                 io::Bounds{0, 2})
         .real("before_over_half_width", "--before", &S::before_over_half_width, "",
               "The window beyond the end (past the ruling's end), in b", io::Bounds{1, 200})
         .real("after_over_half_width", "--after", &S::after_over_half_width, "",

@@ -436,6 +436,8 @@ void check_settings(const FlatRimSettings& s)
     throw InputError(fmt::format("flat-rim: --poisson must lie in (-1, 0.5), got {}", s.poisson_ratio));
   if (s.levels < 1)
     throw InputError("flat-rim: --levels must be at least 1");
+  if (s.extra_levels < 0)
+    throw InputError("flat-rim: --extra-levels must not be negative");
   const auto check_angle = [](double angle, const char* name) {
     if (!(angle >= smallest_flat_rim_angle_rad && angle <= std::numbers::pi))
       throw InputError(fmt::format("flat-rim: {} {} deg is outside [{}, 180] deg, where the rim's other face is "
@@ -477,7 +479,11 @@ void solve_window(const FlatRimSettings& s, const EndProblem& end, FlatRimContac
   const double first_cell = result.half_width_m / s.cells_per_half_width;
   double unused_slope = 0, unused_lift = 0;
   result.longer_window_peak_pa = level_at(longer, first_cell, unused_slope, unused_lift).peak_pressure_pa;
-  for (int k = 0; k < s.levels; ++k)
+  const auto resolved = [&] {
+    const std::vector<FlatRimLevel>& l = result.levels;
+    return l.size() >= 2 && std::abs(l.back().peak_pressure_pa / l[l.size() - 2].peak_pressure_pa - 1) < s.tolerance;
+  };
+  for (int k = 0; k < s.levels + s.extra_levels && (k < s.levels || !resolved()); ++k)
     result.levels.push_back(level_at(s, first_cell / std::pow(2.0, k), result.largest_slope, result.end_lift_m));
 }
 

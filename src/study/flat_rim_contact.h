@@ -99,6 +99,10 @@ struct FlatRimSettings
   bool steel_counter_face = false; ///< a half-space of the body's material; else the rigid plane
   double cells_per_half_width = 4; ///< b / cell at the first level
   int levels = 2;
+  /// Levels beyond `levels`, added one at a time while the peak's change
+  /// between the last two is at least `tolerance` (a cell that does not yet
+  /// resolve the end); the window's change is not a level's to mend.
+  int extra_levels = 0;
   double before_over_half_width = 12; ///< the window beyond the end, in b
   double after_over_half_width = 100; ///< the window along the ruling from the end, in b
   double across_over_half_width = 4;  ///< the window's half-width across the ruling, in b
