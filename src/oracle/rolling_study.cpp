@@ -42,7 +42,7 @@ void validate(const RollingStudyParameters& p)
 void require_line_contact(const geometry::BodySpec& spec)
 {
   if (!spec.mesh_file.empty())
-    throw InputError(fmt::format("mesh file '{}': the exact body is needed (the circles whose hull it is), give --body "
+    throw InputError(fmt::format("mesh_file '{}' (--mesh): the exact body is needed (the circles whose hull it is), give --body "
                                  "oloid, paper-oloid, roller or cylinder",
                                  spec.mesh_file));
   if (spec.body == "roller" && spec.genome.n_circles != 2)

@@ -31,7 +31,7 @@ expect 2 "end-angle" -- "$bin" flat-rim --end-angle 140 --json "$tmp/steep_end.j
 expect 2 "no-such-folder" -- "$bin" flat-rim --json "$tmp/no-such-folder/out.json"
 expect 2 "body 'sphere' is not the hull of two circles" -- "$bin" flat-rim --body sphere --json "$tmp/sphere.json"
 expect 2 "square" -- "$bin" flat-rim --body cylinder --json "$tmp/cylinder.json"
-expect 2 "mesh file" -- "$bin" flat-rim --mesh "$here/meshes/reference/oloid_reference.obj" --json "$tmp/mesh.json"
+expect 2 "mesh_file" -- "$bin" flat-rim --mesh "$here/meshes/reference/oloid_reference.obj" --json "$tmp/mesh.json"
 check '[[ ! -e $tmp/steep.json && ! -e $tmp/negative.json && ! -e $tmp/steep_end.json && ! -e $tmp/sphere.json
          && ! -e $tmp/cylinder.json && ! -e $tmp/mesh.json ]]' \
   "a refused run left no output"
