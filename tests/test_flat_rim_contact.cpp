@@ -233,6 +233,7 @@ TEST(FlatRimContact, ExtraLevelsAreAddedOnlyWhileThePeakMoves)
 {
   study::FlatRimSettings s = straight_rim(170);
   s.cells_per_half_width = 2;
+  s.after_over_half_width = 30; // short: the levels' logic is what is tested
   s.levels = 2;
   s.extra_levels = 1;
   s.tolerance = 1;
