@@ -450,6 +450,12 @@ void check_settings(const FlatRimSettings& s)
   check_angle(s.end_angle_rad, "--end-angle");
 }
 
+/// The peak's change from the level before the last to the last (two levels at least).
+double last_level_change(const std::vector<FlatRimLevel>& levels)
+{
+  return levels.back().peak_pressure_pa / levels[levels.size() - 2].peak_pressure_pa - 1;
+}
+
 /// The levels and the longer window of one end at the settings' window,
 /// into `result`; the window widens across where the contact outgrows it.
 void solve_window(const FlatRimSettings& s, const EndProblem& end, FlatRimContact& result)
@@ -480,8 +486,7 @@ void solve_window(const FlatRimSettings& s, const EndProblem& end, FlatRimContac
   double unused_slope = 0, unused_lift = 0;
   result.longer_window_peak_pa = level_at(longer, first_cell, unused_slope, unused_lift).peak_pressure_pa;
   const auto resolved = [&] {
-    const std::vector<FlatRimLevel>& l = result.levels;
-    return l.size() >= 2 && std::abs(l.back().peak_pressure_pa / l[l.size() - 2].peak_pressure_pa - 1) < s.tolerance;
+    return result.levels.size() >= 2 && std::abs(last_level_change(result.levels)) < s.tolerance;
   };
   for (int k = 0; k < s.levels + s.extra_levels && (k < s.levels || !resolved()); ++k)
     result.levels.push_back(level_at(s, first_cell / std::pow(2.0, k), result.largest_slope, result.end_lift_m));
@@ -514,8 +519,7 @@ void solve_end(const FlatRimSettings& s, const EndProblem& end, FlatRimContact& 
   result.after_over_half_width = window.after_over_half_width;
   result.window_change = result.longer_window_peak_pa / result.levels.front().peak_pressure_pa - 1;
   if (result.levels.size() >= 2)
-    result.last_change =
-        result.levels.back().peak_pressure_pa / result.levels[result.levels.size() - 2].peak_pressure_pa - 1;
+    result.last_change = last_level_change(result.levels);
   result.converged = result.levels.size() >= 2 && std::abs(result.last_change) < s.tolerance
                      && std::abs(result.window_change) < s.tolerance;
   result.wall_s = seconds_since(start);

@@ -148,16 +148,31 @@ double WholeBodyOrientation::interior_angle_deg(int end) const
   return 90 + rim_overhang_rad[static_cast<std::size_t>(end)] / deg;
 }
 
-WholeBodyOrientation whole_body_orientation(const WholeBodyCheckSettings& s, double direction_deg)
+namespace
 {
-  const std::vector<oracle::Circle> circles = oracle::line_contact_circles(s.body);
-  const oracle::TwoCircleBody two = oracle::two_circle_body(circles);
-  const oracle::MassModel mass = oracle::mass_model_of_mesh(geometry::make_body(s.body), 1.0);
+/// What every orientation of one body shares: its circles and centre of mass.
+struct OrientedBody
+{
+  std::vector<oracle::Circle> circles;
+  oracle::TwoCircleBody two;
+  Eigen::Vector3d centre_of_mass_m;
+
+  explicit OrientedBody(const geometry::BodySpec& body)
+      : circles(oracle::line_contact_circles(body)), two(oracle::two_circle_body(circles)),
+        centre_of_mass_m(oracle::mass_model_of_mesh(geometry::make_body(body), 1.0).centre_of_mass_m)
+  {
+  }
+};
+
+WholeBodyOrientation orientation_of(const OrientedBody& body, const WholeBodyCheckSettings& s, double direction_deg)
+{
+  const std::vector<oracle::Circle>& circles = body.circles;
+  const oracle::TwoCircleBody& two = body.two;
   WholeBodyOrientation o;
   o.direction_deg = direction_deg;
   const Eigen::Vector3d hint(std::cos(direction_deg * deg), std::sin(direction_deg * deg), 0.0);
   o.ruling = oracle::ruling_at(two, oracle::contact_curve_point(two, hint));
-  const Eigen::Vector3d& G = mass.centre_of_mass_m;
+  const Eigen::Vector3d& G = body.centre_of_mass_m;
   const double L = o.ruling.length_m, c = (G - o.ruling.start_m).dot(o.ruling.axis) / L;
   o.centre_of_pressure = c;
   o.centre_of_mass_height_m = (o.ruling.start_m - G).dot(o.ruling.direction);
@@ -180,13 +195,21 @@ WholeBodyOrientation whole_body_orientation(const WholeBodyCheckSettings& s, dou
   return o;
 }
 
+} // namespace
+
+WholeBodyOrientation whole_body_orientation(const WholeBodyCheckSettings& s, double direction_deg)
+{
+  return orientation_of(OrientedBody(s.body), s, direction_deg);
+}
+
 std::vector<WholeBodyOrientation> scan_whole_body_orientations(const WholeBodyCheckSettings& s, double step_deg)
 {
   if (!(step_deg > 0 && step_deg <= 360))
     throw InputError(fmt::format("scan step {} deg: must lie in (0, 360]", step_deg));
+  const OrientedBody body(s.body);
   std::vector<WholeBodyOrientation> scan;
   for (int k = 0; k * step_deg < 360 - 1e-9; ++k)
-    scan.push_back(whole_body_orientation(s, k * step_deg));
+    scan.push_back(orientation_of(body, s, k * step_deg));
   return scan;
 }
 
