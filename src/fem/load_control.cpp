@@ -19,9 +19,15 @@ LoadControlReport reach_force(PenaltyContact& problem, double target, double fir
                               double first_shift_m, double exponent, double rtol, spdlog::level::level_enum progress,
                               const std::function<double()>& measured_force)
 {
+  problem.start_translated(first_shift_m, first_approach_m);
+  return continue_to_force(problem, target, exponent, rtol, progress, measured_force);
+}
+
+LoadControlReport continue_to_force(PenaltyContact& problem, double target, double exponent, double rtol,
+                                    spdlog::level::level_enum progress, const std::function<double()>& measured_force)
+{
   constexpr int max_steps = 20;
   LoadControlReport report;
-  problem.start_translated(first_shift_m, first_approach_m);
   double previous_approach = 0, previous_force = 0;
   for (int step = 1; step <= max_steps; ++step)
   {

@@ -43,4 +43,11 @@ LoadControlReport reach_force(PenaltyContact& problem, double target_force, doub
                               double first_shift_m, double exponent, double rtol,
                               spdlog::level::level_enum progress = spdlog::level::debug,
                               const std::function<double()>& measured_force = {});
+
+/// The same from the problem's current state and approach (e.g. a finer
+/// level started from the coarser level's solution,
+/// PenaltyContact::start_interpolated).
+LoadControlReport continue_to_force(PenaltyContact& problem, double target_force, double exponent, double rtol,
+                                    spdlog::level::level_enum progress = spdlog::level::debug,
+                                    const std::function<double()>& measured_force = {});
 } // namespace rollcheck::fem

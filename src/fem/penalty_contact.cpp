@@ -1,6 +1,7 @@
 #include "fem/penalty_contact.h"
 #include "core/error.h"
 #include "fem/all_gather.h"
+#include "fem/interpolate_between_meshes.h"
 #include "fem/nodal_fields.h"
 #include <algorithm>
 #include <chrono>
@@ -259,6 +260,15 @@ void PenaltyContact::start_translated(double shift_m, double approach_m)
   for (std::size_t i = _z_component; i < u.size(); i += bs)
     u[i] = -shift_m;
   set_approach(approach_m);
+}
+
+void PenaltyContact::start_interpolated(const dolfinx::fem::Function<T>& solved, double approach_m,
+                                        const std::function<int(const double* midpoint)>& part)
+{
+  const auto start = Clock::now();
+  interpolate_between_meshes(solved, *_u, part);
+  set_approach(approach_m);
+  spdlog::debug("start interpolated from another mesh: {:.2f} s", seconds_since(start));
 }
 
 void PenaltyContact::set_approach_profile(const std::function<double(const double* x)>& weight)

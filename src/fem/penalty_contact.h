@@ -115,6 +115,11 @@ public:
   /// Start state for a first solve: the body translated down by `shift_m`,
   /// its top face at -approach_m.
   void start_translated(double shift_m, double approach_m);
+  /// Start state from a state solved on another mesh of the same scene
+  /// (fem/interpolate_between_meshes.h; `part` tells two bodies' cells
+  /// apart), the top face at -approach_m.
+  void start_interpolated(const dolfinx::fem::Function<T>& solved, double approach_m,
+                          const std::function<int(const double* midpoint)>& part = {});
   /// Sets the top face's prescribed displacement to -approach_m (times the
   /// profile's weight) and nothing else: the first Newton step then is the tangent (Euler) predictor, the
   /// linear response of the current state to the change of approach.

@@ -104,11 +104,14 @@ double far_line_load(const std::vector<SurfacePressureNode>& nodes, double far_x
   return 2 * load;
 }
 
-/// `previous`: the level before, whose approach starts this one's load
-/// control (the levels differ only near the edge, so it carries q_far to
-/// within a few per mille, where line contact's estimate overshot by 40 %).
+/// `previous`: the level before, whose approach and solution (`state`, on
+/// its own mesh) start this one's load control: the levels differ only near
+/// the edge, so its approach carries q_far to within a few per mille (line
+/// contact's estimate overshot by 40 %) and its displacement, interpolated
+/// onto this mesh, leaves Newton only the edge's correction. `state` is
+/// replaced by this level's.
 RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_element_m, bool write,
-                        const RimEndLevel* previous)
+                        const RimEndLevel* previous, std::shared_ptr<const dolfinx::fem::Function<double>>& state)
 {
   const auto start = std::chrono::steady_clock::now();
   const RimEndSettings& s = study.setup;
@@ -189,12 +192,16 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   const double shift = 0.5 * b * b / s.radius_m;
   const LineApproach line = line_contact_approach(s.load_n_per_m, H, b, study.effective_modulus_pa);
   level.estimated_approach_m = shift + line.approach_m;
+  if (previous && state)
+    // The body is z > 0, the block z < 0: twin nodes on z = 0 take their own body's values.
+    problem.start_interpolated(*state, previous->approach_m, [](const double* x) { return x[2] > 0 ? 1 : 0; });
+  else
+    problem.start_translated(shift, s.first_approach_scale * level.estimated_approach_m);
   const LoadControlReport report
-      = reach_force(problem, s.load_n_per_m,
-                    previous ? previous->approach_m : s.first_approach_scale * level.estimated_approach_m, shift,
-                    line.exponent, 2e-3,
-                    world_rank() == 0 ? spdlog::level::info : spdlog::level::debug,
-                    [&] { return far_line_load(surface(), -L, tol); });
+      = continue_to_force(problem, s.load_n_per_m, line.exponent, 2e-3,
+                          world_rank() == 0 ? spdlog::level::info : spdlog::level::debug,
+                          [&] { return far_line_load(surface(), -L, tol); });
+  state = problem.displacement();
   level.approach_m = report.approach_m;
   level.load_steps = report.load_steps;
   level.newton_iterations = report.newton.newton_iterations;
@@ -361,11 +368,12 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
   if (setup.resolve_boundary_layer && !sharp)
     // Just below s / 4 at the last level, so that the comparison below holds in floating point.
     first_edge_element = std::min(first_edge_element, 0.999 * std::pow(2.0, setup.levels - 1) * study.boundary_layer_m / 4);
+  std::shared_ptr<const dolfinx::fem::Function<double>> state;
   for (int k = 0; k < setup.levels; ++k)
   {
     const double h_e = first_edge_element / std::pow(2.0, k);
     study.levels.push_back(solve_level(comm, study, h_e, k + 1 == setup.levels && !setup.xdmf_path.empty(),
-                                       study.levels.empty() ? nullptr : &study.levels.back()));
+                                       study.levels.empty() ? nullptr : &study.levels.back(), state));
     const RimEndLevel& l = study.levels.back();
     if (rank == 0)
       spdlog::info("rim level {}: h_e = {:.3g} b, {} dofs, far q {:.5g} N/m, far p {:.5g} Pa, end peak {:.5g} Pa "
