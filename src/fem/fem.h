@@ -7,7 +7,8 @@
 // of a contact ruling, the plane-strain crease, the 3D end of a ruling at a
 // rim, alone or on a block), the plane-strain slices and the 3D slab of a
 // line contact, the crease and rim-end studies, line Hertz between two bodies,
-// the load-controlled Newton/Krylov solves with checked convergence, and
+// the load-controlled Newton/Krylov solves with checked convergence (a
+// refined level started from the coarser one's solution), and
 // the post-processing that sets every result next to Hertz theory
 // (contact/hertz.h). Knows nothing of files beyond its own XDMF field output,
 // nor of the command line.

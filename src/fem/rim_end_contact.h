@@ -12,6 +12,9 @@
 // E* = E / (1 - nu^2) against the rigid plane: H = 10 b and L = 3 H by
 // default. That the far side is in plane strain is shown, not assumed: the
 // centre-line pressure at x = -L / 2 against x = -L (`plane_strain_change`).
+// A finer level starts from the coarser level's solution, interpolated onto
+// its mesh (fem/interpolate_between_meshes.h), at that level's approach:
+// the levels differ near the edge, so Newton is left the edge's correction.
 //
 // Edge: sharp (edge radius 0) or rounded. A sharp edge of interior angle a
 // mirrors in the plane into the free-free wedge of 2 a (contact/wedge_exponent.h,
