@@ -78,19 +78,17 @@ struct LocalEvaluation
   std::vector<double> values;
 };
 
-LocalEvaluation evaluate_on_rank(const dolfinx::fem::Function<double>& from, const std::vector<double>& points,
-                                 const std::vector<int>& point_parts, int value_size,
-                                 const std::function<int(const double*)>& part, Search search)
+/// `cells_of_part`: this rank's cells of `from`'s mesh, by part.
+LocalEvaluation evaluate_on_rank(const dolfinx::fem::Function<double>& from,
+                                 const std::map<int, std::vector<std::int32_t>>& cells_of_part,
+                                 const std::vector<double>& points, const std::vector<int>& point_parts,
+                                 int value_size, Search search)
 {
   const dolfinx::mesh::Mesh& mesh = *from.function_space()->mesh();
   const int tdim = mesh.topology().dim();
   const std::size_t num_points = point_parts.size();
   LocalEvaluation result{std::vector<double>(num_points, std::numeric_limits<double>::infinity()),
                          std::vector<double>(num_points * value_size, 0.0)};
-  std::map<int, std::vector<std::int32_t>> cells_of_part;
-  const std::vector<int> parts = cell_parts(mesh, part);
-  for (std::int32_t c = 0; c < static_cast<std::int32_t>(parts.size()); ++c)
-    cells_of_part[parts[c]].push_back(c);
   std::map<int, std::vector<std::size_t>> points_of_part;
   for (std::size_t i = 0; i < num_points; ++i)
     points_of_part[point_parts[i]].push_back(i);
@@ -198,11 +196,15 @@ void interpolate_between_meshes(const dolfinx::fem::Function<double>& from, dolf
   }
 
   // Every rank searches every rank's nodes in its own cells.
+  std::map<int, std::vector<std::int32_t>> cells_of_part;
+  const std::vector<int> source_parts = cell_parts(source, part);
+  for (std::int32_t c = 0; c < static_cast<std::int32_t>(source_parts.size()); ++c)
+    cells_of_part[source_parts[c]].push_back(c);
   MPI_Comm comm = V->mesh()->comm();
   const std::vector<double> all_points = all_gather(comm, x);
   const std::vector<double> gathered_parts = all_gather(comm, block_part);
   const std::vector<int> all_parts(gathered_parts.begin(), gathered_parts.end());
-  LocalEvaluation all = evaluate_on_rank(from, all_points, all_parts, bs, part, Search::within_boxes);
+  LocalEvaluation all = evaluate_on_rank(from, cells_of_part, all_points, all_parts, bs, Search::within_boxes);
   const std::vector<bool> held = take_best(comm, all, bs);
 
   // Nodes beyond every cell's bounding box (rare: a curved face's node just
@@ -220,7 +222,7 @@ void interpolate_between_meshes(const dolfinx::fem::Function<double>& from, dolf
       std::copy_n(&all_points[3 * beyond[j]], 3, &points[3 * j]);
       parts[j] = all_parts[beyond[j]];
     }
-    LocalEvaluation nearest = evaluate_on_rank(from, points, parts, bs, part, Search::nearest_cell);
+    LocalEvaluation nearest = evaluate_on_rank(from, cells_of_part, points, parts, bs, Search::nearest_cell);
     const std::vector<bool> held_nearest = take_best(comm, nearest, bs);
     for (std::size_t j = 0; j < beyond.size(); ++j)
     {
