@@ -119,6 +119,11 @@ const io::BoundSchema<RimCommand>& rim_schema()
               "h_e / b at the first level; each further level halves it", io::Bounds{1e-3, 1, false, false})
         .integer("levels", "--levels", end(&RimEndSettings::levels), "", "Edge mesh levels (convergence needs 2)",
                  io::Bounds{1, 6})
+        .integer("extra_levels", "--extra-levels", end(&RimEndSettings::extra_levels), "",
+                 "Levels beyond --levels, added one at a time while the end/interior ratio changes by --tolerance or "
+                 "more between the last two (or a fillet's boundary layer is not resolved); with --body every end "
+                 "model takes at least 1, as the flat-rim table does",
+                 io::Bounds{0, 2})
         .real("tolerance", "--tolerance", end(&RimEndSettings::tolerance), "",
               "Largest relative change of the end/interior pressure ratio between the last two levels that counts as converged",
               io::Bounds{0, 1, true, false})

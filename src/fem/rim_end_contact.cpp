@@ -59,9 +59,11 @@ void validate(const RimEndSettings& s)
       throw InputError(fmt::format("rim: the field output '{}' (--xdmf) must end in .xdmf", s.xdmf_path.string()));
     check_output_file(s.xdmf_path, "rim: the field output (--xdmf)");
   }
-  if (s.contact_elements < 2 || s.contact_elements > 40 || s.levels < 1 || s.levels > 6)
-    throw InputError(fmt::format("rim: contact_elements must be 2 to 40 and levels 1 to 6, got {} and {}",
-                                 s.contact_elements, s.levels));
+  if (s.contact_elements < 2 || s.contact_elements > 40 || s.levels < 1 || s.levels > 6 || s.extra_levels < 0
+      || s.extra_levels > 2)
+    throw InputError(fmt::format("rim: contact_elements must be 2 to 40, levels 1 to 6 and extra_levels 0 to 2, got "
+                                 "{}, {} and {}",
+                                 s.contact_elements, s.levels, s.extra_levels));
 }
 
 struct Sample
@@ -316,6 +318,52 @@ double end_to_interior_change(const RimEndLevel& before, const RimEndLevel& last
   return (ratio - end_to_interior(before, sharp_edge)) / std::max(ratio, 1.0);
 }
 
+namespace
+{
+/// What the levels so far say: the resolution, the plane strain of the far
+/// side, a sharp edge's exponent, and a non-singular end's ratio, its change
+/// over the last level and whether it converged.
+void judge_levels(RimEndStudy& study, bool sharp)
+{
+  const RimEndLevel& last = study.levels.back();
+  study.resolved = sharp || last.edge_element_m <= study.boundary_layer_m / 4;
+  study.plane_strain_change = std::abs(last.mid_peak_pa / last.far_peak_pa - 1);
+  study.plane_strain_noise = last.mid_to_far_standard_error;
+  if (!study.singular)
+    study.end_to_interior = end_to_interior(last, sharp);
+  if (study.levels.size() < 2)
+    return; // one level: nothing to say of convergence
+  const RimEndLevel& before = study.levels[study.levels.size() - 2];
+  const bool edge_loaded = std::all_of(study.levels.begin(), study.levels.end(),
+                                       [](const RimEndLevel& l) { return l.edge_pressure_pa > 0; });
+  if (study.singular && !edge_loaded)
+    throw ComputationError("rim: a singular edge without pressure at some level (the contact does not reach it)");
+  // An acute edge lifts off the plane under refinement: no growth to measure.
+  if (sharp && edge_loaded)
+  {
+    // Least squares of ln p_edge on ln h_e over every level: the nodal
+    // pressures scatter by a few per cent, which two levels alone would carry
+    // into the exponent (at 120 deg the pairs gave -0.39, -0.47 and -0.36).
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const RimEndLevel& l : study.levels)
+    {
+      const double lx = std::log(l.edge_element_m), ly = std::log(l.edge_pressure_pa);
+      sx += lx;
+      sy += ly;
+      sxx += lx * lx;
+      sxy += lx * ly;
+    }
+    const double n = static_cast<double>(study.levels.size());
+    study.measured_exponent = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  }
+  if (!study.singular)
+  {
+    study.end_change = end_to_interior_change(before, last, sharp);
+    study.converged = study.resolved && std::abs(*study.end_change) < study.setup.tolerance;
+  }
+}
+} // namespace
+
 RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
 {
   validate(setup);
@@ -369,10 +417,17 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
     // Just below s / 4 at the last level, so that the comparison below holds in floating point.
     first_edge_element = std::min(first_edge_element, 0.999 * std::pow(2.0, setup.levels - 1) * study.boundary_layer_m / 4);
   std::shared_ptr<const dolfinx::fem::Function<double>> state;
-  for (int k = 0; k < setup.levels; ++k)
+  for (int k = 0; k < setup.levels + setup.extra_levels; ++k)
   {
+    if (k >= setup.levels && (study.converged || !study.end_change))
+      break;
+    if (k >= setup.levels && rank == 0)
+      spdlog::info("rim: not converged at {} levels ({}), one level more", k,
+                   study.resolved ? fmt::format("ratio change {:+.2f} %", 100 * *study.end_change)
+                                  : std::string("boundary layer not resolved"));
     const double h_e = first_edge_element / std::pow(2.0, k);
-    study.levels.push_back(solve_level(comm, study, h_e, k + 1 == setup.levels && !setup.xdmf_path.empty(),
+    // Any level from the last asked for may be the last: each writes, the next overwrites.
+    study.levels.push_back(solve_level(comm, study, h_e, k + 1 >= setup.levels && !setup.xdmf_path.empty(),
                                        study.levels.empty() ? nullptr : &study.levels.back(), state));
     const RimEndLevel& l = study.levels.back();
     if (rank == 0)
@@ -380,42 +435,8 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
                    "at x = {:.3g} b, edge {:.5g} Pa, {:.1f} s",
                    k, h_e / study.half_width_m, l.dofs, l.far_load_n_per_m, l.far_peak_pa, l.end_peak_pa,
                    l.end_peak_x_m / study.half_width_m, l.edge_pressure_pa, l.wall_s);
-  }
-  const RimEndLevel& last = study.levels.back();
-  study.resolved = sharp || last.edge_element_m <= study.boundary_layer_m / 4;
-  study.plane_strain_change = std::abs(last.mid_peak_pa / last.far_peak_pa - 1);
-  study.plane_strain_noise = last.mid_to_far_standard_error;
-  if (!study.singular)
-    study.end_to_interior = end_to_interior(last, sharp);
-  if (study.levels.size() < 2)
-    return study; // one level: nothing to say of convergence
-  const RimEndLevel& before = study.levels[study.levels.size() - 2];
-  const bool edge_loaded = std::all_of(study.levels.begin(), study.levels.end(),
-                                       [](const RimEndLevel& l) { return l.edge_pressure_pa > 0; });
-  if (study.singular && !edge_loaded)
-    throw ComputationError("rim: a singular edge without pressure at some level (the contact does not reach it)");
-  // An acute edge lifts off the plane under refinement: no growth to measure.
-  if (sharp && edge_loaded)
-  {
-    // Least squares of ln p_edge on ln h_e over every level: the nodal
-    // pressures scatter by a few per cent, which two levels alone would carry
-    // into the exponent (at 120 deg the pairs gave -0.39, -0.47 and -0.36).
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (const RimEndLevel& l : study.levels)
-    {
-      const double lx = std::log(l.edge_element_m), ly = std::log(l.edge_pressure_pa);
-      sx += lx;
-      sy += ly;
-      sxx += lx * lx;
-      sxy += lx * ly;
-    }
-    const double n = static_cast<double>(study.levels.size());
-    study.measured_exponent = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-  }
-  if (!study.singular)
-  {
-    study.end_change = end_to_interior_change(before, last, sharp);
-    study.converged = study.resolved && std::abs(*study.end_change) < setup.tolerance;
+    if (k + 1 >= setup.levels)
+      judge_levels(study, sharp);
   }
   return study;
 }

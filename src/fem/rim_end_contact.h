@@ -26,7 +26,8 @@
 // edge of a > 90 deg is reported singular with both exponents and no peak
 // value; a square edge (a = 90 deg, not singular on the rigid plane) has an
 // edge pressure, a rounded edge an end peak, that must converge: its change
-// between the last two levels below `tolerance`, or the study says it did not.
+// between the last two levels below `tolerance`, or the study says it did not
+// (after up to `extra_levels` more levels, added while it does not).
 //
 // A rounded edge leaves the sheet at x = -x_t, x_t = r_e tan((180 deg - a) / 2),
 // with a jump of curvature from 0 to 1 / r_e. The contact reaches past it
@@ -128,6 +129,12 @@ struct RimEndSettings
   /// Edge elements at the first level, h_e / b; each further level halves them.
   double edge_element_over_half_width = 1.0 / 8;
   int levels = 3;                    ///< 1 to 6; convergence needs 2
+  /// Levels beyond `levels`, 0 to 2, added one at a time while a
+  /// non-singular end is not converged (its ratio changes by `tolerance` or
+  /// more over the last level, or a fillet's boundary layer is not yet
+  /// resolved); none after a single level. rim --body's end models take at
+  /// least one, as its flat-rim table's nodes do.
+  int extra_levels = 0;
   /// A rounded edge: where the last level's h_e would not resolve the
   /// boundary layer s (h_e <= s / 4, s / b = 2 r_e / (pi R)), the first
   /// level's is refined until it does (ends of large R against r_e: the rim

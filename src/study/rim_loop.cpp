@@ -73,6 +73,10 @@ fem::RimEndSettings end_settings(const RimLoopSettings& s, double radius_m, doub
   e.poisson_ratio = s.loop.poisson_ratio;
   e.xdmf_path.clear(); // one end's fields, not the loop's
   e.resolve_boundary_layer = true; // every end's ratio is a number of the end, not of the mesh
+  // An end whose levels still differ gets a third, as a flat-rim node does:
+  // the preprint's body's steel end table had 4 of 15 nodes at 3.3-6.4 %
+  // per level (docs/rim-results.md).
+  e.extra_levels = std::max(e.extra_levels, 1);
   // The fillet must fit in the block, and b varies from end to end: deepen
   // the block where the setting's H / b would be too shallow for this end's b.
   if (e.edge_radius_m > 0)
