@@ -680,6 +680,7 @@ nlohmann::json to_json(const RimLoopResult& r)
                           {"end_change", json_number(study.end_change)},
                           {"resolved", study.resolved},
                           {"converged", study.converged},
+                          {"levels", study.levels.size()},
                           {"plane_strain_change", study.plane_strain_change},
                           {"load_steps", load_steps},
                           {"newton_iterations", newton_iterations},
