@@ -11,6 +11,10 @@
 #include <cmath>
 #include <cstdio>
 #include <dolfinx/common/IndexMap.h>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 #include <gtest/gtest.h>
 #include <mpi.h>
 #include <numbers>
@@ -288,11 +292,23 @@ TEST(RimEndContact, RoundedObtuseRimConvergesOnceResolved)
   s.edge_element_over_half_width = 1.0 / 64;
   s.levels = 2;
   s.extra_levels = 2;
+  // The fields are written once, at the end: the last level's nodes.
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "rollcheck_rim_fields";
+  std::filesystem::create_directories(folder);
+  s.xdmf_path = folder / "rounded.xdmf";
+  std::filesystem::remove(s.xdmf_path);
   const fem::RimEndStudy study = fem::solve_rim_end(MPI_COMM_WORLD, s);
   print(study);
   EXPECT_NEAR(study.half_width_m / b, 1.0, 0.01);
   EXPECT_FALSE(study.singular);
   EXPECT_EQ(study.levels.size(), 3U);
+  std::ifstream xdmf(s.xdmf_path);
+  const std::string text((std::istreambuf_iterator<char>(xdmf)), std::istreambuf_iterator<char>());
+  const std::size_t geometry = text.find("<Geometry");
+  ASSERT_NE(geometry, std::string::npos) << s.xdmf_path;
+  const std::size_t dimensions = text.find("Dimensions=\"", geometry) + std::string("Dimensions=\"").size();
+  EXPECT_EQ(std::stoll(text.substr(dimensions)), study.levels.back().dofs / 3) << "nodes in " << s.xdmf_path;
+  std::filesystem::remove(s.xdmf_path);
   EXPECT_GT(study.levels[1].edge_element_m, study.boundary_layer_m / 4);
   EXPECT_TRUE(study.resolved);
   EXPECT_TRUE(study.converged) << study.end_change.value_or(std::nan(""));

@@ -106,14 +106,17 @@ double far_line_load(const std::vector<SurfacePressureNode>& nodes, double far_x
   return 2 * load;
 }
 
-/// `previous`: the level before, whose approach and solution (`state`, on
-/// its own mesh) start this one's load control: the levels differ only near
+/// `fields_out`, if given, receives the level's recovered fields (the caller
+/// writes the last level's once the study has finished). `previous`: the
+/// level before, whose approach and solution (`state`, on its own mesh) start
+/// this one's load control: the levels differ only near
 /// the edge, so its approach carries q_far to within a few per mille (line
 /// contact's estimate overshot by 40 %) and its displacement, interpolated
 /// onto this mesh, leaves Newton only the edge's correction. `state` is
 /// replaced by this level's.
-RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_element_m, bool write,
-                        const RimEndLevel* previous, std::shared_ptr<const dolfinx::fem::Function<double>>& state)
+RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_element_m,
+                        std::optional<NodalFields>* fields_out, const RimEndLevel* previous,
+                        std::shared_ptr<const dolfinx::fem::Function<double>>& state)
 {
   const auto start = std::chrono::steady_clock::now();
   const RimEndSettings& s = study.setup;
@@ -222,10 +225,8 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   double edge_sum = 0;
   int edge_nodes = 0;
   std::optional<NodalFields> fields;
-  if (write || !block)
+  if (fields_out || !block)
     fields = recover_nodal_fields(problem);
-  if (write)
-    write_fields(s.xdmf_path, *fields);
   for (const SurfacePressureNode& n : surface(fields ? &*fields : nullptr))
   {
     if (std::abs(n.x[1]) < tol)
@@ -279,6 +280,8 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   if (!(level.end_peak_pa > 0))
     throw ComputationError(fmt::format("rim: no pressure near the edge (h_e = {:.3g} m, b = {:.3g} m)",
                                        edge_element_m, b));
+  if (fields_out)
+    *fields_out = std::move(fields);
   level.wall_s = wall_seconds_since(comm, start);
   return level;
 }
@@ -417,6 +420,9 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
     // Just below s / 4 at the last level, so that the comparison below holds in floating point.
     first_edge_element = std::min(first_edge_element, 0.999 * std::pow(2.0, setup.levels - 1) * study.boundary_layer_m / 4);
   std::shared_ptr<const dolfinx::fem::Function<double>> state;
+  // Written once the study has finished, so that a level that fails leaves no
+  // field file behind that looks like the study's.
+  std::optional<NodalFields> last_fields;
   for (int k = 0; k < setup.levels + setup.extra_levels; ++k)
   {
     if (k >= setup.levels && (study.converged || !study.end_change))
@@ -426,8 +432,9 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
                    study.resolved ? fmt::format("ratio change {:+.2f} %", 100 * *study.end_change)
                                   : std::string("boundary layer not resolved"));
     const double h_e = first_edge_element / std::pow(2.0, k);
-    // Any level from the last asked for may be the last: each writes, the next overwrites.
-    study.levels.push_back(solve_level(comm, study, h_e, k + 1 >= setup.levels && !setup.xdmf_path.empty(),
+    // Any level from the last asked for may be the last: each keeps its fields.
+    study.levels.push_back(solve_level(comm, study, h_e,
+                                       k + 1 >= setup.levels && !setup.xdmf_path.empty() ? &last_fields : nullptr,
                                        study.levels.empty() ? nullptr : &study.levels.back(), state));
     const RimEndLevel& l = study.levels.back();
     if (rank == 0)
@@ -438,6 +445,8 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
     if (k + 1 >= setup.levels)
       judge_levels(study, sharp);
   }
+  if (last_fields)
+    write_fields(setup.xdmf_path, *last_fields);
   return study;
 }
 } // namespace rollcheck::fem

@@ -146,7 +146,8 @@ struct RimEndSettings
   /// pressures along the strip scattered by 4-5 %, at c = 10 by 2.4 %.
   double penalty_c = 10.0;
   std::string petsc_options;         ///< prefix "hertz_" (default: 3D GMRES + GAMG)
-  /// The last level's fields (fem/write_fields.h), if set: a .xdmf in a writable folder.
+  /// The last level's fields (fem/write_fields.h), if set: a .xdmf in a writable
+  /// folder, written once the study has finished (a level that fails leaves none).
   std::filesystem::path xdmf_path;
   /// The first level's load control starts from this times line contact's
   /// approach with H as the radius (fem/load_control.h), which overshoots a
