@@ -206,6 +206,53 @@ TEST(RimEndContact, OnlyFacesFacingThePlaneAreContactFacets)
   }
 }
 
+TEST(RimEndContact, FilletNodesStandClearOfTheInterfaceTolerance)
+{
+  // The block's pairing takes nodes within fem::rim_interface_tolerance of
+  // z = 0 for the interface. gmsh's fillet nodes nearest its start stand a
+  // fraction of h_e^2 / (2 r_e) above it that the scale does not change, so
+  // a coarse mesh tells how high they stand at the finest levels. The scene
+  // of the preprint's body's 60 deg end on steel (b = 0.16 mm, H = 36.2 b,
+  // r_e = 0.4 mm) at h_e = b / 8; its fourth level, h_e = b / 1406, stopped
+  // on an unpaired interface node with the tolerance 1e-9 H.
+  fem::ensure_petsc();
+  const double b = 1.6e-4, H = 36.2 * b, edge_radius = 4e-4, angle = 60 * degree;
+  const double fillet_start = edge_radius * std::tan((std::numbers::pi - angle) / 2);
+  fem::RimEndSizes sizes;
+  sizes.contact_m = b / 6;
+  sizes.contact_zone_m = sizes.edge_zone_m = 1.5 * b;
+  sizes.edge_m = b / 8;
+  sizes.edge_x_m = -fillet_start;
+  sizes.edge_band_m = 0.5 * b;
+  sizes.far_m = H / 4;
+  const fem::RimEndGeometry geometry{0.0224, angle, edge_radius, H, 3 * H, true};
+  const fem::SceneMesh scene = fem::build_rim_block_mesh(MPI_COMM_WORLD, geometry, sizes);
+  std::span<const double> x = scene.mesh->geometry().x();
+  double lowest_on_fillet = 1e300, highest_on_interface = 0;
+  for (std::size_t i = 0; i < x.size() / 3; ++i)
+  {
+    const double along = x[3 * i] + fillet_start, height = x[3 * i + 2];
+    if (std::abs(height) < 1e-9 * H)
+      highest_on_interface = std::max(highest_on_interface, std::abs(height));
+    else if (along > 0.01 * sizes.edge_m && height > 0 && height < edge_radius)
+      lowest_on_fillet = std::min(lowest_on_fillet, height);
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &lowest_on_fillet, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &highest_on_interface, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  auto arc_height = [&](double h_e) { return h_e * h_e / (2 * edge_radius); };
+  const double lowest_fraction = lowest_on_fillet / arc_height(sizes.edge_m);
+  const double finest_edge = b / 1406, finest_lowest = lowest_fraction * arc_height(finest_edge);
+  const double finest_tol = fem::rim_interface_tolerance(H, finest_edge, edge_radius);
+  std::printf("lowest fillet node %.3g h_e^2 / (2 r_e); at h_e = b / 1406 %.3g m, tolerance %.3g m (1e-9 H %.3g m); "
+              "highest interface node %.3g m\n",
+              lowest_fraction, finest_lowest, finest_tol, 1e-9 * H, highest_on_interface);
+  EXPECT_LT(finest_tol, 0.1 * finest_lowest);
+  EXPECT_LT(highest_on_interface, 0.1 * finest_tol);
+  // Edge elements so fine that the fillet's nodes come within the
+  // coordinates' rounding of the interface: refused, not mispaired.
+  EXPECT_THROW(fem::rim_interface_tolerance(1.0, 1e-9, 1e-3), ComputationError);
+}
+
 TEST(RimEndContact, ObtuseRoundedRimOnTheCylinderSheetIsBuilt)
 {
   // At 170 deg the other face is nearly level, so on the cylinder sheet the

@@ -166,7 +166,8 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
     std::function<bool(const double*)> to_surface;
     if (s.edge_radius_m > 0)
       to_surface = [&](const double* x) { return x[0] > -study.fillet_start_m && x[2] <= surface_zone_m; };
-    std::vector<NodePair> pairs = interface_node_pairs(problem, tol, to_surface);
+    std::vector<NodePair> pairs
+        = interface_node_pairs(problem, rim_interface_tolerance(H, sizes.edge_m, s.edge_radius_m), to_surface);
     for (NodePair& pair : pairs)
     {
       // The fillet's height (0 on the interface) plus the flattened sheet's.
@@ -366,6 +367,19 @@ void judge_levels(RimEndStudy& study, bool sharp)
   }
 }
 } // namespace
+
+double rim_interface_tolerance(double depth_m, double edge_element_m, double edge_radius_m)
+{
+  double tol = 1e-9 * depth_m;
+  if (edge_radius_m > 0)
+    tol = std::min(tol, 1e-3 * edge_element_m * edge_element_m / (2 * edge_radius_m));
+  if (!(tol >= 1e-13 * depth_m))
+    throw ComputationError(fmt::format("rim: edge elements of {:.3g} m on a fillet of radius {:.3g} m leave its first "
+                                       "nodes within {:.3g} m of the interface, below what a block {:.3g} m deep "
+                                       "resolves (1e-13 of it)",
+                                       edge_element_m, edge_radius_m, tol, depth_m));
+  return tol;
+}
 
 RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
 {

@@ -242,6 +242,19 @@ double centre_line_pressure_at(const RimEndLevel& level, double x_m);
 /// its last value and 1: what `tolerance` judges.
 double end_to_interior_change(const RimEndLevel& before, const RimEndLevel& last, bool sharp_edge);
 
+/// The height (m) within which a node of the rim block scene lies on the
+/// body-block interface z = 0 and is paired with its twin: 1e-9 H, and with
+/// a rounded edge at most 1e-3 h_e^2 / (2 r_e). The fillet rises from the
+/// interface as z = r_e (1 - cos(s / r_e)) ~ s^2 / (2 r_e) at the arc length
+/// s from its start, and gmsh puts its nodes nearest the start a fraction of
+/// the edge element h_e along it: on the preprint's body's 22.4 mm, 60 deg
+/// end on steel (H = 5.8 mm, r_e = 0.4 mm) at h_e = 0.11 um one stood 58 nm
+/// along, 4e-12 m high, within 1e-9 H, and was taken for an unpaired
+/// interface node (test: RimEndContact.FilletNodesStandClearOfTheInterfaceTolerance).
+/// ComputationError below 1e-13 H: gmsh leaves the interface's own nodes up
+/// to 7e-15 H off the plane (the same test).
+double rim_interface_tolerance(double depth_m, double edge_element_m, double edge_radius_m);
+
 /// Every rank gets the study. InputError for bad settings (naming the
 /// setting), ComputationError for a failed solve or an unresolved contact.
 RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup);
