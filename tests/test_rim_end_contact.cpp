@@ -212,11 +212,11 @@ TEST(RimEndContact, FilletNodesStandClearOfTheInterfaceTolerance)
   // z = 0 for the interface. gmsh's fillet nodes nearest its start stand a
   // fraction of h_e^2 / (2 r_e) above it that the scale does not change, so
   // a coarse mesh tells how high they stand at the finest levels. The scene
-  // of the preprint's body's 60 deg end on steel (b = 0.113 mm, H = 36.2 b,
+  // of the preprint's body's 60 deg end on steel (b = 0.116 mm, H = 36.2 b,
   // r_e = 0.4 mm) at h_e = b / 8; its fourth level, h_e = b / 1406, stopped
   // on an unpaired interface node with the tolerance 1e-9 H.
   fem::ensure_petsc();
-  const double b = 1.13e-4, H = 36.2 * b, edge_radius = 4e-4, angle = 60 * degree;
+  const double b = 1.16e-4, H = 36.2 * b, edge_radius = 4e-4, angle = 60 * degree;
   const double fillet_start = edge_radius * std::tan((std::numbers::pi - angle) / 2);
   fem::RimEndSizes sizes;
   sizes.contact_m = b / 6;

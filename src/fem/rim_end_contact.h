@@ -248,7 +248,7 @@ double end_to_interior_change(const RimEndLevel& before, const RimEndLevel& last
 /// interface as z = r_e (1 - cos(s / r_e)) ~ s^2 / (2 r_e) at the arc length
 /// s from its start, and gmsh puts its nodes nearest the start a fraction of
 /// the edge element h_e along it: on the preprint's body's 22.4 mm, 60 deg
-/// end on steel (H = 4.1 mm, r_e = 0.4 mm) at h_e = 0.08 um one stood 58 nm
+/// end on steel (H = 4.2 mm, r_e = 0.4 mm) at h_e = 0.08 um one stood 58 nm
 /// along, 4e-12 m high, within 1e-9 H, and was taken for an unpaired
 /// interface node (test: RimEndContact.FilletNodesStandClearOfTheInterfaceTolerance).
 /// ComputationError below 1e-13 H: gmsh leaves the interface's own nodes up
