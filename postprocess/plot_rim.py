@@ -33,7 +33,8 @@ def main():
                 markersize=3, linewidth=1, label=f"h_e = b / {b / level['edge_element_m']:.0f}")
     ax.axvline(-rim["fillet_start_m"] / b, color="grey", linestyle=":", label="edge" if rim["edge_radius_m"] == 0
                else "fillet starts")
-    ax.set_xlim(-3, 0.5)  # beyond the edge lies the other face, out of contact
+    # From 3 b before the sheet ends; beyond the edge lies the other face, out of contact.
+    ax.set_xlim(-3 - rim["fillet_start_m"] / b, 0.5)
     ax.set_xlabel("x / b along the ruling (the edge at 0)")
     ax.set_ylabel("p / interior pressure (centre line)")
     ax.set_title(f"{rim['interior_angle_deg']:.1f} deg rim, edge radius {rim['edge_radius_m'] / b:.2g} b, "

@@ -159,8 +159,10 @@ nlohmann::json run_one_end(const fem::RimEndSettings& setup)
   for (const fem::RimEndLevel& l : study.levels)
   {
     nlohmann::json centre_line = nlohmann::json::array();
+    // As far as 3 b beyond where the sheet ends: an acute rim's fillet, and
+    // the peak at its start, lie further from the edge than 3 b.
     for (const fem::CentreLineNode& n : l.centre_line)
-      if (n.x_m > -3 * b)
+      if (n.x_m > -3 * b - study.fillet_start_m)
         centre_line.push_back({n.x_m, n.pressure_pa});
     levels.push_back({{"edge_element_m", l.edge_element_m},
                       {"dofs", l.dofs},

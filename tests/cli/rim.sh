@@ -20,6 +20,9 @@ check_json "sharp obtuse rim singular, exponent of the wedge, no peak" \
 check_json "rounded rim under its boundary layer: not singular, not resolved, so no ratio and no convergence" \
   '.singular == false and .resolved == false and .end_to_interior == null and .end_change == null
    and .converged == false and .boundary_layer_m > 1.8e-8 and .boundary_layer_m < 1.9e-8' "$tmp/rounded.json"
+check_json "the centre line reaches 3 b beyond the fillet's start, where its peak lies" \
+  '(.levels[0].centre_line_x_m_pressure_pa | map(.[0]) | min) as $x
+   | $x < -3 * .half_width_m and $x >= -3 * .half_width_m - .fillet_start_m' "$tmp/rounded.json"
 check '/usr/bin/python3 -c "import meshio, sys; m = meshio.read(sys.argv[1]); assert max(m.point_data[\"contact_pressure\"]) > 0" "$tmp/rounded.xdmf"' \
   "the rounded rim's fields read back with a contact pressure"
 "$bin" -q rim --counter-face steel --levels 1 --json "$tmp/steel.json" > "$tmp/steel.log" 2>&1 \
