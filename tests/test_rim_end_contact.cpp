@@ -217,7 +217,7 @@ TEST(RimEndContact, FilletNodesStandClearOfTheInterfaceTolerance)
   // on an unpaired interface node with the tolerance 1e-9 H.
   fem::ensure_petsc();
   const double b = 1.16e-4, H = 36.2 * b, edge_radius = 4e-4, angle = 60 * degree;
-  const double fillet_start = edge_radius * std::tan((std::numbers::pi - angle) / 2);
+  const double fillet_start = fem::fillet_start_distance(edge_radius, angle);
   fem::RimEndSizes sizes;
   sizes.contact_m = b / 6;
   sizes.contact_zone_m = sizes.edge_zone_m = 1.5 * b;

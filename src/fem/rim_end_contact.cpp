@@ -420,7 +420,7 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
     throw InputError(fmt::format("rim: the flat sheet is half-space theory's, for b << R; here b = {:.3g} m against "
                                  "R = {} m",
                                  study.half_width_m, setup.radius_m));
-  study.fillet_start_m = setup.edge_radius_m * std::tan((std::numbers::pi - setup.interior_angle_rad) / 2);
+  study.fillet_start_m = fillet_start_distance(setup.edge_radius_m, setup.interior_angle_rad);
   study.boundary_layer_m = 4 * study.hertz_peak_pa * setup.edge_radius_m / (std::numbers::pi * study.effective_modulus_pa);
   const double E = setup.youngs_modulus_pa, nu = setup.poisson_ratio;
   study.wedge_exponent = !sharp ? 0.0

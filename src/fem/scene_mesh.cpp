@@ -553,6 +553,11 @@ SceneParts rim_end_planes(double L, double tol)
 }
 } // namespace
 
+double fillet_start_distance(double edge_radius_m, double interior_angle_rad)
+{
+  return edge_radius_m * std::tan((std::numbers::pi - interior_angle_rad) / 2);
+}
+
 double rim_end_element_size(const RimEndSizes& sizes, const double* x)
 {
   // Distances from the loaded part of the edge's band (along y about
@@ -710,7 +715,7 @@ SceneMesh build_rim_block_mesh(MPI_Comm comm, const RimEndGeometry& g, const Rim
   // The body's face on the interface and, rounded, its fillet (which lifts
   // off the block's top: node to surface), the cylinder of radius r_e about
   // the line (-x_t, y, r_e), x_t = r_e tan((180 deg - a) / 2).
-  const double r_e = g.edge_radius_m, x_t = r_e * std::tan((std::numbers::pi - g.interior_angle_rad) / 2);
+  const double r_e = g.edge_radius_m, x_t = fillet_start_distance(r_e, g.interior_angle_rad);
   upper_interface_facets(
       scene,
       [=](double x, double, double z) {

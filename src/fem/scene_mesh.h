@@ -144,6 +144,11 @@ struct RimEndSizes
 /// The size at the point x (m) of the rim end scene.
 double rim_end_element_size(const RimEndSizes& sizes, const double* x);
 
+/// How far from the sharp edge, along the sheet, a fillet of radius r_e
+/// leaves it (m): tangent to both faces of the interior angle a, x_t = r_e
+/// tan((180 deg - a) / 2) (above r_e for an acute rim).
+double fillet_start_distance(double edge_radius_m, double interior_angle_rad);
+
 /// Model::solid conventions, symmetry_x the far side; symmetry multiplicity
 /// 2. The contact facets are every face but the block's planes (the sheet,
 /// the fillet, the other face). InputError for a geometry outside the
