@@ -29,12 +29,10 @@ LineBlockResult solve_line_block(MPI_Comm comm, const LineBlockSettings& s)
                          s.penalty_c * s.youngs_modulus_pa / h_c, "");
   problem.set_penalty_scale([](const double*) { return 0.0; }); // no rigid plane
   problem.set_approach_profile([](const double* x) { return x[1] > 0 ? 1.0 : 0.0; });
-  std::vector<NodePair> pairs = interface_node_pairs(problem, 1e-9 * W);
+  std::vector<NodePair> pairs
+      = interface_node_pairs(problem, 1e-9 * W, [&](const double* x) { return x[0] * x[0] / (2 * s.radius_m); });
   for (NodePair& pair : pairs)
-  {
-    pair.initial_gap_m = pair.x[0] * pair.x[0] / (2 * s.radius_m);
     pair.stiffness_pa_per_m = s.penalty_c * s.youngs_modulus_pa / h_c;
-  }
   problem.set_node_pairs(std::move(pairs));
   r.pairs = static_cast<int>(gather_pair_pressures(problem).size());
   r.dofs = problem.num_dofs();

@@ -306,16 +306,15 @@ void PenaltyContact::assemble_residual(dolfinx::la::Vector<T>& b) const
 
 void PenaltyContact::add_pair_forces(std::span<T> b) const
 {
-  // Pi = kappa <-g>_+^2 A / 2: dPi/du_up = -p A, dPi/du_low_i = w_i p A.
+  // Pi = kappa <-g>_+^2 A / 2: dPi/du = -p A dg/du.
   const int bs = _V->dofmap()->index_map_bs();
   const std::vector<double> pressure = pair_pressures_pa();
   for (std::size_t i = 0; i < _pairs.size(); ++i)
   {
     const double force = pressure[i] * _pairs[i].area_m2;
-    b[_pair_blocks[i].upper * bs + _z_component] -= force;
-    for (int k = 0; k < 3; ++k)
-      if (_pair_blocks[i].lower[k] >= 0)
-        b[_pair_blocks[i].lower[k] * bs + _z_component] += _pairs[i].weights[k] * force;
+    const PairBlocks& p = _pair_blocks[i];
+    for (std::size_t k = 0; k < p.block.size(); ++k)
+      b[p.block[k] * bs + _z_component] -= p.slope[k] * force;
   }
 }
 
@@ -327,27 +326,24 @@ void PenaltyContact::assemble_jacobian()
   const std::vector<double> pressure = pair_pressures_pa();
   // Every pair's entries, zero where open: the first final assembly freezes
   // the matrix's nonzero structure to the entries set so far.
-  // d2Pi/du du = kappa A (dg/du)(dg/du)^T where penetrating, dg/du_up = 1,
-  // dg/du_low_i = -w_i; rows another process owns go to it at assembly.
+  // d2Pi/du du = kappa A (dg/du)(dg/du)^T where penetrating; rows another
+  // process owns go to it at assembly.
+  std::vector<PetscInt> rows;
+  std::vector<PetscScalar> values;
   for (std::size_t i = 0; i < _pairs.size(); ++i)
   {
-    PetscInt rows[4];
-    double dg[4];
-    int m = 0;
-    rows[m] = _pair_blocks[i].upper * bs + _z_component;
-    dg[m++] = 1.0;
-    for (int k = 0; k < 3; ++k)
-      if (_pair_blocks[i].lower[k] >= 0)
-      {
-        rows[m] = _pair_blocks[i].lower[k] * bs + _z_component;
-        dg[m++] = -_pairs[i].weights[k];
-      }
+    const PairBlocks& p = _pair_blocks[i];
+    const std::size_t m = p.block.size();
+    rows.resize(m);
+    for (std::size_t r = 0; r < m; ++r)
+      rows[r] = p.block[r] * bs + _z_component;
     const double k = pressure[i] > 0 ? _pairs[i].stiffness_pa_per_m * _pairs[i].area_m2 : 0.0;
-    PetscScalar values[16];
-    for (int r = 0; r < m; ++r)
-      for (int c = 0; c < m; ++c)
-        values[r * m + c] = k * dg[r] * dg[c];
-    MatSetValuesLocal(_A, m, rows, m, rows, values, ADD_VALUES);
+    values.resize(m * m);
+    for (std::size_t r = 0; r < m; ++r)
+      for (std::size_t c = 0; c < m; ++c)
+        values[r * m + c] = k * p.slope[r] * p.slope[c];
+    MatSetValuesLocal(_A, static_cast<PetscInt>(m), rows.data(), static_cast<PetscInt>(m), rows.data(), values.data(),
+                      ADD_VALUES);
   }
   MatAssemblyBegin(_A, MAT_FLUSH_ASSEMBLY);
   MatAssemblyEnd(_A, MAT_FLUSH_ASSEMBLY);
@@ -534,26 +530,37 @@ void PenaltyContact::set_node_pairs(std::vector<NodePair> pairs)
   };
   std::string bad;
   std::vector<PairBlocks> blocks;
+  auto weight_sum = [](const std::vector<WeightedBlock>& side) {
+    double sum = 0;
+    for (const WeightedBlock& w : side)
+      sum += w.weight;
+    return side.empty() ? 0.0 : sum;
+  };
   for (const NodePair& pair : pairs)
   {
-    double weight_sum = 0;
-    for (double w : pair.weights)
-      weight_sum += w;
-    if (!(pair.upper >= first && pair.upper < first + owned) || pair.lower[0] < 0 || std::abs(weight_sum - 1) > 1e-9
-        || !(pair.area_m2 >= 0) || !(pair.stiffness_pa_per_m > 0) || !std::isfinite(pair.initial_gap_m))
+    const double upper_sum = weight_sum(pair.upper), lower_sum = weight_sum(pair.lower);
+    if (!(pair.node >= first && pair.node < first + owned) || std::abs(upper_sum - 1) > 1e-9
+        || std::abs(lower_sum - 1) > 1e-9 || !(pair.area_m2 >= 0) || !(pair.stiffness_pa_per_m > 0)
+        || !std::isfinite(pair.initial_gap_m))
     {
-      bad = fmt::format("node pairs: a pair must have its upper node owned here, a lower node, weights summing to 1, "
-                        "area >= 0, stiffness > 0 and a finite gap (upper {}, lower {}, weight sum {}, area {}, "
+      bad = fmt::format("node pairs: a pair must have its node owned here, upper and lower weights each summing to "
+                        "1, area >= 0, stiffness > 0 and a finite gap (node {}, weight sums {} and {}, area {}, "
                         "stiffness {}, gap {})",
-                        pair.upper, pair.lower[0], weight_sum, pair.area_m2, pair.stiffness_pa_per_m,
-                        pair.initial_gap_m);
+                        pair.node, upper_sum, lower_sum, pair.area_m2, pair.stiffness_pa_per_m, pair.initial_gap_m);
       break;
     }
-    PairBlocks b{local(pair.upper), {-1, -1, -1}};
-    for (int k = 0; k < 3; ++k)
-      if (pair.lower[k] >= 0)
-        b.lower[k] = local(pair.lower[k]);
-    blocks.push_back(b);
+    PairBlocks b;
+    for (const WeightedBlock& w : pair.upper)
+    {
+      b.block.push_back(local(w.block));
+      b.slope.push_back(w.weight);
+    }
+    for (const WeightedBlock& w : pair.lower)
+    {
+      b.block.push_back(local(w.block));
+      b.slope.push_back(-w.weight);
+    }
+    blocks.push_back(std::move(b));
   }
   // Every process throws, or none (the rest is collective).
   int failed = bad.empty() ? 0 : 1;
@@ -572,13 +579,7 @@ void PenaltyContact::set_node_pairs(std::vector<NodePair> pairs)
   dolfinx::la::SparsityPattern pattern(comm, {_pair_map, _pair_map}, {bs, bs});
   dolfinx::fem::sparsitybuild::cells(pattern, _scene.mesh->topology(), {*_V->dofmap(), *_V->dofmap()});
   for (const PairBlocks& b : _pair_blocks)
-  {
-    std::vector<std::int32_t> joined = {b.upper};
-    for (std::int32_t l : b.lower)
-      if (l >= 0)
-        joined.push_back(l);
-    pattern.insert(joined, joined);
-  }
+    pattern.insert(b.block, b.block);
   pattern.assemble();
   MatDestroy(&_A);
   _A = dolfinx::la::petsc::create_matrix(comm, pattern, "aij");
@@ -639,12 +640,11 @@ std::vector<double> PenaltyContact::pair_pressures_pa() const
   std::vector<double> pressure(_pairs.size());
   for (std::size_t i = 0; i < _pairs.size(); ++i)
   {
-    const NodePair& pair = _pairs[i];
-    double gap = pair.initial_gap_m + w[_pair_blocks[i].upper * bs + _z_component];
-    for (int k = 0; k < 3; ++k)
-      if (_pair_blocks[i].lower[k] >= 0)
-        gap -= pair.weights[k] * w[_pair_blocks[i].lower[k] * bs + _z_component];
-    pressure[i] = gap < 0 ? -pair.stiffness_pa_per_m * gap : 0.0;
+    const PairBlocks& p = _pair_blocks[i];
+    double gap = _pairs[i].initial_gap_m;
+    for (std::size_t k = 0; k < p.block.size(); ++k)
+      gap += p.slope[k] * w[p.block[k] * bs + _z_component];
+    pressure[i] = gap < 0 ? -_pairs[i].stiffness_pa_per_m * gap : 0.0;
   }
   return pressure;
 }
@@ -666,35 +666,71 @@ std::vector<PairPressure> gather_pair_pressures(const PenaltyContact& problem)
 
 namespace
 {
-/// A facet of the lower body's interface: its nodes' global blocks (-1:
-/// unused, 2D) and horizontal coordinates (x, and y in 3D).
+using Point2 = std::array<double, 2>;
+
+/// A facet of the lower body's interface: its nodes' global blocks and
+/// horizontal coordinates (x, y).
 struct InterfaceFacet
 {
-  std::array<std::int64_t, 3> node{-1, -1, -1};
-  std::array<std::array<double, 2>, 3> x{};
+  std::array<std::int64_t, 3> node{};
+  std::array<Point2, 3> x{};
 };
 
-/// Barycentric weights of the horizontal point p in the facet (a segment of
-/// `n` = 2 nodes or a triangle of 3), and the smallest of them (< 0: outside).
-std::pair<std::array<double, 3>, double> barycentric(const InterfaceFacet& f, int n, const double* p)
+/// Twice the signed area of the triangle (o, a, b).
+double cross(const Point2& o, const Point2& a, const Point2& b)
 {
-  std::array<double, 3> w{0.0, 0.0, 0.0};
-  if (n == 2)
-  {
-    w[1] = (p[0] - f.x[0][0]) / (f.x[1][0] - f.x[0][0]);
-    w[0] = 1 - w[1];
-    return {w, std::min(w[0], w[1])};
-  }
-  auto cross = [](const std::array<double, 2>& o, const std::array<double, 2>& a, const std::array<double, 2>& b) {
-    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
-  };
-  const std::array<double, 2> q{p[0], p[1]};
-  const double area = cross(f.x[0], f.x[1], f.x[2]);
-  w[1] = cross(f.x[0], q, f.x[2]) / area;
-  w[2] = cross(f.x[0], f.x[1], q) / area;
-  w[0] = 1 - w[1] - w[2];
-  return {w, std::min({w[0], w[1], w[2]})};
+  return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
 }
+
+std::array<double, 3> barycentric(const std::array<Point2, 3>& t, const Point2& q)
+{
+  const double area = cross(t[0], t[1], t[2]);
+  const double w1 = cross(t[0], q, t[2]) / area, w2 = cross(t[0], t[1], q) / area;
+  return {1 - w1 - w2, w1, w2};
+}
+
+/// The part of the convex polygon `subject` inside the triangle `clip`
+/// (Sutherland-Hodgman: clipped by each edge's half-plane in turn).
+std::vector<Point2> clip_to_triangle(std::vector<Point2> subject, std::array<Point2, 3> clip)
+{
+  if (cross(clip[0], clip[1], clip[2]) < 0)
+    std::swap(clip[1], clip[2]); // counter-clockwise: inside is left of each edge
+  for (int e = 0; e < 3 && !subject.empty(); ++e)
+  {
+    const Point2& a = clip[e];
+    const Point2& b = clip[(e + 1) % 3];
+    std::vector<Point2> kept;
+    for (std::size_t i = 0; i < subject.size(); ++i)
+    {
+      const Point2& p = subject[i];
+      const Point2& q = subject[(i + 1) % subject.size()];
+      const double sp = cross(a, b, p), sq = cross(a, b, q);
+      if (sp >= 0)
+        kept.push_back(p);
+      if ((sp >= 0) != (sq >= 0))
+      {
+        const double t = sp / (sp - sq);
+        kept.push_back({p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])});
+      }
+    }
+    subject = std::move(kept);
+  }
+  return subject;
+}
+
+/// D. A. Dunavant, Int. J. Numer. Meth. Engng 21, 1985, 1129: the symmetric
+/// 6-point rule of degree 4 on a triangle, barycentric points (a, a, 1 - 2a)
+/// and permutations, weights over the area.
+constexpr std::array<std::array<double, 2>, 2> dunavant_degree_4
+    = {{{0.445948490915965, 0.223381589678011}, {0.091576213509771, 0.109951743655322}}};
+
+/// The mortar sums of one upper node (fem::NodePair): A = int N_i, g0 A,
+/// int N_i N_k and int N_i phi_j, over the projection onto the interface.
+struct MortarSums
+{
+  double area = 0, gap_area = 0;
+  std::map<std::int64_t, double> upper, lower;
+};
 } // namespace
 
 std::vector<std::vector<std::pair<std::int64_t, double>>> interface_twins(std::span<const double> nodes, double tol)
@@ -740,14 +776,15 @@ std::vector<std::vector<std::pair<std::int64_t, double>>> interface_twins(std::s
 }
 
 std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double tol,
-                                           const std::function<bool(const double* x)>& to_surface)
+                                           const std::function<double(const double* x)>& initial_gap,
+                                           const std::function<bool(const double* x)>& mortar_zone)
 {
   const MPI_Comm comm = problem.mesh()->comm();
   const auto& V = *problem.displacement()->function_space();
   const auto map = V.dofmap()->index_map;
   const std::int32_t owned = map->size_local();
   const std::int64_t first = map->local_range()[0];
-  const std::vector<double>& x = problem.dof_coordinates();
+  const std::vector<double>& x = problem.dof_coordinates(); // owned blocks, then ghosts
   const std::vector<double> area = recover_nodal_fields(problem).contact_weight; // owned blocks
   const int gdim = problem.mesh()->geometry().dim();
   const int up = gdim - 1;
@@ -775,75 +812,85 @@ std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double
     if (upper < first || upper >= first + owned)
       continue; // another process's
     const double* p = &x[3 * (upper - first)];
+    if (mortar_zone && mortar_zone(p))
+      continue;
     NodePair pair;
-    pair.upper = upper;
-    pair.lower = {lower, -1, -1};
+    pair.node = upper;
+    pair.upper = {{upper, 1.0}};
+    pair.lower = {{lower, 1.0}};
     pair.x = {p[0], p[1], p[2]};
     pair.area_m2 = upper_area;
+    pair.initial_gap_m = initial_gap(p);
     pairs.push_back(pair);
   }
-  if (!to_surface)
+  if (!mortar_zone)
     return pairs;
+  if (gdim != 3)
+    throw InputError("node pairs: the mortar pairs are 3D only");
 
-  // Node to surface: the upper body's contact nodes above the interface that
-  // `to_surface` selects, and the lower body's interface facets beneath their
-  // horizontal bounding box, gathered from every process.
-  const int hdim = gdim - 1; // horizontal coordinates
-  std::vector<std::int32_t> candidates;
-  std::array<double, 4> box{1e300, 1e300, 1e300, 1e300}; // min x, min y, -max x, -max y
-  for (std::int32_t i = 0; i < owned; ++i)
-    if (area[i] > 0 && x[3 * i + up] >= tol && to_surface(&x[3 * i]))
-    {
-      candidates.push_back(i);
-      for (int d = 0; d < hdim; ++d)
-      {
-        box[d] = std::min(box[d], x[3 * i + d]);
-        box[2 + d] = std::min(box[2 + d], -x[3 * i + d]);
-      }
-    }
-  MPI_Allreduce(MPI_IN_PLACE, box.data(), 4, MPI_DOUBLE, MPI_MIN, comm);
-  auto overlaps = [&](const double lo[2], const double hi[2]) {
-    for (int d = 0; d < hdim; ++d)
-      if (hi[d] < box[d] - tol || lo[d] > -box[2 + d] + tol)
-        return false;
-    return true;
-  };
+  const auto mortar_start = Clock::now();
+  // Mortar: the upper body's contact facets with a node in the zone, and
+  // the lower body's interface facets beneath
+  // their horizontal bounding box, gathered from every process.
+  const auto& mesh = *problem.mesh();
+  const auto facet_cells = mesh.topology().connectivity(2, 3);
+  const auto cell_facets = mesh.topology().connectivity(3, 2);
+  if (!facet_cells || !cell_facets)
+    throw ComputationError("node pairs: the mesh lacks its facet-cell connectivity");
   const auto& dofmap = *V.dofmap();
-  const int tdim = problem.mesh()->topology().dim();
-  const std::int32_t cells = problem.mesh()->topology().index_map(tdim)->size_local();
+  const auto& layout = dofmap.element_dof_layout();
+  auto in_zone = [&](std::int32_t d) { return mortar_zone(&x[3 * d]); };
+  std::vector<std::array<std::int32_t, 3>> upper_facets;
+  std::array<double, 4> box{1e300, 1e300, 1e300, 1e300}; // min x, min y, -max x, -max y
+  for (std::int32_t f : problem.scene().contact_facets)
+  {
+    const std::int32_t c = facet_cells->links(f)[0];
+    const auto facets_of_cell = cell_facets->links(c);
+    const int local_facet
+        = static_cast<int>(std::find(facets_of_cell.begin(), facets_of_cell.end(), f) - facets_of_cell.begin());
+    const std::vector<int>& closure = layout.entity_closure_dofs(2, local_facet);
+    if (closure.size() != 3)
+      throw InputError("node pairs: the mortar pairs need linear elements");
+    const auto cell_dofs = dofmap.cell_dofs(c);
+    const std::array<std::int32_t, 3> dof{cell_dofs[closure[0]], cell_dofs[closure[1]], cell_dofs[closure[2]]};
+    if (std::none_of(dof.begin(), dof.end(), in_zone))
+      continue;
+    upper_facets.push_back(dof);
+    for (std::int32_t d : dof)
+      for (int k = 0; k < 2; ++k)
+      {
+        box[k] = std::min(box[k], x[3 * d + k]);
+        box[2 + k] = std::min(box[2 + k], -x[3 * d + k]);
+      }
+  }
+  MPI_Allreduce(MPI_IN_PLACE, box.data(), 4, MPI_DOUBLE, MPI_MIN, comm);
+  const std::int32_t cells = mesh.topology().index_map(3)->size_local();
   local.clear();
   for (std::int32_t c = 0; c < cells; ++c)
   {
-    const auto dofs = dofmap.cell_dofs(c);
+    // A lower cell with a whole facet on the interface (the free part of the
+    // lower face and the conforming part alike).
     std::vector<std::int32_t> on;
     double below = 0;
-    for (std::int32_t d : dofs)
+    for (std::int32_t d : dofmap.cell_dofs(c))
     {
       if (std::abs(x[3 * d + up]) < tol)
         on.push_back(d);
       else
         below = x[3 * d + up];
     }
-    // A lower cell with a whole facet on the interface (the free part of the
-    // lower face and the conforming part alike).
-    if (static_cast<int>(on.size()) != gdim || !(below < 0))
+    if (on.size() != 3 || !(below < 0))
       continue;
-    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-    for (std::int32_t d : on)
-      for (int k = 0; k < hdim; ++k)
-      {
-        lo[k] = std::min(lo[k], x[3 * d + k]);
-        hi[k] = std::max(hi[k], x[3 * d + k]);
-      }
-    if (!overlaps(lo, hi))
-      continue;
-    for (int k = 0; k < 3; ++k)
+    bool overlaps = true;
+    for (int k = 0; k < 2; ++k)
     {
-      if (k < gdim)
-        local.insert(local.end(), {static_cast<double>(global(on[k])), x[3 * on[k]], x[3 * on[k] + 1]});
-      else
-        local.insert(local.end(), {-1.0, 0.0, 0.0});
+      const double lo = std::min({x[3 * on[0] + k], x[3 * on[1] + k], x[3 * on[2] + k]});
+      const double hi = std::max({x[3 * on[0] + k], x[3 * on[1] + k], x[3 * on[2] + k]});
+      overlaps = overlaps && hi >= box[k] - tol && lo <= -box[2 + k] + tol;
     }
+    if (overlaps)
+      for (std::int32_t d : on)
+        local.insert(local.end(), {static_cast<double>(global(d)), x[3 * d], x[3 * d + 1]});
   }
   const std::vector<double> gathered = all_gather(comm, local);
   std::vector<InterfaceFacet> facets(gathered.size() / 9);
@@ -853,69 +900,160 @@ std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double
       facets[f].node[k] = static_cast<std::int64_t>(gathered[9 * f + 3 * k]);
       facets[f].x[k] = {gathered[9 * f + 3 * k + 1], gathered[9 * f + 3 * k + 2]};
     }
-  // Buckets over the candidates' box, n per horizontal direction.
-  const int n = std::max(1, static_cast<int>(hdim == 1 ? facets.size() : std::sqrt(facets.size())));
+  // Buckets over the box, n per horizontal direction.
+  const int n = std::max(1, static_cast<int>(std::sqrt(facets.size())));
   auto bucket = [&](double v, int d) {
     const double span = -box[2 + d] - box[d];
     const int b = span > 0 ? static_cast<int>((v - box[d]) / span * n) : 0;
     return std::clamp(b, 0, n - 1);
   };
-  const int ny = hdim == 2 ? n : 1;
-  std::vector<std::vector<std::int32_t>> buckets(static_cast<std::size_t>(n) * ny);
+  auto bucket_range = [&](const std::array<Point2, 3>& t) {
+    std::array<int, 4> range{n, n, -1, -1}; // first x, first y, last x, last y
+    for (const Point2& p : t)
+      for (int d = 0; d < 2; ++d)
+      {
+        range[d] = std::min(range[d], bucket(p[d], d));
+        range[2 + d] = std::max(range[2 + d], bucket(p[d], d));
+      }
+    return range;
+  };
+  std::vector<std::vector<std::int32_t>> buckets(static_cast<std::size_t>(n) * n);
   for (std::size_t f = 0; f < facets.size(); ++f)
   {
-    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-    for (int k = 0; k < gdim; ++k)
-      for (int d = 0; d < hdim; ++d)
-      {
-        lo[d] = std::min(lo[d], facets[f].x[k][d]);
-        hi[d] = std::max(hi[d], facets[f].x[k][d]);
-      }
-    for (int i = bucket(lo[0], 0); i <= bucket(hi[0], 0); ++i)
-      for (int j = hdim == 2 ? bucket(lo[1], 1) : 0; j <= (hdim == 2 ? bucket(hi[1], 1) : 0); ++j)
-        buckets[static_cast<std::size_t>(i) * ny + j].push_back(static_cast<std::int32_t>(f));
+    const std::array<int, 4> r = bucket_range(facets[f].x);
+    for (int i = r[0]; i <= r[2]; ++i)
+      for (int j = r[1]; j <= r[3]; ++j)
+        buckets[static_cast<std::size_t>(i) * n + j].push_back(static_cast<std::int32_t>(f));
   }
-  int missing = 0;
-  for (std::int32_t i : candidates)
+
+  // Each upper facet's projection cut by the lower facets beneath it; the
+  // pieces' integrals go to the facet's selected nodes.
+  std::map<std::int64_t, MortarSums> sums;
+  std::vector<std::int32_t> seen(facets.size(), -1);
+  int uncovered = 0, edge_on = 0;
+  for (std::size_t u = 0; u < upper_facets.size(); ++u)
   {
-    const double* p = &x[3 * i];
-    const auto& near = buckets[static_cast<std::size_t>(bucket(p[0], 0)) * ny + (hdim == 2 ? bucket(p[1], 1) : 0)];
-    // The facet that contains p best (on a shared edge either does).
-    std::int32_t best = -1;
-    std::array<double, 3> weights{};
-    double best_min = -1e-9;
-    for (std::int32_t f : near)
+    const std::array<std::int32_t, 3>& dof = upper_facets[u];
+    std::array<Point2, 3> t;
+    for (int k = 0; k < 3; ++k)
+      t[k] = {x[3 * dof[k]], x[3 * dof[k] + 1]};
+    const double facet_area = 0.5 * std::abs(cross(t[0], t[1], t[2]));
+    double longest = 0;
+    for (int k = 0; k < 3; ++k)
+      longest = std::max(longest, std::hypot(t[k][0] - t[(k + 1) % 3][0], t[k][1] - t[(k + 1) % 3][1]));
+    // A facet seen edge-on from the interface (a side face's facet whose
+    // corners all lie on the fillet's end arc) carries no vertical contact.
+    if (!(facet_area > 1e-12 * longest * longest))
     {
-      const auto [w, smallest] = barycentric(facets[f], gdim, p);
-      if (smallest > best_min)
-      {
-        best = f;
-        weights = w;
-        best_min = smallest;
-      }
-    }
-    if (best < 0)
-    {
-      ++missing;
+      ++edge_on;
       continue;
     }
-    double sum = 0;
-    for (double& w : weights)
-      sum += (w = std::max(w, 0.0));
-    NodePair pair;
-    pair.upper = global(i);
-    pair.lower = facets[best].node;
-    for (int k = 0; k < 3; ++k)
-      pair.weights[k] = pair.lower[k] >= 0 ? weights[k] / sum : 0.0;
-    pair.x = {p[0], p[1], p[2]};
-    pair.area_m2 = area[i];
-    pairs.push_back(pair);
+    double covered = 0;
+    const std::array<int, 4> r = bucket_range(t);
+    for (int i = r[0]; i <= r[2]; ++i)
+      for (int j = r[1]; j <= r[3]; ++j)
+        for (std::int32_t m : buckets[static_cast<std::size_t>(i) * n + j])
+        {
+          if (seen[m] == static_cast<std::int32_t>(u))
+            continue;
+          seen[m] = static_cast<std::int32_t>(u);
+          const std::vector<Point2> piece = clip_to_triangle({t[0], t[1], t[2]}, facets[m].x);
+          for (std::size_t v = 1; v + 1 < piece.size(); ++v)
+          {
+            const std::array<Point2, 3> sub{piece[0], piece[v], piece[v + 1]};
+            const double sub_area = 0.5 * std::abs(cross(sub[0], sub[1], sub[2]));
+            covered += sub_area;
+            for (const auto& [a, weight] : dunavant_degree_4)
+              for (int perm = 0; perm < 3; ++perm)
+              {
+                std::array<double, 3> lambda{a, a, a};
+                lambda[perm] = 1 - 2 * a;
+                const Point2 q{lambda[0] * sub[0][0] + lambda[1] * sub[1][0] + lambda[2] * sub[2][0],
+                               lambda[0] * sub[0][1] + lambda[1] * sub[1][1] + lambda[2] * sub[2][1]};
+                const double dA = weight * sub_area;
+                const std::array<double, 3> N = barycentric(t, q), phi = barycentric(facets[m].x, q);
+                const double point[3] = {q[0], q[1], 0.0};
+                const double g0 = initial_gap(point);
+                for (int s = 0; s < 3; ++s)
+                {
+                  if (!in_zone(dof[s]))
+                    continue;
+                  MortarSums& to = sums[global(dof[s])];
+                  to.area += N[s] * dA;
+                  to.gap_area += N[s] * g0 * dA;
+                  for (int k = 0; k < 3; ++k)
+                  {
+                    to.upper[global(dof[k])] += N[s] * N[k] * dA;
+                    to.lower[facets[m].node[k]] += N[s] * phi[k] * dA;
+                  }
+                }
+              }
+          }
+        }
+    if (std::abs(covered - facet_area) > 1e-6 * facet_area)
+      ++uncovered;
   }
-  MPI_Allreduce(MPI_IN_PLACE, &missing, 1, MPI_INT, MPI_SUM, comm);
-  if (missing > 0)
-    throw ComputationError(fmt::format("node pairs: {} upper contact nodes above the interface have no lower "
-                                       "facet beneath them",
-                                       missing));
+  MPI_Allreduce(MPI_IN_PLACE, &uncovered, 1, MPI_INT, MPI_SUM, comm);
+  if (uncovered > 0)
+    throw ComputationError(fmt::format("node pairs: {} upper contact facets in the mortar zone are not wholly over "
+                                       "the lower body's interface",
+                                       uncovered));
+
+  // A node's facets may lie on several processes: the sums of the nodes
+  // other processes own go to them (node, kind, block, value: kind 0 the
+  // area, 1 the gap's, 2 an upper, 3 a lower weight).
+  local.clear();
+  for (auto it = sums.begin(); it != sums.end();)
+  {
+    const auto& [node, s] = *it;
+    if (node >= first && node < first + owned)
+    {
+      ++it;
+      continue;
+    }
+    const double i = static_cast<double>(node);
+    local.insert(local.end(), {i, 0, -1, s.area, i, 1, -1, s.gap_area});
+    for (const auto& [block, value] : s.upper)
+      local.insert(local.end(), {i, 2, static_cast<double>(block), value});
+    for (const auto& [block, value] : s.lower)
+      local.insert(local.end(), {i, 3, static_cast<double>(block), value});
+    it = sums.erase(it);
+  }
+  const std::vector<double> shared = all_gather(comm, local);
+  for (std::size_t e = 0; e + 3 < shared.size(); e += 4)
+  {
+    const auto node = static_cast<std::int64_t>(shared[e]);
+    if (node < first || node >= first + owned)
+      continue;
+    MortarSums& s = sums[node];
+    const int kind = static_cast<int>(shared[e + 1]);
+    const auto block = static_cast<std::int64_t>(shared[e + 2]);
+    const double value = shared[e + 3];
+    if (kind == 0)
+      s.area += value;
+    else if (kind == 1)
+      s.gap_area += value;
+    else
+      (kind == 2 ? s.upper : s.lower)[block] += value;
+  }
+  for (const auto& [node, s] : sums)
+  {
+    if (!(s.area > 0))
+      continue; // only on edge-on facets
+    const double* p = &x[3 * (node - first)];
+    NodePair pair;
+    pair.node = node;
+    for (const auto& [block, value] : s.upper)
+      pair.upper.push_back({block, value / s.area});
+    for (const auto& [block, value] : s.lower)
+      pair.lower.push_back({block, value / s.area});
+    pair.x = {p[0], p[1], p[2]};
+    pair.area_m2 = s.area;
+    pair.initial_gap_m = s.gap_area / s.area;
+    pairs.push_back(std::move(pair));
+  }
+  spdlog::debug("node pairs: {} mortar pairs on this process from {} facets ({} edge-on), {:.2f} s", sums.size(),
+                upper_facets.size(), edge_on, std::chrono::duration<double>(Clock::now() - mortar_start).count());
   return pairs;
 }
 } // namespace rollcheck::fem

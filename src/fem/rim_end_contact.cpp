@@ -153,27 +153,33 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
     return s.radius_m - std::sqrt(s.radius_m * s.radius_m - on_sheet * on_sheet);
   };
   const double tol = 1e-9 * H;
-  // A rounded edge on the block: the fillet's nodes whose height above the
-  // block's top is below r_e / 8 (within about r_e / 2 of the fillet's start,
-  // some 20 boundary layers s at the bearing's load) meet it node to surface;
-  // the contact must stay well inside that zone (checked after the solve).
+  // A rounded edge on the block: the body's contact face up to r_e / 8 above
+  // the block's top (on the fillet, within about r_e / 2 of its start, some
+  // 20 boundary layers s at the bearing's load) meets it by mortar pairs,
+  // the sheet's conforming part too: where a node-to-node pair shares facets
+  // with a mortar pair, each lumps the other's share of them (measured on
+  // the preprint's 60 deg end: the seam's node read 0.8 of the sheet beside
+  // it, the fillet's first node 1.1 of the next). The contact must stay well
+  // inside the zone (checked after the solve).
   const double surface_zone_m = s.edge_radius_m / 8;
   if (block)
   {
     // The block's top stays still: its bottom is the "top" face of weight 0.
     problem.set_approach_profile([](const double* x) { return x[2] > 0 ? 1.0 : 0.0; });
     problem.set_penalty_scale([](const double*) { return 0.0; }); // no rigid plane
-    std::function<bool(const double*)> to_surface;
+    std::function<bool(const double*)> mortar_zone;
     if (s.edge_radius_m > 0)
-      to_surface = [&](const double* x) { return x[0] > -study.fillet_start_m && x[2] <= surface_zone_m; };
-    std::vector<NodePair> pairs
-        = interface_node_pairs(problem, rim_interface_tolerance(H, sizes.edge_m, s.edge_radius_m), to_surface);
+      mortar_zone = [&](const double* x) { return x[2] <= surface_zone_m; };
+    // The fillet's height (0 on the sheet) plus the flattened sheet's.
+    const double r_e = s.edge_radius_m, x_t = study.fillet_start_m;
+    auto initial_gap = [&](const double* x) {
+      const double along_fillet = std::clamp(x[0] + x_t, 0.0, r_e);
+      return r_e - std::sqrt(r_e * r_e - along_fillet * along_fillet) + sheet_height(x[1]);
+    };
+    std::vector<NodePair> pairs = interface_node_pairs(
+        problem, rim_interface_tolerance(H, sizes.edge_m, s.edge_radius_m), initial_gap, mortar_zone);
     for (NodePair& pair : pairs)
-    {
-      // The fillet's height (0 on the interface) plus the flattened sheet's.
-      pair.initial_gap_m = pair.x[2] + sheet_height(pair.x[1]);
       pair.stiffness_pa_per_m = s.penalty_c * body_modulus / sizes.contact_m * penalty_scale(pair.x.data());
-    }
     problem.set_node_pairs(std::move(pairs));
   }
   else
@@ -217,7 +223,7 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
     for (const PairPressure& pair : gather_pair_pressures(problem))
       if (pair.x[2] > surface_zone_m / 2 && pair.pressure_pa > 0)
         throw ComputationError(fmt::format("rim: the contact runs up the fillet to {:.3g} m above the block, beyond "
-                                           "half the node-to-surface zone ({:.3g} m)",
+                                           "half the mortar pairs' zone ({:.3g} m)",
                                            pair.x[2], surface_zone_m));
 
   // Where the sheet ends: an acute rim's fillet starts further out than r_e

@@ -49,17 +49,17 @@
 // half-space theory's reduction for two bodies, used whatever R / H, since
 // the flattened geometry differs from the cylinder only away from the
 // contact strip) and E* = E / (2 (1 - nu^2)) in b and p0. Frictionless
-// penalty contact by node pairs (fem/penalty_contact.h NodePair; P.
-// Wriggers, Computational Contact Mechanics, 2nd ed., 2006, sec. 4.1 and
-// 4.2): node to node across the conforming part, where each body node has
-// a twin; a rounded edge's fillet lifts off the block's top beyond x = -x_t,
-// and its nodes less than r_e / 8 above it (within about r_e / 2 of the
-// fillet's start, some 20 s at a bearing's load) are paired node to
-// surface with the point of the block's top triangle directly below (its 3
-// nodes' barycentric weights), g0 the node's exact height on the fillet
-// plus the sheet's; a contact that reached above r_e / 16 would raise
-// ComputationError. The block's top is graded under the fillet's start as
-// the body is. Runs on any number of processes (pairs across them).
+// penalty contact by node pairs (fem/penalty_contact.h NodePair): node to
+// node (P. Wriggers, Computational Contact Mechanics, 2nd ed., 2006, sec.
+// 4.1) where each body node has a twin, for a sharp edge; a rounded edge's
+// fillet lifts off the block's top beyond x = -x_t, so the body's contact
+// face up to r_e / 8 above the block's top (the sheet and the fillet within
+// about r_e / 2 of its start, some 20 s at a bearing's load) takes the
+// mortar's weighted gap against the block's top facets instead, g0 the mean
+// of the fillet's exact height plus the sheet's; a contact that reached
+// above r_e / 16 would raise ComputationError. The block's top is graded
+// under the fillet's start as the body is. Runs on any number of processes
+// (pairs across them).
 #include <array>
 #include <cstdint>
 #include <filesystem>

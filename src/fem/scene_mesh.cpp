@@ -713,7 +713,7 @@ SceneMesh build_rim_block_mesh(MPI_Comm comm, const RimEndGeometry& g, const Rim
   parts.in_plane = [](double, double, double) { return true; };
   tag_parts(scene, parts);
   // The body's face on the interface and, rounded, its fillet (which lifts
-  // off the block's top: node to surface), the cylinder of radius r_e about
+  // off the block's top: mortar pairs), the cylinder of radius r_e about
   // the line (-x_t, y, r_e), x_t = r_e tan((180 deg - a) / 2).
   const double r_e = g.edge_radius_m, x_t = fillet_start_distance(r_e, g.interior_angle_rad);
   upper_interface_facets(

@@ -184,7 +184,7 @@ SceneMesh build_square_end_grid_mesh(MPI_Comm comm, const RimEndGeometry& geomet
 /// edge's fillet leaves the interface at x = -x_t and lifts off the block's
 /// top, which stays one flat face: conforming with the body up to x = -x_t,
 /// free beyond it and graded under the fillet's start as the body is (the
-/// sizes mirrored in z = 0), for node-to-surface pairs there.
+/// sizes mirrored in z = 0), for the mortar pairs there.
 SceneMesh build_rim_block_mesh(MPI_Comm comm, const RimEndGeometry& geometry, const RimEndSizes& sizes);
 
 /// Two elastic bodies pressed together in plane strain, for line Hertz
