@@ -16,6 +16,7 @@
 #include "fem/petsc_session.h"
 #include "fem/rim_end_contact.h"
 #include "fem/scene_mesh.h"
+#include "preprint_steel_end.h"
 #include <cmath>
 #include <cstdio>
 #include <gtest/gtest.h>
@@ -27,47 +28,80 @@
 
 namespace
 {
-constexpr double degree = std::numbers::pi / 180;
+/// Every rank's (block, value) pairs summed per block, on every rank.
+std::map<std::int64_t, double> summed_over_ranks(const std::vector<double>& local)
+{
+  std::map<std::int64_t, double> sum;
+  const std::vector<double> all = rollcheck::fem::all_gather(MPI_COMM_WORLD, local);
+  for (std::size_t i = 0; i < all.size(); i += 2)
+    sum[static_cast<std::int64_t>(all[i])] += all[i + 1];
+  return sum;
 }
+
+/// The loads a unit traction puts through the pairs on one side's nodes
+/// (the upper's, or the lower's): sum_i A_i times the node's weight in pair i.
+std::map<std::int64_t, double> unit_traction_loads(const std::vector<rollcheck::fem::NodePair>& pairs, bool upper)
+{
+  std::vector<double> local;
+  for (const rollcheck::fem::NodePair& pair : pairs)
+    for (const rollcheck::fem::WeightedBlock& w : upper ? pair.upper : pair.lower)
+      local.insert(local.end(), {static_cast<double>(w.block), pair.area_m2 * w.weight});
+  return summed_over_ranks(local);
+}
+
+/// `shares`: this rank's (block, a third of a facet's area, whether the
+/// facet counts) for each node of each facet. Over the nodes whose facets
+/// all count, the largest |load / int phi dA - 1|, and how many they are.
+std::pair<double, int> largest_load_error(const std::vector<double>& shares,
+                                          const std::map<std::int64_t, double>& load)
+{
+  std::map<std::int64_t, std::pair<double, bool>> consistent;
+  const std::vector<double> all = rollcheck::fem::all_gather(MPI_COMM_WORLD, shares);
+  for (std::size_t i = 0; i < all.size(); i += 3)
+  {
+    auto [it, added] = consistent.try_emplace(static_cast<std::int64_t>(all[i]), 0.0, true);
+    it->second.first += all[i + 1];
+    it->second.second = it->second.second && all[i + 2] > 0;
+  }
+  double worst = 0;
+  int counted = 0;
+  for (const auto& [block, c] : consistent)
+    if (c.second)
+    {
+      ++counted;
+      const auto it = load.find(block);
+      worst = std::max(worst, std::abs((it == load.end() ? 0.0 : it->second) / c.first - 1));
+    }
+  return {worst, counted};
+}
+
+/// Half the cross product's z of (q - p) and (r - p): the projected area.
+double projected_area(const double* p, const double* q, const double* r)
+{
+  return 0.5 * std::abs((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]));
+}
+} // namespace
 
 TEST(MortarPairs, UniformTractionReachesTheBlockAsItsConsistentLoads)
 {
   rollcheck::fem::ensure_petsc();
-  const double b = 1.16e-4, H = 36.2 * b, edge_radius = 4e-4, angle = 60 * degree;
-  const double fillet_start = rollcheck::fem::fillet_start_distance(edge_radius, angle);
-  rollcheck::fem::RimEndSizes sizes;
-  sizes.contact_m = b / 6;
-  sizes.contact_zone_m = sizes.edge_zone_m = 1.5 * b;
-  sizes.edge_m = b / 8;
-  sizes.edge_x_m = -fillet_start;
-  sizes.edge_band_m = 0.5 * b;
-  sizes.far_m = H / 4;
-  const rollcheck::fem::RimEndGeometry geometry{0.0224, angle, edge_radius, H, 3 * H, true};
-  const rollcheck::fem::SceneMesh scene = rollcheck::fem::build_rim_block_mesh(MPI_COMM_WORLD, geometry, sizes);
+  const PreprintSteelEnd end = mesh_preprint_steel_end();
+  const double edge_radius = end.edge_radius_m, fillet_start = end.fillet_start_m;
+  const rollcheck::fem::RimEndSizes& sizes = end.sizes;
+  const rollcheck::fem::SceneMesh& scene = end.scene;
   const double E = 200e9;
   rollcheck::fem::PenaltyContact problem(scene, rollcheck::fem::Model::solid, 1, E, 0.3, 10 * E / sizes.contact_m, "");
-  const double tol = rollcheck::fem::rim_interface_tolerance(H, sizes.edge_m, edge_radius);
+  const double tol = rollcheck::fem::rim_interface_tolerance(end.depth_m, sizes.edge_m, edge_radius);
   // The body's contact face up to r_e / 8 above the block, as the rim scene pairs it.
   auto mortar_zone = [&](const double* x) { return x[2] <= edge_radius / 8; };
   auto no_gap = [](const double*) { return 0.0; };
   const std::vector<rollcheck::fem::NodePair> pairs = rollcheck::fem::interface_node_pairs(problem, tol, no_gap, mortar_zone);
 
-  // The loads the pairs put on the block's nodes under a unit traction.
-  std::vector<double> local;
   int on_fillet = 0;
   for (const rollcheck::fem::NodePair& pair : pairs)
-  {
-    if (pair.x[2] >= tol)
-      ++on_fillet;
-    for (const rollcheck::fem::WeightedBlock& w : pair.lower)
-      local.insert(local.end(), {static_cast<double>(w.block), pair.area_m2 * w.weight});
-  }
+    on_fillet += pair.x[2] >= tol ? 1 : 0;
   MPI_Allreduce(MPI_IN_PLACE, &on_fillet, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
   ASSERT_GT(on_fillet, 100) << "the fillet's nodes above the block";
-  std::map<std::int64_t, double> load;
-  const std::vector<double> loads = rollcheck::fem::all_gather(MPI_COMM_WORLD, local);
-  for (std::size_t i = 0; i < loads.size(); i += 2)
-    load[static_cast<std::int64_t>(loads[i])] += loads[i + 1];
 
   // The contact facets whose nodes all take mortar pairs: a unit traction
   // covers their projections onto the block (beyond the zone a facet shares
@@ -109,7 +143,7 @@ TEST(MortarPairs, UniformTractionReachesTheBlockAsItsConsistentLoads)
   const std::int64_t first = map->local_range()[0];
   const std::int32_t owned = map->size_local();
   const std::vector<double>& x = problem.dof_coordinates();
-  local.clear();
+  std::vector<double> local;
   for (std::int32_t c = 0; c < topology.index_map(3)->size_local(); ++c)
   {
     std::vector<std::int32_t> top;
@@ -126,7 +160,7 @@ TEST(MortarPairs, UniformTractionReachesTheBlockAsItsConsistentLoads)
     const double* p = &x[3 * top[0]];
     const double* q = &x[3 * top[1]];
     const double* r = &x[3 * top[2]];
-    const double area = 0.5 * std::abs((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]));
+    const double area = projected_area(p, q, r);
     bool inside = std::max({p[0], q[0], r[0]}) > -fillet_start;
     for (int i = 0; i <= 4 && inside; ++i)
       for (int j = 0; i + j <= 4 && inside; ++j)
@@ -140,24 +174,7 @@ TEST(MortarPairs, UniformTractionReachesTheBlockAsItsConsistentLoads)
       local.insert(local.end(), {static_cast<double>(g), area / 3, inside ? 1.0 : 0.0});
     }
   }
-  std::map<std::int64_t, std::pair<double, bool>> consistent; // int phi_j, every facet under the fillet's
-  const std::vector<double> shares = rollcheck::fem::all_gather(MPI_COMM_WORLD, local);
-  for (std::size_t i = 0; i < shares.size(); i += 3)
-  {
-    auto [it, added] = consistent.try_emplace(static_cast<std::int64_t>(shares[i]), 0.0, true);
-    it->second.first += shares[i + 1];
-    it->second.second = it->second.second && shares[i + 2] > 0;
-  }
-  int checked = 0;
-  double worst = 0;
-  for (const auto& [block, c] : consistent)
-  {
-    if (!c.second)
-      continue;
-    ++checked;
-    const auto it = load.find(block);
-    worst = std::max(worst, std::abs((it == load.end() ? 0.0 : it->second) / c.first - 1));
-  }
+  const auto [worst, checked] = largest_load_error(local, unit_traction_loads(pairs, false));
   std::printf("%d pairs on the fillet; %d block nodes under it: largest |load / int phi - 1| %.3g\n", on_fillet, checked,
               worst);
   ASSERT_GT(checked, 20);
@@ -166,14 +183,6 @@ TEST(MortarPairs, UniformTractionReachesTheBlockAsItsConsistentLoads)
   // And the body's nodes: sum_i t A_i a_ik = t int N_k dA where every
   // contact facet of node k has its nodes paired (a node-to-node pair
   // beside a mortar pair would take the shared facets' load twice).
-  std::map<std::int64_t, double> body_load;
-  local.clear();
-  for (const rollcheck::fem::NodePair& pair : pairs)
-    for (const rollcheck::fem::WeightedBlock& w : pair.upper)
-      local.insert(local.end(), {static_cast<double>(w.block), pair.area_m2 * w.weight});
-  const std::vector<double> body_loads = rollcheck::fem::all_gather(MPI_COMM_WORLD, local);
-  for (std::size_t i = 0; i < body_loads.size(); i += 2)
-    body_load[static_cast<std::int64_t>(body_loads[i])] += body_loads[i + 1];
   const auto facet_cells = topology.connectivity(2, 3);
   const auto cell_facets = topology.connectivity(3, 2);
   local.clear();
@@ -189,7 +198,7 @@ TEST(MortarPairs, UniformTractionReachesTheBlockAsItsConsistentLoads)
     const double* p = &x[3 * dofs[0]];
     const double* q = &x[3 * dofs[1]];
     const double* r = &x[3 * dofs[2]];
-    const double area = 0.5 * std::abs((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]));
+    const double area = projected_area(p, q, r);
     // Every node paired: node to node on the interface, or by the mortar.
     auto paired = [&](const double* v) { return std::abs(v[2]) < tol || mortar_zone(v); };
     const bool zone = paired(p) && paired(q) && paired(r);
@@ -199,24 +208,7 @@ TEST(MortarPairs, UniformTractionReachesTheBlockAsItsConsistentLoads)
       local.insert(local.end(), {static_cast<double>(g), area / 3, zone ? 1.0 : 0.0});
     }
   }
-  consistent.clear();
-  const std::vector<double> body_shares = rollcheck::fem::all_gather(MPI_COMM_WORLD, local);
-  for (std::size_t i = 0; i < body_shares.size(); i += 3)
-  {
-    auto [it, added] = consistent.try_emplace(static_cast<std::int64_t>(body_shares[i]), 0.0, true);
-    it->second.first += body_shares[i + 1];
-    it->second.second = it->second.second && body_shares[i + 2] > 0;
-  }
-  int body_checked = 0;
-  double body_worst = 0;
-  for (const auto& [block, c] : consistent)
-  {
-    if (!c.second)
-      continue;
-    ++body_checked;
-    const auto it = body_load.find(block);
-    body_worst = std::max(body_worst, std::abs((it == body_load.end() ? 0.0 : it->second) / c.first - 1));
-  }
+  const auto [body_worst, body_checked] = largest_load_error(local, unit_traction_loads(pairs, true));
   std::printf("%d body nodes in the zone: largest |load / int N - 1| %.3g\n", body_checked, body_worst);
   ASSERT_GT(body_checked, 100);
   EXPECT_LT(body_worst, 1e-9);

@@ -6,6 +6,7 @@
 #include "fem/rim_end_contact.h"
 #include "fem/petsc_session.h"
 #include "fem/scene_mesh.h"
+#include "preprint_steel_end.h"
 #include <algorithm>
 #include <dolfinx/mesh/utils.h>
 #include <cmath>
@@ -216,17 +217,11 @@ TEST(RimEndContact, FilletNodesStandClearOfTheInterfaceTolerance)
   // r_e = 0.4 mm) at h_e = b / 8; its fourth level, h_e = b / 1406, stopped
   // on an unpaired interface node with the tolerance 1e-9 H.
   fem::ensure_petsc();
-  const double b = 1.16e-4, H = 36.2 * b, edge_radius = 4e-4, angle = 60 * degree;
-  const double fillet_start = fem::fillet_start_distance(edge_radius, angle);
-  fem::RimEndSizes sizes;
-  sizes.contact_m = b / 6;
-  sizes.contact_zone_m = sizes.edge_zone_m = 1.5 * b;
-  sizes.edge_m = b / 8;
-  sizes.edge_x_m = -fillet_start;
-  sizes.edge_band_m = 0.5 * b;
-  sizes.far_m = H / 4;
-  const fem::RimEndGeometry geometry{0.0224, angle, edge_radius, H, 3 * H, true};
-  const fem::SceneMesh scene = fem::build_rim_block_mesh(MPI_COMM_WORLD, geometry, sizes);
+  const PreprintSteelEnd end = mesh_preprint_steel_end();
+  const double b = end.half_width_m, H = end.depth_m, edge_radius = end.edge_radius_m;
+  const double fillet_start = end.fillet_start_m;
+  const fem::RimEndSizes& sizes = end.sizes;
+  const fem::SceneMesh& scene = end.scene;
   std::span<const double> x = scene.mesh->geometry().x();
   double lowest_on_fillet = 1e300, highest_on_interface = 0;
   for (std::size_t i = 0; i < x.size() / 3; ++i)
