@@ -830,8 +830,8 @@ std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double
 
   const auto mortar_start = Clock::now();
   // Mortar: the upper body's contact facets with a node in the zone, and
-  // the lower body's interface facets beneath
-  // their horizontal bounding box, gathered from every process.
+  // the lower body's interface facets beneath their horizontal bounding
+  // box, gathered from every process.
   const auto& mesh = *problem.mesh();
   const auto facet_cells = mesh.topology().connectivity(2, 3);
   const auto cell_facets = mesh.topology().connectivity(3, 2);
