@@ -937,6 +937,7 @@ std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double
     std::array<Point2, 3> t;
     for (int k = 0; k < 3; ++k)
       t[k] = {x[3 * dof[k]], x[3 * dof[k] + 1]};
+    const std::array<bool, 3> selected{in_zone(dof[0]), in_zone(dof[1]), in_zone(dof[2])};
     const double facet_area = 0.5 * std::abs(cross(t[0], t[1], t[2]));
     double longest = 0;
     for (int k = 0; k < 3; ++k)
@@ -976,7 +977,7 @@ std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double
                 const double g0 = initial_gap(point);
                 for (int s = 0; s < 3; ++s)
                 {
-                  if (!in_zone(dof[s]))
+                  if (!selected[s])
                     continue;
                   MortarSums& to = sums[global(dof[s])];
                   to.area += N[s] * dA;
