@@ -930,7 +930,7 @@ std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double
   // pieces' integrals go to the facet's selected nodes.
   std::map<std::int64_t, MortarSums> sums;
   std::vector<std::int32_t> seen(facets.size(), -1);
-  int uncovered = 0, edge_on = 0;
+  int uncovered = 0;
   for (std::size_t u = 0; u < upper_facets.size(); ++u)
   {
     const std::array<std::int32_t, 3>& dof = upper_facets[u];
@@ -942,13 +942,12 @@ std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double
     double longest = 0;
     for (int k = 0; k < 3; ++k)
       longest = std::max(longest, std::hypot(t[k][0] - t[(k + 1) % 3][0], t[k][1] - t[(k + 1) % 3][1]));
-    // A facet seen edge-on from the interface (a side face's facet whose
-    // corners all lie on the fillet's end arc) carries no vertical contact.
+    // A contact facet seen edge-on from the interface gives its nodes no
+    // area to weigh their gaps by (the scene's tagging must not pass one).
     if (!(facet_area > 1e-12 * longest * longest))
-    {
-      ++edge_on;
-      continue;
-    }
+      throw ComputationError(fmt::format("node pairs: a contact facet in the mortar zone at ({:.6g}, {:.6g}) m is "
+                                         "seen edge-on from the interface (no projected area)",
+                                         t[0][0], t[0][1]));
     double covered = 0;
     const std::array<int, 4> r = bucket_range(t);
     for (int i = r[0]; i <= r[2]; ++i)
@@ -1039,8 +1038,6 @@ std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double
   }
   for (const auto& [node, s] : sums)
   {
-    if (!(s.area > 0))
-      continue; // only on edge-on facets
     const double* p = &x[3 * (node - first)];
     NodePair pair;
     pair.node = node;
@@ -1053,8 +1050,8 @@ std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double
     pair.initial_gap_m = s.gap_area / s.area;
     pairs.push_back(std::move(pair));
   }
-  spdlog::debug("node pairs: {} mortar pairs on this process from {} facets ({} edge-on), {:.2f} s", sums.size(),
-                upper_facets.size(), edge_on, std::chrono::duration<double>(Clock::now() - mortar_start).count());
+  spdlog::debug("node pairs: {} mortar pairs on this process from {} facets, {:.2f} s", sums.size(),
+                upper_facets.size(), std::chrono::duration<double>(Clock::now() - mortar_start).count());
   return pairs;
 }
 } // namespace rollcheck::fem

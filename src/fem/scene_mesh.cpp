@@ -723,6 +723,15 @@ SceneMesh build_rim_block_mesh(MPI_Comm comm, const RimEndGeometry& g, const Rim
                || (r_e > 0 && x > -x_t - tol && z < r_e && std::abs(std::hypot(x + x_t, z - r_e) - r_e) < 1e-6 * r_e);
       },
       2);
+  // A facet of the side planes y = 0, H whose corners all lie on the
+  // fillet's end arc passes the corner test but is not on the fillet.
+  const int fdim = scene.mesh->topology().dim() - 1;
+  const std::vector<double> mid = dolfinx::mesh::compute_midpoints(*scene.mesh, fdim, scene.contact_facets);
+  std::vector<std::int32_t> on_fillet_or_face;
+  for (std::size_t i = 0; i < scene.contact_facets.size(); ++i)
+    if (std::abs(mid[3 * i + 1]) > tol && std::abs(mid[3 * i + 1] - H) > tol)
+      on_fillet_or_face.push_back(scene.contact_facets[i]);
+  scene.contact_facets = std::move(on_fillet_or_face);
   scene.symmetry_multiplicity = 2;
   scene.wall_s = seconds_since(start);
   return scene;
