@@ -17,6 +17,7 @@
 #include "fem/rim_end_contact.h"
 #include "fem/scene_mesh.h"
 #include "preprint_steel_end.h"
+#include <dolfinx/mesh/utils.h>
 #include <cmath>
 #include <cstdio>
 #include <gtest/gtest.h>
@@ -107,16 +108,16 @@ TEST(MortarPairs, UniformTractionReachesTheBlockAsItsConsistentLoads)
   // covers their projections onto the block (beyond the zone a facet shares
   // its area with nodes without pairs).
   const auto& topology = scene.mesh->topology();
-  const auto facet_vertices = topology.connectivity(2, 0);
-  ASSERT_TRUE(facet_vertices);
+  const std::vector<std::int32_t> facet_nodes
+      = dolfinx::mesh::entities_to_geometry(*scene.mesh, 2, scene.contact_facets, false);
   std::span<const double> X = scene.mesh->geometry().x();
   std::vector<double> local_facets;
-  for (std::int32_t f : scene.contact_facets)
+  for (std::size_t f = 0; f < scene.contact_facets.size(); ++f)
   {
     std::vector<double> corners;
-    for (std::int32_t v : facet_vertices->links(f))
-      if (mortar_zone(&X[3 * v]))
-        corners.insert(corners.end(), {X[3 * v], X[3 * v + 1]});
+    for (int k = 0; k < 3; ++k)
+      if (const double* v = &X[3 * facet_nodes[3 * f + k]]; mortar_zone(v))
+        corners.insert(corners.end(), {v[0], v[1]});
     if (corners.size() == 6)
       local_facets.insert(local_facets.end(), corners.begin(), corners.end());
   }
