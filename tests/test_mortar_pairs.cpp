@@ -8,8 +8,9 @@
 // barycentric weights of the point below node i and A_i its area, gives
 // each block node what the fillet nodes above its facets happen to carry).
 // And a displacement u_z linear in x and y, the same on both bodies, leaves
-// every pair's gap at its g0. CTest runs it on 1 and on 2 processes (the
-// facets of a node on two ranks).
+// every pair's gap at its g0. The dual weights make each pair read its own
+// node above, and node to node where the faces match. CTest runs it on 1
+// and on 2 processes (the facets of a node on two ranks).
 #include "core/error.h"
 #include "fem/all_gather.h"
 #include "fem/penalty_contact.h"
@@ -103,6 +104,25 @@ TEST(MortarPairs, UniformTractionReachesTheBlockAsItsConsistentLoads)
     on_fillet += pair.x[2] >= tol ? 1 : 0;
   MPI_Allreduce(MPI_IN_PLACE, &on_fillet, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
   ASSERT_GT(on_fillet, 100) << "the fillet's nodes above the block";
+
+  // The dual weights: each pair reads its own node above (a_k = delta_ik),
+  // and on the sheet, where the two faces' meshes match, one block node
+  // below (its twin) with weight 1: the node-to-node pair.
+  int matched = 0, not_node_to_node = 0;
+  for (const rollcheck::fem::NodePair& pair : pairs)
+  {
+    EXPECT_EQ(pair.upper.size(), 1u);
+    EXPECT_EQ(pair.upper.front().block, pair.node);
+    if (pair.x[0] < -fillet_start - end.half_width_m)
+    {
+      ++matched;
+      not_node_to_node += pair.lower.size() == 1 && std::abs(pair.lower.front().weight - 1) < 1e-9 ? 0 : 1;
+    }
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &matched, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &not_node_to_node, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_GT(matched, 1000);
+  EXPECT_EQ(not_node_to_node, 0) << "of " << matched << " pairs on the sheet";
 
   // The contact facets whose nodes all take mortar pairs: a unit traction
   // covers their projections onto the block (beyond the zone a facet shares

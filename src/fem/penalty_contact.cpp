@@ -724,12 +724,12 @@ std::vector<Point2> clip_to_triangle(std::vector<Point2> subject, std::array<Poi
 constexpr std::array<std::array<double, 2>, 2> dunavant_degree_4
     = {{{0.445948490915965, 0.223381589678011}, {0.091576213509771, 0.109951743655322}}};
 
-/// The mortar sums of one upper node (fem::NodePair): A = int N_i, g0 A,
-/// int N_i N_k and int N_i phi_j, over the projection onto the interface.
+/// The mortar sums of one upper node (fem::NodePair): A = int N_i,
+/// int psi_i g0 and int psi_i phi_j, over the projection onto the interface.
 struct MortarSums
 {
   double area = 0, gap_area = 0;
-  std::map<std::int64_t, double> upper, lower;
+  std::map<std::int64_t, double> lower;
 };
 } // namespace
 
@@ -978,14 +978,13 @@ std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double
                 {
                   if (!selected[s])
                     continue;
+                  // The dual shape function, biorthogonal to N on the facet.
+                  const double psi = 4 * N[s] - 1;
                   MortarSums& to = sums[global(dof[s])];
                   to.area += N[s] * dA;
-                  to.gap_area += N[s] * g0 * dA;
+                  to.gap_area += psi * g0 * dA;
                   for (int k = 0; k < 3; ++k)
-                  {
-                    to.upper[global(dof[k])] += N[s] * N[k] * dA;
-                    to.lower[facets[m].node[k]] += N[s] * phi[k] * dA;
-                  }
+                    to.lower[facets[m].node[k]] += psi * phi[k] * dA;
                 }
               }
           }
@@ -1001,7 +1000,7 @@ std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double
 
   // A node's facets may lie on several processes: the sums of the nodes
   // other processes own go to them (node, kind, block, value: kind 0 the
-  // area, 1 the gap's, 2 an upper, 3 a lower weight).
+  // area, 1 the gap's, 2 a lower weight).
   local.clear();
   for (auto it = sums.begin(); it != sums.end();)
   {
@@ -1013,10 +1012,8 @@ std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double
     }
     const double i = static_cast<double>(node);
     local.insert(local.end(), {i, 0, -1, s.area, i, 1, -1, s.gap_area});
-    for (const auto& [block, value] : s.upper)
-      local.insert(local.end(), {i, 2, static_cast<double>(block), value});
     for (const auto& [block, value] : s.lower)
-      local.insert(local.end(), {i, 3, static_cast<double>(block), value});
+      local.insert(local.end(), {i, 2, static_cast<double>(block), value});
     it = sums.erase(it);
   }
   const std::vector<double> shared = all_gather(comm, local);
@@ -1034,17 +1031,19 @@ std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double
     else if (kind == 1)
       s.gap_area += value;
     else
-      (kind == 2 ? s.upper : s.lower)[block] += value;
+      s.lower[block] += value;
   }
   for (const auto& [node, s] : sums)
   {
     const double* p = &x[3 * (node - first)];
     NodePair pair;
     pair.node = node;
-    for (const auto& [block, value] : s.upper)
-      pair.upper.push_back({block, value / s.area});
+    pair.upper = {{node, 1.0}};
+    // Where the faces match, psi_i's integrals against the other nodes'
+    // phi_j vanish but for rounding: no Jacobian entries for those.
     for (const auto& [block, value] : s.lower)
-      pair.lower.push_back({block, value / s.area});
+      if (std::abs(value) > 1e-12 * s.area)
+        pair.lower.push_back({block, value / s.area});
     pair.x = {p[0], p[1], p[2]};
     pair.area_m2 = s.area;
     pair.initial_gap_m = s.gap_area / s.area;
