@@ -17,7 +17,7 @@
 #include "fem/petsc_session.h"
 #include "fem/rim_end_contact.h"
 #include "fem/scene_mesh.h"
-#include "preprint_steel_end.h"
+#include "steel_end_scene.h"
 #include <dolfinx/mesh/utils.h>
 #include <cmath>
 #include <cstdio>
@@ -87,7 +87,7 @@ double projected_area(const double* p, const double* q, const double* r)
 TEST(MortarPairs, UniformTractionReachesTheBlockAsItsConsistentLoads)
 {
   rollcheck::fem::ensure_petsc();
-  const PreprintSteelEnd end = mesh_preprint_steel_end();
+  const SteelEndScene end = mesh_preprint_steel_end();
   const double edge_radius = end.edge_radius_m, fillet_start = end.fillet_start_m;
   const rollcheck::fem::RimEndSizes& sizes = end.sizes;
   const rollcheck::fem::SceneMesh& scene = end.scene;

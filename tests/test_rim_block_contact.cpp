@@ -20,7 +20,7 @@
 #include "contact/hertz.h"
 #include "fem/petsc_session.h"
 #include "fem/rim_end_contact.h"
-#include "preprint_steel_end.h"
+#include "steel_end_scene.h"
 #include <dolfinx/mesh/utils.h>
 #include <cmath>
 #include <cstdio>
@@ -210,7 +210,7 @@ TEST(RimEndContact, FlatSheetStandsInForTheCylinderWhereTheBlockIsDeeperThanR)
 TEST(RimBlockMesh, NoContactFacetLiesInASidePlane)
 {
   rollcheck::fem::ensure_petsc();
-  const PreprintSteelEnd end = mesh_oloid_square_steel_end(121.249);
+  const SteelEndScene end = mesh_oloid_square_steel_end(121.249);
   const dolfinx::mesh::Mesh& mesh = *end.scene.mesh;
   const std::vector<std::int32_t>& facets = end.scene.contact_facets;
   const std::vector<std::int32_t> nodes = dolfinx::mesh::entities_to_geometry(mesh, 2, facets, false);

@@ -6,7 +6,7 @@
 #include "fem/rim_end_contact.h"
 #include "fem/petsc_session.h"
 #include "fem/scene_mesh.h"
-#include "preprint_steel_end.h"
+#include "steel_end_scene.h"
 #include <algorithm>
 #include <dolfinx/mesh/utils.h>
 #include <cmath>
@@ -217,7 +217,7 @@ TEST(RimEndContact, FilletNodesStandClearOfTheInterfaceTolerance)
   // r_e = 0.4 mm) at h_e = b / 8; its fourth level, h_e = b / 1406, stopped
   // on an unpaired interface node with the tolerance 1e-9 H.
   fem::ensure_petsc();
-  const PreprintSteelEnd end = mesh_preprint_steel_end();
+  const SteelEndScene end = mesh_preprint_steel_end();
   const double b = end.half_width_m, H = end.depth_m, edge_radius = end.edge_radius_m;
   const double fillet_start = end.fillet_start_m;
   const fem::RimEndSizes& sizes = end.sizes;

@@ -10,7 +10,7 @@
 #include <mpi.h>
 #include <numbers>
 
-struct PreprintSteelEnd
+struct SteelEndScene
 {
   double half_width_m = 1.16e-4;
   double depth_m = 36.2 * 1.16e-4;
@@ -22,7 +22,7 @@ struct PreprintSteelEnd
   rollcheck::fem::SceneMesh scene;
 };
 
-inline PreprintSteelEnd mesh_steel_end(PreprintSteelEnd end)
+inline SteelEndScene mesh_steel_end(SteelEndScene end)
 {
   const double b = end.half_width_m, H = end.depth_m;
   end.fillet_start_m = rollcheck::fem::fillet_start_distance(end.edge_radius_m, end.interior_angle_rad);
@@ -38,12 +38,12 @@ inline PreprintSteelEnd mesh_steel_end(PreprintSteelEnd end)
   return end;
 }
 
-inline PreprintSteelEnd mesh_preprint_steel_end() { return mesh_steel_end({}); }
+inline SteelEndScene mesh_preprint_steel_end() { return mesh_steel_end({}); }
 
 /// The oloid's square end (90.04 deg) in its steel loop, at `depth_over_b`.
-inline PreprintSteelEnd mesh_oloid_square_steel_end(double depth_over_b)
+inline SteelEndScene mesh_oloid_square_steel_end(double depth_over_b)
 {
-  PreprintSteelEnd end;
+  SteelEndScene end;
   end.half_width_m = 3.464e-5;
   end.depth_m = depth_over_b * end.half_width_m;
   end.interior_angle_rad = 90.0396 * std::numbers::pi / 180;
