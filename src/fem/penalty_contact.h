@@ -67,7 +67,8 @@ struct NewtonReport
 ///   A. Popp, M. Gitterle, M. W. Gee, W. A. Wall, Int. J. Numer. Meth.
 ///   Engng 83, 2010, 1428: dual mortar contact in 3D; B. Yang, T. A.
 ///   Laursen, X. Meng, Int. J. Numer. Meth. Engng 62, 2005, 1183: the
-///   weighted gap under a penalty). A uniform traction then reaches both
+///   weighted gap under a penalty; M. A. Puso, T. A. Laursen, Comput.
+///   Methods Appl. Mech. Engrg 193, 2004, 601: the segments in 3D). A uniform traction then reaches both
 ///   faces' nodes as its consistent loads, whatever the meshes (the contact
 ///   patch test; test_mortar_pairs), and where the faces match the pair is
 ///   node to node. The standard weights N_i (a_k = int N_i N_k dA / A_i)
