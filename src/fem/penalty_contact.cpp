@@ -538,23 +538,16 @@ void PenaltyContact::set_node_pairs(std::vector<NodePair> pairs)
   };
   for (const NodePair& pair : pairs)
   {
-    const double upper_sum = weight_sum(pair.upper), lower_sum = weight_sum(pair.lower);
-    if (!(pair.node >= first && pair.node < first + owned) || std::abs(upper_sum - 1) > 1e-9
-        || std::abs(lower_sum - 1) > 1e-9 || !(pair.area_m2 >= 0) || !(pair.stiffness_pa_per_m > 0)
+    const double lower_sum = weight_sum(pair.lower);
+    if (!(pair.node >= first && pair.node < first + owned) || std::abs(lower_sum - 1) > 1e-9 || !(pair.area_m2 >= 0) || !(pair.stiffness_pa_per_m > 0)
         || !std::isfinite(pair.initial_gap_m))
     {
-      bad = fmt::format("node pairs: a pair must have its node owned here, upper and lower weights each summing to "
-                        "1, area >= 0, stiffness > 0 and a finite gap (node {}, weight sums {} and {}, area {}, "
-                        "stiffness {}, gap {})",
-                        pair.node, upper_sum, lower_sum, pair.area_m2, pair.stiffness_pa_per_m, pair.initial_gap_m);
+      bad = fmt::format("node pairs: a pair must have its node owned here, lower weights summing to 1, area >= 0, "
+                        "stiffness > 0 and a finite gap (node {}, lower weight sum {}, area {}, stiffness {}, gap {})",
+                        pair.node, lower_sum, pair.area_m2, pair.stiffness_pa_per_m, pair.initial_gap_m);
       break;
     }
-    PairBlocks b;
-    for (const WeightedBlock& w : pair.upper)
-    {
-      b.block.push_back(local(w.block));
-      b.slope.push_back(w.weight);
-    }
+    PairBlocks b{{local(pair.node)}, {1.0}};
     for (const WeightedBlock& w : pair.lower)
     {
       b.block.push_back(local(w.block));
@@ -816,7 +809,6 @@ std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double
       continue;
     NodePair pair;
     pair.node = upper;
-    pair.upper = {{upper, 1.0}};
     pair.lower = {{lower, 1.0}};
     pair.x = {p[0], p[1], p[2]};
     pair.area_m2 = upper_area;
@@ -1038,7 +1030,6 @@ std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double
     const double* p = &x[3 * (node - first)];
     NodePair pair;
     pair.node = node;
-    pair.upper = {{node, 1.0}};
     // Where the faces match, psi_i's integrals against the other nodes'
     // phi_j vanish but for rounding: no Jacobian entries for those.
     for (const auto& [block, value] : s.lower)

@@ -93,9 +93,10 @@ struct WeightedBlock
 
 struct NodePair
 {
-  std::int64_t node = -1;             ///< global dof block of the upper node whose pressure the pair reads
-  std::vector<WeightedBlock> upper;   ///< a_k (node to node and mortar: the node, 1)
-  std::vector<WeightedBlock> lower;   ///< w_j (node to node: the twin, 1)
+  /// Global dof block of the upper node: the pair's only upper block, with
+  /// a_k = delta_ik (node to node and the dual mortar alike).
+  std::int64_t node = -1;
+  std::vector<WeightedBlock> lower; ///< w_j (node to node: the twin, 1)
   std::array<double, 3> x{0.0, 0.0, 0.0}; ///< the node's position
   double area_m2 = 0;            ///< A (length in 2D)
   double initial_gap_m = 0;      ///< g0
