@@ -5,7 +5,8 @@
 #  - square end, rigid plane, 3 levels (2 ranks);
 #  - 120 deg sharp rim, rigid plane, 4 levels (2 ranks): the exponent's fit;
 #  - 120 deg rim rounded (2 b), 2.0 GPa, 4 levels (2 ranks): resolved;
-#  - square end on the steel block, 4 levels (2 ranks).
+#  - square end on the steel block, 4 levels (2 ranks);
+#  - the rounded 120 deg rim on the steel block, 4 levels (2 ranks).
 #   bash scripts/bench_rim.sh [ROLLCHECK]
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -15,13 +16,14 @@ run square mpirun -n 2 "$bin" rim
 run sharp120 mpirun -n 2 "$bin" run "$here/cases/rim_obtuse_sharp.toml"
 run rounded120 mpirun -n 2 "$bin" run "$here/cases/rim_obtuse_rounded.toml"
 run steel mpirun -n 2 "$bin" rim --counter-face steel --levels 4
+run rounded120steel mpirun -n 2 "$bin" run "$here/cases/rim_steel_rounded.toml"
 /usr/bin/python3 - "$tmp" <<'PY'
 import json, sys
 tmp = sys.argv[1]
 budget = 60.0
 print("| study | verdict | levels | study s | finest level s | finest / 60 s budget |")
 print("|---|---|---|---|---|---|")
-for name in ["square", "sharp120", "rounded120", "steel"]:
+for name in ["square", "sharp120", "rounded120", "steel", "rounded120steel"]:
     r = json.load(open(f"{tmp}/{name}.json"))
     total = float(open(f"{tmp}/{name}.s").read())
     finest = r["levels"][-1]["wall_s"]
