@@ -539,8 +539,8 @@ void PenaltyContact::set_node_pairs(std::vector<NodePair> pairs)
   for (const NodePair& pair : pairs)
   {
     const double lower_sum = weight_sum(pair.lower);
-    if (!(pair.node >= first && pair.node < first + owned) || std::abs(lower_sum - 1) > 1e-9 || !(pair.area_m2 >= 0) || !(pair.stiffness_pa_per_m > 0)
-        || !std::isfinite(pair.initial_gap_m))
+    if (!(pair.node >= first && pair.node < first + owned) || std::abs(lower_sum - 1) > 1e-9
+        || !(pair.area_m2 >= 0) || !(pair.stiffness_pa_per_m > 0) || !std::isfinite(pair.initial_gap_m))
     {
       bad = fmt::format("node pairs: a pair must have its node owned here, lower weights summing to 1, area >= 0, "
                         "stiffness > 0 and a finite gap (node {}, lower weight sum {}, area {}, stiffness {}, gap {})",
