@@ -40,19 +40,23 @@ std::map<std::int64_t, double> summed_over_ranks(const std::vector<double>& loca
   return sum;
 }
 
-/// The loads a unit traction puts through the pairs on one side's nodes
-/// (the upper's: A_i on the pair's node; or the lower's: sum_i A_i w_j).
-std::map<std::int64_t, double> unit_traction_loads(const std::vector<rollcheck::fem::NodePair>& pairs, bool upper)
+/// The loads a unit traction puts through the pairs on the upper body's
+/// nodes: A_i on each pair's node.
+std::map<std::int64_t, double> upper_unit_traction_loads(const std::vector<rollcheck::fem::NodePair>& pairs)
 {
   std::vector<double> local;
   for (const rollcheck::fem::NodePair& pair : pairs)
-  {
-    if (upper)
-      local.insert(local.end(), {static_cast<double>(pair.node), pair.area_m2});
-    else
-      for (const rollcheck::fem::WeightedBlock& w : pair.lower)
-        local.insert(local.end(), {static_cast<double>(w.block), pair.area_m2 * w.weight});
-  }
+    local.insert(local.end(), {static_cast<double>(pair.node), pair.area_m2});
+  return summed_over_ranks(local);
+}
+
+/// The same on the lower body's nodes: sum_i A_i w_j.
+std::map<std::int64_t, double> lower_unit_traction_loads(const std::vector<rollcheck::fem::NodePair>& pairs)
+{
+  std::vector<double> local;
+  for (const rollcheck::fem::NodePair& pair : pairs)
+    for (const rollcheck::fem::WeightedBlock& w : pair.lower)
+      local.insert(local.end(), {static_cast<double>(w.block), pair.area_m2 * w.weight});
   return summed_over_ranks(local);
 }
 
@@ -198,7 +202,7 @@ TEST(MortarPairs, UniformTractionReachesTheBlockAsItsConsistentLoads)
       local.insert(local.end(), {static_cast<double>(g), area / 3, inside ? 1.0 : 0.0});
     }
   }
-  const auto [worst, checked] = largest_load_error(local, unit_traction_loads(pairs, false));
+  const auto [worst, checked] = largest_load_error(local, lower_unit_traction_loads(pairs));
   std::printf("%d pairs on the fillet; %d block nodes under it: largest |load / int phi - 1| %.3g\n", on_fillet, checked,
               worst);
   ASSERT_GT(checked, 20);
@@ -232,7 +236,7 @@ TEST(MortarPairs, UniformTractionReachesTheBlockAsItsConsistentLoads)
       local.insert(local.end(), {static_cast<double>(g), area / 3, zone ? 1.0 : 0.0});
     }
   }
-  const auto [body_worst, body_checked] = largest_load_error(local, unit_traction_loads(pairs, true));
+  const auto [body_worst, body_checked] = largest_load_error(local, upper_unit_traction_loads(pairs));
   std::printf("%d body nodes in the zone: largest |load / int N - 1| %.3g\n", body_checked, body_worst);
   ASSERT_GT(body_checked, 100);
   EXPECT_LT(body_worst, 1e-9);

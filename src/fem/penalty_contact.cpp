@@ -530,15 +530,11 @@ void PenaltyContact::set_node_pairs(std::vector<NodePair> pairs)
   };
   std::string bad;
   std::vector<PairBlocks> blocks;
-  auto weight_sum = [](const std::vector<WeightedBlock>& side) {
-    double sum = 0;
-    for (const WeightedBlock& w : side)
-      sum += w.weight;
-    return side.empty() ? 0.0 : sum;
-  };
   for (const NodePair& pair : pairs)
   {
-    const double lower_sum = weight_sum(pair.lower);
+    double lower_sum = 0;
+    for (const WeightedBlock& w : pair.lower)
+      lower_sum += w.weight;
     if (!(pair.node >= first && pair.node < first + owned) || std::abs(lower_sum - 1) > 1e-9
         || !(pair.area_m2 >= 0) || !(pair.stiffness_pa_per_m > 0) || !std::isfinite(pair.initial_gap_m))
     {

@@ -68,10 +68,10 @@ struct NewtonReport
 ///   Engng 83, 2010, 1428: dual mortar contact in 3D; B. Yang, T. A.
 ///   Laursen, X. Meng, Int. J. Numer. Meth. Engng 62, 2005, 1183: the
 ///   weighted gap under a penalty; M. A. Puso, T. A. Laursen, Comput.
-///   Methods Appl. Mech. Engrg 193, 2004, 601: the segments in 3D). A uniform traction then reaches both
-///   faces' nodes as its consistent loads, whatever the meshes (the contact
-///   patch test; test_mortar_pairs), and where the faces match the pair is
-///   node to node. The standard weights N_i (a_k = int N_i N_k dA / A_i)
+///   Methods Appl. Mech. Engrg 193, 2004, 601: the segments in 3D). A
+///   uniform traction then reaches both faces' nodes as its consistent
+///   loads, whatever the meshes (the contact patch test; test_mortar_pairs),
+///   and where the faces match the pair is node to node. The standard weights N_i (a_k = int N_i N_k dA / A_i)
 ///   pass the patch test too but couple each node's gap to its neighbours'
 ///   even where the faces match: on the preprint's 60 deg end on steel they
 ///   converged to the same ratio (3.4628 against the dual's 3.4716) with
