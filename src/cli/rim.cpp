@@ -167,6 +167,7 @@ nlohmann::json run_one_end(const fem::RimEndSettings& setup)
     levels.push_back({{"edge_element_m", l.edge_element_m},
                       {"dofs", l.dofs},
                       {"approach_m", l.approach_m},
+                      {"start_load_n_per_m", l.start_load_n_per_m},
                       {"load_steps", l.load_steps},
                       {"newton_iterations", l.newton_iterations},
                       {"krylov_iterations", l.krylov_iterations},

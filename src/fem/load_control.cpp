@@ -41,6 +41,8 @@ LoadControlReport continue_to_force(PenaltyContact& problem, double target, doub
     report.load_steps = step;
     report.approach_m = problem.approach_m();
     report.force = measured_force ? measured_force() : problem.reaction_force_n();
+    if (step == 1)
+      report.first_force = report.force;
     spdlog::log(progress, "load step {}: approach {:.9e} m, force {:.6g} of {:.6g}, {} Newton iterations", step,
                 report.approach_m, report.force, target, newton.newton_iterations);
     if (!(report.force > 0))

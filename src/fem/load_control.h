@@ -18,6 +18,7 @@ struct LoadControlReport
 {
   double approach_m = 0;
   double force = 0;         ///< computed, N or N/m (reaction at the top face)
+  double first_force = 0;   ///< at the first solve's approach: how far the start missed
   int load_steps = 0;       ///< Newton solves
   NewtonReport newton;      ///< summed over the solves
 };

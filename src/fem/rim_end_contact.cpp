@@ -92,18 +92,26 @@ Sample centre_line_mean(const std::vector<CentreLineNode>& line, double from, do
   return {mean, std::sqrt(std::max(sum2 / n - mean * mean, 0.0)), n};
 }
 
-/// 2 int p dy over the surface nodes of the far side x = -L (y >= 0 half).
-double far_line_load(const std::vector<SurfacePressureNode>& nodes, double far_x, double tol)
+/// The line load carried by the far side's first depth H, x in [-L, -L + H]:
+///   q_far = 2 sum_i p_i A_i w(x_i) / int w dx,
+/// w = 1 on [-L, -L + H / 2], falling linearly to 0 at -L + H (int w dx =
+/// 3 H / 4), over the y >= 0 half's contact nodes. p_i A_i is node i's share
+/// of the contact force (the pairs' forces; the recovered pressure times its
+/// lumped area on the rigid plane), so the sum is the force weighted by w's
+/// P1 interpolant: exact for the penalty's own pressure up to w's two kinks,
+/// where a trapezoid of p across one section, over the contact edge's
+/// square root, missed by a few per cent and differently on each mesh
+/// (docs/rims.md, "Speed").
+double far_line_load(const std::vector<SurfacePressureNode>& nodes, double far_x, double depth_m)
 {
-  std::vector<std::array<double, 2>> section; // (y, p)
+  double force = 0;
   for (const SurfacePressureNode& n : nodes)
-    if (std::abs(n.x[0] - far_x) < tol)
-      section.push_back({n.x[1], n.pressure_pa});
-  std::sort(section.begin(), section.end());
-  double load = 0;
-  for (std::size_t i = 1; i < section.size(); ++i)
-    load += 0.5 * (section[i][1] + section[i - 1][1]) * (section[i][0] - section[i - 1][0]);
-  return 2 * load;
+  {
+    const double into = n.x[0] - far_x;
+    const double w = into <= depth_m / 2 ? 1.0 : std::max(0.0, 2 * (1 - into / depth_m));
+    force += n.pressure_pa * n.weight * w;
+  }
+  return 2 * force / (0.75 * depth_m);
 }
 
 /// `fields_out`, if given, receives the level's recovered fields (the caller
@@ -212,13 +220,14 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   const LoadControlReport report
       = continue_to_force(problem, s.load_n_per_m, line.exponent, 2e-3,
                           world_rank() == 0 ? spdlog::level::info : spdlog::level::debug,
-                          [&] { return far_line_load(surface(), -L, tol); });
+                          [&] { return far_line_load(surface(), -L, H); });
   state = problem.displacement();
   level.approach_m = report.approach_m;
   level.load_steps = report.load_steps;
   level.newton_iterations = report.newton.newton_iterations;
   level.krylov_iterations = report.newton.krylov_iterations;
   level.far_load_n_per_m = report.force;
+  level.start_load_n_per_m = report.first_force;
   if (block && s.edge_radius_m > 0)
     for (const PairPressure& pair : gather_pair_pressures(problem))
       if (pair.x[2] > surface_zone_m / 2 && pair.pressure_pa > 0)

@@ -181,6 +181,7 @@ struct RimEndLevel
   std::vector<CentreLineNode> centre_line;
   std::int64_t dofs = 0;
   double approach_m = 0;             ///< the top's approach that carries q_far
+  double start_load_n_per_m = 0;     ///< q_far at the level's first approach (a finer level: the coarser's)
   double estimated_approach_m = 0;   ///< line contact's estimate of it (unscaled)
   int load_steps = 0, newton_iterations = 0, krylov_iterations = 0;
   double wall_s = 0;
