@@ -5,9 +5,10 @@
 //
 // Load: the far side x = -L is a plane of symmetry, so the section there is
 // in plane strain once L is long enough against the block's depth H. The top's
-// approach is set by load control (fem/load_control.h) until the line load of
-// that section, q_far = 2 int p dy over its surface nodes, is the line load q
-// the contact locus gives at the end (contact/line_contact.h). The model's
+// approach is set by load control (fem/load_control.h) until the line load
+// the far side carries, q_far (its contact force over the first depth H,
+// weighted towards x = -L: rim_end_contact.cpp far_line_load), is the line
+// load q the contact locus gives at the end (contact/line_contact.h). The model's
 // unit is line Hertz's half-width for that q, b = sqrt(4 q R / (pi E*)), with
 // E* = E / (1 - nu^2) against the rigid plane: H = 10 b and L = 3 H by
 // default. That the far side is in plane strain is shown, not assumed: the
