@@ -58,7 +58,7 @@ CreaseLevel solve_level(MPI_Comm comm, const CreaseStudy& study, int refine)
   level.krylov_iterations = report.newton.krylov_iterations;
 
   std::vector<std::array<double, 2>> nodes; // (x, p)
-  for (const SurfacePressureNode& node : gather_surface_pressure(comm, recover_nodal_fields(problem)))
+  for (const SurfacePressureNode& node : gather_surface_pressure(comm, recover_contact_pressure(problem)))
     nodes.push_back({node.x[0], node.pressure_pa});
   std::sort(nodes.begin(), nodes.end());
   if (nodes.size() < 3 || !(nodes.front()[0] < 1e-9 * s.width_m) || !(nodes[1][1] > 0))

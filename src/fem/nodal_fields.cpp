@@ -31,29 +31,55 @@ void require_same_layout(const dfem::FunctionSpace& a, const dfem::FunctionSpace
   if (!std::equal(la.begin(), la.end(), lb.begin(), lb.end()))
     throw std::logic_error("nodal recovery: P1 spaces with different node numbering");
 }
+
+/// P1 function space of `element` ("v_0" of its form) on the problem's mesh.
+std::shared_ptr<dfem::FunctionSpace> p1_space(const PenaltyContact& problem, ContactForms::SpaceFactory element)
+{
+  auto mesh = std::const_pointer_cast<dolfinx::mesh::Mesh>(problem.mesh());
+  return std::make_shared<dfem::FunctionSpace>(dfem::create_functionspace(element, "v_0", mesh));
+}
+
+/// The assembled load of `form` (one of the recovery forms) on `space`.
+dolfinx::la::Vector<T> recovery_load(const PenaltyContact& problem, ufcx_form* form,
+                                     std::shared_ptr<const dfem::FunctionSpace> space)
+{
+  auto mesh = std::const_pointer_cast<dolfinx::mesh::Mesh>(problem.mesh());
+  return assemble_load(dfem::create_form<T>(*form, {space}, problem.coefficients(), problem.constants(),
+                                            problem.subdomains(), mesh));
+}
 } // namespace
+
+ContactPressure recover_contact_pressure(const PenaltyContact& problem)
+{
+  const ContactForms& forms = problem.forms();
+  const auto Q = p1_space(problem, forms.scalar_p1_space);
+  const auto contact_mass = recovery_load(problem, forms.contact_mass, Q);
+  const auto pressure_load = recovery_load(problem, forms.pressure_load, Q);
+  ContactPressure c;
+  c.pressure = std::make_shared<dfem::Function<T>>(Q);
+  c.pressure->name = "contact_pressure";
+  const std::int32_t n = Q->dofmap()->index_map->size_local();
+  c.contact_weight.assign(contact_mass.array().begin(), contact_mass.array().begin() + n);
+  std::span<T> p = c.pressure->x()->mutable_array();
+  for (std::int32_t i = 0; i < n; ++i)
+    p[i] = c.contact_weight[i] > 0 ? pressure_load.array()[i] / c.contact_weight[i] : 0.0;
+  c.pressure->x()->scatter_fwd();
+  return c;
+}
 
 NodalFields recover_nodal_fields(const PenaltyContact& problem)
 {
   const ContactForms& forms = problem.forms();
-  auto mesh = std::const_pointer_cast<dolfinx::mesh::Mesh>(problem.mesh());
-  auto Q = std::make_shared<dfem::FunctionSpace>(dfem::create_functionspace(forms.scalar_p1_space, "v_0", mesh));
-  auto S = std::make_shared<dfem::FunctionSpace>(dfem::create_functionspace(forms.tensor_p1_space, "v_0", mesh));
-  auto V1 = std::make_shared<dfem::FunctionSpace>(dfem::create_functionspace(forms.vector_p1_space, "v_0", mesh));
+  NodalFields f;
+  static_cast<ContactPressure&>(f) = recover_contact_pressure(problem);
+  const auto Q = std::const_pointer_cast<dfem::FunctionSpace>(f.pressure->function_space());
+  const auto S = p1_space(problem, forms.tensor_p1_space);
+  const auto V1 = p1_space(problem, forms.vector_p1_space);
   require_same_layout(*Q, *S);
   require_same_layout(*Q, *V1);
+  const auto volume_mass = recovery_load(problem, forms.volume_mass, Q);
+  const auto stress_load = recovery_load(problem, forms.stress_load, S);
 
-  const auto& coefficients = problem.coefficients();
-  auto load = [&](ufcx_form* form, std::shared_ptr<const dfem::FunctionSpace> space) {
-    return assemble_load(
-        dfem::create_form<T>(*form, {space}, coefficients, problem.constants(), problem.subdomains(), mesh));
-  };
-  const auto volume_mass = load(forms.volume_mass, Q);
-  const auto contact_mass = load(forms.contact_mass, Q);
-  const auto pressure_load = load(forms.pressure_load, Q);
-  const auto stress_load = load(forms.stress_load, S);
-
-  NodalFields f;
   f.displacement = std::make_shared<dfem::Function<T>>(V1);
   f.displacement->name = "displacement";
   f.displacement->interpolate(*problem.displacement());
@@ -63,19 +89,13 @@ NodalFields recover_nodal_fields(const PenaltyContact& problem)
   f.von_mises->name = "von_mises";
   f.max_shear = std::make_shared<dfem::Function<T>>(Q);
   f.max_shear->name = "max_shear";
-  f.pressure = std::make_shared<dfem::Function<T>>(Q);
-  f.pressure->name = "contact_pressure";
 
   const std::int32_t n = Q->dofmap()->index_map->size_local();
-  std::span<T> p = f.pressure->x()->mutable_array();
   std::span<T> sigma = f.stress->x()->mutable_array();
   std::span<T> vm = f.von_mises->x()->mutable_array();
   std::span<T> tau = f.max_shear->x()->mutable_array();
-  f.contact_weight.assign(contact_mass.array().begin(), contact_mass.array().begin() + n);
   for (std::int32_t i = 0; i < n; ++i)
   {
-    const double w = f.contact_weight[i];
-    p[i] = w > 0 ? pressure_load.array()[i] / w : 0.0;
     Eigen::Matrix3d s;
     for (int j = 0; j < 9; ++j)
       s(j / 3, j % 3) = sigma[9 * i + j] = stress_load.array()[9 * i + j] / volume_mass.array()[i];
@@ -84,11 +104,11 @@ NodalFields recover_nodal_fields(const PenaltyContact& problem)
     const Eigen::Vector3d principal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(s, Eigen::EigenvaluesOnly).eigenvalues();
     tau[i] = (principal.maxCoeff() - principal.minCoeff()) / 2;
   }
-  for (const auto& field : {f.pressure, f.stress, f.von_mises, f.max_shear})
+  for (const auto& field : {f.stress, f.von_mises, f.max_shear})
     field->x()->scatter_fwd();
   return f;
 }
-std::vector<SurfacePressureNode> gather_surface_pressure(MPI_Comm comm, const NodalFields& fields)
+std::vector<SurfacePressureNode> gather_surface_pressure(MPI_Comm comm, const ContactPressure& fields)
 {
   const std::vector<double> xq = fields.pressure->function_space()->tabulate_dof_coordinates(false);
   std::span<const double> p = fields.pressure->x()->array();

@@ -7,7 +7,9 @@
 // the nodal contact force over the node's tributary area, which smooths the
 // penalty's quadrature-point pressure and conserves the total force.
 // von Mises and the maximum shear (Tresca, (sigma_1 - sigma_3) / 2) are
-// evaluated from the recovered nodal stress.
+// evaluated from the recovered nodal stress. A scene that reads only the
+// contact face takes the pressure alone (two surface assemblies, not the
+// volume's stress load, its eigenvalues and the P2 -> P1 interpolation).
 #include "fem/penalty_contact.h"
 #include <array>
 #include <mpi.h>
@@ -15,17 +17,22 @@
 
 namespace rollcheck::fem
 {
-struct NodalFields
+struct ContactPressure
+{
+  std::shared_ptr<dolfinx::fem::Function<double>> pressure; ///< P1 "contact_pressure", 0 off the surface
+  /// Per owned P1 node: lumped contact-surface weight (0 off the contact surface).
+  std::vector<double> contact_weight;
+};
+
+struct NodalFields : ContactPressure
 {
   std::shared_ptr<dolfinx::fem::Function<double>> displacement; ///< P1 "displacement" (interpolated from P2)
   std::shared_ptr<dolfinx::fem::Function<double>> stress;       ///< P1 3x3 "stress", (x|r, y|theta, z)
   std::shared_ptr<dolfinx::fem::Function<double>> von_mises;    ///< P1 "von_mises"
   std::shared_ptr<dolfinx::fem::Function<double>> max_shear;    ///< P1 "max_shear"
-  std::shared_ptr<dolfinx::fem::Function<double>> pressure;     ///< P1 "contact_pressure", 0 off the surface
-  /// Per owned P1 node: lumped contact-surface weight (0 off the contact surface).
-  std::vector<double> contact_weight;
 };
 
+ContactPressure recover_contact_pressure(const PenaltyContact& problem);
 NodalFields recover_nodal_fields(const PenaltyContact& problem);
 
 /// A P1 node of the contact surface: position, recovered pressure and lumped
@@ -38,5 +45,5 @@ struct SurfacePressureNode
 };
 
 /// Every rank's contact-surface nodes, on every rank.
-std::vector<SurfacePressureNode> gather_surface_pressure(MPI_Comm comm, const NodalFields& fields);
+std::vector<SurfacePressureNode> gather_surface_pressure(MPI_Comm comm, const ContactPressure& fields);
 } // namespace rollcheck::fem

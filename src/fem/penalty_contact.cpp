@@ -774,7 +774,7 @@ std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double
   const std::int32_t owned = map->size_local();
   const std::int64_t first = map->local_range()[0];
   const std::vector<double>& x = problem.dof_coordinates(); // owned blocks, then ghosts
-  const std::vector<double> area = recover_nodal_fields(problem).contact_weight; // owned blocks
+  const std::vector<double> area = recover_contact_pressure(problem).contact_weight; // owned blocks
   const int gdim = problem.mesh()->geometry().dim();
   const int up = gdim - 1;
   auto global = [&](std::int32_t i) { return i < owned ? first + i : map->ghosts()[i - owned]; };

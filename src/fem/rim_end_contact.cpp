@@ -198,10 +198,11 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   }
   level.dofs = problem.num_dofs();
   // The contact face's nodal pressures: the pairs' (block), or the rigid
-  // plane's from recovered fields (computed here unless the caller has them).
+  // plane's recovered pressure (the caller's fields, when it has them).
   auto surface = [&](const NodalFields* fields = nullptr) {
     if (!block)
-      return gather_surface_pressure(comm, fields ? *fields : recover_nodal_fields(problem));
+      return fields ? gather_surface_pressure(comm, *fields)
+                    : gather_surface_pressure(comm, recover_contact_pressure(problem));
     std::vector<SurfacePressureNode> nodes;
     for (const PairPressure& pair : gather_pair_pressures(problem))
       nodes.push_back({pair.x, pair.pressure_pa, pair.area_m2});
@@ -241,7 +242,7 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   double edge_sum = 0;
   int edge_nodes = 0;
   std::optional<NodalFields> fields;
-  if (fields_out || !block)
+  if (fields_out)
     fields = recover_nodal_fields(problem);
   for (const SurfacePressureNode& n : surface(fields ? &*fields : nullptr))
   {

@@ -32,7 +32,7 @@ SectionFem solve_section(const MappedBodyPose& pose, double station_m, double ap
   r.station_m = station_m;
   r.approach_m = approach_m;
   r.load_n_per_m = problem.reaction_force_n() / thickness;
-  for (const SurfacePressureNode& node : gather_surface_pressure(MPI_COMM_SELF, recover_nodal_fields(problem)))
+  for (const SurfacePressureNode& node : gather_surface_pressure(MPI_COMM_SELF, recover_contact_pressure(problem)))
     r.peak_pressure_pa = std::max(r.peak_pressure_pa, node.pressure_pa);
   r.dofs = problem.num_dofs();
   r.newton_iterations = newton.newton_iterations;

@@ -160,7 +160,7 @@ SlabFem solve_slab(MPI_Comm comm, const SlabBody& body, std::span<const SliceFem
   // Nodal pressure on the contact surface, by node plane x = const.
   std::vector<std::array<double, 2>> nodes; // (x, p)
   double moment = 0, total = 0;
-  for (const SurfacePressureNode& node : gather_surface_pressure(comm, recover_nodal_fields(problem)))
+  for (const SurfacePressureNode& node : gather_surface_pressure(comm, recover_contact_pressure(problem)))
   {
     const double along = slab_along(geometry, node.x.data());
     nodes.push_back({along, node.pressure_pa});

@@ -31,7 +31,7 @@ Reading read_state(MPI_Comm comm, const PenaltyContact& problem)
 {
   Reading r;
   r.reaction_n = problem.reaction_force_n();
-  r.nodes = gather_surface_pressure(comm, recover_nodal_fields(problem));
+  r.nodes = gather_surface_pressure(comm, recover_contact_pressure(problem));
   double moment = 0, total = 0;
   for (const SurfacePressureNode& n : r.nodes)
   {
