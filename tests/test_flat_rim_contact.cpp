@@ -75,6 +75,8 @@ TEST(FlatRimContact, StraightRimIsLineHertzAwayFromItsEnd)
   EXPECT_GT(l.contact_start_m, -4e-4 * std::tan(10 * std::numbers::pi / 180) / 2);
 }
 
+// Label long (tests/CMakeLists.txt, long_cases): the default job's
+// flat_rim_oloid_vertex case solves this vertex with the same checks.
 TEST(FlatRimContact, OloidVertexBalancesTheBodyAndConverges)
 {
   const study::FlatRimSettings s; // cells of b / 4 and b / 8, a window of 100 b (and 200 b)

@@ -80,6 +80,7 @@ TEST(RimEndContact, SquareEndIsFiniteAndConverges)
   }
 }
 
+// Label long (tests/CMakeLists.txt, long_cases).
 TEST(RimEndContact, SquareEndAgreesOnAnIndependentGrid)
 {
   // The same square end on a structured grid built without gmsh (h_e across

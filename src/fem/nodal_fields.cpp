@@ -72,7 +72,7 @@ NodalFields recover_nodal_fields(const PenaltyContact& problem)
   const ContactForms& forms = problem.forms();
   NodalFields f;
   static_cast<ContactPressure&>(f) = recover_contact_pressure(problem);
-  const auto Q = std::const_pointer_cast<dfem::FunctionSpace>(f.pressure->function_space());
+  const auto Q = f.pressure->function_space();
   const auto S = p1_space(problem, forms.tensor_p1_space);
   const auto V1 = p1_space(problem, forms.vector_p1_space);
   require_same_layout(*Q, *S);
