@@ -160,8 +160,8 @@ TEST(FlatRimContact, EndSurfaceIsTheHullNearTheLoopsEnd)
 // b / 8).
 namespace
 {
-study::FlatRimContact centre_line_roller_on_steel(double interior_angle_deg,
-                                                  geometry::RollerGenome genome = {74.1, 0.757, 1.071, 2})
+study::FlatRimSettings centre_line_roller_settings(double interior_angle_deg,
+                                                   geometry::RollerGenome genome = {74.1, 0.757, 1.071, 2})
 {
   geometry::BodySpec roller;
   roller.body = "roller";
@@ -175,6 +175,13 @@ study::FlatRimContact centre_line_roller_on_steel(double interior_angle_deg,
   s.steel_counter_face = true;
   s.cells_per_half_width = 2;
   s.levels = 1;
+  return s;
+}
+
+study::FlatRimContact centre_line_roller_on_steel(double interior_angle_deg,
+                                                  geometry::RollerGenome genome = {74.1, 0.757, 1.071, 2})
+{
+  const study::FlatRimSettings s = centre_line_roller_settings(interior_angle_deg, genome);
   const study::FlatRimContact r = study::flat_rim_contact(s);
   const study::FlatRimLevel& l = r.levels.back();
   expect_balance(r, l, s.normal_load_n);
@@ -204,6 +211,45 @@ TEST(FlatRimContact, ABodyThatCannotBalanceWithTheWindowShortensIt)
   const study::FlatRimContact r = centre_line_roller_on_steel(164);
   EXPECT_LT(r.after_over_half_width, study::FlatRimSettings{}.after_over_half_width);
   EXPECT_EQ(r.across_scale, 1.0);
+}
+
+// The whole loaded ruling in one grid, the fuller model of the window and
+// the rule beyond it: its columns alone carry F through the centre of
+// mass's foot, halfway along its contact it reads line Hertz, the contact
+// ends inside it, and where the (shortened) window converges the two agree
+// within that window's tolerance (164 deg).
+TEST(FlatRimContact, WholeRulingBalancesTheBodyAndAgreesWithTheWindow)
+{
+  const study::FlatRimContact window = centre_line_roller_on_steel(164);
+  study::FlatRimSettings s = centre_line_roller_settings(164);
+  s.whole_ruling = true;
+  const study::FlatRimContact whole = study::flat_rim_contact(s);
+  const study::FlatRimLevel& l = whole.levels.back();
+  ASSERT_TRUE(whole.whole_ruling);
+  expect_balance(whole, l, s.normal_load_n); // no rule beyond: the columns alone
+  EXPECT_EQ(l.balanced_loaded_length_m, 0.0);
+  EXPECT_NEAR(l.far_peak_pa / l.far_line_hertz_pa, 1.0, 0.01);
+  EXPECT_EQ(l.station_load_n_per_m.back(), 0.0);
+  EXPECT_NEAR(l.peak_pressure_pa / window.levels.back().peak_pressure_pa, 1.0, s.tolerance);
+  EXPECT_FALSE(study::needs_whole_ruling(s, whole));
+}
+
+// The loop's flat-rim table solves a side whole only where the balance
+// shortened its window and the doubled window still moves the peak.
+TEST(FlatRimContact, OnlyAShortenedWindowThatDoesNotConvergeNeedsTheWholeRuling)
+{
+  const study::FlatRimSettings s;
+  study::FlatRimContact r;
+  r.after_over_half_width = 0.5625 * s.after_over_half_width;
+  r.window_change = 1.01 * s.tolerance;
+  EXPECT_TRUE(study::needs_whole_ruling(s, r));
+  r.window_change = -1.01 * s.tolerance;
+  EXPECT_TRUE(study::needs_whole_ruling(s, r));
+  r.window_change = 0.99 * s.tolerance;
+  EXPECT_FALSE(study::needs_whole_ruling(s, r));
+  r.window_change = 1.01 * s.tolerance;
+  r.after_over_half_width = s.after_over_half_width;
+  EXPECT_FALSE(study::needs_whole_ruling(s, r)); // a window the settings set: doubling is its check
 }
 
 // At 174 deg a step of the body's balance put a rule beyond the window
@@ -259,6 +305,9 @@ TEST(FlatRimContact, RefusesBadInput)
   EXPECT_THROW(study::flat_rim_contact(s), InputError);
   s = straight_rim(170);
   s.extra_levels = -1;
+  EXPECT_THROW(study::flat_rim_contact(s), InputError);
+  s = straight_rim(170);
+  s.whole_ruling = true; // a straight rim's contact has no ruling to end it
   EXPECT_THROW(study::flat_rim_contact(s), InputError);
   // A flat end (180 deg) lets the contact run on past the window's start:
   // refused, not truncated.

@@ -64,6 +64,10 @@ const io::BoundSchema<study::FlatRimSettings>& flat_rim_schema()
               io::Bounds{5, 1000})
         .real("across_over_half_width", "--across", &S::across_over_half_width, "",
               "The window's half-width across the ruling, in b", io::Bounds{1.5, 100})
+        .flag("whole_ruling", "--whole-ruling", &S::whole_ruling,
+              "A body's end: solve its whole loaded ruling in one grid (F at the centre of mass's foot by the tilt "
+              "alone) instead of the window and the rule beyond it; --after is not used, no longer window is "
+              "solved (rim --body's flat-rim table takes it for a side whose shortened window does not converge)")
         .real("tolerance", "--tolerance", &S::tolerance, "",
               "Largest change of the peak between the last two levels, and when the first level's window doubles, that counts as converged",
               io::Bounds{0, 1, true, false});
@@ -95,14 +99,18 @@ nlohmann::json run_flat_rim(const io::Parameters& p)
                                                                : "the flattest, ",
                         r.centre_of_pressure,
                         r.end_radius_m, setup.normal_load_n, r.end_line_load_n_per_m);
+  const std::string window
+      = r.whole_ruling ? fmt::format("the whole loaded ruling: the grid reaches {:.4g} b along it", r.after_over_half_width)
+                       : fmt::format("{:+.2f} % with the first level's window twice as long; the window {:.4g} b along "
+                                     "the ruling",
+                                     100 * r.window_change, r.after_over_half_width);
   spdlog::info("\n{}, counter-face {}, edge radius {} m: b = {:.4g} m (R = {:.4g} m), E* = {:.4g} Pa\n\n{}\npeak {:.5g} Pa "
-               "({}: {:+.2f} % at the last level, {:+.2f} % with the first level's window twice as long; the window "
-               "{:.4g} b along the ruling, {:.3g} times --across across); line Hertz at the end's q with R = max(R_end, r_e) gives {:.5g} Pa "
+               "({}: {:+.2f} % at the last level, {}, {:.3g} times --across across); line Hertz at the end's q with R = max(R_end, r_e) gives {:.5g} Pa "
                "(peak / that = {:.4f}); the rounded surface lies {:.3g} m above the ground at the end; largest slope "
                "over the contact {:.3f} (half-space theory)\n",
                what, setup.steel_counter_face ? "steel" : "rigid", setup.edge_radius_m, r.half_width_m,
                r.reference_radius_m, r.effective_modulus_pa, table, peak, r.converged ? "converged" : "NOT converged",
-               100 * r.last_change, 100 * r.window_change, r.after_over_half_width, r.across_scale, r.line_hertz_peak_pa, peak / r.line_hertz_peak_pa, r.end_lift_m, r.largest_slope);
+               100 * r.last_change, window, r.across_scale, r.line_hertz_peak_pa, peak / r.line_hertz_peak_pa, r.end_lift_m, r.largest_slope);
   nlohmann::json j = study::to_json(r);
   j["counter_face"] = setup.steel_counter_face ? "steel" : "rigid";
   j["edge_radius_m"] = setup.edge_radius_m;

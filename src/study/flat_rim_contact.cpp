@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
+#include <ranges>
 
 namespace rollcheck::study
 {
@@ -247,9 +248,140 @@ struct WindowCannotBalance : ComputationError
   using ComputationError::ComputationError;
 };
 
+/// The half-width across the ruling its grid needs: the widest contact of
+/// the locus's load from `from` on, with room for a balance raising it and
+/// the end's extra load near it; at least the settings' `across`.
+double widest_contact(const FlatRimSettings& s, const EndProblem& end, double effective_modulus, double half_width,
+                      double from, double cell)
+{
+  double widest = s.across_over_half_width * half_width;
+  for (double x = from; x < end.load.length_m; x += cell)
+    widest = std::max(widest, 1.6 * contact::line_contact(end.load.at(x), end.sheet_radius(x), effective_modulus,
+                                                           s.poisson_ratio).half_width_m);
+  return widest;
+}
+
+/// The whole ruling's grid reaches 1.3 times the locus's loaded length,
+/// stopping r_e short of the far rim (whose rounding it would need beyond).
+double whole_ruling_reach(const FlatRimSettings& s, const EndProblem& end)
+{
+  return std::min(1.3 * end.load.length_m, end.ruling_length_m - s.edge_radius_m);
+}
+
+/// The whole loaded ruling in one grid: F on it, its centre at the centre
+/// of mass's foot by the tilt along the ruling alone.
+FlatRimLevel solve_whole_ruling_level(const FlatRimSettings& s, const EndProblem& end, double effective_modulus,
+                                      double half_width, double cell, double across_scale, double& largest_slope,
+                                      double& end_lift)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const auto cells_over = [&](double length) { return static_cast<std::size_t>(std::ceil(length / cell)); };
+  const std::size_t half_across
+      = cells_over(across_scale * widest_contact(s, end, effective_modulus, half_width, 0, cell));
+  const std::size_t first_cell = cells_over(s.before_over_half_width * half_width); // x' = 0 at this column
+  const contact::HalfSpaceGrid grid{first_cell + cells_over(whole_ruling_reach(s, end)) + 1,
+                                    2 * half_across + 1,
+                                    cell,
+                                    cell,
+                                    -static_cast<double>(first_cell) * cell,
+                                    -static_cast<double>(half_across) * cell};
+  const RoundedSurface surface = rounded_surface(end, grid, s.edge_radius_m);
+  const contact::HalfSpaceDeflection deflection(grid, effective_modulus);
+  const double force = end.load.load_to(end.load.length_m);
+  const double foot = end.load.moment_to(end.load.length_m) / force;
+  FlatRimLevel level;
+  level.cell_m = cell;
+  level.cells = grid.size();
+  contact::HalfSpaceContact solved;
+  std::vector<double> gap(grid.size());
+  // F's centre beyond the foot (m) at this tilt; none when the contact runs
+  // off the grid's far side (too little tilt).
+  const auto centre_beyond_foot = [&](double tilt) -> std::optional<double> {
+    for (std::size_t i = 0; i < grid.nx; ++i)
+      for (std::size_t j = 0; j < grid.ny; ++j)
+        gap[i * grid.ny + j] = surface(i, j) + tilt * grid.x(i);
+    ++level.solves;
+    try
+    {
+      contact::HalfSpaceContact next
+          = contact::solve_half_space_contact(deflection, gap, force, {}, solved.pressure_pa);
+      level.iterations += next.iterations;
+      solved = std::move(next);
+    }
+    catch (const contact::ContactBeyondGrid& e)
+    {
+      if (e.across)
+        throw;
+      return std::nullopt;
+    }
+    const double everywhere = std::numeric_limits<double>::infinity();
+    const Eigen::Vector2d total = load_over(solved.pressure_pa, grid, -everywhere, everywhere);
+    return total[1] / total[0] - foot;
+  };
+  // More tilt moves F's centre towards the end. From an estimate (the
+  // locus's load falling to none over its loaded length, on an approach of
+  // a few q / E*), doubled or halved until the foot is bracketed, then
+  // regula falsi with the Illinois halving.
+  double tilt = 4 * end.load.at_end_n_per_m / (effective_modulus * end.load.length_m);
+  double too_little = 0, too_much = 0;
+  std::optional<double> beyond_little, beyond_much;
+  int kept = 0; // the side the last solve replaced: +1 too little, -1 too much
+  for (int k = 0;; ++k)
+  {
+    if (k == 60)
+      throw ComputationError(fmt::format("flat rim, whole ruling: F's centre did not settle at the centre of mass's "
+                                         "foot, {:.4g} m from the end (the contact may reach the ruling's far rim, "
+                                         "which this grid leaves out)",
+                                         foot));
+    const std::optional<double> beyond = centre_beyond_foot(tilt);
+    if (beyond && std::abs(*beyond) < 1e-4 * end.ruling_length_m)
+      break;
+    if (!beyond || *beyond > 0)
+    {
+      too_little = tilt;
+      beyond_little = beyond;
+      if (kept == 1 && beyond_much)
+        *beyond_much /= 2;
+      kept = 1;
+    }
+    else
+    {
+      too_much = tilt;
+      beyond_much = beyond;
+      if (kept == -1 && beyond_little)
+        *beyond_little /= 2;
+      kept = -1;
+    }
+    if (too_much == 0)
+      tilt *= 2;
+    else if (too_little == 0)
+      tilt /= 2;
+    else if (beyond_little)
+      tilt = too_little + (too_much - too_little) * *beyond_little / (*beyond_little - *beyond_much);
+    else
+      tilt = (too_little + too_much) / 2;
+  }
+  read_level(level, solved.pressure_pa, grid, surface, largest_slope);
+  // Halfway along the contact the column reads line Hertz at its own load.
+  const auto loaded = std::ranges::find_if(level.station_load_n_per_m | std::views::reverse,
+                                           [](double q) { return q > 0; });
+  const auto contact_end = static_cast<std::size_t>(std::distance(loaded, level.station_load_n_per_m.rend()) - 1);
+  const std::size_t halfway = (first_cell + contact_end) / 2;
+  level.far_peak_pa = level.station_peak_pa[halfway];
+  level.far_line_hertz_pa = contact::line_contact(level.station_load_n_per_m[halfway], end.sheet_radius(grid.x(halfway)),
+                                                  effective_modulus, s.poisson_ratio)
+                                .peak_pressure_pa;
+  end_lift = surface(first_cell, half_across);
+  level.wall_s = seconds_since(start);
+  return level;
+}
+
 FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double effective_modulus, double half_width,
                          double cell, double across_scale, double& largest_slope, double& end_lift)
 {
+  if (s.whole_ruling)
+    return solve_whole_ruling_level(s, end, effective_modulus, half_width, cell, across_scale, largest_slope,
+                                    end_lift);
   const auto start = std::chrono::steady_clock::now();
   const auto cells_over = [&](double length) { return static_cast<std::size_t>(std::ceil(length / cell)); };
   const double before = s.before_over_half_width * half_width;
@@ -259,13 +391,9 @@ FlatRimLevel solve_level(const FlatRimSettings& s, const EndProblem& end, double
   const double after = (static_cast<double>(after_cells) + 0.5) * cell;
 
   const auto& radius_at = end.sheet_radius;
-  // Across: the widest contact of the ruling beyond the window, with room
-  // for the balance raising its load and the end's extra load near it.
-  double widest = s.across_over_half_width * half_width;
-  for (double x = after; x < end.load.length_m; x += cell)
-    widest = std::max(widest, 1.6 * contact::line_contact(end.load.at(x), radius_at(x), effective_modulus,
-                                                           s.poisson_ratio).half_width_m);
-  const std::size_t half_across = cells_over(across_scale * widest);
+  // Across: the widest contact of the ruling beyond the window.
+  const std::size_t half_across
+      = cells_over(across_scale * widest_contact(s, end, effective_modulus, half_width, after, cell));
   const std::size_t ny = 2 * half_across + 1;
   const std::size_t window_nx = cells_over(before) + after_cells + 1;
   const std::size_t first_cell = cells_over(before); // x' = 0 at this column
@@ -480,11 +608,14 @@ void solve_window(const FlatRimSettings& s, const EndProblem& end, FlatRimContac
   // long (the half-space's reach along the ruling is long: the end's extra
   // line load decays over tens of b). First, as the solve most likely to
   // need a shorter or wider window.
-  FlatRimSettings longer = s;
-  longer.after_over_half_width *= 2;
   const double first_cell = result.half_width_m / s.cells_per_half_width;
-  double unused_slope = 0, unused_lift = 0;
-  result.longer_window_peak_pa = level_at(longer, first_cell, unused_slope, unused_lift).peak_pressure_pa;
+  if (!s.whole_ruling)
+  {
+    FlatRimSettings longer = s;
+    longer.after_over_half_width *= 2;
+    double unused_slope = 0, unused_lift = 0;
+    result.longer_window_peak_pa = level_at(longer, first_cell, unused_slope, unused_lift).peak_pressure_pa;
+  }
   const auto resolved = [&] {
     return result.levels.size() >= 2 && std::abs(last_level_change(result.levels)) < s.tolerance;
   };
@@ -516,8 +647,11 @@ void solve_end(const FlatRimSettings& s, const EndProblem& end, FlatRimContact& 
         throw;
       window.after_over_half_width *= 0.75;
     }
-  result.after_over_half_width = window.after_over_half_width;
-  result.window_change = result.longer_window_peak_pa / result.levels.front().peak_pressure_pa - 1;
+  result.whole_ruling = s.whole_ruling;
+  result.after_over_half_width
+      = s.whole_ruling ? whole_ruling_reach(s, end) / result.half_width_m : window.after_over_half_width;
+  if (!s.whole_ruling)
+    result.window_change = result.longer_window_peak_pa / result.levels.front().peak_pressure_pa - 1;
   if (result.levels.size() >= 2)
     result.last_change = last_level_change(result.levels);
   result.converged = result.levels.size() >= 2 && std::abs(result.last_change) < s.tolerance
@@ -525,6 +659,12 @@ void solve_end(const FlatRimSettings& s, const EndProblem& end, FlatRimContact& 
   result.wall_s = seconds_since(start);
 }
 } // namespace
+
+bool needs_whole_ruling(const FlatRimSettings& s, const FlatRimContact& r)
+{
+  return !r.whole_ruling && r.after_over_half_width < s.after_over_half_width
+         && !(std::abs(r.window_change) < s.tolerance);
+}
 
 double end_hull_height(const LoopEnd& end, double along_m, double across_m)
 {
@@ -555,6 +695,9 @@ FlatRimContact flat_rim_contact(const FlatRimSettings& s)
   check_settings(s);
   if (s.interior_angle_rad == 0)
     return flat_rim_contact(s, body_loop_end(s.body, s.end_angle_rad, s.loop_side));
+  if (s.whole_ruling)
+    throw InputError("flat-rim: --whole-ruling solves a body's loop end; a straight rim's load is held along a long "
+                     "contact, with no ruling to end it (drop --interior-angle or --whole-ruling)");
   FlatRimContact result;
   result.effective_modulus_pa = contact::effective_modulus(s.youngs_modulus_pa, s.poisson_ratio, s.steel_counter_face);
   result.interior_angle_rad = s.interior_angle_rad;
@@ -650,10 +793,12 @@ nlohmann::json to_json(const FlatRimContact& r)
           {"peak_pressure_pa", r.levels.back().peak_pressure_pa},
           {"far_line_hertz_error", r.levels.back().far_peak_pa / r.levels.back().far_line_hertz_pa - 1},
           {"last_change", r.last_change},
-          {"longer_window_peak_pa", r.longer_window_peak_pa},
-          {"window_change", r.window_change},
+          // The whole ruling has no longer window.
+          {"longer_window_peak_pa", r.whole_ruling ? nlohmann::json(nullptr) : nlohmann::json(r.longer_window_peak_pa)},
+          {"window_change", r.whole_ruling ? nlohmann::json(nullptr) : nlohmann::json(r.window_change)},
           {"after_over_half_width", r.after_over_half_width},
           {"across_scale", r.across_scale},
+          {"whole_ruling", r.whole_ruling},
           {"converged", r.converged},
           {"wall_s", r.wall_s},
           {"levels", levels}};

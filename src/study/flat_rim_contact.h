@@ -52,9 +52,16 @@
 //    than F on it is halved back (at most ten times; then the window
 //    shortens). The window used is reported; none of this changes an end
 //    that solved at the settings.
+//  - or (`whole_ruling`, a body's end) the whole loaded ruling in one grid,
+//    from `before` beyond the end to 1.3 times the locus's loaded length
+//    (within the ruling, r_e short of its far rim): F on the grid, the tilt
+//    along the ruling set (bracketed, then regula falsi) so that F's centre
+//    lies at the centre of mass's foot. No rule beyond, no window to
+//    double: the reduction above is checked against it (docs/flat-rim.md);
+//    the contact must end before the grid's far side.
 // Levels halve the cells; the peak is converged when it changes by less
-// than `tolerance` at the last level and when the first level's window is
-// doubled along the ruling (the half-space's reach along a line contact is
+// than `tolerance` at the last level and (not for the whole ruling) when the
+// first level's window is doubled along the ruling (the half-space's reach along a line contact is
 // long: an end's extra line load decays over tens of b, and for a long
 // contact held to a uniform load the end's peak keeps growing with the
 // held length, as line contacts in half-space theory have no plane-strain
@@ -107,6 +114,12 @@ struct FlatRimSettings
   double after_over_half_width = 100; ///< the window along the ruling from the end, in b
   double across_over_half_width = 4;  ///< the window's half-width across the ruling, in b
   double tolerance = 0.03;            ///< of the peak between the last two levels
+  /// A body's end: solve its whole loaded ruling in one grid instead of the
+  /// window and the rule beyond it (F at the centre of mass's foot by the
+  /// tilt alone; no window to double). The fuller model where the end's
+  /// reach is comparable with a short ruling; the contact must end on the
+  /// ruling, before its far rim.
+  bool whole_ruling = false;
 };
 
 struct FlatRimLevel
@@ -126,8 +139,8 @@ struct FlatRimLevel
   double balanced_end_line_load_n_per_m = 0;
   double balanced_slope_n_per_m2 = 0;
   double balanced_loaded_length_m = 0;
-  double far_peak_pa = 0;         ///< the largest pressure across the ruling at the window's far station
-  double far_line_hertz_pa = 0;   ///< line Hertz's p0 at that station's q and R
+  double far_peak_pa = 0;         ///< the largest pressure across the ruling at the window's far station (whole ruling: halfway along the contact)
+  double far_line_hertz_pa = 0;   ///< line Hertz's p0 at that station's q (the rule's; whole ruling: the column's) and R
   double wall_s = 0;
   std::vector<double> station_m;          ///< x' of each column of cells
   std::vector<double> station_peak_pa;    ///< the largest pressure across each column
@@ -153,9 +166,16 @@ struct FlatRimContact
   double window_change = 0;             ///< that against the first level's
   bool converged = false;               ///< both changes below the tolerance
   double wall_s = 0;                    ///< every level and the longer window
-  double after_over_half_width = 0;     ///< the window's `after` used (the settings', or shortened)
+  double after_over_half_width = 0;     ///< the window's `after` used (the settings', or shortened; whole ruling: the grid's reach)
   double across_scale = 1;              ///< the window's width across over the settings' (widened: > 1)
+  bool whole_ruling = false;            ///< solved over the whole loaded ruling (no longer window)
 };
+
+/// Whether a body's end solved at the settings' window wants its whole
+/// ruling instead: the balance shortened the window and the doubled window
+/// still moves the peak by the tolerance (a short ruling, the end's reach
+/// comparable with it: the U optimum's 160-166 deg ends on steel).
+bool needs_whole_ruling(const FlatRimSettings& settings, const FlatRimContact& window_result);
 
 /// The settings' scene: the straight rim (interior_angle_rad > 0) or the
 /// body's loop end at end_angle_rad. Throws InputError for a non-positive

@@ -196,7 +196,7 @@ FlatRimTable flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, const FemSd
   // failed solve: a node whose solve failed or whose contact meets slopes
   // too steep for half-space theory (an end beside a crease of the hull)
   // is refused alike on every rank.
-  constexpr std::size_t per_end = 12;
+  constexpr std::size_t per_end = 14;
   constexpr double largest_slope = 0.1;
   std::vector<double> values;
   int job = 0;
@@ -207,10 +207,21 @@ FlatRimTable flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, const FemSd
       if (job++ % size == rank)
         try
         {
-          const FlatRimContact r = flat_rim_contact(setup, end);
+          FlatRimContact r = flat_rim_contact(setup, end);
+          double window_peak = 0;
+          if (needs_whole_ruling(setup, r))
+          {
+            // The fuller model: no window to shorten.
+            window_peak = r.levels.back().peak_pressure_pa;
+            FlatRimSettings whole = setup;
+            whole.whole_ruling = true;
+            const double window_wall_s = r.wall_s;
+            r = flat_rim_contact(whole, end);
+            r.wall_s += window_wall_s;
+          }
           v = {r.centre_of_pressure, r.end_line_load_n_per_m, r.end_radius_m, r.levels.back().peak_pressure_pa,
                r.line_hertz_peak_pa, r.last_change, r.window_change, r.converged ? 1.0 : 0.0, r.wall_s,
-               r.after_over_half_width, r.across_scale, r.largest_slope};
+               r.after_over_half_width, r.across_scale, r.whole_ruling ? 1.0 : 0.0, window_peak, r.largest_slope};
         }
         catch (const ComputationError& e)
         {
@@ -235,7 +246,7 @@ FlatRimTable flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, const FemSd
     {
       failed = failed || v[per_end - 1] < 0;
       slope = std::max(slope, v[per_end - 1]);
-      node.sides.push_back({v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7] > 0.5, v[8], v[9], v[10]});
+      node.sides.push_back({v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7] > 0.5, v[8], v[9], v[10], v[11] > 0.5, v[12]});
     }
     refused.push_back(failed || slope > largest_slope);
     if (refused.back())
@@ -559,11 +570,14 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
       if (rank == 0)
         for (const FlatRimSide& side : node.sides)
           spdlog::info("rim loop: flat-rim at {:.2f} deg (c = {:.4f}, q = {:.5g} N/m, hull's R = {:.4g} m): peak {:.5g} "
-                       "Pa, {:.4f} times line Hertz ({}: {:+.2f} % last level, {:+.2f} % longer window; {:.0f} s)",
+                       "Pa, {:.4f} times line Hertz ({}: {:+.2f} % last level, {}; {:.0f} s)",
                        node.interior_angle_rad / degree, side.centre_of_pressure, side.end_line_load_n_per_m,
                        side.end_radius_m, side.peak_pressure_pa, side.peak_pressure_pa / side.line_hertz_peak_pa,
                        side.converged ? "converged" : "NOT converged", 100 * side.last_change,
-                       100 * side.window_change, side.wall_s);
+                       side.whole_ruling ? fmt::format("the whole ruling, where the shortened window gave {:.5g} Pa",
+                                                       side.window_peak_pa)
+                                         : fmt::format("{:+.2f} % longer window", 100 * side.window_change),
+                       side.wall_s);
     }
   }
   const bool flat = !result.flat_table.empty();
@@ -724,7 +738,9 @@ nlohmann::json to_json(const RimLoopResult& r)
                        {"converged", side.converged},
                        {"wall_s", side.wall_s},
                        {"after_over_half_width", side.after_over_half_width},
-                       {"across_scale", side.across_scale}});
+                       {"across_scale", side.across_scale},
+                       {"whole_ruling", side.whole_ruling},
+                       {"window_peak_pa", side.whole_ruling ? nlohmann::json(side.window_peak_pa) : nlohmann::json(nullptr)}});
     flat_table.push_back({{"interior_angle_deg", n.interior_angle_rad / degree},
                           {"peak_pressure_pa", n.peak_pa()},
                           {"ratio", n.ratio()},

@@ -39,6 +39,8 @@
 // the angle) times the slices' factor. The straight rim of the FEM end
 // model is the weaker reduction there: on the oloid at 170 deg it gives
 // 1.92-1.97 where the body's own end gives 1.49-1.53 (docs/flat-rim.md).
+// A side on a short ruling whose shortened window does not converge is
+// solved over its whole loaded ruling instead (study::needs_whole_ruling).
 //
 // A rounded edge stands for a finished part, the hull rounded by a ball of
 // radius r_e rolled inside it: no radius of its surface is below r_e. Near a
@@ -117,6 +119,10 @@ struct FlatRimSide
   double wall_s = 0;
   double after_over_half_width = 0;  ///< the window along the ruling (shortened where the body could not balance)
   double across_scale = 1;           ///< the window's width across over the set one (widened: > 1)
+  /// Solved over its whole loaded ruling (study::needs_whole_ruling: its
+  /// shortened window did not converge), with that window's peak (Pa).
+  bool whole_ruling = false;
+  double window_peak_pa = 0;
 };
 
 /// One node of the flat-rim table: the loop's orientations whose loaded end
