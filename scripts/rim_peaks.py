@@ -124,6 +124,8 @@ def main():
         flat_text = (f"{len(flat)} nodes from {flat[0]['interior_angle_deg']:.1f} deg, ratios "
                      f"{min(n['ratio'] for n in flat):.3f}-{max(n['ratio'] for n in flat):.3f}"
                      + ("" if all(n["converged"] for n in flat) else " (a node NOT converged)")
+                     + (f"; {whole} sides over their whole ruling" if (whole := sum(
+                         side.get("whole_ruling", False) for n in flat for side in n["sides"])) else "")
                      + ("; the nodes below refused" if j.get("flat_rim_refused") else "")) if flat else (
             "refused" if j.get("flat_rim_refused") else "-")
         rows.append(

@@ -7,7 +7,8 @@
 # two models' far fields, the FEM's block 160 b deep and the window, differ:
 # 1.974 and 2.010 against 1.9655 measured); bad input exits 2 naming the
 # option (an end of the oloid's loop too steep for half-space theory, a
-# body that is no hull of two circles as well), before any output.
+# body that is no hull of two circles, a whole ruling asked of a straight
+# rim as well), before any output.
 set -u
 source "$(dirname "$0")/lib.sh"
 bin=$1; here=$2; tmp=$3
@@ -31,8 +32,9 @@ expect 2 "end-angle" -- "$bin" flat-rim --end-angle 140 --json "$tmp/steep_end.j
 expect 2 "no-such-folder" -- "$bin" flat-rim --json "$tmp/no-such-folder/out.json"
 expect 2 "body 'sphere' is not the hull of two circles" -- "$bin" flat-rim --body sphere --json "$tmp/sphere.json"
 expect 2 "square" -- "$bin" flat-rim --body cylinder --json "$tmp/cylinder.json"
+expect 2 "whole-ruling" -- "$bin" flat-rim --interior-angle 170 --whole-ruling --json "$tmp/whole_straight.json"
 expect 2 "mesh_file" -- "$bin" flat-rim --mesh "$here/meshes/reference/oloid_reference.obj" --json "$tmp/mesh.json"
 check '[[ ! -e $tmp/steep.json && ! -e $tmp/negative.json && ! -e $tmp/steep_end.json && ! -e $tmp/sphere.json
-         && ! -e $tmp/cylinder.json && ! -e $tmp/mesh.json ]]' \
+         && ! -e $tmp/cylinder.json && ! -e $tmp/mesh.json && ! -e $tmp/whole_straight.json ]]' \
   "a refused run left no output"
 exit $fail
