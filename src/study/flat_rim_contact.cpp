@@ -148,10 +148,13 @@ RoundedSurface rounded_surface(const EndProblem& end, const contact::HalfSpaceGr
   for (std::size_t i = 0; i < nx; ++i)
     for (std::size_t j = 0; j < r.ny; ++j)
     {
-      const double z = end.hull_height(window.first_x_m + (static_cast<double>(i) - shift) * cell,
-                                       window.first_y_m + (static_cast<double>(j) - shift) * cell);
+      const double along = window.first_x_m + (static_cast<double>(i) - shift) * cell;
+      const double across = window.first_y_m + (static_cast<double>(j) - shift) * cell;
+      const double z = end.hull_height(along, across);
       if (!std::isfinite(z))
-        throw ComputationError("flat rim: the hull's surface was not found over the window (search range)");
+        throw ComputationError(fmt::format("flat rim: the hull's surface was not found over the window (search "
+                                           "range) at x' = {:.4g} m along the ruling, y = {:.4g} m across",
+                                           along, across));
       hull[i * r.ny + j] = z;
     }
   r.values = geometry::rolling_ball_opening(hull, nx, r.ny, cell, cell, edge_radius);
