@@ -234,6 +234,33 @@ TEST(FlatRimContact, WholeRulingBalancesTheBodyAndAgreesWithTheWindow)
   EXPECT_FALSE(study::needs_whole_ruling(s, whole));
 }
 
+// The FEM-SDS optimum's 160 deg end walked forwards (c = 0.273: the
+// locus's load reaches past 0.8 of the ruling, the grid to r_e short of the
+// far rim): the far rim is oblique, and 0.42 mm across the ruling, 0.4 r_e
+// short of its end, lies outside the body's outline on the ground (no
+// segment of the hull over it, from anywhere on the end's rim circle), where
+// the rounding's margin once asked for the surface and refused the solve.
+// The grid stops within the outline, short of r_e from the far rim, the
+// contact ends inside it, and the peak agrees with the window's.
+TEST(FlatRimContact, WholeRulingStopsWithinAnObliqueFarRim)
+{
+  study::FlatRimSettings s = centre_line_roller_settings(160, {112.7, 1.000, 0.999, 2});
+  s.loop_side = 0;
+  const study::LoopEnd end = study::body_loop_end(s.body, s.end_angle_rad, s.loop_side);
+  const double ruling = end.ruling.length_m;
+  EXPECT_FALSE(std::isfinite(study::end_hull_height(end, ruling - 0.4 * s.edge_radius_m, 4.2e-4)));
+  EXPECT_TRUE(std::isfinite(study::end_hull_height(end, ruling - 0.4 * s.edge_radius_m, 0)));
+  const study::FlatRimContact window = study::flat_rim_contact(s);
+  s.whole_ruling = true;
+  const study::FlatRimContact whole = study::flat_rim_contact(s);
+  const study::FlatRimLevel& l = whole.levels.back();
+  expect_balance(whole, l, s.normal_load_n);
+  EXPECT_LT(l.station_m.back(), ruling - s.edge_radius_m);
+  EXPECT_GT(l.station_m.back(), 0.9 * ruling);
+  EXPECT_EQ(l.station_load_n_per_m.back(), 0.0);
+  EXPECT_NEAR(l.peak_pressure_pa / window.levels.back().peak_pressure_pa, 1.0, s.tolerance);
+}
+
 // The loop's flat-rim table solves a side whole only where the balance
 // shortened its window and the doubled window still moves the peak.
 TEST(FlatRimContact, OnlyAShortenedWindowThatDoesNotConvergeNeedsTheWholeRuling)

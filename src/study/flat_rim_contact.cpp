@@ -48,9 +48,15 @@ struct RulingEndSurface
     ground.across = ground.down.cross(ground.along);
   }
 
+  // Where no segment from A near the end lies over a point (beyond an
+  // oblique far rim, which the whole ruling's grid can reach), the surface
+  // lies on segments from elsewhere on A: every t is searched.
+  geometry::SegmentSearch whole_circle{-std::numbers::pi, std::numbers::pi, 720};
+
   double height(double along_m, double across_m) const
   {
-    return geometry::two_circle_hull_height(a, b, ground, search, along_m, across_m);
+    const double z = geometry::two_circle_hull_height(a, b, ground, search, along_m, across_m);
+    return std::isfinite(z) ? z : geometry::two_circle_hull_height(a, b, ground, whole_circle, along_m, across_m);
   }
 
   /// The circle with t = 0 at `through`, a point of it.
@@ -136,11 +142,17 @@ struct RoundedSurface
   double operator()(std::size_t i, std::size_t j) const { return values[(i + margin) * ny + j + margin]; }
 };
 
+/// The cells about a grid whose hull the rounding needs: 0.6 r_e.
+std::size_t opening_margin(double edge_radius, double cell)
+{
+  return static_cast<std::size_t>(std::ceil(0.6 * edge_radius / cell));
+}
+
 RoundedSurface rounded_surface(const EndProblem& end, const contact::HalfSpaceGrid& window, double edge_radius)
 {
   const double cell = window.cell_x_m;
   RoundedSurface r;
-  r.margin = static_cast<std::size_t>(std::ceil(0.6 * edge_radius / cell));
+  r.margin = opening_margin(edge_radius, cell);
   const std::size_t nx = window.nx + 2 * r.margin;
   r.ny = window.ny + 2 * r.margin;
   std::vector<double> hull(nx * r.ny);
@@ -264,11 +276,29 @@ double widest_contact(const FlatRimSettings& s, const EndProblem& end, double ef
   return widest;
 }
 
-/// The whole ruling's grid reaches 1.3 times the locus's loaded length,
-/// stopping r_e short of the far rim (whose rounding it would need beyond).
-double whole_ruling_reach(const FlatRimSettings& s, const EndProblem& end)
+/// The whole ruling's columns from x' = 0: to 1.3 times the locus's loaded
+/// length, stopping r_e short of the far rim (whose rounding it would need
+/// beyond), and short of where an oblique far rim crosses the grid's end:
+/// the grid and the rounding's margin about it lie within the body's
+/// outline on the ground (convex: its far corners inside). A contact that
+/// would run beyond stops solve_whole_ruling_level with a message.
+std::size_t whole_ruling_columns(const FlatRimSettings& s, const EndProblem& end, double cell,
+                                 std::size_t half_across)
 {
-  return std::min(1.3 * end.load.length_m, end.ruling_length_m - s.edge_radius_m);
+  const std::size_t margin = opening_margin(s.edge_radius_m, cell);
+  const double across = static_cast<double>(half_across + margin) * cell;
+  const auto inside = [&](std::size_t columns) {
+    const double along = static_cast<double>(columns - 1 + margin) * cell;
+    return std::isfinite(end.hull_height(along, across)) && std::isfinite(end.hull_height(along, -across));
+  };
+  const double reach = std::min(1.3 * end.load.length_m, end.ruling_length_m - s.edge_radius_m);
+  std::size_t columns = static_cast<std::size_t>(std::ceil(reach / cell)) + 1;
+  while (!inside(columns))
+    if (--columns == 1)
+      throw ComputationError(fmt::format("flat rim, whole ruling: the body's outline on the ground does not cover "
+                                         "{:.4g} m across the ruling (the hull was not found there)",
+                                         across));
+  return columns;
 }
 
 /// The whole loaded ruling in one grid: F on it, its centre at the centre
@@ -282,7 +312,7 @@ FlatRimLevel solve_whole_ruling_level(const FlatRimSettings& s, const EndProblem
   const std::size_t half_across
       = cells_over(across_scale * widest_contact(s, end, effective_modulus, half_width, 0, cell));
   const std::size_t first_cell = cells_over(s.before_over_half_width * half_width); // x' = 0 at this column
-  const contact::HalfSpaceGrid grid{first_cell + cells_over(whole_ruling_reach(s, end)) + 1,
+  const contact::HalfSpaceGrid grid{first_cell + whole_ruling_columns(s, end, cell, half_across),
                                     2 * half_across + 1,
                                     cell,
                                     cell,
@@ -652,7 +682,7 @@ void solve_end(const FlatRimSettings& s, const EndProblem& end, FlatRimContact& 
     }
   result.whole_ruling = s.whole_ruling;
   result.after_over_half_width
-      = s.whole_ruling ? whole_ruling_reach(s, end) / result.half_width_m : window.after_over_half_width;
+      = s.whole_ruling ? result.levels.back().station_m.back() / result.half_width_m : window.after_over_half_width;
   if (!s.whole_ruling)
     result.window_change = result.longer_window_peak_pa / result.levels.front().peak_pressure_pa - 1;
   if (result.levels.size() >= 2)
