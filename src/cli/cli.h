@@ -5,10 +5,18 @@
 #include "io/batch_run.h"
 #include "io/parameters.h"
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <functional>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
+
+namespace rollcheck::geometry
+{
+struct SurfaceMesh;
+struct BodySpec;
+} // namespace rollcheck::geometry
 
 namespace rollcheck::cli
 {
@@ -44,6 +52,23 @@ void add_fem_commands(CLI::App& app);
 
 /// PETSc's options, the arguments after `--` (rollcheck-fem).
 void insert_petsc_options(std::vector<std::string> options);
+
+// What the fast subcommands reach only in rollcheck-fem. Each has a
+// definition for either executable: rollcheck's refuses (it hands such
+// command lines to rollcheck-fem before they get here) or has no MPI.
+
+/// This process's MPI rank: 0 outside MPI, and always in rollcheck.
+int process_rank();
+
+/// `mesh --out FILE.msh`: the gmsh tetrahedral mesh of `surface`, written to
+/// `path` ({"nodes", "tetrahedra"} returned).
+nlohmann::json write_volume_mesh(const geometry::SurfaceMesh& surface, double mesh_size_m,
+                                 const std::filesystem::path& path);
+
+/// `optimize --score fem-sds`: study::fem_sds_scorer on MPI_COMM_WORLD with
+/// the default FEM-SDS settings, each body's loop status appended to `statuses`.
+std::function<double(const geometry::BodySpec&)> fem_sds_family_scorer(
+    std::shared_ptr<std::vector<std::string>> statuses);
 
 /// Registers what runs when `sub` was the parsed subcommand. The runner returns
 /// the exit code (0 success); it may throw InputError (exit 2) or
@@ -106,4 +131,5 @@ void add_batch_command(CLI::App& app);
 void add_report_command(CLI::App& app);
 void add_audit_command(CLI::App& app);
 void add_validate_command(CLI::App& app);
+void add_whole_body_command(CLI::App& app);
 } // namespace rollcheck::cli

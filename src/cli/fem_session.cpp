@@ -4,6 +4,8 @@
 #include "cli/cli.h"
 #include "core/error.h"
 #include "fem/petsc_session.h"
+#include "geometry/tetrahedralize.h"
+#include "study/fem_sds_family.h"
 #include <algorithm>
 #include <cstdlib>
 #include <fmt/format.h>
@@ -79,6 +81,7 @@ void add_fem_commands(CLI::App& app)
   add_run_command(app);
   add_batch_command(app);
   add_validate_command(app);
+  add_whole_body_command(app);
 }
 
 void insert_petsc_options(std::vector<std::string> options)
@@ -93,5 +96,27 @@ void insert_petsc_options(std::vector<std::string> options)
     argv.push_back(option.data());
   if (PetscOptionsInsertArgs(nullptr, static_cast<int>(argv.size()), argv.data()) != 0)
     throw InputError(fmt::format("cannot read the PETSc options after `--`: {}", fmt::join(options, " ")));
+}
+
+int process_rank()
+{
+  int initialized = 0, rank = 0;
+  MPI_Initialized(&initialized);
+  if (initialized)
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  return rank;
+}
+
+nlohmann::json write_volume_mesh(const geometry::SurfaceMesh& surface, double mesh_size_m,
+                                 const std::filesystem::path& path)
+{
+  const geometry::VolumeMeshInfo info = geometry::write_tetrahedral_mesh(surface, mesh_size_m, path);
+  return {{"nodes", info.nodes}, {"tetrahedra", info.tetrahedra}};
+}
+
+std::function<double(const geometry::BodySpec&)> fem_sds_family_scorer(
+    std::shared_ptr<std::vector<std::string>> statuses)
+{
+  return study::fem_sds_scorer(MPI_COMM_WORLD, study::FemSdsSettings{}, std::move(statuses));
 }
 } // namespace rollcheck::cli

@@ -5,6 +5,7 @@
 // PETSc options, --help, a launch under mpirun) it replaces its process with
 // rollcheck-fem, beside it in the same folder, with the same arguments.
 #include "cli/cli.h"
+#include "cli/search_family.h"
 #include "core/child_process.h"
 #include "core/error.h"
 #include <algorithm>
@@ -53,5 +54,23 @@ void insert_petsc_options(std::vector<std::string> options)
 {
   if (!options.empty())
     throw InputError("PETSc options are read by rollcheck-fem");
+}
+
+int process_rank() { return 0; }
+
+// ProcessSession hands the command lines that reach these to rollcheck-fem.
+nlohmann::json write_volume_mesh(const geometry::SurfaceMesh&, double, const std::filesystem::path&)
+{
+  throw ComputationError("gmsh volume meshes are written by rollcheck-fem");
+}
+
+std::function<double(const geometry::BodySpec&)> fem_sds_family_scorer(std::shared_ptr<std::vector<std::string>>)
+{
+  throw ComputationError("optimize --score fem-sds runs in rollcheck-fem");
+}
+
+nlohmann::json run_family_scores(oracle::SearchGrid, int, double, const std::string&, const std::string&)
+{
+  throw ComputationError("search --score fem-sds runs in rollcheck-fem");
 }
 } // namespace rollcheck::cli

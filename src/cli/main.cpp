@@ -97,12 +97,6 @@ bool fast_command(const std::vector<std::string>& args)
 }
 } // namespace rollcheck::cli
 
-namespace rollcheck::cli
-{
-/// whole_body.cpp, built for each executable: the subcommand in rollcheck-fem, nothing in rollcheck.
-void add_whole_body_command(CLI::App& app);
-}
-
 int main(int argc, char** argv)
 {
   // rollcheck's arguments end at `--`; PETSc's follow.
@@ -129,7 +123,6 @@ int main(int argc, char** argv)
   cli::add_report_command(app);
   cli::add_audit_command(app);
   cli::add_fem_commands(app);
-  cli::add_whole_body_command(app);
 
   try
   {

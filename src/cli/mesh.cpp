@@ -7,9 +7,6 @@
 #include "geometry/body.h"
 #include "geometry/mass_properties.h"
 #include "geometry/mesh_checks.h"
-#ifdef ROLLCHECK_FEM
-#include "geometry/tetrahedralize.h"
-#endif
 #include "geometry/write_mesh.h"
 #include <spdlog/spdlog.h>
 
@@ -65,13 +62,7 @@ nlohmann::json run_mesh(const io::Parameters& params)
     const std::filesystem::path path(scene.out);
     if (path.extension() == ".msh")
     {
-#ifdef ROLLCHECK_FEM
-      const auto info = geometry::write_tetrahedral_mesh(mesh, scene.volume_mesh_size_m, path);
-      summary["volume_mesh"] = {{"nodes", info.nodes}, {"tetrahedra", info.tetrahedra}};
-#else
-      // rollcheck hands command lines that name a .msh file to rollcheck-fem (light_session.cpp).
-      throw ComputationError("gmsh volume meshes are written by rollcheck-fem");
-#endif
+      summary["volume_mesh"] = write_volume_mesh(mesh, scene.volume_mesh_size_m, path);
     }
     else
       geometry::write_mesh(mesh, path);

@@ -13,10 +13,6 @@
 #include "io/case_hash.h"
 #include "io/evaluation_cache.h"
 #include "study/optimize_family.h"
-#ifdef ROLLCHECK_FEM
-#include "study/fem_sds_family.h"
-#include <mpi.h>
-#endif
 #include "core/error.h"
 #include <fstream>
 #include <map>
@@ -151,14 +147,7 @@ constexpr const char* evaluations_file = "evaluations.json";
 /// runs, and the first rank alone writes them.
 bool saves_runs()
 {
-  int rank = 0;
-#ifdef ROLLCHECK_FEM
-  int initialized = 0;
-  MPI_Initialized(&initialized);
-  if (initialized)
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-#endif
-  return rank == 0;
+  return process_rank() == 0;
 }
 
 /// The runs a previous search with the same settings left in `out`. The folder
@@ -197,14 +186,7 @@ nlohmann::json run_optimize(const io::Parameters& params)
   // reported with its convergence).
   auto fem_sds_statuses = std::make_shared<std::vector<std::string>>();
   if (settings.score == study::FamilyScore::fem_sds)
-  {
-#ifdef ROLLCHECK_FEM
-    settings.fem_sds_score = study::fem_sds_scorer(MPI_COMM_WORLD, study::FemSdsSettings{}, fem_sds_statuses);
-#else
-    // rollcheck hands command lines that name fem-sds to rollcheck-fem (light_session.cpp).
-    throw ComputationError("optimize --score fem-sds runs in rollcheck-fem");
-#endif
-  }
+    settings.fem_sds_score = fem_sds_family_scorer(fem_sds_statuses);
   const study::FamilySearchResult result = study::optimize_family(settings);
   nlohmann::json j = study::to_json(result);
   if (settings.score == study::FamilyScore::fem_sds)

@@ -5,9 +5,7 @@
 // "search" of case files.
 #include "cli/cli.h"
 #include "cli/scenes.h"
-#ifdef ROLLCHECK_FEM
 #include "cli/search_family.h"
-#endif
 #include "core/error.h"
 #include "io/search_store.h"
 #include "oracle/parametric_search.h"
@@ -180,16 +178,7 @@ nlohmann::json run_search(const io::Parameters& params)
   const SearchScene scene = search_schema().bind(params);
   if (scene.score == SearchScore::fem_sds)
   {
-#ifdef ROLLCHECK_FEM
-    study::FamilySettings family;
-    family.grid = scene.grid;
-    family.points = scene.points;
-    family.scoring.body.radius_m = scene.radius_m;
-    return run_family_scores(family, scene.out, scene.python);
-#else
-    // rollcheck hands command lines that name fem-sds to rollcheck-fem (light_session.cpp).
-    throw ComputationError("search --score fem-sds runs in rollcheck-fem");
-#endif
+    return run_family_scores(scene.grid, scene.points, scene.radius_m, scene.out, scene.python);
   }
   oracle::SearchSettings o = scene;
   o.compat = scene.paper_compat ? oracle::PaperCompat::reference() : oracle::PaperCompat::corrected();

@@ -12,11 +12,15 @@
 
 namespace rollcheck::cli
 {
-nlohmann::json run_family_scores(const study::FamilySettings& settings, const std::string& out,
+nlohmann::json run_family_scores(oracle::SearchGrid grid, int points, double radius_m, const std::string& out,
                                  const std::string& python)
 {
   if (!out.empty())
     check_output_folder(out, "option --out");
+  study::FamilySettings settings;
+  settings.grid = grid;
+  settings.points = points;
+  settings.scoring.body.radius_m = radius_m;
   const study::FamilyResult result = study::fem_sds_family(MPI_COMM_WORLD, settings);
   const nlohmann::json j = study::to_json(result);
   int rank = 0;

@@ -5,20 +5,15 @@
 // (every comparison with a value within the tolerance, 3 %, an end singular)
 // or FAIL. Also the scene "whole-body" of case files. Exit 0 when
 // the check ran (its verdict is in the output), 1 when a solve failed.
-// Built for both executables (src/cli/CMakeLists.txt): only rollcheck-fem
-// (ROLLCHECK_FEM) has the subcommand; rollcheck hands the command line over.
 #include "cli/cli.h"
-#ifdef ROLLCHECK_FEM
 #include "cli/scenes.h"
 #include "fem/petsc_session.h"
 #include "study/whole_body_check.h"
 #include <mpi.h>
 #include <spdlog/spdlog.h>
-#endif
 
 namespace rollcheck::cli
 {
-#ifdef ROLLCHECK_FEM
 namespace
 {
 const io::BoundSchema<study::WholeBodyCheckSettings>& whole_body_schema()
@@ -151,7 +146,4 @@ void add_whole_body_command(CLI::App& app)
                     "--tolerance, a sharp obtuse end singular: no value to compare) or FAIL",
                     whole_body_schema().schema(), run_whole_body);
 }
-#else
-void add_whole_body_command(CLI::App&) {}
-#endif
 } // namespace rollcheck::cli
