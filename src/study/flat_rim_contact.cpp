@@ -48,9 +48,9 @@ struct RulingEndSurface
     ground.across = ground.down.cross(ground.along);
   }
 
-  // Where no segment from A near the end lies over a point (beyond an
-  // oblique far rim, which the whole ruling's grid can reach), the surface
-  // lies on segments from elsewhere on A: every t is searched.
+  // Where no segment from A near the end lies over a point, every t is
+  // searched: the point lies outside the body's outline on the ground only
+  // if none does (whole_ruling_columns asks that near an oblique far rim).
   geometry::SegmentSearch whole_circle{-std::numbers::pi, std::numbers::pi, 720};
 
   double height(double along_m, double across_m) const
