@@ -70,10 +70,8 @@ nlohmann::json run_crease(const io::Parameters& p)
                          100 * (l.half_contact_pressure_pa / study.half_contact_pressure_pa - 1),
                          l.contact_edge_m / study.half_width_m);
   }
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   // Tables go to the log (stderr), so that `--json -` stays JSON alone.
-  if (rank == 0)
+  if (process_rank() == 0)
     spdlog::info("\ncrease of {:.4g} deg under {:.4g} N/m (a = {:.4g} m, p(a/2) = {:.5g} Pa, apex growth per level "
                "{:.4g} Pa by theory):\n\n{}\nThe apex pressure is singular: it grows with every level and is not a "
                "converged number; p(a/2) and the contact edge converge.\n\n",

@@ -141,9 +141,7 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
     table += "\n3D slab of the whole ruling against the slices (fem/slab_contact.h; square end faces; README "
              "\"Creases\"):\n\n"
              + slab_table(result.orientations);
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  if (rank != 0)
+  if (process_rank() != 0)
     return j;
   // Tables go to the log (stderr), so that `--json -` stays JSON alone.
   spdlog::info("\nfem-sds {} ({}):\n\n{}\nover the {} samples of the loop: point-Hertz SDS (the preprint's) {}, "

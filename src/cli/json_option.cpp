@@ -3,7 +3,6 @@
 #include "core/error.h"
 #include <fstream>
 #include <iostream>
-#include <mpi.h>
 
 namespace rollcheck::cli
 {
@@ -17,11 +16,7 @@ void emit_json(const std::string& path, const nlohmann::json& summary)
   if (path.empty())
     return;
   // Under mpirun every rank holds the same summary; one writes it.
-  int initialized = 0, rank = 0;
-  MPI_Initialized(&initialized); // MPI starts only for the scenes that need it
-  if (initialized)
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  if (rank != 0)
+  if (process_rank() != 0)
     return;
   // NaN has no JSON form; nlohmann writes it as null, which would hide a bug.
   const std::string text = summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);

@@ -61,9 +61,7 @@ nlohmann::json run_mesh(const io::Parameters& params)
   {
     const std::filesystem::path path(scene.out);
     if (path.extension() == ".msh")
-    {
       summary["volume_mesh"] = write_volume_mesh(mesh, scene.volume_mesh_size_m, path);
-    }
     else
       geometry::write_mesh(mesh, path);
     summary["out"] = scene.out;

@@ -202,10 +202,8 @@ nlohmann::json run_one_end(const fem::RimEndSettings& setup)
                           100 * *study.end_change, sharp ? "the sharp edge's own" : "the rounded edge's peak")
             : fmt::format("NOT converged: end pressure / interior {:.4f} changed {:+.2f} % at the last level",
                           *study.end_to_interior, 100 * *study.end_change);
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   // Tables go to the log (stderr), so that `--json -` stays JSON alone.
-  if (rank == 0)
+  if (process_rank() == 0)
     spdlog::info("\nrim end, interior angle {:.4g} deg, edge radius {:.3g} m ({:.3g} b), R = {:.4g} m, q = {:.5g} "
                  "N/m (b = {:.4g} m, p0 = {:.5g} Pa):\n\n{}\n{}; far side in plane strain to {:.2f} % (standard error {:.2f} %).\n\n",
                  setup.interior_angle_rad * 180 / std::numbers::pi, setup.edge_radius_m, setup.edge_radius_m / b,
@@ -293,9 +291,7 @@ nlohmann::json run_loop(study::RimLoopSettings settings)
   settings.loop.poisson_ratio = settings.end.poisson_ratio;
   const study::RimLoopResult r = study::run_rim_loop(MPI_COMM_WORLD, settings);
   const nlohmann::json j = study::to_json(r);
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  if (rank != 0)
+  if (process_rank() != 0)
     return j;
   constexpr double degree = std::numbers::pi / 180;
   std::string ends = "| orientation | end | interior angle (deg) | q (N/m) | R (mm) | b (um) | wedge exponent | FEM: "

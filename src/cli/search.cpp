@@ -177,9 +177,7 @@ nlohmann::json run_search(const io::Parameters& params)
 {
   const SearchScene scene = search_schema().bind(params);
   if (scene.score == SearchScore::fem_sds)
-  {
     return run_family_scores(scene.grid, scene.points, scene.radius_m, scene.out, scene.python);
-  }
   oracle::SearchSettings o = scene;
   o.compat = scene.paper_compat ? oracle::PaperCompat::reference() : oracle::PaperCompat::corrected();
   oracle::apply_quirk_settings(o.compat, scene.quirks, "option --quirks");

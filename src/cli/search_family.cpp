@@ -3,6 +3,7 @@
 // Markdown table on the log, and with --out the folder of family.json,
 // table.md and family.png (postprocess/plot_fem_family.py).
 #include "cli/search_family.h"
+#include "cli/cli.h"
 #include "core/atomic_file.h"
 #include "io/batch_report.h"
 #include "study/fem_sds_family.h"
@@ -23,9 +24,7 @@ nlohmann::json run_family_scores(oracle::SearchGrid grid, int points, double rad
   settings.scoring.body.radius_m = radius_m;
   const study::FamilyResult result = study::fem_sds_family(MPI_COMM_WORLD, settings);
   const nlohmann::json j = study::to_json(result);
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  if (rank != 0)
+  if (process_rank() != 0)
     return j;
   const std::string table = study::markdown_table(result);
   spdlog::info("\nFEM-SDS of the {} grid over one loop of real rolling each, ranked by FEM-SDS ({} FEM solves shared, "
