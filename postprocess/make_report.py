@@ -39,7 +39,7 @@ TEMPLATES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "templates"
 WIDE = 8          # more cases of one scene kind than this: the raw table is split
 NOTE = 60         # a longer text result goes below its table, as a note
 NUMBER = re.compile(r"^[-+]?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?$|^-?inf$")
-# Every verdict of study/audit_table.cpp verdict_text(); an unknown one is an error.
+# Every verdict of audit/table.cpp verdict_text(); an unknown one is an error.
 VERDICT_CLASS = {"holds": "pass", "holds only in paper-compatible mode": "partial", "does not hold": "fail",
                  "cannot be tested": "none", "not built yet": "none"}
 
@@ -106,7 +106,7 @@ def validation(path):
 
 
 def audit_cell(cell_json, at):
-    """One recomputation as `rollcheck audit` prints it (study/audit_table.cpp, cell_text)."""
+    """One recomputation as `rollcheck audit` prints it (audit/table.cpp, cell_text)."""
     if not require(cell_json, "applicable", at):
         return "n/a"
     if not require(cell_json, "built", at):

@@ -1,16 +1,16 @@
 // `rollcheck audit`: recomputes every quantitative claim of the preprint in
 // each mode that applies (paper-compatible, matched mesh resolution, true
 // oloid, corrected physics, real rolling) and prints the claim table. The
-// claims are data in the study layer (study/audit_claims.h), each number the
+// claims are data in the study layer (audit/claims.h), each number the
 // output of a `rollcheck` command run as a child process of this executable
-// exactly as the table lists it (study/audit_runner.h).
+// exactly as the table lists it (audit/runner.h).
 #include "cli/cli.h"
 #include "core/atomic_file.h"
 #include "core/child_process.h"
 #include "core/data_folder.h"
 #include "core/error.h"
 #include "rollcheck_version.h"
-#include "study/audit_runner.h"
+#include "audit/runner.h"
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
@@ -53,7 +53,7 @@ void add_audit_command(CLI::App& app)
                "resolution, true oloid, corrected physics, real rolling) and print the claim table with verdicts "
                "and commands");
   static std::string json_path, markdown_path;
-  static study::AuditSettings settings;
+  static audit::AuditSettings settings;
   static std::string meshes = (data_folder() / "meshes" / "reference").string();
   add_json_option(sub, json_path);
   sub->add_option("--markdown", markdown_path,
@@ -66,13 +66,13 @@ void add_audit_command(CLI::App& app)
     if (json_path == "-" && markdown_path == "-")
       throw InputError("options --json and --markdown: only one of them can be '-' (stdout)");
     settings.reference_meshes = reference_meshes(meshes);
-    const study::AuditTable table = study::run_audit(settings, process::own_executable());
-    const std::string markdown = study::to_markdown(table);
+    const audit::AuditTable table = audit::run_audit(settings, process::own_executable());
+    const std::string markdown = audit::to_markdown(table);
     if (!markdown_path.empty() && markdown_path != "-")
       write_markdown(markdown_path, markdown);
     if (markdown_path == "-" || json_path != "-")
       std::cout << markdown;
-    emit_json(json_path, study::to_json(table));
+    emit_json(json_path, to_json(table));
     return 0;
   });
 }

@@ -1,11 +1,11 @@
 // `rollcheck crease`: the FEM peak pressure of a crease inside the contact,
 // level by level, against the blunt-wedge solution of half-space theory
-// (fem/crease_contact.h). The demonstration behind fem-sds's "reported apart":
+// (fem/scenes/crease_contact.h). The demonstration behind fem-sds's "reported apart":
 // where a body stands on an edge, the FEM peak is a number of the mesh.
 // Also the scene "crease" of case files.
 #include "cli/cli.h"
 #include "cli/scenes.h"
-#include "fem/crease_contact.h"
+#include "fem/scenes/crease_contact.h"
 #include "core/error.h"
 #include <fmt/format.h>
 #include <mpi.h>

@@ -1,12 +1,12 @@
 // `rollcheck fem-sds`: SDS over a whole rolling loop under FEM contact stress,
 // against the preprint's point-Hertz SDS and line-contact Hertz
 // (docs/fem-sds.md). Also the scene "fem-sds" of case files.
-// The method is study/fem_sds.h; here its parameters, its tables in the log,
+// The method is study/loop_scores/fem_sds.h; here its parameters, its tables in the log,
 // its plots and its JSON.
 #include "cli/cli.h"
 #include "cli/scenes.h"
 #include "io/batch_report.h"
-#include "study/fem_sds.h"
+#include "study/loop_scores/fem_sds.h"
 #include <fmt/format.h>
 #include <fstream>
 #include <mpi.h>
@@ -16,9 +16,9 @@ namespace rollcheck::cli
 {
 namespace
 {
-const io::BoundSchema<study::FemSdsSettings>& fem_sds_schema()
+const io::BoundSchema<study::loop_scores::FemSdsSettings>& fem_sds_schema()
 {
-  using study::FemSdsSettings;
+  using study::loop_scores::FemSdsSettings;
   static const io::BoundSchema<FemSdsSettings> schema = [] {
     io::BoundSchema<FemSdsSettings> s("fem-sds");
     s.include(body_schema(), &FemSdsSettings::body)
@@ -26,13 +26,13 @@ const io::BoundSchema<study::FemSdsSettings>& fem_sds_schema()
                 "Where the orientations come from: rolling (real rolling without slipping, the body on a ruling at "
                 "every instant) or rigid (the preprint's rigid-body oracle, whose orientations mostly stand on a rim "
                 "point)",
-                {{"rolling", study::OrientationOracle::rolling}, {"rigid", study::OrientationOracle::rigid}})
+                {{"rolling", study::loop_scores::OrientationOracle::rolling}, {"rigid", study::loop_scores::OrientationOracle::rigid}})
         .integer("samples_per_loop", "--samples", &FemSdsSettings::samples_per_loop, "",
                  "Samples of the rolling loop (spread evenly in time over its period), every one scored",
                  io::Bounds{2, 1e7})
         .integer("table_nodes_per_decade", "--table-nodes", &FemSdsSettings::table_nodes_per_decade, "",
                  "FEM solves per decade of the load ratio q / (E* R) to start the nondimensional slice table with "
-                 "(fem/slice_scaling.h); doubled until FEM-SDS changes by less than the tolerance",
+                 "(fem/scenes/slice_scaling.h); doubled until FEM-SDS changes by less than the tolerance",
                  io::Bounds{1, 64})
         .real("tolerance", "--tolerance", &FemSdsSettings::tolerance, "",
               "Relative change of FEM-SDS, doubling the table or the samples, that counts as converged",
@@ -74,7 +74,7 @@ const io::BoundSchema<study::FemSdsSettings>& fem_sds_schema()
               "Penalty kappa = c E / h_c (README: penalty study)", io::positive)
         .integer("slab_orientations", "--slab-check", &FemSdsSettings::slab_orientations, "",
                  "The first N solved orientations whose b / R varies at most 2-fold along the ruling are also solved "
-                 "as one 3D slab of the whole ruling (fem/slab_contact.h, square end faces) at two section levels: "
+                 "as one 3D slab of the whole ruling (fem/scenes/slab_contact.h, square end faces) at two section levels: "
                  "the fuller model the slices must agree with (peak within 2 %), and the pressure at the ruling's "
                  "ends; 0: none",
                  io::Bounds{0, 10000})
@@ -93,15 +93,15 @@ const io::BoundSchema<study::FemSdsSettings>& fem_sds_schema()
   return schema;
 }
 
-std::string markdown_table(const std::vector<study::FemSdsOrientation>& results)
+std::string markdown_table(const std::vector<study::loop_scores::FemSdsOrientation>& results)
 {
   std::string t = "| # | t (s) | support | c | creases | point-Hertz p0 (MPa) | line-Hertz p0 (MPa) | FEM p0 (MPa) | "
                   "FEM finer (MPa) | change | FEM / line - 1 | length (m) | width (um) | DOFs | Newton | s |\n"
                   "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const study::FemSdsOrientation& r : results)
+  for (const study::loop_scores::FemSdsOrientation& r : results)
   {
     t += fmt::format("| {} | {:.4g} | {} | {} | {} | {:.4g} |", r.index, r.locus.time_s,
-                     study::support_name(r.locus.support.kind),
+                     study::loop_scores::support_name(r.locus.support.kind),
                      r.locus.ruling ? fmt::format("{:.3f}", r.locus.centre_of_pressure) : std::string("-"),
                      r.locus.creases.size(), r.point_hertz_peak_pa / 1e6);
     if (r.solved)
@@ -116,12 +116,12 @@ std::string markdown_table(const std::vector<study::FemSdsOrientation>& results)
   return t;
 }
 
-std::string slab_table(const std::vector<study::FemSdsOrientation>& results)
+std::string slab_table(const std::vector<study::loop_scores::FemSdsOrientation>& results)
 {
   std::string t = "| # | level | DOFs | layers | Newton | s | approach factor | c (slab / locus) | slab peak / slices' - 1 "
                   "| max over slices of abs(slab / slice - 1) | end p at s = 0, L (MPa) |\n"
                   "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const study::FemSdsOrientation& r : results)
+  for (const study::loop_scores::FemSdsOrientation& r : results)
     for (const fem::SlabFem& slab : r.slab)
       t += fmt::format("| {} | {} | {} | {} | {} | {:.1f} | {:.4f} | {:.4f} / {:.4f} | {:+.2f} % | {:.2f} % | {:.4g}, "
                        "{:.4g} |\n",
@@ -134,11 +134,11 @@ std::string slab_table(const std::vector<study::FemSdsOrientation>& results)
 
 nlohmann::json run_fem_sds(const io::Parameters& params)
 {
-  const study::FemSdsResult result = study::run_fem_sds(MPI_COMM_WORLD, fem_sds_schema().bind(params));
-  const nlohmann::json j = study::to_json(result);
+  const study::loop_scores::FemSdsResult result = study::loop_scores::run_fem_sds(MPI_COMM_WORLD, fem_sds_schema().bind(params));
+  const nlohmann::json j = to_json(result);
   std::string table = markdown_table(result.orientations);
   if (result.slab_checked > 0)
-    table += "\n3D slab of the whole ruling against the slices (fem/slab_contact.h; square end faces; README "
+    table += "\n3D slab of the whole ruling against the slices (fem/scenes/slab_contact.h; square end faces; README "
              "\"Creases\"):\n\n"
              + slab_table(result.orientations);
   if (process_rank() != 0)

@@ -5,7 +5,7 @@
 #include "core/error.h"
 #include "fem/petsc_session.h"
 #include "geometry/tetrahedralize.h"
-#include "study/fem_sds_family.h"
+#include "study/loop_scores/fem_sds_family.h"
 #include <algorithm>
 #include <cstdlib>
 #include <fmt/format.h>
@@ -117,6 +117,6 @@ nlohmann::json write_volume_mesh(const geometry::SurfaceMesh& surface, double me
 std::function<double(const geometry::BodySpec&)> fem_sds_family_scorer(
     std::shared_ptr<std::vector<std::string>> statuses)
 {
-  return study::fem_sds_scorer(MPI_COMM_WORLD, study::FemSdsSettings{}, std::move(statuses));
+  return study::loop_scores::fem_sds_scorer(MPI_COMM_WORLD, study::loop_scores::FemSdsSettings{}, std::move(statuses));
 }
 } // namespace rollcheck::cli

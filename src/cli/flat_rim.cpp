@@ -1,5 +1,5 @@
 // `rollcheck flat-rim`: a rounded rim end whose rim is nearly flat, in 3D by
-// half-space theory on the ball-rounded surface (study/flat_rim_contact.h),
+// half-space theory on the ball-rounded surface (study/rims/flat_rim_contact.h),
 // level by level: the finished oloid at a vertex orientation (c = 1/4), where
 // the ruling's largest line load meets the sheet's apex, against what
 // `rim --body` takes there (line Hertz at R = r_e); or, with
@@ -7,7 +7,7 @@
 // to check the reduction against the FEM. Also the scene "flat-rim".
 #include "cli/cli.h"
 #include "cli/scenes.h"
-#include "study/flat_rim_contact.h"
+#include "study/rims/flat_rim_contact.h"
 #include <numbers>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -17,9 +17,9 @@ namespace rollcheck::cli
 {
 namespace
 {
-const io::BoundSchema<study::FlatRimSettings>& flat_rim_schema()
+const io::BoundSchema<study::rims::FlatRimSettings>& flat_rim_schema()
 {
-  using S = study::FlatRimSettings;
+  using S = study::rims::FlatRimSettings;
   static const io::BoundSchema<S> schema = [] {
     io::BoundSchema<S> s("flat-rim");
     s.include(body_schema(), [](S& settings) -> geometry::BodySpec& { return settings.body; });
@@ -78,11 +78,11 @@ const io::BoundSchema<study::FlatRimSettings>& flat_rim_schema()
 
 nlohmann::json run_flat_rim(const io::Parameters& p)
 {
-  const study::FlatRimSettings setup = flat_rim_schema().bind(p);
-  const study::FlatRimContact r = study::flat_rim_contact(setup);
+  const study::rims::FlatRimSettings setup = flat_rim_schema().bind(p);
+  const study::rims::FlatRimContact r = study::rims::flat_rim_contact(setup);
   std::string table = "| level | cell (m) | cells | CG iterations | solves | peak p (Pa) | peak at x', y (m) | "
                       "contact from x' (m) | far station / line Hertz - 1 | s |\n|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const study::FlatRimLevel& l : r.levels)
+  for (const study::rims::FlatRimLevel& l : r.levels)
     table += fmt::format("| {} | {:.3g} | {} | {} | {} | {:.5g} | {:.3g}, {:.3g} | {:.3g} | {:+.2f} % | {:.1f} |\n",
                          &l - r.levels.data(), l.cell_m, l.cells, l.iterations, l.solves, l.peak_pressure_pa,
                          l.peak_along_m, l.peak_across_m, l.contact_start_m,
@@ -111,7 +111,7 @@ nlohmann::json run_flat_rim(const io::Parameters& p)
                what, setup.steel_counter_face ? "steel" : "rigid", setup.edge_radius_m, r.half_width_m,
                r.reference_radius_m, r.effective_modulus_pa, table, peak, r.converged ? "converged" : "NOT converged",
                100 * r.last_change, window, r.across_scale, r.line_hertz_peak_pa, peak / r.line_hertz_peak_pa, r.end_lift_m, r.largest_slope);
-  nlohmann::json j = study::to_json(r);
+  nlohmann::json j = to_json(r);
   j["counter_face"] = setup.steel_counter_face ? "steel" : "rigid";
   j["edge_radius_m"] = setup.edge_radius_m;
   j["normal_load_n"] = setup.normal_load_n;

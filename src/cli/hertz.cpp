@@ -6,8 +6,9 @@
 #include "cli/scenes.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
-#include "fem/fem.h"
-#include "fem/hertz_json.h"
+#include "fem/petsc_session.h"
+#include "fem/scenes/scenes.h"
+#include "fem/scenes/hertz_json.h"
 #include "io/batch_report.h"
 #include <fmt/format.h>
 #include <fstream>

@@ -1,7 +1,7 @@
 // `rollcheck optimize`: where a two-circle roller family's optimum lies, and
 // what its (90, 1, 1) member is (gradient, Hessian, verdict), by a continuous
 // search with NLopt (docs/optimize.md). Also the scene "optimize" of case
-// files. The method is study/optimize_family.h; here its parameters, a line
+// files. The method is study/optimize/optimize_family.h; here its parameters, a line
 // in the log, the start's and the optimum's meshes, the JSON, the plots and
 // the finished runs kept in the output folder for a rerun
 // (io/evaluation_cache.h).
@@ -12,7 +12,7 @@
 #include "io/batch_report.h"
 #include "io/case_hash.h"
 #include "io/evaluation_cache.h"
-#include "study/optimize_family.h"
+#include "study/optimize/optimize_family.h"
 #include "core/error.h"
 #include <fstream>
 #include <map>
@@ -22,8 +22,8 @@ namespace rollcheck::cli
 {
 namespace
 {
-using study::FamilyAxis;
-using study::FamilySearchSettings;
+using study::optimize::FamilyAxis;
+using study::optimize::FamilySearchSettings;
 using Schema = io::BoundSchema<FamilySearchSettings>;
 
 /// theta_min_deg (--theta-min), theta_max_deg, theta_start_deg for name "theta", unit "deg".
@@ -48,14 +48,14 @@ void add_method_parameters(Schema& s)
            "Score minimised: cds, sds (oracle approx or rigid), uniformity (U of real rolling) or fem-sds (FEM-SDS "
            "over one loop of real rolling, converged; a body that cannot roll a whole loop scores +inf), the last "
            "two with oracle rolling",
-           study::family_score_names())
+           study::optimize::family_score_names())
       .choice("oracle", "--oracle", &S::oracle,
               "approx: the approximate oracle (deterministic); rigid: the rigid-body oracle (chaotic: each score the "
               "mean of --replicates runs at genomes moved by --resolution); rolling: real rolling (for --score "
               "uniformity and fem-sds)",
-              {{"approx", study::Oracle::approximate},
-               {"rigid", study::Oracle::rigid},
-               {"rolling", study::Oracle::rolling}})
+              {{"approx", study::body_scores::Oracle::approximate},
+               {"rigid", study::body_scores::Oracle::rigid},
+               {"rolling", study::body_scores::Oracle::rolling}})
       .flag("paper_compat", "--paper-compat", &S::paper_compat,
             "Reproduce the reference code, quirks included; else every quirk corrected")
       .choice("family", "--family", &S::family,
@@ -68,7 +68,7 @@ void add_method_parameters(Schema& s)
             "Match the face count, not the points per circle: mesh each genome with the points per circle whose "
             "hull's face count is nearest the start's at --points (ties: --points itself, else the fewer points), "
             "since CDS falls about as faces^-2; off: every body with --points per circle")
-      .choice("method", "--method", &S::method, "NLopt method (docs/optimize.md)", study::method_names())
+      .choice("method", "--method", &S::method, "NLopt method (docs/optimize.md)", study::optimize::method_names())
       .integer("max_evaluations", "--max-evaluations", &S::max_evaluations, "",
                "Distinct genomes the search scores, the start included", io::Bounds{1, 100000})
       .integer("replicates", "--replicates", &S::replicates, "",
@@ -88,7 +88,7 @@ void add_method_parameters(Schema& s)
 void add_oracle_parameters(Schema& s)
 {
   s.integer("steps", "--steps", [](FamilySearchSettings& f) -> auto& { return f.scoring.approximate.steps; }, "",
-            "Approximate oracle: rotation steps T", io::Bounds{1, double(study::max_oracle_samples)})
+            "Approximate oracle: rotation steps T", io::Bounds{1, double(study::body_scores::max_oracle_samples)})
       .real("duration_s", "--duration", [](FamilySearchSettings& f) -> auto& { return f.scoring.rigid.duration_s; },
             "s", "Rigid-body oracle: time per run", io::positive)
       .integer("loops", "--loops", [](FamilySearchSettings& f) -> auto& { return f.scoring.rolling.loops; }, "",
@@ -123,7 +123,7 @@ const std::vector<std::string> search_only_keys{"method",       "max_evaluations
                                                 "sweep_points", "threads",         "out",        "python"};
 
 /// What a run (genome, replicate) computes beyond the parameters: the genome a
-/// replicate moves to (study::replicate_genome) and the mesh it gets under
+/// replicate moves to (study::optimize::replicate_genome) and the mesh it gets under
 /// matched face count. Hashed with the parameters, so that runs saved when
 /// the rigid replicates nudged the initial spins, or when matched ties went
 /// to the fewer points alone, are not recalled.
@@ -175,8 +175,8 @@ nlohmann::json run_optimize(const io::Parameters& params)
     settings.run_store.recall = [&cache](std::span<const double> x, int replicate) {
       return cache->recall(x, replicate);
     };
-    settings.run_store.record = [&cache, saves = saves_runs()](std::span<const study::OracleRun> runs) {
-      for (const study::OracleRun& run : runs)
+    settings.run_store.record = [&cache, saves = saves_runs()](std::span<const study::optimize::OracleRun> runs) {
+      for (const study::optimize::OracleRun& run : runs)
         cache->add(run.x, run.replicate, run.value);
       if (saves)
         cache->save();
@@ -185,11 +185,11 @@ nlohmann::json run_optimize(const io::Parameters& params)
   // The FEM-SDS loops' convergence, one status per body scored (a score is
   // reported with its convergence).
   auto fem_sds_statuses = std::make_shared<std::vector<std::string>>();
-  if (settings.score == study::FamilyScore::fem_sds)
+  if (settings.score == study::optimize::FamilyScore::fem_sds)
     settings.fem_sds_score = fem_sds_family_scorer(fem_sds_statuses);
-  const study::FamilySearchResult result = study::optimize_family(settings);
-  nlohmann::json j = study::to_json(result);
-  if (settings.score == study::FamilyScore::fem_sds)
+  const study::optimize::FamilySearchResult result = study::optimize::optimize_family(settings);
+  nlohmann::json j = to_json(result);
+  if (settings.score == study::optimize::FamilyScore::fem_sds)
   {
     std::map<std::string, int> counts;
     for (const std::string& status : *fem_sds_statuses)
@@ -218,9 +218,9 @@ nlohmann::json run_optimize(const io::Parameters& params)
                       cache->save(folder / evaluations_file);
                       // Both bodies as they were scored, for the plot's side-by-side view.
                       const geometry::BodySpec start =
-                          study::family_body(settings, result.search.start, result.start_mesh.points);
+                          study::optimize::family_body(settings, result.search.start, result.start_mesh.points);
                       const geometry::BodySpec optimum =
-                          study::family_body(settings, result.search.best_x, result.best_mesh.points);
+                          study::optimize::family_body(settings, result.search.best_x, result.best_mesh.points);
                       geometry::write_mesh(geometry::make_body(start), folder / "start.obj");
                       geometry::write_mesh(geometry::make_body(optimum), folder / "optimum.obj");
                     });

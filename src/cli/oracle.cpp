@@ -1,11 +1,11 @@
-// `rollcheck oracle` and the case-file scene "oracle": study::score_body, the preprint's oracles scored with CDS ...
+// `rollcheck oracle` and the case-file scene "oracle": study::body_scores::score_body, the preprint's oracles scored with CDS ...
 // FDS (README "rollcheck oracle") or real rolling scored with U (`--oracle rolling`, README "Corrected physics"),
-// and the paper-compat quirk table (`--quirk-table`, study::quirk_table).
+// and the paper-compat quirk table (`--quirk-table`, study::body_scores::quirk_table).
 #include "cli/cli.h"
 #include "cli/scenes.h"
 #include "core/error.h"
-#include "study/paper_quirks.h"
-#include "study/score_body.h"
+#include "study/body_scores/paper_quirks.h"
+#include "study/body_scores/score_body.h"
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
@@ -13,11 +13,11 @@ namespace rollcheck::cli
 {
 namespace
 {
-using study::Oracle;
-const auto max_samples = static_cast<double>(study::max_oracle_samples);
+using study::body_scores::Oracle;
+const auto max_samples = static_cast<double>(study::body_scores::max_oracle_samples);
 
 /// score_body's settings and the options that resolve into them (settings_of).
-struct OracleScene : study::ScoreBodySettings
+struct OracleScene : study::body_scores::ScoreBodySettings
 {
   std::string metric_list = "all", quirks;
   bool paper_compat = false, per_face = false, quirk_table = false;
@@ -52,7 +52,7 @@ void add_oracle_parameters(Schema& s)
 {
   using A = oracle::ApproximateSettings;
   using R = oracle::RigidBodySettings;
-  const std::string guard = fmt::format("at most {} samples, a resource guard", study::max_oracle_samples);
+  const std::string guard = fmt::format("at most {} samples, a resource guard", study::body_scores::max_oracle_samples);
   s.include(io::BoundSchema<A>("approximate")
                 .integer("steps", "--steps", &A::steps, "", "Approximate oracle: rotation steps T (" + guard + ")",
                          io::Bounds{1, max_samples})
@@ -146,9 +146,9 @@ const Schema& oracle_schema()
   return schema;
 }
 
-study::ScoreBodySettings settings_of(const OracleScene& scene)
+study::body_scores::ScoreBodySettings settings_of(const OracleScene& scene)
 {
-  study::ScoreBodySettings s = scene;
+  study::body_scores::ScoreBodySettings s = scene;
   s.rigid.contact_threshold_m = scene.approximate.contact_threshold_m; // one --threshold for both oracles
   s.rolling.mass_kg = scene.rigid.mass_kg;                             // one --mass and --gravity for all
   s.rolling.gravity_m_s2 = scene.rigid.gravity_m_s2;
@@ -170,13 +170,13 @@ nlohmann::json run_oracle(const io::Parameters& params)
                      "--oracle rolling");
   if (scene.quirk_table)
   {
-    const study::QuirkTable table = study::quirk_table(settings_of(scene));
-    fmt::print("{}", study::to_markdown(table));
-    return study::to_json(table);
+    const study::body_scores::QuirkTable table = study::body_scores::quirk_table(settings_of(scene));
+    fmt::print("{}", study::body_scores::to_markdown(table));
+    return to_json(table);
   }
-  const study::BodyScores scores = study::score_body(settings_of(scene));
-  spdlog::info("{}", study::summary_line(scores));
-  return study::to_json(scores, scene.per_face);
+  const study::body_scores::BodyScores scores = study::body_scores::score_body(settings_of(scene));
+  spdlog::info("{}", study::body_scores::summary_line(scores));
+  return to_json(scores, scene.per_face);
 }
 } // namespace
 

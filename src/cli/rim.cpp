@@ -1,17 +1,17 @@
 // `rollcheck rim`: one end of a loaded ruling in 3D on the rigid plane or a
 // steel block, the edge sharp or rounded, at several sizes of the edge
-// elements (fem/rim_end_contact.h). A sharp singular edge is reported singular
+// elements (fem/scenes/rim_end_contact.h). A sharp singular edge is reported singular
 // with its measured growth exponent beside the wedge's, never as a peak; a
 // square or a rounded edge has a converged end/interior pressure ratio, or
 // says it has not. With --body: every loaded end of the body's rolling loop
-// and the end-aware FEM-SDS and FEM-FDS (study/rim_loop.h).
+// and the end-aware FEM-SDS and FEM-FDS (study/rims/rim_loop.h).
 // Also the scene "rim" of case files.
 #include "cli/cli.h"
 #include "cli/scenes.h"
 #include "contact/edge_on_elastic_block_exponent.h"
 #include "core/json_number.h"
-#include "fem/rim_end_contact.h"
-#include "study/rim_loop.h"
+#include "fem/scenes/rim_end_contact.h"
+#include "study/rims/rim_loop.h"
 #include <algorithm>
 #include <fmt/format.h>
 #include <mpi.h>
@@ -24,7 +24,7 @@ namespace
 {
 /// The command's settings: without a body, one end (`end`); with one, every
 /// loaded end of its loop.
-struct RimCommand : study::RimLoopSettings
+struct RimCommand : study::rims::RimLoopSettings
 {
   RimCommand() { loop.body.body.clear(); }
 };
@@ -138,12 +138,12 @@ const io::BoundSchema<RimCommand>& rim_schema()
 }
 
 /// The end table's columns in words: its R, or its range of R.
-std::string table_columns_text(const study::RimLoopResult& r)
+std::string table_columns_text(const study::rims::RimLoopResult& r)
 {
   if (r.table.empty() || r.table.front().sheet_radius_m == r.table.back().sheet_radius_m)
     return fmt::format("R = {:.4g} m", r.reference_radius_m);
   const auto angles = static_cast<std::size_t>(std::ranges::count_if(
-      r.table, [&](const study::EndTableNode& n) { return n.sheet_radius_m == r.table.front().sheet_radius_m; }));
+      r.table, [&](const study::rims::EndTableNode& n) { return n.sheet_radius_m == r.table.front().sheet_radius_m; }));
   return fmt::format("{} columns of R from {:.4g} to {:.4g} m ({} angles each)", r.table.size() / angles,
                      r.table.front().sheet_radius_m, r.table.back().sheet_radius_m, angles);
 }
@@ -251,12 +251,12 @@ std::string end_verdict(const fem::RimEndStudy& study)
 }
 
 /// The loop's largest end pressure over its largest interior pressure, in words.
-std::string loop_ratio_text(const study::RimLoopResult& r)
+std::string loop_ratio_text(const study::rims::RimLoopResult& r)
 {
   if (const auto ratio = r.loop_end_to_interior())
   {
     // A ratio implies end-aware scores (loop_end_to_interior).
-    const study::EndAwareScores& all = r.loop.end_aware[0];
+    const study::loop_scores::EndAwareScores& all = r.loop.end_aware[0];
     if (all.finished_ends == 0)
       return fmt::format("{:.3f}", *ratio);
     return fmt::format("{:.3f}; {} of the {} loaded ends lie near a sheet's apex, taken at R = r_e (the finish's "
@@ -266,7 +266,7 @@ std::string loop_ratio_text(const study::RimLoopResult& r)
   }
   if (r.loop.end_aware.empty() || r.loop.loaded_ends == 0)
     return "none (no loaded end)";
-  const study::EndAwareScores& all = r.loop.end_aware[0];
+  const study::loop_scores::EndAwareScores& all = r.loop.end_aware[0];
   if (all.singular_ends > 0)
     return "singular";
   std::string covered = "none";
@@ -285,19 +285,19 @@ std::string loop_ratio_text(const study::RimLoopResult& r)
                      all.outside_model_ends, r.loop.loaded_ends, all.outside_model_samples, r.loop.samples, covered);
 }
 
-nlohmann::json run_loop(study::RimLoopSettings settings)
+nlohmann::json run_loop(study::rims::RimLoopSettings settings)
 {
   settings.loop.youngs_modulus_pa = settings.end.youngs_modulus_pa;
   settings.loop.poisson_ratio = settings.end.poisson_ratio;
-  const study::RimLoopResult r = study::run_rim_loop(MPI_COMM_WORLD, settings);
-  const nlohmann::json j = study::to_json(r);
+  const study::rims::RimLoopResult r = study::rims::run_rim_loop(MPI_COMM_WORLD, settings);
+  const nlohmann::json j = to_json(r);
   if (process_rank() != 0)
     return j;
   constexpr double degree = std::numbers::pi / 180;
   std::string ends = "| orientation | end | interior angle (deg) | q (N/m) | R (mm) | b (um) | wedge exponent | FEM: "
                      "exponent or end/interior | end peak / orientation's peak | end table | run time (s) |\n"
                      "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const study::RimLoopEnd& e : r.ends)
+  for (const study::rims::RimLoopEnd& e : r.ends)
   {
     ends += fmt::format("| {} | {} | {:.1f}{} | {:.4g} | {:.3g} | {:.3g} | {:.3f} | {} | {} | {} | {:.0f} |\n",
                         e.orientation, e.end == 0 ? "start" : "end", e.interior_angle_rad / degree,
@@ -309,13 +309,13 @@ nlohmann::json run_loop(study::RimLoopSettings settings)
                         e.end_peak_pa ? fmt::format("{:.3f}", *e.end_peak_pa / e.interior_peak_pa) : "-",
                         e.table_ratio ? fmt::format("{:.3f}", *e.table_ratio) : "-", e.study.wall_s());
   }
-  const study::LoopSds& loop = r.loop;
+  const study::loop_scores::LoopSds& loop = r.loop;
   // A missing score: a singular end, or an end outside the model (undefined).
   const std::string missing
       = !loop.end_aware.empty() && loop.end_aware[0].singular_ends == 0 && loop.end_aware[0].outside_model_ends > 0
             ? "undefined"
             : "singular";
-  auto score = [](const study::ConvergedScore& c, const std::string& missing_word = "singular") {
+  auto score = [](const study::loop_scores::ConvergedScore& c, const std::string& missing_word = "singular") {
     if (!c.value)
       return missing_word;
     if (std::isinf(*c.value))
@@ -335,7 +335,7 @@ nlohmann::json run_loop(study::RimLoopSettings settings)
     flat = fmt::format("; from {:.1f} deg the flat-rim table (the loop's own ends, half-space theory), peak / line "
                        "Hertz:",
                        r.flat_from_rad / degree);
-    for (const study::FlatRimNode& n : r.flat_table)
+    for (const study::rims::FlatRimNode& n : r.flat_table)
       flat += fmt::format(" {:.3f} at {:.1f}{}", n.ratio(), n.interior_angle_rad / degree,
                           n.converged() ? "" : " (NOT converged)");
     if (const nlohmann::json& seam = j["flat_rim_seam"]; !seam.is_null())

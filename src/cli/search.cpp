@@ -1,7 +1,7 @@
 // `rollcheck search`: the preprint's two-layer parametric search over the
 // paper family of rollers (README "rollcheck search"): approximate screening
 // of a grid, rigid-body revalidation of the best K (or all) scored by
-// study::revalidation_scores, a ranked table, JSON and HDF5. Also the scene
+// study::body_scores::revalidation_scores, a ranked table, JSON and HDF5. Also the scene
 // "search" of case files.
 #include "cli/cli.h"
 #include "cli/scenes.h"
@@ -9,7 +9,7 @@
 #include "core/error.h"
 #include "io/search_store.h"
 #include "oracle/parametric_search.h"
-#include "study/score_body.h"
+#include "study/body_scores/score_body.h"
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -68,8 +68,8 @@ const io::BoundSchema<SearchScene>& search_schema()
                  body_points_range)
         .integer("steps", "--steps", &S::approximate_steps, "",
                  fmt::format("Approximate oracle steps; 0 = the reference's (200 quick, 300 standard and deep); at "
-                             "most {}, a resource guard", study::max_oracle_samples),
-                 io::Bounds{0, static_cast<double>(study::max_oracle_samples)})
+                             "most {}, a resource guard", study::body_scores::max_oracle_samples),
+                 io::Bounds{0, static_cast<double>(study::body_scores::max_oracle_samples)})
         .real("radius_m", "--radius", &S::radius_m, "m", "r1 of every roller (the preprint's)", io::positive)
         .integer("threads", "--threads", &S::threads, "", "Worker threads; 0 = one per core", io::Bounds{0, 1024})
         .flag("paper_compat", "--paper-compat", &S::paper_compat,
@@ -181,12 +181,12 @@ nlohmann::json run_search(const io::Parameters& params)
   oracle::SearchSettings o = scene;
   o.compat = scene.paper_compat ? oracle::PaperCompat::reference() : oracle::PaperCompat::corrected();
   oracle::apply_quirk_settings(o.compat, scene.quirks, "option --quirks");
-  study::ScoreBodySettings scoring; // the preprint's contact parameters
+  study::body_scores::ScoreBodySettings scoring; // the preprint's contact parameters
   scoring.compat = o.compat;
   scoring.metrics = contact::MetricSet::parse(scene.metric_list, "option --metrics");
   scoring.metrics.cds = false; // the search computes CDS itself
   scoring.convergence_every = 0;
-  o.revalidation_metrics = study::revalidation_scores(scoring);
+  o.revalidation_metrics = study::body_scores::revalidation_scores(scoring);
   ProgressBar bar;
   o.progress = [&](const oracle::SearchProgress& progress) { bar(progress); };
   const oracle::SearchResult result = oracle::parametric_search(o);

@@ -1,12 +1,12 @@
 // `rollcheck search --score fem-sds`: the family table of FEM-SDS over whole
-// rolling loops (study/fem_sds_family.h): JSON with a row per genome, the
+// rolling loops (study/loop_scores/fem_sds_family.h): JSON with a row per genome, the
 // Markdown table on the log, and with --out the folder of family.json,
 // table.md and family.png (postprocess/plot_fem_family.py).
 #include "cli/search_family.h"
 #include "cli/cli.h"
 #include "core/atomic_file.h"
 #include "io/batch_report.h"
-#include "study/fem_sds_family.h"
+#include "study/loop_scores/fem_sds_family.h"
 #include <fstream>
 #include <mpi.h>
 #include <spdlog/spdlog.h>
@@ -18,15 +18,15 @@ nlohmann::json run_family_scores(oracle::SearchGrid grid, int points, double rad
 {
   if (!out.empty())
     check_output_folder(out, "option --out");
-  study::FamilySettings settings;
+  study::loop_scores::FamilySettings settings;
   settings.grid = grid;
   settings.points = points;
   settings.scoring.body.radius_m = radius_m;
-  const study::FamilyResult result = study::fem_sds_family(MPI_COMM_WORLD, settings);
-  const nlohmann::json j = study::to_json(result);
+  const study::loop_scores::FamilyResult result = study::loop_scores::fem_sds_family(MPI_COMM_WORLD, settings);
+  const nlohmann::json j = to_json(result);
   if (process_rank() != 0)
     return j;
-  const std::string table = study::markdown_table(result);
+  const std::string table = study::loop_scores::markdown_table(result);
   spdlog::info("\nFEM-SDS of the {} grid over one loop of real rolling each, ranked by FEM-SDS ({} FEM solves shared, "
                "{:.1f} s of FEM, {:.1f} s in all):\n\n{}",
                oracle::name_of(settings.grid), result.fem_solves, result.table_wall_s, result.wall_s, table);

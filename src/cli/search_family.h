@@ -9,7 +9,7 @@
 namespace rollcheck::cli
 {
 /// The family table of `grid`'s genomes at `points` per generating circle,
-/// radius `radius_m` (study::fem_sds_family); its JSON summary returned, and
+/// radius `radius_m` (study::loop_scores::fem_sds_family); its JSON summary returned, and
 /// with `out` the folder of its files and plot.
 nlohmann::json run_family_scores(oracle::SearchGrid grid, int points, double radius_m, const std::string& out,
                                  const std::string& python);

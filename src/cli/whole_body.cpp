@@ -1,5 +1,5 @@
 // `rollcheck whole-body`: issue 14's fuller check at small scale
-// (study/whole_body_check.h): one orientation of the body meshed whole and
+// (study/whole_body/whole_body_check.h): one orientation of the body meshed whole and
 // pressed on the rigid plane in 3D, against the plane-strain slices along
 // the ruling and the end models at its loaded ends; PASS, SINGULAR ENDS
 // (every comparison with a value within the tolerance, 3 %, an end singular)
@@ -8,7 +8,7 @@
 #include "cli/cli.h"
 #include "cli/scenes.h"
 #include "fem/petsc_session.h"
-#include "study/whole_body_check.h"
+#include "study/whole_body/whole_body_check.h"
 #include <mpi.h>
 #include <spdlog/spdlog.h>
 
@@ -16,9 +16,9 @@ namespace rollcheck::cli
 {
 namespace
 {
-const io::BoundSchema<study::WholeBodyCheckSettings>& whole_body_schema()
+const io::BoundSchema<study::whole_body::WholeBodyCheckSettings>& whole_body_schema()
 {
-  using study::WholeBodyCheckSettings;
+  using study::whole_body::WholeBodyCheckSettings;
   static const io::BoundSchema<WholeBodyCheckSettings> schema = [] {
     io::BoundSchema<WholeBodyCheckSettings> s("whole-body");
     s.include(body_schema(), &WholeBodyCheckSettings::body)
@@ -60,9 +60,9 @@ const io::BoundSchema<study::WholeBodyCheckSettings>& whole_body_schema()
                 "rigid approach and tilt of the held cut, balanced for F and its moment; both ends loaded) or "
                 "coarse-body (the whole body meshed coarsely, its line load on each node plane). Under sections "
                 "and coarse-body an end model is matched to the rule near the edge (--end-match)",
-                {{"locus", study::LoadRule::locus},
-                 {"sections", study::LoadRule::sections},
-                 {"coarse-body", study::LoadRule::coarse_body}})
+                {{"locus", study::whole_body::LoadRule::locus},
+                 {"sections", study::whole_body::LoadRule::sections},
+                 {"coarse-body", study::whole_body::LoadRule::coarse_body}})
         .integer("rule_stations", "--rule-stations", &WholeBodyCheckSettings::rule_stations, "",
                  "Sections of the sections' load rule (midpoint rule along the ruling)", io::Bounds{4, 200})
         .integer("rule_contact_elements", "--rule-contact-elements",
@@ -86,7 +86,7 @@ const io::BoundSchema<study::WholeBodyCheckSettings>& whole_body_schema()
                 "The end models' block: body (as deep as the whole body's held section, the cut through its centre "
                 "of mass; square ends on rim's structured grid, MUMPS LU) or local (rim's default 10 b, which "
                 "overstates a deep body's square end by about 10 %)",
-                {{"body", study::EndModelDepth::body}, {"local", study::EndModelDepth::local}})
+                {{"body", study::whole_body::EndModelDepth::body}, {"local", study::whole_body::EndModelDepth::local}})
         .integer("end_levels", "--end-levels", &WholeBodyCheckSettings::end_levels, "",
                  "The end models' edge mesh levels (rollcheck rim --levels)", io::Bounds{1, 6})
         .real("end_edge_element", "--end-edge-element", &WholeBodyCheckSettings::end_edge_element, "",
@@ -117,22 +117,22 @@ const io::BoundSchema<study::WholeBodyCheckSettings>& whole_body_schema()
 
 nlohmann::json run_whole_body(const io::Parameters& p)
 {
-  const study::WholeBodyCheckSettings settings = whole_body_schema().bind(p);
+  const study::whole_body::WholeBodyCheckSettings settings = whole_body_schema().bind(p);
   if (settings.scan_step_deg > 0)
   {
-    const auto scan = study::scan_whole_body_orientations(settings, settings.scan_step_deg);
+    const auto scan = study::whole_body::scan_whole_body_orientations(settings, settings.scan_step_deg);
     if (fem::world_rank() == 0)
-      spdlog::info("\norientations of {}:\n\n{}", geometry::body_label(settings.body), study::orientation_table(scan));
+      spdlog::info("\norientations of {}:\n\n{}", geometry::body_label(settings.body), study::whole_body::orientation_table(scan));
     nlohmann::json rows = nlohmann::json::array();
     for (const auto& o : scan)
-      rows.push_back(study::to_json(o));
+      rows.push_back(to_json(o));
     return {{"body", geometry::body_label(settings.body)}, {"normal_load_n", settings.normal_load_n}, {"orientations", rows}};
   }
-  const study::WholeBodyCheck check = study::run_whole_body_check(MPI_COMM_WORLD, settings);
+  const study::whole_body::WholeBodyCheck check = study::whole_body::run_whole_body_check(MPI_COMM_WORLD, settings);
   // Tables go to the log (stderr), so that `--json -` stays JSON alone.
   if (fem::world_rank() == 0)
-    spdlog::info("\nwhole-body check, {}:\n\n{}\n{}\n", check.body, study::markdown_table(check), check.verdict);
-  return study::to_json(check);
+    spdlog::info("\nwhole-body check, {}:\n\n{}\n{}\n", check.body, study::whole_body::markdown_table(check), check.verdict);
+  return to_json(check);
 }
 } // namespace
 

@@ -23,7 +23,7 @@
 //   Bearing Analysis", 5th ed., 2007, ch. 6), like the edge of a flat punch
 //   (K. L. Johnson, "Contact Mechanics", CUP 1985, ch. 2); against a rigid
 //   frictionless plane a right-angled end is not singular (the 3D slab of
-//   fem/slab_contact.h: the pressure falls towards it). Either way slices
+//   fem/scenes/slab_contact.h: the pressure falls towards it). Either way slices
 //   near a crease are not plane strain, so the FEM takes its peaks away from
 //   it. A point support on a rim and a disc support are creases by
 //   themselves: the contact then holds the edge itself.

@@ -26,7 +26,7 @@
 // problem's 8 x 8 determinant (4 unknowns a body, 8 conditions) reduced by
 // solving each body for its face pressure, possible in (0, 1) for theta <= pi:
 // Q = 0 is the free-free wedge of angle theta, with roots in (0, 1) only for
-// theta > pi. (tests/test_edge_on_elastic_block_exponent.cpp finds the roots
+// theta > pi. (tests/contact/test_edge_on_elastic_block_exponent.cpp finds the roots
 // of the 8 x 8 determinant independently, with complex potentials.)
 // S = 0 is Williams' free-free wedge of 2 theta.
 // The result depends on the materials only through Dundurs' alpha, not on

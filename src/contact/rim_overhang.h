@@ -1,6 +1,6 @@
 #pragma once
 // The rims at the two ends of a contact ruling, as the 3D slab needs them
-// (fem/slab_contact.h end overhang). At an end s on circle c the body has an
+// (fem/scenes/slab_contact.h end overhang). At an end s on circle c the body has an
 // edge along the circle's tangent t. Turning the ground's normal u about t,
 // away from the patch in contact, s stays a support point of the hull up to
 // a last normal u': the other face at the edge. Its trace in the vertical

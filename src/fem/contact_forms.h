@@ -1,7 +1,8 @@
 #pragma once
 // The compiled UFL forms of forms/hertz.py for one model and degree. Only
 // this file's .cpp includes the generated header.
-#include "fem/hertz_setup.h"
+#include "fem/mesh/mesh_grading.h"
+#include "fem/model.h"
 #include <string>
 #include <ufcx.h>
 

@@ -17,7 +17,7 @@
 // 1e-10) with GAMG on an aij matrix with the rigid-body near-nullspace, or,
 // once node pairs join two bodies, with hypre BoomerAMG (set_node_pairs).
 #include "fem/contact_forms.h"
-#include "fem/scene_mesh.h"
+#include "fem/mesh/scene_mesh.h"
 #include <dolfinx/fem/Constant.h>
 #include <dolfinx/fem/DirichletBC.h>
 #include <dolfinx/fem/Form.h>
@@ -164,7 +164,7 @@ public:
   /// The top face's vertical displacement becomes -approach_m * weight(x) at
   /// each of its nodes (1 before this is called): a top face that follows a
   /// prescribed profile, e.g. the approaches of plane-strain slices along a
-  /// ruling (fem/slab_contact.h). Applies from the next set_approach.
+  /// ruling (fem/scenes/slab_contact.h). Applies from the next set_approach.
   void set_approach_profile(const std::function<double(const double* x)>& weight);
 
   /// The penalty stiffness becomes penalty_stiffness * scale(x) in the cell

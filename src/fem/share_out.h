@@ -2,8 +2,8 @@
 // Independent small problems shared out over the ranks of a communicator:
 // rank r solves items r, r + size, ... on its own (MPI_COMM_SELF), and every
 // rank gets every item's result, packed as a fixed number of doubles (the
-// plane-strain slices, fem/slice_contact.h; the body's sections,
-// fem/section_contact.h).
+// plane-strain slices, fem/scenes/slice_contact.h; the body's sections,
+// fem/scenes/section_contact.h).
 #include <cstddef>
 #include <functional>
 #include <mpi.h>

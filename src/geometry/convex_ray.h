@@ -6,7 +6,7 @@
 //   min over n_f . d > 0 of (h_f - n_f . p) / (n_f . d),
 // and n_f . p <= h_f for the faces parallel to d (Cyrus-Beck clipping).
 // Used to map a reference mesh onto a convex body section by section
-// (fem/whole_body_mesh.h build_mapped_body_mesh).
+// (fem/mesh/whole_body_mesh.h build_mapped_body_mesh).
 #include "geometry/surface_mesh.h"
 #include <Eigen/Core>
 #include <array>

@@ -12,7 +12,7 @@
 // and the discs' heights there.
 // For each t those s solve k0 + kc cos s + ks sin s = 0 in closed form; the
 // minimum over t is taken over samples of [first_t, last_t] and refined by
-// golden-section search about the best sample. scripts/oloid_vertex.py
+// golden-section search about the best sample. scripts/studies/oloid_vertex.py
 // computes the same surface.
 #include <Eigen/Core>
 

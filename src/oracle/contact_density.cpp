@@ -285,21 +285,6 @@ int locate_face(const FaceCones& cones, const Eigen::Vector3d& point, int guess)
   throw ComputationError("contact density: a point lies in no face's cone");
 }
 
-double line_load(double normal_force_n, double centre_of_pressure, double length_m, double s)
-{
-  if (!(normal_force_n > 0) || !(length_m > 0))
-    return 0;
-  const double c = std::clamp(centre_of_pressure, 0.0, 1.0);
-  if (c < 1.0 / 3)
-  {
-    const double loaded = 3 * c; // triangle from s = 0, zero at s = 3c
-    return s < loaded ? 2 * normal_force_n / (loaded * length_m) * (1 - s / loaded) : 0.0;
-  }
-  if (c > 2.0 / 3)
-    return line_load(normal_force_n, 1 - c, length_m, 1 - s);
-  return normal_force_n / length_m * ((4 - 6 * c) + (12 * c - 6) * s);
-}
-
 double contact_measure_rate(const RollingSample& sample, ContactMode mode, const ContactWidth& width, double s0,
                             double s1)
 {

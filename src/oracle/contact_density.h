@@ -44,6 +44,7 @@
 // triangle meets are found by walking across edges from the face containing
 // its centroid. A point track is clipped the same way in one dimension.
 #include "geometry/surface_mesh.h"
+#include "oracle/line_load.h"
 #include "oracle/rolling_dynamics.h"
 #include <Eigen/Core>
 #include <limits>
@@ -64,10 +65,6 @@ struct ContactWidth
   double effective_modulus_pa = 200e9 / (2 * (1 - 0.3 * 0.3));
   int strip_slices = 16; ///< slices of each swept strip along the ruling (hertz; divides 64)
 };
-
-/// Line load p(s) (N/m) at fraction s of a ruling of length L carrying normal
-/// force N with centre of pressure c (no-tension linear rule, see above).
-double line_load(double normal_force_n, double centre_of_pressure, double length_m, double s);
 
 /// d mu / dt of the part [s0, s1] of a sample's contact ruling: the patch area
 /// (m^2, hertz) or the length (m, rigid); for point contact the patch area

@@ -9,7 +9,7 @@
 #include "oracle/parametric_search.h"
 #include "oracle/rigid_body_oracle.h"
 #include "oracle/rolling_body.h"
-#include "study/score_body.h"
+#include "study/body_scores/score_body.h"
 #include <benchmark/benchmark.h>
 #include <chrono>
 
@@ -77,17 +77,17 @@ void BM_oracle_rigid_body_oloid(benchmark::State& state)
 }
 BENCHMARK(BM_oracle_rigid_body_oloid)->Unit(benchmark::kMillisecond);
 
-/// study::score_body: the rigid-body oracle with every score (CDS, SDS, TDS,
+/// study::body_scores::score_body: the rigid-body oracle with every score (CDS, SDS, TDS,
 /// WDS, FDS) from one trajectory, the mesh read and its curvatures included;
 /// the reference runs one simulation per oracle: rigid 2.03 + Hertz 2.37 +
 /// fatigue 2.33 + thermal 3.22 + wear 3.12 = 13.07 s (wall_s of
 /// reference_outputs.json, oloid).
 void BM_oracle_rigid_body_all_scores_oloid(benchmark::State& state)
 {
-  study::ScoreBodySettings settings;
+  study::body_scores::ScoreBodySettings settings;
   settings.body.mesh_file = std::string(ROLLCHECK_REFERENCE_MESH_DIR) + "/oloid_reference.obj";
   settings.compat = paper;
-  timed(state, 13.07, [&] { benchmark::DoNotOptimize(study::score_body(settings)); });
+  timed(state, 13.07, [&] { benchmark::DoNotOptimize(study::body_scores::score_body(settings)); });
 }
 BENCHMARK(BM_oracle_rigid_body_all_scores_oloid)->Unit(benchmark::kMillisecond);
 
@@ -97,10 +97,10 @@ oracle::SearchSettings search_options(oracle::SearchGrid grid)
   oracle::SearchSettings o;
   o.grid = grid;
   o.compat = paper;
-  study::ScoreBodySettings scoring;
+  study::body_scores::ScoreBodySettings scoring;
   scoring.compat = paper;
   scoring.convergence_every = 0;
-  o.revalidation_metrics = study::revalidation_scores(scoring);
+  o.revalidation_metrics = study::body_scores::revalidation_scores(scoring);
   return o;
 }
 

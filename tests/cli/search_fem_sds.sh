@@ -6,7 +6,7 @@
 # own (90, 1, 1) genome and the preprint's body are one body: the same
 # scores), every scored row converged, the mirror genomes (theta, 180 - theta)
 # scoring alike under FEM-SDS, the cylinder's FEM-SDS at its even-side value
-# (tests/test_study_fem_sds.cpp derives it), and the folder written whole.
+# (tests/study/loop_scores/test_study_fem_sds.cpp derives it), and the folder written whole.
 set -u
 source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
@@ -26,7 +26,7 @@ assert len(genomes) == 45 and set(refs) == {"paper (90, 1, 1)", "oloid", "cylind
 cylinder = refs["cylinder"]
 assert cylinder["scored"] and cylinder["faces"] == refs["oloid"]["faces"], (cylinder["faces"], refs["oloid"]["faces"])
 assert all(v == 1 for v in cylinder["over_cylinder"].values()), cylinder["over_cylinder"]
-# Even contact of the side (r = 1 m, h = 2 m, n sections; tests/test_study_fem_sds.cpp): 2n side triangles of
+# Even contact of the side (r = 1 m, h = 2 m, n sections; tests/study/loop_scores/test_study_fem_sds.cpp): 2n side triangles of
 # area (chord 2 sin(pi / n)) x h / 2 = 2 sin(pi / n), 2n cap triangles of area sin(2 pi / n) / 2.
 n = cylinder["faces"] // 4
 side, cap = math.sin(math.pi / n) * 2.0, 0.5 * math.sin(2 * math.pi / n)

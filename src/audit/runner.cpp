@@ -1,0 +1,158 @@
+#include "audit/runner.h"
+#include "core/child_process.h"
+#include "core/error.h"
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <fmt/format.h>
+#include <fstream>
+#include <mutex>
+#include <spdlog/spdlog.h>
+#include <thread>
+
+namespace rollcheck::audit
+{
+namespace
+{
+std::string command_id(std::size_t i) { return fmt::format("c{}", i + 1); }
+
+/// Runs one command with its JSON written to `json_path` (not to stdout:
+/// `search` prints its table there too); the error text when it failed.
+std::string run_one(const CommandArgs& args, const std::filesystem::path& rollcheck,
+                    const std::filesystem::path& json_path, nlohmann::json& output)
+{
+  std::vector<std::string> argv = {rollcheck.string(), "-q"};
+  argv.insert(argv.end(), args.begin(), args.end());
+  argv.insert(argv.end(), {"--json", json_path.string()});
+  const process::RunResult run = process::run(argv);
+  if (!run.status.success())
+    return fmt::format("{}: {}", run.status.describe(), run.err);
+  std::ifstream in(json_path);
+  output = nlohmann::json::parse(in, nullptr, false);
+  return output.is_discarded() ? fmt::format("unreadable JSON output in {}", json_path.string()) : "";
+}
+
+/// A fresh folder for the commands' JSON files, removed with it.
+struct ScratchFolder
+{
+  std::filesystem::path path;
+  ScratchFolder()
+  {
+    std::string pattern = (std::filesystem::temp_directory_path() / "rollcheck-audit-XXXXXX").string();
+    if (!mkdtemp(pattern.data()))
+      throw ComputationError("cannot create a scratch folder in " + std::filesystem::temp_directory_path().string());
+    path = pattern;
+  }
+  ~ScratchFolder()
+  {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+};
+} // namespace
+
+std::vector<CommandArgs> distinct_commands(const std::vector<Claim>& claims)
+{
+  std::vector<CommandArgs> commands;
+  for (const Claim& claim : claims)
+    for (const ClaimCell& cell : claim.cells)
+      for (const CommandArgs& args : cell.commands)
+        if (std::find(commands.begin(), commands.end(), args) == commands.end())
+          commands.push_back(args);
+  return commands;
+}
+
+std::vector<CommandOutput> run_commands(const std::vector<CommandArgs>& commands,
+                                        const std::filesystem::path& rollcheck, unsigned threads)
+{
+  const ScratchFolder scratch;
+  std::vector<nlohmann::json> outputs(commands.size());
+  std::vector<std::string> errors(commands.size());
+  std::atomic<std::size_t> next{0};
+  std::mutex log_mutex;
+  std::size_t done = 0;
+  auto worker = [&] {
+    for (std::size_t i = next++; i < commands.size(); i = next++)
+    {
+      errors[i] = run_one(commands[i], rollcheck, scratch.path / (command_id(i) + ".json"), outputs[i]);
+      std::lock_guard lock(log_mutex);
+      spdlog::info("audit [{}/{}] {}", ++done, commands.size(), command_line(commands[i]));
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 0; t < std::max(1u, threads); ++t)
+    pool.emplace_back(worker);
+  for (std::thread& t : pool)
+    t.join();
+  std::vector<CommandOutput> read;
+  for (std::size_t i = 0; i < commands.size(); ++i)
+  {
+    if (!errors[i].empty())
+      throw ComputationError(
+          fmt::format("audit command {} `{}` failed: {}", command_id(i), command_line(commands[i]), errors[i]));
+    read.emplace_back(command_line(commands[i]), std::move(outputs[i]));
+  }
+  return read;
+}
+
+AuditTable decide_claims(const std::vector<Claim>& claims, std::vector<CommandOutput>& outputs)
+{
+  const std::vector<CommandArgs> commands = distinct_commands(claims);
+  if (outputs.size() != commands.size())
+    throw ComputationError(fmt::format("audit: {} outputs for {} commands", outputs.size(), commands.size()));
+  auto index = [&](const CommandArgs& args) {
+    return static_cast<std::size_t>(std::find(commands.begin(), commands.end(), args) - commands.begin());
+  };
+  AuditTable table;
+  for (const Claim& claim : claims)
+  {
+    AuditClaim decided{claim.id, claim.claim, claim.paper_value, claim.rule, {}, Verdict::not_built, claim.note};
+    for (const ClaimCell& cell : claim.cells)
+    {
+      AuditCell& out = decided.cells[cell.mode];
+      out = {true, static_cast<bool>(cell.rule), "", {}, false, cell.untestable};
+      if (!cell.rule)
+        continue;
+      std::vector<CommandOutput*> inputs;
+      for (const CommandArgs& args : cell.commands)
+      {
+        inputs.push_back(&outputs[index(args)]);
+        out.commands.push_back(command_id(index(args)));
+      }
+      try
+      {
+        const CellResult result = cell.rule(inputs);
+        out.value = result.value, out.holds = result.holds;
+      }
+      catch (const ComputationError& e)
+      {
+        throw ComputationError(fmt::format("audit claim '{}' ({}): {}", claim.id, cell.mode, e.what()));
+      }
+    }
+    decided.verdict = judge(decided);
+    table.claims.push_back(std::move(decided));
+  }
+  for (std::size_t i = 0; i < commands.size(); ++i)
+    table.commands.push_back({command_id(i), outputs[i].command(), outputs[i].reads()});
+  return table;
+}
+
+AuditTable run_audit(const AuditSettings& settings, const std::filesystem::path& rollcheck)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<Claim> claims = audit_claims(settings.reference_meshes, settings.quick);
+  const std::vector<CommandArgs> commands = distinct_commands(claims);
+  const unsigned threads = settings.threads ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
+  spdlog::info("audit: {} commands on {} threads", commands.size(), threads);
+  std::vector<CommandOutput> outputs = run_commands(commands, rollcheck, threads);
+  AuditTable table = decide_claims(claims, outputs);
+  table.modes = audit_modes();
+  table.verdict_rules = audit_verdict_rules();
+  table.quick = settings.quick;
+  table.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return table;
+}
+} // namespace rollcheck::audit

@@ -1,0 +1,83 @@
+#pragma once
+// The claim table of `rollcheck audit`, its result: each quantitative claim of
+// the preprint, its paper value, its recomputations (one per mode:
+// paper-compatible, matched mesh resolution, true oloid, corrected physics,
+// real rolling) with the exact commands that print the numbers used, and a
+// verdict. Rendered as Markdown (for the README) and as JSON (for tests and
+// scripts). The claims themselves are in audit_claims.h, their runner in
+// audit_runner.h.
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace rollcheck::audit
+{
+/// One `rollcheck ...` command line and the values read from its JSON output,
+/// keyed by JSON pointer (e.g. "/cds", "/convergence/cds/0/1").
+struct AuditCommand
+{
+  std::string id;      ///< "c1", "c2", ... as cited in the table
+  std::string command; ///< the full command line, ending in `--json -`
+  std::map<std::string, double> reads;
+};
+
+enum class Verdict
+{
+  holds,
+  holds_only_paper_compatible,
+  does_not_hold,
+  cannot_be_tested,
+  not_built
+};
+std::string verdict_text(Verdict v);
+
+/// One recomputation of a claim in one mode. `applicable` false: the mode does
+/// not apply to this claim ("n/a"); `built` false: the code is not built yet,
+/// or, with an `untestable` reason, no computation can decide it.
+struct AuditCell
+{
+  bool applicable = false;
+  bool built = true;
+  std::string value;                 ///< the recomputed value, as printed
+  std::vector<std::string> commands; ///< ids of the commands it comes from
+  bool holds = false;                ///< the verdict rule applied to this cell
+  std::string untestable = {};       ///< why it cannot be tested; empty: it can
+};
+
+struct AuditClaim
+{
+  std::string id; ///< the claim's short name: "oloid_cds", ...
+  std::string claim;
+  std::string paper_value;
+  std::string rule;                       ///< the verdict rule applied to each cell
+  std::map<std::string, AuditCell> cells; ///< by mode name; a mode not listed is n/a
+  Verdict verdict = Verdict::not_built;
+  std::string note;
+};
+
+struct AuditTable
+{
+  std::vector<std::pair<std::string, std::string>> modes; ///< name, what it means
+  std::vector<std::string> verdict_rules;
+  std::vector<AuditClaim> claims;
+  std::vector<AuditCommand> commands;
+  double wall_s = 0;
+  bool quick = false;
+};
+
+/// The mode whose cell decides whether a claim holds at all.
+inline const std::string paper_compatible_mode = "paper-compatible";
+
+/// holds if the paper-compatible cell holds and every other applicable, built
+/// cell does; holds only in paper-compatible mode if the paper-compatible cell
+/// holds and another does not; does not hold if the paper-compatible cell
+/// does not. A claim with no built paper-compatible cell takes the verdict of
+/// its other cells (e.g. the FEM item, which has no paper-compatible code).
+/// Cells that cannot be tested are left out; a claim with only such cells
+/// (and cells not built) cannot be tested.
+Verdict judge(const AuditClaim& claim);
+
+std::string to_markdown(const AuditTable& table);
+nlohmann::json to_json(const AuditTable& table);
+} // namespace rollcheck::audit

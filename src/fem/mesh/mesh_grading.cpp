@@ -1,0 +1,26 @@
+#include "fem/mesh/mesh_grading.h"
+#include <algorithm>
+#include <cmath>
+
+namespace rollcheck::fem
+{
+double contact_element_size(double contact_size_m, int refine)
+{
+  return contact_size_m / (10.0 * std::pow(2.0, refine / 2.0));
+}
+
+MeshGrading contact_grading(double contact_size_m, double contact_element_m, double body_size_m)
+{
+  MeshGrading g{};
+  g.contact_size_m = contact_element_m;
+  // The fine ball covers the contact (radius c_H) with a margin for the
+  // penalty's smearing of the edge, and the depth of the subsurface maxima
+  // (0.48 a, 0.79 b).
+  g.fine_radius_m = std::max(1.25 * contact_size_m, 2 * g.contact_size_m);
+  // Sizes grow by 25 % of the distance: about 1 / 0.25 * ln(h_far / h_c)
+  // element layers from the contact zone to the far field.
+  g.growth = 0.25;
+  g.far_size_m = body_size_m / 5;
+  return g;
+}
+} // namespace rollcheck::fem

@@ -1,0 +1,99 @@
+#include "fem/scenes/hertz_setup.h"
+#include "contact/hertz.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include <cmath>
+#include <fmt/format.h>
+
+namespace rollcheck::fem
+{
+int default_refine(Model model, int degree)
+{
+  // Elements across the contact radius: 10 * 2^(refine / 2); see
+  // hertz_setup.h and the convergence table in the README.
+  switch (model)
+  {
+  case Model::axisymmetric: return degree == 1 ? 4 : 2;
+  case Model::plane_strain: return degree == 1 ? 4 : 2;
+  case Model::solid: return degree == 1 ? 2 : 0;
+  }
+  return 0;
+}
+
+void validate(const HertzSettings& s)
+{
+  auto positive = [](double value, const char* what) {
+    if (!std::isfinite(value) || value <= 0)
+      throw InputError(fmt::format("hertz: {} must be positive and finite, got {}", what, value));
+  };
+  positive(s.radius_m, "radius_m (--radius)");
+  positive(s.youngs_modulus_pa, "youngs_modulus_pa (--youngs-modulus)");
+  positive(s.force_n, "force_n (--load)");
+  positive(s.length_m, "length_m (--length)");
+  positive(s.penalty_c, "penalty_c (--penalty-c)");
+  positive(s.force_rtol, "force_rtol (--force-rtol)");
+  if (!std::isfinite(s.poisson_ratio) || s.poisson_ratio <= -1.0 || s.poisson_ratio >= 0.5)
+    throw InputError(fmt::format("hertz: poisson_ratio (--poisson) must lie in (-1, 0.5), got {}", s.poisson_ratio));
+  if (s.degree != 1 && s.degree != 2)
+    throw InputError(fmt::format("hertz: degree (--degree) must be 1 or 2, got {}", s.degree));
+  if (s.refine > 12)
+    throw InputError(fmt::format("hertz: refine (--refine) must be at most 12, got {}", s.refine));
+  if (!std::isfinite(s.contact_element_size_m) || s.contact_element_size_m < 0)
+    throw InputError(fmt::format("hertz: contact_element_size_m (--contact-element-size) must be >= 0, got {}",
+                                 s.contact_element_size_m));
+  if (s.contact_element_size_m >= s.radius_m / 4)
+    throw InputError(fmt::format("hertz: contact_element_size_m {} m is not small against the radius {} m",
+                                 s.contact_element_size_m, s.radius_m));
+  if (s.force_rtol >= 0.01)
+    throw InputError(fmt::format("hertz: force_rtol must be below 0.01, got {}", s.force_rtol));
+  if (!s.xdmf_path.empty())
+  {
+    if (s.xdmf_path.extension() != ".xdmf")
+      throw InputError(fmt::format("hertz: the field output '{}' (--xdmf) must end in .xdmf", s.xdmf_path.string()));
+    check_output_file(s.xdmf_path, "hertz: the field output (--xdmf)");
+  }
+}
+
+HertzReference hertz_reference(const HertzSettings& s)
+{
+  const double E = s.youngs_modulus_pa, nu = s.poisson_ratio;
+  HertzReference r{};
+  r.effective_modulus_pa = contact::effective_modulus(E, nu, s.elastic_plane);
+  // Against a rigid plane the body alone supplies E*: E_body / (1 - nu^2) = E*.
+  r.body_modulus_pa = r.effective_modulus_pa * (1 - nu * nu);
+  if (s.model == Model::plane_strain)
+  {
+    r.load = s.force_n / s.length_m;
+    const contact::LineHertz h = contact::line_contact(r.load, s.radius_m, r.effective_modulus_pa, nu);
+    r.contact_size_m = h.half_width_m;
+    r.peak_pressure_pa = h.peak_pressure_pa;
+    r.max_shear_pa = h.max_shear_pa;
+    r.max_shear_depth_m = h.max_shear_depth_m;
+    r.max_von_mises_pa = h.max_von_mises_pa;
+    r.max_von_mises_depth_m = h.max_von_mises_depth_m;
+  }
+  else
+  {
+    r.load = s.force_n;
+    const contact::PointHertz h = contact::point_contact(r.load, s.radius_m, r.effective_modulus_pa, nu);
+    r.contact_size_m = h.contact_radius_m;
+    r.peak_pressure_pa = h.peak_pressure_pa;
+    r.approach_m = h.approach_m;
+    r.max_shear_pa = h.max_shear_pa;
+    r.max_shear_depth_m = h.max_shear_depth_m;
+    r.max_von_mises_pa = h.max_von_mises_pa;
+    r.max_von_mises_depth_m = h.max_von_mises_depth_m;
+  }
+  return r;
+}
+
+MeshGrading mesh_grading(const HertzSettings& s, const HertzReference& ref)
+{
+  const int refine = s.refine >= 0 ? s.refine : default_refine(s.model, s.degree);
+  return contact_grading(ref.contact_size_m,
+                         s.contact_element_size_m > 0 ? s.contact_element_size_m
+                                                      : contact_element_size(ref.contact_size_m, refine),
+                         s.radius_m);
+}
+
+} // namespace rollcheck::fem

@@ -1,0 +1,77 @@
+#pragma once
+// What a Hertz verification run is given: the model, the body, the load and
+// the numerical choices, with the defaults that the penalty and convergence
+// studies justify (README, "Hertz FEM"). Also the analytic reference the run
+// is compared with, and the mesh sizes derived from it.
+#include "fem/mesh/mesh_grading.h"
+#include "fem/model.h"
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace rollcheck::fem
+{
+struct HertzSettings
+{
+  Model model = Model::axisymmetric;
+  double radius_m = 0.01;             ///< sphere or cylinder radius R
+  double youngs_modulus_pa = 200e9;   ///< steel
+  double poisson_ratio = 0.3;         ///< steel
+  double force_n = 100.0;             ///< total force on the body
+  /// Plane strain: axial length of the cylinder that carries force_n; the
+  /// model sees force_n / length_m per unit length. Default 2R: a roller as
+  /// long as it is wide.
+  double length_m = 0.02;
+  int degree = 1;                     ///< Lagrange degree of the displacement, 1 or 2
+  /// Contact-zone element size h_c = c_H / (10 * 2^(refine / 2)), c_H the
+  /// Hertz radius or half-width: refine 0 puts 10 elements across it, each
+  /// step adds a factor sqrt(2). Negative: the model's default (default_refine).
+  int refine = -1;
+  /// kappa = penalty_c * E / h_c. The penalty's own error falls as 1 / c;
+  /// the penalty study (README) puts it at a fifth of the mesh's at c = 100.
+  double penalty_c = default_penalty_c;
+  /// Compare with the two-identical-bodies E* = E / (2 (1 - nu^2)) (the
+  /// preprint's choice): the FEM body then gets the modulus E / 2 against the
+  /// rigid plane, which is Hertz-equivalent for identical materials.
+  bool elastic_plane = false;
+  /// Contact-zone element size in m; overrides refine when > 0 (used by the
+  /// hard cases: a fixed mesh under a varying load).
+  double contact_element_size_m = 0.0;
+  double force_rtol = 1e-6;           ///< load control: |F_h - F| / F at the end
+  /// Extra PETSc options, e.g. "-hertz_ksp_type gmres"; the solver's prefix is "hertz_".
+  std::string petsc_options;
+  /// Progress lines (meshing, size, load control) at info level; else at debug (-v).
+  bool log_progress = true;
+  /// If set, the fields are written there: one self-contained XDMF file.
+  std::filesystem::path xdmf_path;
+
+  static constexpr double default_penalty_c = 100.0;
+};
+
+/// The model's default refine level for a degree: the coarsest level that
+/// meets the model's tolerances with a 2x margin (README, convergence table);
+/// plane strain, within them from level 0, takes the axisymmetric level.
+int default_refine(Model model, int degree);
+
+/// InputError naming the bad field; called by solve_hertz.
+void validate(const HertzSettings& setup);
+
+/// Hertz theory for the setup, in the model's terms.
+struct HertzReference
+{
+  double effective_modulus_pa;   ///< E* that Hertz uses
+  double body_modulus_pa;        ///< the modulus the FEM body gets
+  double contact_size_m;         ///< a (point) or b (line)
+  double peak_pressure_pa;
+  double load;                   ///< F (N) or F / L (N/m)
+  std::optional<double> approach_m; ///< point contact only: a^2 / R
+  double max_shear_pa;
+  double max_shear_depth_m;
+  double max_von_mises_pa;
+  double max_von_mises_depth_m;
+};
+HertzReference hertz_reference(const HertzSettings& setup);
+
+MeshGrading mesh_grading(const HertzSettings& setup, const HertzReference& reference);
+
+} // namespace rollcheck::fem

@@ -1,0 +1,482 @@
+#include "fem/scenes/rim_end_contact.h"
+#include "contact/edge_on_elastic_block_exponent.h"
+#include "contact/hertz.h"
+#include "contact/wedge_exponent.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "fem/all_gather.h"
+#include "fem/load_control.h"
+#include "fem/nodal_fields.h"
+#include "fem/penalty_contact.h"
+#include "fem/petsc_session.h"
+#include "fem/mesh/scene_mesh.h"
+#include "fem/write_fields.h"
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+namespace rollcheck::fem
+{
+namespace
+{
+void validate(const RimEndSettings& s)
+{
+  for (const auto& [value, name] :
+       {std::pair{s.radius_m, "radius_m"}, std::pair{s.load_n_per_m, "load_n_per_m"},
+        std::pair{s.youngs_modulus_pa, "youngs_modulus_pa"}, std::pair{s.depth_over_half_width, "depth_over_half_width"},
+        std::pair{s.length_over_depth, "length_over_depth"},
+        std::pair{s.edge_element_over_half_width, "edge_element_over_half_width"},
+        std::pair{s.tolerance, "tolerance"}, std::pair{s.penalty_c, "penalty_c"},
+        std::pair{s.first_approach_scale, "first_approach_scale"}})
+    if (!std::isfinite(value) || value <= 0)
+      throw InputError(fmt::format("rim: {} must be positive and finite, got {}", name, value));
+  if (!(s.interior_angle_rad >= std::numbers::pi / 3 && s.interior_angle_rad < std::numbers::pi))
+    throw InputError(fmt::format("rim: interior_angle_deg must lie in [60, 180), got {}",
+                                 s.interior_angle_rad * 180 / std::numbers::pi));
+  if (!(s.poisson_ratio >= 0 && s.poisson_ratio < 0.5))
+    throw InputError(fmt::format("rim: poisson_ratio must lie in [0, 0.5), got {}", s.poisson_ratio));
+  if (!(s.edge_radius_m >= 0) || !std::isfinite(s.edge_radius_m))
+    throw InputError(fmt::format("rim: edge_radius_m must be >= 0 and finite, got {}", s.edge_radius_m));
+  if (s.depth_over_half_width < 4 || s.length_over_depth < 1)
+    throw InputError(fmt::format("rim: the block must be at least 4 b deep and H long (depth_over_half_width {}, "
+                                 "length_over_depth {})",
+                                 s.depth_over_half_width, s.length_over_depth));
+  if (s.mesh == RimEndMesh::grid
+      && (s.counter_face != CounterFace::rigid || s.sheet == SheetModel::cylinder || s.edge_radius_m != 0
+          || !(std::abs(s.interior_angle_rad - std::numbers::pi / 2) <= max_grid_end_lean_rad)))
+    throw InputError(fmt::format("rim: end_mesh = grid models only a sharp end within {:.0f} deg of square "
+                                 "(interior_angle_deg 90 +- {:.0f}, edge_radius_m 0) on the flat sheet against the "
+                                 "rigid plane",
+                                 max_grid_end_lean_rad * 180 / std::numbers::pi,
+                                 max_grid_end_lean_rad * 180 / std::numbers::pi));
+  if (!s.xdmf_path.empty())
+  {
+    if (s.xdmf_path.extension() != ".xdmf")
+      throw InputError(fmt::format("rim: the field output '{}' (--xdmf) must end in .xdmf", s.xdmf_path.string()));
+    check_output_file(s.xdmf_path, "rim: the field output (--xdmf)");
+  }
+  if (s.contact_elements < 2 || s.contact_elements > 40 || s.levels < 1 || s.levels > 6 || s.extra_levels < 0
+      || s.extra_levels > 2)
+    throw InputError(fmt::format("rim: contact_elements must be 2 to 40, levels 1 to 6 and extra_levels 0 to 2, got "
+                                 "{}, {} and {}",
+                                 s.contact_elements, s.levels, s.extra_levels));
+}
+
+struct Sample
+{
+  double mean, sd;
+  int count;
+  double standard_error() const { return sd / std::sqrt(count); }
+};
+
+/// Mean and standard deviation of the centre-line pressures with x in [from,
+/// to], at least `least` of them.
+Sample centre_line_mean(const std::vector<CentreLineNode>& line, double from, double to, int least = 2)
+{
+  double sum = 0, sum2 = 0;
+  int n = 0;
+  for (const CentreLineNode& node : line)
+    if (node.x_m >= from && node.x_m <= to)
+    {
+      sum += node.pressure_pa;
+      sum2 += node.pressure_pa * node.pressure_pa;
+      ++n;
+    }
+  if (n < least)
+    throw ComputationError(fmt::format("rim: fewer than {} centre-line nodes in [{:.3g}, {:.3g}] m", least, from, to));
+  const double mean = sum / n;
+  return {mean, std::sqrt(std::max(sum2 / n - mean * mean, 0.0)), n};
+}
+
+/// The line load carried by the far side's first depth H, x in [-L, -L + H]:
+///   q_far = 2 sum_i p_i A_i w(x_i) / int w dx,
+/// w = 1 on [-L, -L + H / 2], falling linearly to 0 at -L + H (int w dx =
+/// 3 H / 4), over the y >= 0 half's contact nodes. p_i A_i is node i's share
+/// of the contact force (the pairs' forces; the recovered pressure times its
+/// lumped area on the rigid plane), so the sum is the force weighted by w's
+/// P1 interpolant: exact for the penalty's own pressure up to w's two kinks,
+/// where a trapezoid of p across one section, over the contact edge's
+/// square root, missed by a few per cent and differently on each mesh
+/// (docs/rims.md, "Speed").
+double far_line_load(const std::vector<SurfacePressureNode>& nodes, double far_x, double depth_m)
+{
+  double force = 0;
+  for (const SurfacePressureNode& n : nodes)
+  {
+    const double into = n.x[0] - far_x;
+    const double w = into <= depth_m / 2 ? 1.0 : std::max(0.0, 2 * (1 - into / depth_m));
+    force += n.pressure_pa * n.weight * w;
+  }
+  return 2 * force / (0.75 * depth_m);
+}
+
+/// `fields_out`, if given, receives the level's recovered fields (the caller
+/// writes the last level's once the study has finished). `previous`: the
+/// level before, whose approach and solution (`state`, on its own mesh) start
+/// this one's load control: the levels differ only near
+/// the edge, so its approach carries q_far to within a few per mille (line
+/// contact's estimate overshot by 40 %) and its displacement, interpolated
+/// onto this mesh, leaves Newton only the edge's correction. `state` is
+/// replaced by this level's.
+RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_element_m,
+                        std::optional<NodalFields>* fields_out, const RimEndLevel* previous,
+                        std::shared_ptr<const dolfinx::fem::Function<double>>& state)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const RimEndSettings& s = study.setup;
+  const double b = study.half_width_m, H = s.depth_over_half_width * b, L = s.length_over_depth * H;
+  RimEndLevel level;
+  level.edge_element_m = edge_element_m;
+  RimEndSizes sizes;
+  sizes.contact_m = b / s.contact_elements;
+  sizes.contact_zone_m = 1.5 * b;
+  sizes.edge_m = std::min(edge_element_m, sizes.contact_m);
+  sizes.edge_zone_m = 1.5 * b;
+  sizes.edge_x_m = -study.fillet_start_m;
+  // A rounded edge's peak lies where the fillet leaves the sheet, within
+  // about its boundary layer s on either side (on the steel block at a
+  // square end 1.3 s onto the fillet, graded from the line alone at 4 h_e):
+  // the edge's elements cover +-2 s about that line (sharp: s = 0, the line).
+  sizes.edge_band_m = 2 * study.boundary_layer_m;
+  sizes.far_m = H / 4;
+  const bool block = s.counter_face == CounterFace::block;
+  const RimEndGeometry geometry{s.radius_m, s.interior_angle_rad, s.edge_radius_m, H, L, study.flat_sheet};
+  const SceneMesh scene = block                             ? build_rim_block_mesh(comm, geometry, sizes)
+                          : s.mesh == RimEndMesh::grid ? build_square_end_grid_mesh(comm, geometry, sizes)
+                                                       : build_rim_end_mesh(comm, geometry, sizes);
+  const double body_modulus = s.youngs_modulus_pa;
+  PenaltyContact problem(scene, Model::solid, 1, body_modulus, s.poisson_ratio,
+                         s.penalty_c * body_modulus / sizes.contact_m, s.petsc_options);
+  // kappa = c E / h(x) with the mesh's own size: a penalty as soft as at the
+  // strip's elements would cut the edge's singular pressure off at h_c / c.
+  auto penalty_scale = [&](const double* x) { return sizes.contact_m / rim_end_element_size(sizes, x); };
+  // The flattened sheet's height at y; beyond y = R (a block deeper than R)
+  // the sheet has turned away and its gap R never closes against b << R.
+  auto sheet_height = [&](double y) {
+    const double on_sheet = std::min(std::abs(y), s.radius_m);
+    return s.radius_m - std::sqrt(s.radius_m * s.radius_m - on_sheet * on_sheet);
+  };
+  const double tol = 1e-9 * H;
+  // A rounded edge on the block: the body's contact face up to r_e / 8 above
+  // the block's top (on the fillet, within about r_e / 2 of its start, some
+  // 20 boundary layers s at the bearing's load) meets it by mortar pairs,
+  // the sheet's conforming part too: where a node-to-node pair shares facets
+  // with a mortar pair, each lumps the other's share of them (measured on
+  // the preprint's 60 deg end: the seam's node read 0.8 of the sheet beside
+  // it, the fillet's first node 1.1 of the next). The contact must stay well
+  // inside the zone (checked after the solve).
+  const double surface_zone_m = s.edge_radius_m / 8;
+  if (block)
+  {
+    // The block's top stays still: its bottom is the "top" face of weight 0.
+    problem.set_approach_profile([](const double* x) { return x[2] > 0 ? 1.0 : 0.0; });
+    problem.set_penalty_scale([](const double*) { return 0.0; }); // no rigid plane
+    std::function<bool(const double*)> mortar_zone;
+    if (s.edge_radius_m > 0)
+      mortar_zone = [&](const double* x) { return x[2] <= surface_zone_m; };
+    // The fillet's height (0 on the sheet) plus the flattened sheet's.
+    const double r_e = s.edge_radius_m, x_t = study.fillet_start_m;
+    auto initial_gap = [&](const double* x) {
+      const double along_fillet = std::clamp(x[0] + x_t, 0.0, r_e);
+      return r_e - std::sqrt(r_e * r_e - along_fillet * along_fillet) + sheet_height(x[1]);
+    };
+    std::vector<NodePair> pairs = interface_node_pairs(
+        problem, rim_interface_tolerance(H, sizes.edge_m, s.edge_radius_m), initial_gap, mortar_zone);
+    for (NodePair& pair : pairs)
+      pair.stiffness_pa_per_m = s.penalty_c * body_modulus / sizes.contact_m * penalty_scale(pair.x.data());
+    problem.set_node_pairs(std::move(pairs));
+  }
+  else
+  {
+    problem.set_penalty_scale(penalty_scale);
+    if (study.flat_sheet)
+      problem.set_initial_gap([&](const double* x) { return sheet_height(x[1]); });
+  }
+  level.dofs = problem.num_dofs();
+  // The contact face's nodal pressures: the pairs' (block), or the rigid
+  // plane's recovered pressure (the caller's fields, when it has them).
+  auto surface = [&](const NodalFields* fields = nullptr) {
+    if (!block)
+      return fields ? gather_surface_pressure(comm, *fields)
+                    : gather_surface_pressure(comm, recover_contact_pressure(problem));
+    std::vector<SurfacePressureNode> nodes;
+    for (const PairPressure& pair : gather_pair_pressures(problem))
+      nodes.push_back({pair.x, pair.pressure_pa, pair.area_m2});
+    return nodes;
+  };
+  // Start as the slices do: the sheet's height at the contact edge as the
+  // shift, and that plus a line contact's approach for the top.
+  const double shift = 0.5 * b * b / s.radius_m;
+  const LineApproach line = line_contact_approach(s.load_n_per_m, H, b, study.effective_modulus_pa);
+  level.estimated_approach_m = shift + line.approach_m;
+  if (previous && state)
+    // The body is z > 0, the block z < 0: twin nodes on z = 0 take their own body's values.
+    problem.start_interpolated(*state, previous->approach_m, [](const double* x) { return x[2] > 0 ? 1 : 0; });
+  else
+    problem.start_translated(shift, s.first_approach_scale * level.estimated_approach_m);
+  const LoadControlReport report
+      = continue_to_force(problem, s.load_n_per_m, line.exponent, 2e-3,
+                          world_rank() == 0 ? spdlog::level::info : spdlog::level::debug,
+                          [&] { return far_line_load(surface(), -L, H); });
+  state = problem.displacement();
+  level.approach_m = report.approach_m;
+  level.load_steps = report.load_steps;
+  level.newton_iterations = report.newton.newton_iterations;
+  level.krylov_iterations = report.newton.krylov_iterations;
+  level.far_load_n_per_m = report.force;
+  level.start_load_n_per_m = report.first_force;
+  if (block && s.edge_radius_m > 0)
+    for (const PairPressure& pair : gather_pair_pressures(problem))
+      if (pair.x[2] > surface_zone_m / 2 && pair.pressure_pa > 0)
+        throw ComputationError(fmt::format("rim: the contact runs up the fillet to {:.3g} m above the block, beyond "
+                                           "half the mortar pairs' zone ({:.3g} m)",
+                                           pair.x[2], surface_zone_m));
+
+  // Where the sheet ends: an acute rim's fillet starts further out than r_e
+  // (x_t = r_e tan((180 deg - a) / 2) > r_e below 90 deg).
+  const double end_zone = 2 * b + std::max(s.edge_radius_m, study.fillet_start_m);
+  double edge_sum = 0;
+  int edge_nodes = 0;
+  std::optional<NodalFields> fields;
+  if (fields_out)
+    fields = recover_nodal_fields(problem);
+  for (const SurfacePressureNode& n : surface(fields ? &*fields : nullptr))
+  {
+    if (std::abs(n.x[1]) < tol)
+      level.centre_line.push_back({n.x[0], n.pressure_pa});
+    // A sharp edge at y: on the sheet, z_e = R - sqrt(R^2 - y^2) (0 flat),
+    // and on the other face, x_e = -z_e cot a.
+    const double z_edge = study.flat_sheet ? 0.0 : sheet_height(n.x[1]);
+    const double x_edge = -z_edge / std::tan(s.interior_angle_rad);
+    // The structured grid puts a node at y = b / 2 exactly: the tolerance
+    // keeps it in whatever the last bit of b (the edge pressure moved by 1 %
+    // between two runs whose q differed in its last bits).
+    if (!(s.edge_radius_m > 0) && n.x[1] <= 0.5 * b * (1 + 1e-9)
+        && std::hypot(n.x[0] - x_edge, n.x[2] - z_edge) < 1e-3 * edge_element_m)
+    {
+      edge_sum += n.pressure_pa;
+      ++edge_nodes;
+    }
+  }
+  if (edge_nodes > 0)
+    level.edge_pressure_pa = edge_sum / edge_nodes;
+  std::sort(level.centre_line.begin(), level.centre_line.end(),
+            [](const CentreLineNode& a, const CentreLineNode& c) { return a.x_m < c.x_m; });
+  if (level.centre_line.size() < 3)
+    throw ComputationError(fmt::format("rim: unresolved contact (h_e = {:.3g} m, b = {:.3g} m)", edge_element_m, b));
+  // P1 tetrahedra scatter the nodal pressure by about 2 % from node to node
+  // (measured along the far strip: 2.3-2.5 % at 6 and 10 elements across b,
+  // penalty c = 10), so pressures are read as means over a stretch of the
+  // ruling: H at the far side and in the middle, and about each node near the
+  // end +-b / 4, the scale on which a square end's pressure falls (a rounded
+  // edge: at most half its boundary layer; +-b / 8 left the square end's peak
+  // changing by 2-4 % from level to level, the scatter's size).
+  const double window = s.edge_radius_m > 0 ? std::min(b / 4, study.boundary_layer_m / 2) : b / 4;
+  const Sample far = centre_line_mean(level.centre_line, -L, -L + H);
+  const Sample mid = centre_line_mean(level.centre_line, -L / 2 - H / 2, -L / 2 + H / 2);
+  level.far_peak_pa = far.mean;
+  level.far_scatter = far.sd / far.mean;
+  level.mid_peak_pa = mid.mean;
+  level.mid_to_far_standard_error
+      = std::hypot(far.standard_error() / far.mean, mid.standard_error() / mid.mean) * mid.mean / far.mean;
+  // The sheet and the fillet (beyond them lies the other face, out of contact).
+  for (const CentreLineNode& node : level.centre_line)
+    if (node.x_m > -end_zone && node.x_m <= s.edge_radius_m)
+    {
+      const double smoothed = centre_line_mean(level.centre_line, node.x_m - window, node.x_m + window, 1).mean;
+      if (smoothed > level.end_peak_pa)
+      {
+        level.end_peak_pa = smoothed;
+        level.end_peak_x_m = node.x_m;
+      }
+    }
+  if (!(level.end_peak_pa > 0))
+    throw ComputationError(fmt::format("rim: no pressure near the edge (h_e = {:.3g} m, b = {:.3g} m)",
+                                       edge_element_m, b));
+  if (fields_out)
+    *fields_out = std::move(fields);
+  level.wall_s = wall_seconds_since(comm, start);
+  return level;
+}
+} // namespace
+
+double centre_line_pressure_at(const RimEndLevel& level, double x_m)
+{
+  const auto& line = level.centre_line; // sorted by x
+  const auto after = std::lower_bound(line.begin(), line.end(), x_m,
+                                      [](const CentreLineNode& n, double x) { return n.x_m < x; });
+  if (after == line.end() || (after == line.begin() && after->x_m != x_m))
+    throw ComputationError(fmt::format("rim: x = {:.3g} m lies outside the centre line", x_m));
+  if (after->x_m == x_m)
+    return after->pressure_pa;
+  const CentreLineNode& before = *(after - 1);
+  const double t = (x_m - before.x_m) / (after->x_m - before.x_m);
+  return (1 - t) * before.pressure_pa + t * after->pressure_pa;
+}
+
+double end_to_interior(const RimEndLevel& level, bool sharp_edge)
+{
+  // A sharp edge's own pressure, not the largest near it: at a square end
+  // that largest is the interior's, falling towards the edge. A rounded
+  // edge's peak on its fillet.
+  return (sharp_edge ? level.edge_pressure_pa : level.end_peak_pa) / level.far_peak_pa;
+}
+
+double end_to_interior_change(const RimEndLevel& before, const RimEndLevel& last, bool sharp_edge)
+{
+  // The ratio's, not the end's pressure in Pa: the interior's own pressure
+  // moves with the mesh by a per cent or two (P1 nodal scatter; 1.498 then
+  // 1.469 GPa at the 120 deg steel rim from b/128 to b/256), which the end's
+  // pressure carries but the ratio does not. Over the larger of the ratio
+  // and 1: an acute edge's pressure tends to zero, where its own relative
+  // change means nothing.
+  const double ratio = end_to_interior(last, sharp_edge);
+  return (ratio - end_to_interior(before, sharp_edge)) / std::max(ratio, 1.0);
+}
+
+namespace
+{
+/// What the levels so far say: the resolution, the plane strain of the far
+/// side, a sharp edge's exponent, and a non-singular end's ratio, its change
+/// over the last level and whether it converged.
+void judge_levels(RimEndStudy& study, bool sharp)
+{
+  const RimEndLevel& last = study.levels.back();
+  study.resolved = sharp || last.edge_element_m <= study.boundary_layer_m / 4;
+  study.plane_strain_change = std::abs(last.mid_peak_pa / last.far_peak_pa - 1);
+  study.plane_strain_noise = last.mid_to_far_standard_error;
+  if (!study.singular)
+    study.end_to_interior = end_to_interior(last, sharp);
+  if (study.levels.size() < 2)
+    return; // one level: nothing to say of convergence
+  const RimEndLevel& before = study.levels[study.levels.size() - 2];
+  const bool edge_loaded = std::all_of(study.levels.begin(), study.levels.end(),
+                                       [](const RimEndLevel& l) { return l.edge_pressure_pa > 0; });
+  if (study.singular && !edge_loaded)
+    throw ComputationError("rim: a singular edge without pressure at some level (the contact does not reach it)");
+  // An acute edge lifts off the plane under refinement: no growth to measure.
+  if (sharp && edge_loaded)
+  {
+    // Least squares of ln p_edge on ln h_e over every level: the nodal
+    // pressures scatter by a few per cent, which two levels alone would carry
+    // into the exponent (at 120 deg the pairs gave -0.39, -0.47 and -0.36).
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const RimEndLevel& l : study.levels)
+    {
+      const double lx = std::log(l.edge_element_m), ly = std::log(l.edge_pressure_pa);
+      sx += lx;
+      sy += ly;
+      sxx += lx * lx;
+      sxy += lx * ly;
+    }
+    const double n = static_cast<double>(study.levels.size());
+    study.measured_exponent = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  }
+  if (!study.singular)
+  {
+    study.end_change = end_to_interior_change(before, last, sharp);
+    study.converged = study.resolved && std::abs(*study.end_change) < study.setup.tolerance;
+  }
+}
+} // namespace
+
+double rim_interface_tolerance(double depth_m, double edge_element_m, double edge_radius_m)
+{
+  double tol = 1e-9 * depth_m;
+  if (edge_radius_m > 0)
+    tol = std::min(tol, 1e-3 * edge_element_m * edge_element_m / (2 * edge_radius_m));
+  if (!(tol >= 1e-13 * depth_m))
+    throw ComputationError(fmt::format("rim: edge elements of {:.3g} m on a fillet of radius {:.3g} m leave its first "
+                                       "nodes within {:.3g} m of the interface, below what a block {:.3g} m deep "
+                                       "resolves (1e-13 of it)",
+                                       edge_element_m, edge_radius_m, tol, depth_m));
+  return tol;
+}
+
+RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
+{
+  validate(setup);
+  ensure_petsc(); // MPI too
+  RimEndStudy study;
+  study.setup = setup;
+  const bool block = setup.counter_face == CounterFace::block;
+  study.effective_modulus_pa = contact::effective_modulus(setup.youngs_modulus_pa, setup.poisson_ratio, block);
+  const contact::LineHertz hertz
+      = contact::line_contact(setup.load_n_per_m, setup.radius_m, study.effective_modulus_pa, setup.poisson_ratio);
+  study.half_width_m = hertz.half_width_m;
+  study.hertz_peak_pa = hertz.peak_pressure_pa;
+  if (setup.edge_radius_m >= largest_edge_radius_over_depth * setup.depth_over_half_width * study.half_width_m)
+    throw InputError(fmt::format("rim: edge_radius_m {} m is not small against the block's depth H = {:.3g} m "
+                                 "(at most {} H)",
+                                 setup.edge_radius_m, setup.depth_over_half_width * study.half_width_m,
+                                 largest_edge_radius_over_depth));
+  const bool sharp = !(setup.edge_radius_m > 0);
+  const double depth_m = setup.depth_over_half_width * study.half_width_m;
+  // Flat where the cylinder hardly rises across the block (R >= 20 H), and
+  // where it cannot hold the block at all (R < H: a fillet's block deepened
+  // to a few r_e at an end of small R, rim --body): half-space theory's
+  // reduction, exact in the gap wherever the contact can reach (b << R).
+  study.flat_sheet
+      = setup.sheet == SheetModel::flat || block || setup.mesh == RimEndMesh::grid
+        || (setup.sheet == SheetModel::automatic && (setup.radius_m >= 20 * depth_m || setup.radius_m < depth_m));
+  // Two bodies meet on the flat interface with the sheet's profile in the
+  // pairs' gap (half-space theory's reduction, as in line Hertz between two
+  // bodies), whatever R / H: the flattened geometry differs from the
+  // cylinder only away from the contact strip (at y = H by H^2 / (2 R)).
+  if (block && setup.sheet == SheetModel::cylinder)
+    throw InputError("rim: the block counter-face needs the flat sheet (sheet cylinder)");
+  if (!study.flat_sheet && setup.radius_m < depth_m)
+    throw InputError(fmt::format("rim: the cylinder sheet needs R >= H (R = {} m, H = {:.3g} m): use the flat sheet",
+                                 setup.radius_m, depth_m));
+  if (study.flat_sheet && !(study.half_width_m < largest_half_width_over_radius * setup.radius_m))
+    throw InputError(fmt::format("rim: the flat sheet is half-space theory's, for b << R; here b = {:.3g} m against "
+                                 "R = {} m",
+                                 study.half_width_m, setup.radius_m));
+  study.fillet_start_m = fillet_start_distance(setup.edge_radius_m, setup.interior_angle_rad);
+  study.boundary_layer_m = 4 * study.hertz_peak_pa * setup.edge_radius_m / (std::numbers::pi * study.effective_modulus_pa);
+  const double E = setup.youngs_modulus_pa, nu = setup.poisson_ratio;
+  study.wedge_exponent = !sharp ? 0.0
+                         : block ? contact::edge_on_elastic_block_exponent(setup.interior_angle_rad, E, nu, E, nu)
+                                 : contact::edge_on_rigid_plane_exponent(setup.interior_angle_rad);
+  study.singular = study.wedge_exponent < 0;
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  double first_edge_element = setup.edge_element_over_half_width * study.half_width_m;
+  if (setup.resolve_boundary_layer && !sharp)
+    // Just below s / 4 at the last level, so that the comparison below holds in floating point.
+    first_edge_element = std::min(first_edge_element, 0.999 * std::pow(2.0, setup.levels - 1) * study.boundary_layer_m / 4);
+  std::shared_ptr<const dolfinx::fem::Function<double>> state;
+  // Written once the study has finished, so that a level that fails leaves no
+  // field file behind that looks like the study's.
+  std::optional<NodalFields> last_fields;
+  for (int k = 0; k < setup.levels + setup.extra_levels; ++k)
+  {
+    if (k >= setup.levels && (study.converged || !study.end_change))
+      break;
+    if (k >= setup.levels && rank == 0)
+      spdlog::info("rim: not converged at {} levels ({}), one level more", k,
+                   study.resolved ? fmt::format("ratio change {:+.2f} %", 100 * *study.end_change)
+                                  : std::string("boundary layer not resolved"));
+    const double h_e = first_edge_element / std::pow(2.0, k);
+    // Any level from the last asked for may be the last: each keeps its fields.
+    study.levels.push_back(solve_level(comm, study, h_e,
+                                       k + 1 >= setup.levels && !setup.xdmf_path.empty() ? &last_fields : nullptr,
+                                       study.levels.empty() ? nullptr : &study.levels.back(), state));
+    const RimEndLevel& l = study.levels.back();
+    if (rank == 0)
+      spdlog::info("rim level {}: h_e = {:.3g} b, {} dofs, far q {:.5g} N/m, far p {:.5g} Pa, end peak {:.5g} Pa "
+                   "at x = {:.3g} b, edge {:.5g} Pa, {:.1f} s",
+                   k, h_e / study.half_width_m, l.dofs, l.far_load_n_per_m, l.far_peak_pa, l.end_peak_pa,
+                   l.end_peak_x_m / study.half_width_m, l.edge_pressure_pa, l.wall_s);
+    if (k + 1 >= setup.levels)
+      judge_levels(study, sharp);
+  }
+  if (last_fields)
+    write_fields(setup.xdmf_path, *last_fields);
+  return study;
+}
+} // namespace rollcheck::fem

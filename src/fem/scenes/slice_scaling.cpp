@@ -1,0 +1,87 @@
+#include "fem/scenes/slice_scaling.h"
+#include "contact/hertz.h"
+#include "core/error.h"
+#include "fem/all_gather.h"
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace rollcheck::fem
+{
+namespace
+{
+/// Nodes are solved at this radius; by the scaling any radius gives the same g.
+constexpr double unit_radius_m = 1.0;
+} // namespace
+
+SliceScaling::SliceScaling(const SliceSettings& settings, int nodes_per_decade)
+    : settings_(settings), nodes_per_decade_(nodes_per_decade),
+      effective_modulus_pa_(
+          contact::effective_modulus(settings.youngs_modulus_pa, settings.poisson_ratio, settings.elastic_plane))
+{
+  if (nodes_per_decade < 1)
+    throw InputError(fmt::format("slice scaling: nodes per decade must be at least 1, got {}", nodes_per_decade));
+}
+
+void SliceScaling::cover(MPI_Comm comm, double lambda_min, double lambda_max)
+{
+  if (!(lambda_min > 0) || !(lambda_max >= lambda_min) || !std::isfinite(lambda_max))
+    throw ComputationError(fmt::format("slice scaling: load ratio range [{}, {}] is not a positive interval",
+                                       lambda_min, lambda_max));
+  // Even bounds: the half table (stride 2) brackets the range too.
+  int lo = static_cast<int>(std::floor(nodes_per_decade_ * std::log10(lambda_min)));
+  int hi = static_cast<int>(std::ceil(nodes_per_decade_ * std::log10(lambda_max)));
+  lo -= ((lo % 2) + 2) % 2;
+  hi += ((hi % 2) + 2) % 2;
+  std::vector<int> missing;
+  std::vector<SliceLoad> loads;
+  for (int k = lo; k <= hi; ++k)
+    if (!nodes_.contains(k))
+    {
+      const double lambda = std::pow(10.0, static_cast<double>(k) / nodes_per_decade_);
+      missing.push_back(k);
+      loads.push_back({0.0, unit_radius_m, lambda * effective_modulus_pa_ * unit_radius_m});
+    }
+  if (missing.empty())
+    return;
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<SliceFem> solved = solve_slices(comm, loads, settings_);
+  wall_s_ += wall_seconds_since(comm, start);
+  for (std::size_t i = 0; i < missing.size(); ++i)
+  {
+    const SliceFem& fem = solved[i];
+    nodes_[missing[i]] = {missing[i], contact::load_ratio(fem.load.load_n_per_m, unit_radius_m, effective_modulus_pa_), fem,
+                          fem.peak_pressure_pa / fem.hertz_peak_pressure_pa,
+                          fem.refined_peak_pressure_pa / fem.hertz_peak_pressure_pa};
+  }
+}
+
+void SliceScaling::double_nodes()
+{
+  std::map<int, Node> doubled;
+  for (auto& [k, node] : nodes_)
+  {
+    node.k = 2 * k;
+    doubled.emplace(2 * k, std::move(node));
+  }
+  nodes_ = std::move(doubled);
+  nodes_per_decade_ *= 2;
+}
+
+double SliceScaling::ratio(double lambda, int stride, bool refined) const
+{
+  const double position = nodes_per_decade_ * std::log10(lambda);
+  // The bracketing nodes of the stride's grid (multiples of the stride).
+  const int lower = stride * static_cast<int>(std::floor(position / stride));
+  const int upper = position == lower ? lower : lower + stride;
+  const auto low = nodes_.find(lower), high = nodes_.find(upper);
+  if (!(lambda > 0) || low == nodes_.end() || high == nodes_.end())
+    throw ComputationError(fmt::format("slice scaling: load ratio {} lies outside the solved table", lambda));
+  const double value_low = refined ? low->second.refined_ratio : low->second.ratio;
+  const double value_high = refined ? high->second.refined_ratio : high->second.ratio;
+  if (upper == lower)
+    return value_low;
+  const double t = (position - lower) / stride;
+  return (1 - t) * value_low + t * value_high;
+}
+} // namespace rollcheck::fem

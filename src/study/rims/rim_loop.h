@@ -1,0 +1,269 @@
+#pragma once
+// The rims over a body's rolling loop (issue 14; docs/rims.md): the 3D end
+// model (fem/scenes/rim_end_contact.h) at every loaded ruling end of the
+// orientations fem-sds solves directly, and FEM-SDS and FEM-FDS over every
+// sample of the loop with the ends' pressures in them (study/loop_scores/loop_sds.h).
+//
+// A ruling end is loaded where the contact's load reaches a rim; its interior
+// angle is 90 deg + the rim's lean (contact/rim_overhang.h). At each such end
+// of the K orientations the end model runs at the end's own line load q and
+// radius R across the ruling: a sharp edge is singular (the wedge's exponent
+// below 0: a > 90 deg on the rigid plane, a > 77.45 deg on a steel block) or
+// has a converged end/interior ratio; a rounded edge has a converged ratio
+// when its boundary layer is resolved (fem/scenes/rim_end_contact.h).
+//
+// Over the whole loop the end's pressure is taken as the end/interior ratio
+// times the FEM pressure at the end. The ratio comes from a table: end
+// models at evenly spaced interior angles across the loop's range, and for a
+// rounded edge at geometrically spaced R across the range of the loop's ends
+// (its columns), all at the directly modelled ends' median q, interpolated
+// linearly in the angle and in log R. A rounded end's ratio depends on r_e /
+// R (its boundary layer s / b = 2 r_e / (pi R)) far more than on q: at the
+// preprint's body's 91.9 deg end, with b held, 2.353, 2.888 and 3.58 at R =
+// 2.96, 5.93 and 11.9 mm; with R held, 2.802 at twice q (docs/rims.md). A
+// sharp edge's ratio has no such length: one column, at the median q and R.
+// The table is a reduction and is checked twice: against the direct end
+// models at their own q and R (`table_vs_direct`), and by the end-aware
+// scores from every other node of the table, in both directions (the change
+// when its nodes halve). A sharp edge's singular ends make the end-aware
+// scores singular: reported as such, with the number of loaded ends that are.
+//
+// A rounded edge's flattest ends (interior angle from flat_rim_from_rad,
+// 160 deg, on; where half-space theory is refused at some nodes, from
+// flat_rim_table_start's) take the flat-rim table instead: the loop's own
+// ends at angles 2.5 deg apart up to its flattest (study/rims/flattest_loop_ends.h),
+// solved in 3D by half-space theory on the hull's own surface with the
+// ruling's own load and the body's balance (study/rims/flat_rim_contact.h); an
+// end's pressure is the table's peak at its angle (interpolated: the
+// ends near the flattest are one family per side, whose c, q and R follow
+// the angle) times the slices' factor. The straight rim of the FEM end
+// model is the weaker reduction there: on the oloid at 170 deg it gives
+// 1.92-1.97 where the body's own end gives 1.49-1.53 (docs/flat-rim.md).
+// A side on a short ruling whose shortened window does not converge is
+// solved over its whole loaded ruling instead (study::needs_whole_ruling).
+//
+// A rounded edge stands for a finished part, the hull rounded by a ball of
+// radius r_e rolled inside it: no radius of its surface is below r_e. Near a
+// sheet's apex the hull's R -> 0 at a ruling's end (the oloid's: where the
+// centre of pressure lies a quarter of the ruling from one end, whose ruling
+// touches the rim's circle there, R falling linearly to 0), its line Hertz
+// pressure grows without bound and its b / R leaves line contact; the
+// finished part's end is taken at R = r_e (study/loop_scores/loop_sds.h
+// loop_scores::end_aware_scores; the direct ends too).
+#include "fem/scenes/rim_end_contact.h"
+#include "study/loop_scores/fem_sds.h"
+#include "study/rims/flat_rim_contact.h"
+#include <cstddef>
+#include <mpi.h>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <optional>
+#include <vector>
+
+namespace rollcheck::study::rims
+{
+struct RimLoopSettings
+{
+  /// The body, its loop, the K orientations solved directly (6: the ends
+  /// of 12 loaded rulings), F and the material (which the end models share).
+  loop_scores::FemSdsSettings loop = [] {
+    loop_scores::FemSdsSettings s;
+    s.orientations = 6;
+    return s;
+  }();
+  /// The end models: counter-face, edge radius, mesh levels, tolerance. Their
+  /// radius, line load, interior angle and material are set per end, and
+  /// with a rounded edge the depth H / b at least depth_over_edge_radius
+  /// r_e / b of the end.
+  fem::RimEndSettings end;
+  /// A rounded edge: every end model's block at least this many r_e deep
+  /// however small the end's b (above 1 / fem::largest_edge_radius_over_depth,
+  /// for the fillet to fit). Not a reduction to make freely: an acute end's
+  /// ratio depends on it (docs/rims.md, "The block's depth": 8 % higher at
+  /// 4 r_e than at 10.5 r_e at 66.7 deg, R = r_e).
+  double depth_over_edge_radius = 10.5;
+  /// Largest spacing of the end table's nodes over the interior angle.
+  double end_table_step_rad = 10 * std::numbers::pi / 180;
+  /// Below the square end (90 deg), if positive, the largest spacing there
+  /// instead, with a node at 90 deg: an acute rounded end's ratio rises
+  /// steeply towards 90 deg and bends (the preprint's body at R = 8.2 mm:
+  /// 2.369, 3.075, 3.347 at 60, 87.5, 115 deg), above it is nearly flat, so
+  /// a table even in the angle misses the acute ends first (docs/rims.md).
+  double end_table_acute_step_rad = 0;
+  /// A rounded edge: the largest ratio between neighbouring columns' R in
+  /// the end table (> 1), or 0 for one column at the direct ends' median q
+  /// and R (the reduction that put the preprint's body's table 4.7 % from its
+  /// direct ends, docs/rims.md).
+  double end_table_radius_step = 2;
+  /// A rounded edge's ends of at least this interior angle are solved in 3D
+  /// on the body's own loop by half-space theory (flat-rim: its surface, its
+  /// load along the ruling, its balance), nodes at most flat_rim_step_rad
+  /// apart up to the loop's flattest end; the FEM end table stops there. pi:
+  /// never. Half-space theory is checked against the FEM end model at 160
+  /// and 170 deg (docs/flat-rim.md).
+  double flat_rim_from_rad = 160 * std::numbers::pi / 180;
+  double flat_rim_step_rad = 2.5 * std::numbers::pi / 180;
+};
+
+/// One loaded end solved by flat-rim (study/rims/flat_rim_contact.h), as the
+/// loop needs it.
+struct FlatRimSide
+{
+  double centre_of_pressure = 0;     ///< c from the end
+  double end_line_load_n_per_m = 0;
+  double end_radius_m = 0;           ///< the hull's R across the ruling at the end
+  double peak_pressure_pa = 0;
+  double line_hertz_peak_pa = 0;     ///< at the end's q and R = max(R_end, r_e)
+  double last_change = 0, window_change = 0;
+  bool converged = false;
+  double wall_s = 0;
+  double after_over_half_width = 0;  ///< the window along the ruling (shortened where the body could not balance)
+  double across_scale = 1;           ///< the window's width across over the set one (widened: > 1)
+  /// Solved over its whole loaded ruling (study::needs_whole_ruling: its
+  /// shortened window did not converge), with that window's peak (Pa).
+  bool whole_ruling = false;
+  double window_peak_pa = 0;
+};
+
+/// One node of the flat-rim table: the loop's orientations whose loaded end
+/// has this angle, one per side of the flattest end (one when the two sides
+/// are mirror images: the same c and R within 1e-6).
+struct FlatRimNode
+{
+  double interior_angle_rad = 0;
+  std::vector<FlatRimSide> sides;
+  /// The largest peak over the sides (Pa): the loop's ends near this angle
+  /// take it, interpolated linearly in the angle (it is smooth there, where
+  /// line Hertz at R = max(R_end, r_e) has a kink at R_end = r_e).
+  double peak_pa() const;
+  /// The largest over the sides of the peak over line Hertz at the end's q
+  /// and R = max(R_end, r_e), as the end table's ratio (reported).
+  double ratio() const;
+  bool converged() const;
+};
+
+/// One loaded ruling end of a directly solved orientation.
+struct RimLoopEnd
+{
+  std::size_t orientation = 0;       ///< loop_scores::FemSdsOrientation::index
+  int end = 0;                       ///< 0 the ruling's start, 1 its end
+  double interior_angle_rad = 0;     ///< 90 deg + the rim's lean
+  double modelled_angle_rad = 0;     ///< within the end model's [60, 179.5] deg ([60, 170] rounded)
+  fem::RimEndStudy study;            ///< at the end's q and R (no levels when outside the model)
+  /// Why the end model cannot stand for this end (empty: it does): b / R
+  /// beyond fem::largest_half_width_over_radius, where the ruling ends near
+  /// the apex of its sheet and the contact there is no line contact.
+  std::string outside_model;
+  double interior_peak_pa = 0;       ///< the orientation's FEM peak along the ruling (slices)
+  /// end_to_interior times the end model's interior pressure (none: singular or not converged).
+  std::optional<double> end_peak_pa;
+  std::optional<double> table_ratio; ///< the end table's ratio at this angle (none: singular)
+};
+
+struct EndTableNode
+{
+  double interior_angle_rad = 0;
+  /// The node's column: R of its end model.
+  double sheet_radius_m = 0;
+  fem::RimEndStudy study;
+};
+
+struct RimLoopResult
+{
+  fem::RimEndSettings end_setup;     ///< the settings' end models (counter-face, edge, material)
+  loop_scores::FemSdsResult fem_sds;              ///< the interior: loop scores and the K orientations
+  std::vector<RimLoopEnd> ends;
+  /// The directly modelled ends' median q and R: the end table's q, and
+  /// its R when it has one column.
+  double reference_load_n_per_m = 0, reference_radius_m = 0;
+  /// Interior angles above this are singular (a sharp edge; pi when rounded).
+  double singular_from_rad = 0;
+  /// Over the loop's non-singular loaded ends' angles below flat_from_rad,
+  /// column by column (ascending R), each over the angles.
+  std::vector<EndTableNode> table;
+  /// Ends from this angle on take the flat-rim table's ratio (pi: none do).
+  double flat_from_rad = std::numbers::pi;
+  std::vector<FlatRimNode> flat_table;
+  /// Why the flat-rim table does not start at flat_rim_from_rad although
+  /// the loop has ends there: the refused nodes, or why there is none
+  /// (empty: it starts there, or none was due).
+  std::string flat_rim_refused;
+  /// Largest |table - direct| of the end/interior ratio over the direct ends
+  /// with one, over the larger of the direct ratio and 1 (the interior).
+  std::optional<double> table_vs_direct;
+  bool table_converged = true;       ///< every node's end model converged (the flat-rim table's too)
+  /// The loop's scores (fem_sds.loop's) with the end-aware ones: [0] the
+  /// table, [1] every other node (absent with fewer than 3 nodes).
+  loop_scores::LoopSds loop;
+  double wall_s = 0;
+
+  /// Largest end/interior peak over the directly modelled ends that have one.
+  std::optional<double> worst_end_to_interior() const;
+  /// Over every sample of the loop: the largest end pressure (the table's)
+  /// over the largest interior pressure (FEM-SDS's mapped points); none when
+  /// an end is singular or outside the model, or no sample loads a rim.
+  std::optional<double> loop_end_to_interior() const;
+  /// The same over the loaded ends the end model covers (b / R below
+  /// fem::largest_half_width_over_radius); none when an end is singular or
+  /// no end is covered. Equals loop_end_to_interior when every end is covered.
+  std::optional<double> covered_end_to_interior() const;
+  /// covered_end_to_interior's change when the limit on b / R halves (none
+  /// without ends below half the limit): beyond the loop's tolerance, the
+  /// covered ends' largest pressure is set by the limit, not converged.
+  std::optional<double> covered_limit_change() const;
+  /// In words: singular, converged, or not converged and why.
+  std::string end_aware_status() const;
+};
+
+/// Collective on `comm` (every rank gets the result). The end's counter-face
+/// sets the loop's too (settings.loop.elastic_plane: a steel block gives the
+/// slices the pair's E*). InputError naming the setting for bad settings;
+/// ComputationError from the FEM.
+RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings);
+
+/// The table's end/interior ratio at `interior_angle_rad` and the sheet's
+/// `radius_m` (unused with one column): within each column linear in the
+/// angle, across them linear in log R, held at
+/// the table's edges; in a direction with 3 or more nodes by every
+/// `stride`-th (the check of its spacing). None when the angle lies above
+/// `singular_from_rad`.
+std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, int stride, double singular_from_rad,
+                                      double interior_angle_rad, double radius_m);
+
+/// The loop's end/interior ratio of a loaded end (as loop_scores::finished_end has it):
+/// from flat_from_rad on the flat-rim table's peak at its interior angle
+/// over its line Hertz peak, below it the end table's ratio at its angle
+/// (held to [60 deg, largest_modelled_rad]) and R; each table by every
+/// stride-th node when it has 3 or more (the check of its spacing), else by all.
+struct EndRatios
+{
+  std::vector<EndTableNode> table;
+  std::vector<FlatRimNode> flat_table;
+  double flat_from_rad = std::numbers::pi;
+  double singular_from_rad = std::numbers::pi;
+  double largest_modelled_rad = std::numbers::pi;
+  std::optional<double> operator()(int stride, const loop_scores::LoadedEnd& end) const;
+};
+
+/// The end table's interior angles over [lo, hi]: evenly, at most `step_rad`
+/// apart, an odd number of them (every other one is a table too); with
+/// `acute_step_rad` > 0 and 90 deg inside the range, [lo, 90 deg] and
+/// [90 deg, hi] each so, the first at most `acute_step_rad` apart (their
+/// union is odd again, 90 deg an even node). One node where lo = hi.
+std::vector<double> end_table_angles(double lo, double hi, double step_rad, double acute_step_rad);
+
+/// Where the flat-rim table starts when some of its nodes are refused (a
+/// failed solve, or contact on slopes too steep for half-space theory, as
+/// beside a crease of the hull): the first node after the last refused one,
+/// moved one on where needed to keep the kept nodes odd in number (every
+/// other one, the check of the spacing, still ends on the flattest). None
+/// when the flattest node is refused or too few are left. `refused` is in
+/// ascending angle.
+std::optional<std::size_t> flat_rim_table_start(const std::vector<bool>& refused);
+
+/// The smallest interior angle whose sharp edge is singular against the
+/// counter-face (bisection on the wedge exponent), pi when none is.
+double singular_from_angle(const fem::RimEndSettings& end);
+
+nlohmann::json to_json(const RimLoopResult& result);
+} // namespace rollcheck::study::rims
