@@ -1,4 +1,5 @@
 #include "oracle/paper_compat.h"
+#include "core/comma_list.h"
 #include "core/error.h"
 #include <fmt/format.h>
 
@@ -61,16 +62,8 @@ const std::vector<Quirk>& quirks()
 
 void apply_quirk_settings(PaperCompat& compat, std::string_view settings, std::string_view origin)
 {
-  std::size_t start = 0;
-  while (start < settings.size())
+  for (const std::string_view item : comma_list_items(settings))
   {
-    std::size_t end = settings.find(',', start);
-    if (end == std::string_view::npos)
-      end = settings.size();
-    const std::string_view item = settings.substr(start, end - start);
-    start = end + 1;
-    if (item.empty())
-      continue;
     const std::size_t eq = item.find('=');
     const std::string_view name = item.substr(0, eq);
     const std::string_view value = eq == std::string_view::npos ? std::string_view() : item.substr(eq + 1);
