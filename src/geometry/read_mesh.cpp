@@ -246,63 +246,119 @@ SurfaceMesh read_stl(const std::string& bytes, const std::string& name)
   return b.finish(name);
 }
 
-SurfaceMesh read_ply(const std::string& bytes, const std::string& name)
+struct PlyProperty
+{
+  std::string name;
+  std::string type;       ///< "float", ...; a list: "list:" and its entries' type
+  std::string count_type; ///< a list's count type
+};
+
+struct PlyElement
+{
+  std::string name;
+  long count = 0;
+  std::vector<PlyProperty> properties;
+};
+
+struct PlyHeader
+{
+  std::string format;
+  std::vector<PlyElement> elements;
+  std::size_t data_start = 0; ///< the byte after the line 'end_header'
+};
+
+PlyHeader read_ply_header(const std::string& bytes, const std::string& name)
 {
   const auto header_end = bytes.find("end_header");
   if (bytes.rfind("ply", 0) != 0 || header_end == std::string::npos)
     throw InputError(fmt::format("mesh file '{}': not a PLY file", name));
+  PlyHeader h;
   std::istringstream header(bytes.substr(0, header_end));
-  std::string format;
-  struct Property
-  {
-    std::string type, count_type;
-  };
-  struct Element
-  {
-    std::string name;
-    long count = 0;
-    std::vector<std::pair<std::string, Property>> properties;
-  };
-  std::vector<Element> elements;
   for (std::string line; std::getline(header, line);)
   {
     std::istringstream words(line);
     std::string kind;
     words >> kind;
     if (kind == "format")
-      words >> format;
+      words >> h.format;
     else if (kind == "element")
     {
-      Element e;
+      PlyElement e;
       words >> e.name >> e.count;
-      elements.push_back(e);
+      h.elements.push_back(e);
     }
-    else if (kind == "property" && !elements.empty())
+    else if (kind == "property" && !h.elements.empty())
     {
-      std::string type, pname;
+      std::string type;
       words >> type;
-      Property p;
+      PlyProperty p;
       if (type == "list")
       {
-        words >> p.count_type >> p.type >> pname;
+        words >> p.count_type >> p.type >> p.name;
         p.type = "list:" + p.type;
       }
       else
       {
         p.type = type;
-        words >> pname;
+        words >> p.name;
       }
-      elements.back().properties.emplace_back(pname, p);
+      h.elements.back().properties.push_back(p);
     }
   }
-  if (format != "ascii" && format != "binary_little_endian")
-    throw InputError(fmt::format("mesh file '{}': PLY format '{}' is not supported", name, format));
+  if (h.format != "ascii" && h.format != "binary_little_endian")
+    throw InputError(fmt::format("mesh file '{}': PLY format '{}' is not supported", name, h.format));
   const auto header_line_end = bytes.find('\n', header_end);
   if (header_line_end == std::string::npos)
     throw InputError(fmt::format("mesh file '{}': PLY header line 'end_header' does not end", name));
-  std::size_t pos = header_line_end + 1;
-  std::istringstream text(format == "ascii" ? bytes.substr(pos) : std::string());
-  auto size_of = [&](const std::string& t) -> std::size_t {
+  h.data_start = header_line_end + 1;
+  return h;
+}
+
+/// The values of a PLY body, one at a time, as text tokens (ascii) or as
+/// little-endian binary values of the declared types.
+class PlyValues
+{
+public:
+  PlyValues(const std::string& bytes, const PlyHeader& header, const std::string& name)
+      : bytes_(bytes), name_(name), ascii_(header.format == "ascii"), pos_(header.data_start),
+        text_(ascii_ ? bytes.substr(pos_) : std::string())
+  {
+  }
+
+  /// Bytes not yet read (for ascii: all after the header).
+  std::size_t remaining() const { return bytes_.size() - pos_; }
+
+  double next(const std::string& type)
+  {
+    if (ascii_)
+    {
+      std::string token;
+      if (!(text_ >> token))
+        throw InputError(fmt::format("mesh file '{}': PLY data ends early", name_));
+      return parse_double(token, name_);
+    }
+    const std::size_t n = size_of(type);
+    if (pos_ + n > bytes_.size())
+      throw InputError(fmt::format("mesh file '{}': PLY data ends early", name_));
+    const char* p = bytes_.data() + pos_;
+    pos_ += n;
+    auto get = [p](auto value) {
+      std::memcpy(&value, p, sizeof value);
+      return static_cast<double>(value);
+    };
+    if (type == "char" || type == "int8") return get(std::int8_t{});
+    if (type == "uchar" || type == "uint8") return get(std::uint8_t{});
+    if (type == "short" || type == "int16") return get(std::int16_t{});
+    if (type == "ushort" || type == "uint16") return get(std::uint16_t{});
+    if (type == "int" || type == "int32") return get(std::int32_t{});
+    if (type == "uint" || type == "uint32") return get(std::uint32_t{});
+    if (type == "float" || type == "float32") return get(float{});
+    return get(double{});
+  }
+
+private:
+  std::size_t size_of(const std::string& t) const
+  {
     if (t == "char" || t == "uchar" || t == "int8" || t == "uint8")
       return 1;
     if (t == "short" || t == "ushort" || t == "int16" || t == "uint16")
@@ -311,65 +367,55 @@ SurfaceMesh read_ply(const std::string& bytes, const std::string& name)
       return 4;
     if (t == "double" || t == "float64")
       return 8;
-    throw InputError(fmt::format("mesh file '{}': unknown PLY type '{}'", name, t));
-  };
-  auto read_value = [&](const std::string& t) -> double {
-    if (format == "ascii")
-    {
-      std::string token;
-      if (!(text >> token))
-        throw InputError(fmt::format("mesh file '{}': PLY data ends early", name));
-      return parse_double(token, name);
-    }
-    const std::size_t n = size_of(t);
-    if (pos + n > bytes.size())
-      throw InputError(fmt::format("mesh file '{}': PLY data ends early", name));
-    const char* p = bytes.data() + pos;
-    pos += n;
-    auto get = [p](auto value) {
-      std::memcpy(&value, p, sizeof value);
-      return static_cast<double>(value);
-    };
-    if (t == "char" || t == "int8") return get(std::int8_t{});
-    if (t == "uchar" || t == "uint8") return get(std::uint8_t{});
-    if (t == "short" || t == "int16") return get(std::int16_t{});
-    if (t == "ushort" || t == "uint16") return get(std::uint16_t{});
-    if (t == "int" || t == "int32") return get(std::int32_t{});
-    if (t == "uint" || t == "uint32") return get(std::uint32_t{});
-    if (t == "float" || t == "float32") return get(float{});
-    return get(double{});
-  };
-  Builder b;
-  for (const Element& e : elements)
-  {
-    // Every item takes at least one byte (a list's count, a value).
-    check_declared_count(e.count, bytes.size() - pos, fmt::format("{}: element '{}'", name, e.name),
-                         "items", "bytes");
-    for (long i = 0; i < e.count; ++i)
-    {
-      std::array<double, 3> p{};
-      for (const auto& [pname, prop] : e.properties)
-      {
-        if (prop.type.rfind("list:", 0) == 0)
-        {
-          const std::string where = fmt::format("{}: {} {}", name, e.name, i + 1);
-          const int n = checked_int(read_value(prop.count_type), where);
-          check_declared_count(n, bytes.size() - pos, where, "list entries", "bytes");
-          std::vector<int> poly(static_cast<std::size_t>(std::max(n, 0)));
-          for (int& v : poly)
-            v = checked_int(read_value(prop.type.substr(5)), where);
-          if (e.name == "face" && (pname == "vertex_indices" || pname == "vertex_index"))
-            b.add_polygon(poly, where);
-          continue;
-        }
-        const double value = read_value(prop.type);
-        if (e.name == "vertex" && pname.size() == 1 && pname[0] >= 'x' && pname[0] <= 'z')
-          p[pname[0] - 'x'] = value;
-      }
-      if (e.name == "vertex")
-        b.vertices.push_back(p);
-    }
+    throw InputError(fmt::format("mesh file '{}': unknown PLY type '{}'", name_, t));
   }
+
+  const std::string& bytes_;
+  const std::string& name_;
+  bool ascii_;
+  std::size_t pos_;
+  std::istringstream text_;
+};
+
+/// Reads the items of one element: the x, y, z of a vertex, the vertex
+/// indices of a face; other properties are read and passed over.
+void read_ply_element(const PlyElement& e, PlyValues& values, Builder& b, const std::string& name)
+{
+  // Every item takes at least one byte (a list's count, a value).
+  check_declared_count(e.count, values.remaining(), fmt::format("{}: element '{}'", name, e.name), "items", "bytes");
+  for (long i = 0; i < e.count; ++i)
+  {
+    std::array<double, 3> p{};
+    for (const PlyProperty& prop : e.properties)
+    {
+      if (prop.type.rfind("list:", 0) == 0)
+      {
+        const std::string where = fmt::format("{}: {} {}", name, e.name, i + 1);
+        const int n = checked_int(values.next(prop.count_type), where);
+        check_declared_count(n, values.remaining(), where, "list entries", "bytes");
+        std::vector<int> poly(static_cast<std::size_t>(std::max(n, 0)));
+        for (int& v : poly)
+          v = checked_int(values.next(prop.type.substr(5)), where);
+        if (e.name == "face" && (prop.name == "vertex_indices" || prop.name == "vertex_index"))
+          b.add_polygon(poly, where);
+        continue;
+      }
+      const double value = values.next(prop.type);
+      if (e.name == "vertex" && prop.name.size() == 1 && prop.name[0] >= 'x' && prop.name[0] <= 'z')
+        p[prop.name[0] - 'x'] = value;
+    }
+    if (e.name == "vertex")
+      b.vertices.push_back(p);
+  }
+}
+
+SurfaceMesh read_ply(const std::string& bytes, const std::string& name)
+{
+  const PlyHeader header = read_ply_header(bytes, name);
+  PlyValues values(bytes, header, name);
+  Builder b;
+  for (const PlyElement& e : header.elements)
+    read_ply_element(e, values, b, name);
   return b.finish(name);
 }
 } // namespace
