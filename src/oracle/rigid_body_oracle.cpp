@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <fmt/format.h>
+#include <string_view>
 
 namespace rollcheck::oracle
 {
@@ -147,6 +148,23 @@ private:
   double inertial_mass_;
   Eigen::Matrix3d inertia_, inverse_;
 };
+
+/// InputError "rigid-body oracle: <what> must be <rule>, got <value> <unit>" unless `ok`.
+void require(bool ok, std::string_view what, std::string_view rule, double value, std::string_view unit)
+{
+  if (!ok)
+    throw InputError(fmt::format("rigid-body oracle: {} must be {}, got {} {}", what, rule, value, unit));
+}
+
+void require_positive(double value, std::string_view what, std::string_view unit)
+{
+  require(std::isfinite(value) && value > 0, what, "positive", value, unit);
+}
+
+void require_non_negative(double value, std::string_view what, std::string_view unit)
+{
+  require(std::isfinite(value) && value >= 0, what, "finite and >= 0", value, unit);
+}
 } // namespace
 
 const std::vector<Eigen::Vector3d>& reference_initial_spins()
@@ -158,30 +176,18 @@ const std::vector<Eigen::Vector3d>& reference_initial_spins()
 
 void validate(const RigidBodySettings& o)
 {
-  auto positive = [](double x) { return std::isfinite(x) && x > 0; };
-  auto non_negative = [](double x) { return std::isfinite(x) && x >= 0; };
-  if (!positive(o.time_step_s))
-    throw InputError(fmt::format("rigid-body oracle: time step must be positive, got {} s", o.time_step_s));
-  if (!positive(o.duration_s) || steps_per_run(o) < 1)
+  require_positive(o.time_step_s, "time step", "s");
+  if (!(std::isfinite(o.duration_s) && o.duration_s > 0) || steps_per_run(o) < 1)
     throw InputError(fmt::format("rigid-body oracle: duration {} s gives no step of {} s", o.duration_s,
                                  o.time_step_s));
   if (o.sample_every < 1)
     throw InputError(fmt::format("rigid-body oracle: sample interval must be at least 1 step, got {}",
                                  o.sample_every));
-  if (!non_negative(o.contact_threshold_m))
-    throw InputError(fmt::format("rigid-body oracle: contact threshold must be finite and >= 0, got {} m",
-                                 o.contact_threshold_m));
-  if (!non_negative(o.damping_n_m_s))
-    throw InputError(fmt::format("rigid-body oracle: damping must be finite and >= 0, got {} N m s",
-                                 o.damping_n_m_s));
-  if (!positive(o.mass_kg))
-    throw InputError(fmt::format("rigid-body oracle: mass must be positive, got {} kg", o.mass_kg));
-  if (!non_negative(o.gravity_m_s2))
-    throw InputError(fmt::format("rigid-body oracle: gravity must be finite and >= 0, got {} m/s^2",
-                                 o.gravity_m_s2));
-  if (!positive(o.max_angular_speed_rad_s))
-    throw InputError(fmt::format("rigid-body oracle: angular speed cap must be positive, got {} rad/s",
-                                 o.max_angular_speed_rad_s));
+  require_non_negative(o.contact_threshold_m, "contact threshold", "m");
+  require_non_negative(o.damping_n_m_s, "damping", "N m s");
+  require_positive(o.mass_kg, "mass", "kg");
+  require_non_negative(o.gravity_m_s2, "gravity", "m/s^2");
+  require_positive(o.max_angular_speed_rad_s, "angular speed cap", "rad/s");
   if (o.initial_spins.empty())
     throw InputError("rigid-body oracle: needs at least one run (initial spin)");
   for (const Eigen::Vector3d& w : o.initial_spins)

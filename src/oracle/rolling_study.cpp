@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <limits>
 #include <numbers>
+#include <string_view>
 
 namespace rollcheck::oracle
 {
@@ -16,15 +17,13 @@ namespace
 {
 void validate(const RollingStudyParameters& p)
 {
-  auto finite_non_negative = [](double x) { return std::isfinite(x) && x >= 0; };
-  if (!finite_non_negative(p.barrier_energy_excess))
-    throw InputError(fmt::format("rolling study: barrier energy excess must be finite and non-negative, got {}",
-                                 p.barrier_energy_excess));
-  if (!finite_non_negative(p.rolling_rate_rad_s))
-    throw InputError(fmt::format("rolling study: rolling rate (rad/s) must be finite and non-negative, got {}",
-                                 p.rolling_rate_rad_s));
-  if (!finite_non_negative(p.duration_s))
-    throw InputError(fmt::format("rolling study: duration (s) must be finite and non-negative, got {}", p.duration_s));
+  auto require_non_negative = [](double value, std::string_view what) {
+    if (!std::isfinite(value) || value < 0)
+      throw InputError(fmt::format("rolling study: {} must be finite and non-negative, got {}", what, value));
+  };
+  require_non_negative(p.barrier_energy_excess, "barrier energy excess");
+  require_non_negative(p.rolling_rate_rad_s, "rolling rate (rad/s)");
+  require_non_negative(p.duration_s, "duration (s)");
   if (p.loops < 1)
     throw InputError(fmt::format("rolling study: loops must be at least 1, got {}", p.loops));
   if (p.face_subdivisions < 1)
