@@ -148,34 +148,38 @@ void write_columns(hid_t group, const std::vector<const oracle::GenomeResult*>& 
       out.push_back(value(*r));
     return out;
   };
-  auto scored = [&](bool present, double v) { return present ? v : missing; };
-  write_doubles(group, "theta_deg", column([](const auto& r) { return r.genome.theta_deg; }));
-  write_doubles(group, "offset", column([](const auto& r) { return r.genome.offset; }));
-  write_doubles(group, "ratio", column([](const auto& r) { return r.genome.ratio; }));
-  write_integers(group, "n_circles", column([](const auto& r) { return static_cast<long long>(r.genome.n_circles); }));
-  write_integers(group, "valid", column([](const auto& r) { return static_cast<long long>(r.valid); }));
-  write_integers(group, "n_faces", column([](const auto& r) { return static_cast<long long>(r.n_faces); }));
-  write_doubles(group, "area_m2", column([&](const auto& r) { return scored(r.valid, r.area_m2); }));
-  write_doubles(group, "approximate_cds", column([&](const auto& r) { return scored(r.valid, r.approximate_cds); }));
-  write_doubles(group, "approximate_contact_cv",
-                column([&](const auto& r) { return scored(r.valid, r.approximate_contact_cv); }));
-  write_doubles(group, "approximate_max_contact_ratio",
-                column([&](const auto& r) { return scored(r.valid, r.approximate_max_contact_ratio); }));
-  write_integers(group, "approximate_rank", column([](const auto& r) { return static_cast<long long>(r.approximate_rank); }));
-  write_integers(group, "validated", column([](const auto& r) { return static_cast<long long>(r.validated); }));
-  write_doubles(group, "rigid_cds", column([&](const auto& r) { return scored(r.validated, r.rigid_cds); }));
-  write_doubles(group, "rigid_contact_cv", column([&](const auto& r) { return scored(r.validated, r.rigid_contact_cv); }));
-  write_doubles(group, "rigid_max_contact_ratio",
-                column([&](const auto& r) { return scored(r.validated, r.rigid_max_contact_ratio); }));
-  write_integers(group, "rigid_rank", column([](const auto& r) { return static_cast<long long>(r.rigid_rank); }));
+  using Row = oracle::GenomeResult;
+  // A score column: NaN where the score was not computed (`present` false).
+  auto scores = [&](const char* name, bool Row::*present, double Row::*score) {
+    write_doubles(group, name, column([&](const Row& r) { return r.*present ? r.*score : missing; }));
+  };
+  auto integers = [&](const char* name, auto Row::*member) {
+    write_integers(group, name, column([&](const Row& r) { return static_cast<long long>(r.*member); }));
+  };
+  write_doubles(group, "theta_deg", column([](const Row& r) { return r.genome.theta_deg; }));
+  write_doubles(group, "offset", column([](const Row& r) { return r.genome.offset; }));
+  write_doubles(group, "ratio", column([](const Row& r) { return r.genome.ratio; }));
+  write_integers(group, "n_circles", column([](const Row& r) { return static_cast<long long>(r.genome.n_circles); }));
+  integers("valid", &Row::valid);
+  integers("n_faces", &Row::n_faces);
+  scores("area_m2", &Row::valid, &Row::area_m2);
+  scores("approximate_cds", &Row::valid, &Row::approximate_cds);
+  scores("approximate_contact_cv", &Row::valid, &Row::approximate_contact_cv);
+  scores("approximate_max_contact_ratio", &Row::valid, &Row::approximate_max_contact_ratio);
+  integers("approximate_rank", &Row::approximate_rank);
+  integers("validated", &Row::validated);
+  scores("rigid_cds", &Row::validated, &Row::rigid_cds);
+  scores("rigid_contact_cv", &Row::validated, &Row::rigid_contact_cv);
+  scores("rigid_max_contact_ratio", &Row::validated, &Row::rigid_max_contact_ratio);
+  integers("rigid_rank", &Row::rigid_rank);
   for (const std::string& name : metric_names)
-    write_doubles(group, name, column([&](const auto& r) {
+    write_doubles(group, name, column([&](const Row& r) {
                     for (const auto& [key, value] : r.metrics)
                       if (key == name)
                         return value;
                     return missing;
                   }));
-  write_strings(group, "error", column([](const auto& r) { return r.error; }));
+  write_strings(group, "error", column([](const Row& r) { return r.error; }));
 }
 } // namespace
 
