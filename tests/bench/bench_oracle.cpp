@@ -53,15 +53,23 @@ void BM_oracle_rolling_body_oloid(benchmark::State& state)
 }
 BENCHMARK(BM_oracle_rolling_body_oloid)->Unit(benchmark::kMillisecond);
 
+/// One oracle's trajectory of the reference oloid and its CDS.
+template <typename Oracle>
+void oracle_with_cds(benchmark::State& state, double reference_s, Oracle run_oracle)
+{
+  const oracle::RollingBody body = oracle::make_rolling_body(reference_oloid(), paper);
+  timed(state, reference_s, [&] {
+    const oracle::Trajectory t = run_oracle(body);
+    benchmark::DoNotOptimize(oracle::contact_distribution(t, body.face_areas, 50));
+  });
+}
+
 /// Approximate oracle, 600 steps, and its CDS; the reference: 8-14 ms per body
 /// (oloid: 0.0297 s in reference_outputs.json, the README's upper figure 14 ms used).
 void BM_oracle_approximate_oloid(benchmark::State& state)
 {
-  const oracle::RollingBody body = oracle::make_rolling_body(reference_oloid(), paper);
-  timed(state, 0.014, [&] {
-    const oracle::Trajectory t = oracle::approximate_oracle(body, {}, paper);
-    benchmark::DoNotOptimize(oracle::contact_distribution(t, body.face_areas, 50));
-  });
+  oracle_with_cds(state, 0.014,
+                  [](const oracle::RollingBody& body) { return oracle::approximate_oracle(body, {}, paper); });
 }
 BENCHMARK(BM_oracle_approximate_oloid)->Unit(benchmark::kMillisecond);
 
@@ -69,11 +77,8 @@ BENCHMARK(BM_oracle_approximate_oloid)->Unit(benchmark::kMillisecond);
 /// reference: 1.42 s.
 void BM_oracle_rigid_body_oloid(benchmark::State& state)
 {
-  const oracle::RollingBody body = oracle::make_rolling_body(reference_oloid(), paper);
-  timed(state, 1.42, [&] {
-    const oracle::Trajectory t = oracle::rigid_body_oracle(body, {}, paper);
-    benchmark::DoNotOptimize(oracle::contact_distribution(t, body.face_areas, 50));
-  });
+  oracle_with_cds(state, 1.42,
+                  [](const oracle::RollingBody& body) { return oracle::rigid_body_oracle(body, {}, paper); });
 }
 BENCHMARK(BM_oracle_rigid_body_oloid)->Unit(benchmark::kMillisecond);
 

@@ -2,6 +2,7 @@
 // the HDF5 C API (independently of the writer); atomic replacement; and the
 // report drawn from a store filled with the reference code's own outputs.
 #include "core/error.h"
+#include "io/hdf5_test_reader.h"
 #include "io/results_store.h"
 #include <cstdlib>
 #include <filesystem>
@@ -27,125 +28,6 @@ fs::path fresh_folder(const std::string& name)
   fs::create_directories(dir);
   return dir;
 }
-
-/// An opened HDF5 store, read with the plain C API.
-class Reader
-{
-public:
-  explicit Reader(const fs::path& path) : file_(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT)) {}
-  ~Reader()
-  {
-    if (file_ >= 0)
-      H5Fclose(file_);
-  }
-  bool ok() const { return file_ >= 0; }
-  bool exists(const std::string& path) const { return H5Lexists(file_, path.c_str(), H5P_DEFAULT) > 0; }
-
-  H5T_class_t type_class(const std::string& path) const
-  {
-    const hid_t set = H5Dopen2(file_, path.c_str(), H5P_DEFAULT);
-    const hid_t type = H5Dget_type(set);
-    const H5T_class_t c = H5Tget_class(type);
-    H5Tclose(type);
-    H5Dclose(set);
-    return c;
-  }
-
-  std::vector<hsize_t> shape(const std::string& path) const
-  {
-    const hid_t set = H5Dopen2(file_, path.c_str(), H5P_DEFAULT);
-    const hid_t space = H5Dget_space(set);
-    std::vector<hsize_t> dims(static_cast<std::size_t>(std::max(0, H5Sget_simple_extent_ndims(space))));
-    H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-    H5Sclose(space);
-    H5Dclose(set);
-    return dims;
-  }
-
-  H5S_class_t space_class(const std::string& path) const
-  {
-    const hid_t set = H5Dopen2(file_, path.c_str(), H5P_DEFAULT);
-    const hid_t space = H5Dget_space(set);
-    const H5S_class_t c = H5Sget_simple_extent_type(space);
-    H5Sclose(space);
-    H5Dclose(set);
-    return c;
-  }
-
-  template <typename T>
-  std::vector<T> numbers(const std::string& path, hid_t memory_type) const
-  {
-    const hid_t set = H5Dopen2(file_, path.c_str(), H5P_DEFAULT);
-    const hid_t space = H5Dget_space(set);
-    std::vector<T> data(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
-    H5Dread(set, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
-    H5Sclose(space);
-    H5Dclose(set);
-    return data;
-  }
-
-  std::vector<std::string> strings(const std::string& path) const
-  {
-    const hid_t set = H5Dopen2(file_, path.c_str(), H5P_DEFAULT);
-    const hid_t space = H5Dget_space(set);
-    const hid_t type = H5Tcopy(H5T_C_S1);
-    H5Tset_size(type, H5T_VARIABLE);
-    H5Tset_cset(type, H5T_CSET_UTF8); // HDF5 converts no strings between character sets
-    std::vector<char*> data(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
-    H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
-    std::vector<std::string> out(data.begin(), data.end());
-    H5Dvlen_reclaim(type, space, H5P_DEFAULT, data.data());
-    H5Tclose(type);
-    H5Sclose(space);
-    H5Dclose(set);
-    return out;
-  }
-
-  std::string string_attribute(const std::string& object, const std::string& name) const
-  {
-    const hid_t attribute = H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
-    const hid_t type = H5Tcopy(H5T_C_S1);
-    H5Tset_size(type, H5T_VARIABLE);
-    H5Tset_cset(type, H5T_CSET_UTF8); // HDF5 converts no strings between character sets
-    char* text = nullptr;
-    H5Aread(attribute, type, &text);
-    std::string out = text ? text : "";
-    H5free_memory(text);
-    H5Tclose(type);
-    H5Aclose(attribute);
-    return out;
-  }
-
-  template <typename T>
-  T number_attribute(const std::string& object, const std::string& name, hid_t memory_type) const
-  {
-    const hid_t attribute = H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
-    T value{};
-    H5Aread(attribute, memory_type, &value);
-    H5Aclose(attribute);
-    return value;
-  }
-
-  /// Member names of a group in the order they were created.
-  std::vector<std::string> members_in_creation_order(const std::string& group) const
-  {
-    const hid_t g = H5Gopen2(file_, group.c_str(), H5P_DEFAULT);
-    H5G_info_t info;
-    H5Gget_info(g, &info);
-    std::vector<std::string> names;
-    for (hsize_t i = 0; i < info.nlinks; ++i)
-    {
-      char name[256];
-      H5Lget_name_by_idx(g, ".", H5_INDEX_CRT_ORDER, H5_ITER_INC, i, name, sizeof name, H5P_DEFAULT);
-      names.emplace_back(name);
-    }
-    H5Gclose(g);
-    return names;
-  }
-
-private:
-  hid_t file_;
-};
 
 nlohmann::json sample_record()
 {
@@ -179,7 +61,7 @@ TEST(ResultsStore, MapsSummaryJsonToDatasetsAndGroupsAsDocumented)
 {
   const fs::path store = fresh_folder("mapping") / "results.h5";
   io::write_results_store(store, {{"oloid", sample_record()}}, {{"n_cases", 1}});
-  const Reader r(store);
+  const Hdf5TestReader r(store);
   ASSERT_TRUE(r.ok());
   const std::string s = "/cases/oloid/summary/";
   // Scalars: typed scalar datasets.
@@ -216,7 +98,7 @@ TEST(ResultsStore, NumbersCarryUnitsAndInfinitiesAreFloats)
   record["case_text"] = "[scene]\nkind = \"mesh\"\n";
   const fs::path store = fresh_folder("units") / "results.h5";
   io::write_results_store(store, {{"oloid", record}}, {{"n_cases", 1}});
-  const Reader r(store);
+  const Hdf5TestReader r(store);
   const std::string s = "/cases/oloid/summary/";
   // Units from the key's suffix, "1" for a pure number, on every numeric dataset.
   EXPECT_EQ(r.string_attribute(s + "profile/p_pa", "units"), "Pa");
@@ -235,7 +117,7 @@ TEST(ResultsStore, RecordFieldsAndParametersAreTypedAttributes)
 {
   const fs::path store = fresh_folder("attributes") / "results.h5";
   io::write_results_store(store, {{"oloid", sample_record()}}, {{"n_cases", 1}});
-  const Reader r(store);
+  const Hdf5TestReader r(store);
   EXPECT_EQ(r.string_attribute("/", "layout"), "rollcheck-results-1");
   EXPECT_EQ(r.number_attribute<std::int64_t>("/", "n_cases", H5T_NATIVE_INT64), 1);
   EXPECT_EQ(r.string_attribute("/cases/oloid", "status"), "ok");
@@ -252,7 +134,8 @@ TEST(ResultsStore, KeepsTheBatchOrderOfCases)
   const fs::path store = fresh_folder("order") / "results.h5";
   io::write_results_store(store, {{"zeta", sample_record()}, {"alpha", sample_record()}, {"mid", sample_record()}},
                           nlohmann::json::object());
-  EXPECT_EQ(Reader(store).members_in_creation_order("/cases"), (std::vector<std::string>{"zeta", "alpha", "mid"}));
+  EXPECT_EQ(Hdf5TestReader(store).members_in_creation_order("/cases"),
+            (std::vector<std::string>{"zeta", "alpha", "mid"}));
 }
 
 TEST(ResultsStore, AFailedWriteLeavesThePreviousStoreAndNoTemporaryFile)

@@ -1,4 +1,5 @@
 // The search's JSON summary and HDF5 file: read back with the HDF5 C API.
+#include "io/hdf5_test_reader.h"
 #include "io/search_store.h"
 #include "core/error.h"
 #include <filesystem>
@@ -8,18 +9,6 @@
 namespace
 {
 using namespace rollcheck;
-
-std::vector<double> read_doubles(hid_t file, const char* name)
-{
-  const hid_t set = H5Dopen2(file, name, H5P_DEFAULT);
-  EXPECT_GE(set, 0) << name;
-  const hid_t space = H5Dget_space(set);
-  std::vector<double> values(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
-  H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
-  H5Sclose(space);
-  H5Dclose(set);
-  return values;
-}
 
 TEST(SearchStore, HdfFileAndJsonCarryTheSameNumbers)
 {
@@ -35,12 +24,12 @@ TEST(SearchStore, HdfFileAndJsonCarryTheSameNumbers)
   io::write_search_hdf5(result, path);
   const nlohmann::json summary = io::search_summary(result);
 
-  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  ASSERT_GE(file, 0);
-  const auto theta = read_doubles(file, "/genomes/theta_deg");
-  const auto cds = read_doubles(file, "/genomes/approximate_cds");
-  const auto rigid = read_doubles(file, "/genomes/rigid_cds");
-  const auto samples = read_doubles(file, "/genomes/samples");
+  const Hdf5TestReader file(path);
+  ASSERT_TRUE(file.ok());
+  const auto theta = file.doubles("/genomes/theta_deg");
+  const auto cds = file.doubles("/genomes/approximate_cds");
+  const auto rigid = file.doubles("/genomes/rigid_cds");
+  const auto samples = file.doubles("/genomes/samples");
   ASSERT_EQ(theta.size(), 45u);
   ASSERT_EQ(summary["genomes"].size(), 45u);
   long validated = 0;
@@ -59,8 +48,7 @@ TEST(SearchStore, HdfFileAndJsonCarryTheSameNumbers)
       EXPECT_TRUE(std::isnan(rigid[i]) && std::isnan(samples[i])); // not revalidated
   }
   EXPECT_EQ(validated, 2);
-  EXPECT_EQ(read_doubles(file, "/anchor/rigid_cds").at(0), summary["anchor"]["rigid"]["cds"].get<double>());
-  H5Fclose(file);
+  EXPECT_EQ(file.doubles("/anchor/rigid_cds").at(0), summary["anchor"]["rigid"]["cds"].get<double>());
 }
 
 TEST(SearchStore, JsonNumbersAreFiniteOrTheStringInf)

@@ -46,27 +46,29 @@ void expect_converges(const char* name, const geometry::BodySpec& spec)
   // Towards the value of the exact density, which needs no mesh.
   EXPECT_NEAR(levels[2].uniformity, levels[2].continuum_uniformity, 0.02 * levels[2].continuum_uniformity) << name;
 }
+
+/// The same for a named body at its defaults.
+void expect_converges(const char* body)
+{
+  geometry::BodySpec spec;
+  spec.body = body;
+  expect_converges(body, spec);
+}
 } // namespace
 
 TEST(UniformityConvergence, TrueOloid)
 {
-  geometry::BodySpec spec;
-  spec.body = "oloid";
-  expect_converges("oloid", spec);
+  expect_converges("oloid");
 }
 
 TEST(UniformityConvergence, Cylinder)
 {
-  geometry::BodySpec spec;
-  spec.body = "cylinder";
-  expect_converges("cylinder", spec);
+  expect_converges("cylinder");
 }
 
 TEST(UniformityConvergence, PaperOloidRoller)
 {
-  geometry::BodySpec spec;
-  spec.body = "paper-oloid";
-  expect_converges("paper-oloid", spec);
+  expect_converges("paper-oloid");
 }
 
 TEST(UniformityConvergence, PreprintCandidateTwo)
