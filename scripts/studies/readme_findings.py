@@ -57,7 +57,7 @@ def findings(audit):
     quick = " (`--quick`)" if audit.get("quick") else ""
     rows.append("")
     rows.append(f"Regenerate with `bash scripts/studies/audit.sh` (`rollcheck audit --json results/audit/audit.json`){quick}; "
-                "docs/audit.md has every mode, rule and command.")
+                "docs/results/audit.md has every mode, rule and command.")
     return "\n".join(rows)
 
 
