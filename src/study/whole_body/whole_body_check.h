@@ -80,7 +80,8 @@ enum class EndModelDepth
 /// ruling, at a quarter of the fine mesh's DOFs. The contact's local
 /// compliance is then off by its coarse strip, nearly uniformly along the
 /// ruling, which the load's distribution hardly feels (docs/whole-body.md
-/// has the measured difference from the fine body's line load).
+/// has the measured difference from the fine body's line load). Each rule
+/// is one strategy, chosen once per check (study/whole_body/load_rules.h).
 enum class LoadRule
 {
   locus,
