@@ -117,21 +117,19 @@ const io::BoundSchema<study::whole_body::WholeBodyCheckSettings>& whole_body_sch
 
 nlohmann::json run_whole_body(const io::Parameters& p)
 {
-  const study::whole_body::WholeBodyCheckSettings settings = whole_body_schema().bind(p);
+  namespace wing = study::whole_body;
+  const wing::WholeBodyCheckSettings settings = whole_body_schema().bind(p);
+  // Tables go to the log (stderr), so that `--json -` stays JSON alone.
   if (settings.scan_step_deg > 0)
   {
-    const auto scan = study::whole_body::scan_whole_body_orientations(settings, settings.scan_step_deg);
+    const auto scan = wing::scan_whole_body_orientations(settings, settings.scan_step_deg);
     if (fem::world_rank() == 0)
-      spdlog::info("\norientations of {}:\n\n{}", geometry::body_label(settings.body), study::whole_body::orientation_table(scan));
-    nlohmann::json rows = nlohmann::json::array();
-    for (const auto& o : scan)
-      rows.push_back(to_json(o));
-    return {{"body", geometry::body_label(settings.body)}, {"normal_load_n", settings.normal_load_n}, {"orientations", rows}};
+      spdlog::info("{}", wing::scan_report(settings, scan));
+    return wing::scan_json(settings, scan);
   }
-  const study::whole_body::WholeBodyCheck check = study::whole_body::run_whole_body_check(MPI_COMM_WORLD, settings);
-  // Tables go to the log (stderr), so that `--json -` stays JSON alone.
+  const wing::WholeBodyCheck check = wing::run_whole_body_check(MPI_COMM_WORLD, settings);
   if (fem::world_rank() == 0)
-    spdlog::info("\nwhole-body check, {}:\n\n{}\n{}\n", check.body, study::whole_body::markdown_table(check), check.verdict);
+    spdlog::info("{}", wing::report(check));
   return to_json(check);
 }
 } // namespace

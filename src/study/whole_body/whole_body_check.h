@@ -80,7 +80,8 @@ enum class EndModelDepth
 /// ruling, at a quarter of the fine mesh's DOFs. The contact's local
 /// compliance is then off by its coarse strip, nearly uniformly along the
 /// ruling, which the load's distribution hardly feels (docs/whole-body.md
-/// has the measured difference from the fine body's line load).
+/// has the measured difference from the fine body's line load). Each rule
+/// is one strategy, chosen once per check (study/whole_body/load_rules.h).
 enum class LoadRule
 {
   locus,
@@ -189,7 +190,11 @@ std::vector<WholeBodyOrientation> scan_whole_body_orientations(const WholeBodyCh
 /// One row per direction: c, the loaded part, R, interior angle, q and b at
 /// each end, the rigid plane's wedge exponent at a loaded obtuse end.
 std::string orientation_table(std::span<const WholeBodyOrientation> orientations);
+/// The scan as `whole-body --scan-directions` logs it: the body, then orientation_table.
+std::string scan_report(const WholeBodyCheckSettings& settings, std::span<const WholeBodyOrientation> scan);
 nlohmann::json to_json(const WholeBodyOrientation& orientation);
+/// {body, normal_load_n, orientations: [to_json(orientation), ...]}
+nlohmann::json scan_json(const WholeBodyCheckSettings& settings, std::span<const WholeBodyOrientation> scan);
 
 struct StationComparison
 {
@@ -322,7 +327,11 @@ double largest_peak_difference(std::span<const StationComparison> stations);
 /// settings or a body without a whole-body mesh; ComputationError from the FEM.
 WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings& settings);
 
+nlohmann::json to_json(const StationComparison& station);
+nlohmann::json to_json(const EndComparison& end);
 nlohmann::json to_json(const WholeBodyCheck& check);
 /// The comparison as a Markdown table (stations, then ends).
 std::string markdown_table(const WholeBodyCheck& check);
+/// The check as `whole-body` logs it: the body, markdown_table, the verdict.
+std::string report(const WholeBodyCheck& check);
 } // namespace rollcheck::study::whole_body

@@ -5,11 +5,13 @@
 // WholeBodyCheckQuick suite (refusals, arithmetic) runs in the default suite.
 #include "core/error.h"
 #include "fem/petsc_session.h"
+#include "study/whole_body/load_rules.h"
 #include "study/whole_body/whole_body_check.h"
 #include <cmath>
 #include <gtest/gtest.h>
 #include <mpi.h>
 #include <string>
+#include <string_view>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -234,6 +236,49 @@ TEST(WholeBodyCheckQuick, ScanOfTheOloidLoadsTheNearerEndAndReachesItsVertex)
   }
   EXPECT_GT(flattest, 179.9);
   EXPECT_NEAR(c_from_flattest_end, 0.25, 1e-3);
+}
+
+// The load rule is one strategy, chosen once by LoadRule: its name is the
+// option's spelling (the JSON's load_rule), and the locus's q is the
+// no-tension rule's: F / L along the cylinder, balanced at c = 1/2.
+TEST(WholeBodyCheckQuick, EachLoadRuleIsOneStrategyNamedAsItsOption)
+{
+  using study::whole_body::LoadRule;
+  for (const auto& [rule, name, softens] :
+       {std::tuple{LoadRule::locus, std::string_view("locus"), false},
+        std::tuple{LoadRule::sections, std::string_view("sections"), true},
+        std::tuple{LoadRule::coarse_body, std::string_view("coarse-body"), true}})
+  {
+    const study::whole_body::LoadRuleStrategy& strategy = study::whole_body::load_rule_strategy(rule);
+    EXPECT_EQ(strategy.name, name);
+    EXPECT_EQ(strategy.softens_ends, softens) << name;
+    EXPECT_EQ(study::whole_body::softens_ends(rule), softens) << name;
+  }
+  fem::ensure_petsc();
+  const study::whole_body::WholeBodyCheckSettings s; // the 10 mm cylinder, 20 mm long, F = 100 N
+  study::whole_body::WholeBodyCheck check;
+  check.orientation = study::whole_body::whole_body_orientation(s, 0);
+  const study::whole_body::CheckContext context(MPI_COMM_WORLD, s, check.orientation);
+  const study::whole_body::LineLoad q = study::whole_body::load_rule_strategy(LoadRule::locus).solve(context, check);
+  for (const double f : {0.0, 0.25, 0.5, 1.0})
+    EXPECT_NEAR(q(f), s.normal_load_n / s.body.height_m, 1e-6 * s.normal_load_n / s.body.height_m) << "f = " << f;
+  EXPECT_FALSE(check.section_rule.has_value());
+  EXPECT_FALSE(check.coarse_body.has_value());
+}
+
+TEST(WholeBodyCheckQuick, ScanReportAndJsonNameTheBodyAndEveryOrientation)
+{
+  const study::whole_body::WholeBodyCheckSettings s; // the cylinder
+  const auto scan = study::whole_body::scan_whole_body_orientations(s, 90);
+  ASSERT_EQ(scan.size(), 4u);
+  const nlohmann::json j = study::whole_body::scan_json(s, scan);
+  EXPECT_EQ(j.at("body"), geometry::body_label(s.body));
+  EXPECT_EQ(j.at("normal_load_n"), s.normal_load_n);
+  ASSERT_EQ(j.at("orientations").size(), 4u);
+  EXPECT_EQ(j.at("orientations")[1].at("direction_deg"), 90.0);
+  const std::string report = study::whole_body::scan_report(s, scan);
+  EXPECT_NE(report.find("orientations of " + geometry::body_label(s.body)), std::string::npos) << report;
+  EXPECT_NE(report.find(study::whole_body::orientation_table(scan)), std::string::npos) << report;
 }
 
 TEST(WholeBodyCheckQuick, RefusesABodyWithoutAWholeBodyMesh)
