@@ -47,14 +47,14 @@ std::vector<Claim> audit_claims(const std::filesystem::path& reference_meshes, b
 {
   // The table's rows, in order; each command is numbered where it first appears.
   const std::vector<std::string> rows = {
-      "oloid_cds",          "cds_ratio",           "search_optimum",         "continuous_optimum",
-      "convergence",        "face_scaling",        "threshold_independence", "sds_ratio",
-      "damage_ratios",      "fatigue",             "oloid_area",             "fem_hertz",
-      "approximate_search", "revalidation",        "improvement_direction",  "sensitivity",
-      "discrimination",     "hertz_table",         "pressure_uniformity",    "discrete_gaussian",
-      "geometry_only_sds",  "mean_curvature_spread", "tds_lowest",           "fatigue_values",
-      "rolling_convergence", "surface_coverage",   "speed",                  "all_metrics",
-      "sds_point_hertz",    "fixed_loci"};
+      "oloid_cds",              "cds_ratio",              "search_optimum",         "continuous_optimum",
+      "convergence",            "face_scaling",           "threshold_independence", "sds_ratio",
+      "damage_ratios",          "fatigue",                "oloid_area",             "fem_hertz",
+      "approximate_search",     "revalidation",           "improvement_direction",  "sensitivity",
+      "discrimination",         "hertz_table",            "pressure_uniformity",    "discrete_gaussian",
+      "geometry_only_sds",      "mean_curvature_spread",  "tds_lowest",             "fatigue_values",
+      "rolling_convergence",    "surface_coverage",       "speed",                  "all_metrics",
+      "sds_point_hertz",        "fixed_loci"};
   const ClaimCommands commands = claim_commands(reference_meshes, quick);
   std::map<std::string, Claim> by_id;
   for (const auto& group : {claims::oloid_score_claims, claims::ratio_claims, claims::body_claims,
