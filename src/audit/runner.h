@@ -1,8 +1,8 @@
 #pragma once
-// Runs the audit: every command of the claims (audit_claims.h) once, in
+// Runs the audit: every command of the claims (claims.h) once, in
 // parallel, as child processes of the `rollcheck` executable (core's process
 // runner), then reads each claim's numbers from their JSON outputs and decides
-// its cells and verdict (the table of audit_table.h).
+// its cells and verdict (the table of table.h).
 #include "audit/claims.h"
 #include "audit/table.h"
 #include <filesystem>

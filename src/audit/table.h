@@ -44,6 +44,7 @@ struct AuditCell
   bool holds = false;                ///< the verdict rule applied to this cell
   std::string untestable = {};       ///< why it cannot be tested; empty: it can
 };
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(AuditCell, applicable, built, value, commands, holds, untestable)
 
 struct AuditClaim
 {
@@ -80,4 +81,6 @@ Verdict judge(const AuditClaim& claim);
 
 std::string to_markdown(const AuditTable& table);
 nlohmann::json to_json(const AuditTable& table);
+void to_json(nlohmann::json& j, const AuditClaim& c);
+void to_json(nlohmann::json& j, const AuditCommand& c);
 } // namespace rollcheck::audit

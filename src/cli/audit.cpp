@@ -1,15 +1,14 @@
 // `rollcheck audit`: recomputes every quantitative claim of the preprint in
 // each mode that applies (paper-compatible, matched mesh resolution, true
-// oloid, corrected physics, real rolling) and prints the claim table. The
-// claims are data in the study layer (audit/claims.h), each number the
-// output of a `rollcheck` command run as a child process of this executable
-// exactly as the table lists it (audit/runner.h).
+// oloid, corrected physics, real rolling, contact mechanics) and prints the
+// claim table. The claims are data in the audit layer (audit/claims.h), each
+// number the output of a `rollcheck` command run as a child process of this
+// executable exactly as the table lists it (audit/runner.h).
 #include "cli/cli.h"
 #include "core/atomic_file.h"
 #include "core/child_process.h"
 #include "core/data_folder.h"
 #include "core/error.h"
-#include "rollcheck_version.h"
 #include "audit/runner.h"
 #include <filesystem>
 #include <fmt/format.h>

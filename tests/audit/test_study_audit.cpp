@@ -1,4 +1,4 @@
-// The audit's verdicts (audit/claims.h, audit_runner.h) on canned
+// The audit's verdicts (audit/rules.h, audit/runner.h) on canned
 // command outputs whose answers are known by hand: the pointer reading, the
 // cell rules (one that holds, one that fails), the claim verdicts, and a
 // missing key, which must name the key and the command.
