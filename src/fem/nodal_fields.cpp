@@ -1,10 +1,9 @@
 #include "fem/nodal_fields.h"
 #include "fem/all_gather.h"
+#include "fem/lumped_projection.h"
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <dolfinx/fem/assembler.h>
-#include <dolfinx/fem/utils.h>
 #include <stdexcept>
 
 namespace rollcheck::fem
@@ -14,16 +13,6 @@ namespace
 using T = double;
 namespace dfem = dolfinx::fem;
 
-/// Assembled and ghost-accumulated load vector of a linear form.
-dolfinx::la::Vector<T> assemble_load(const dfem::Form<T>& form)
-{
-  const auto& V = *form.function_spaces()[0];
-  dolfinx::la::Vector<T> b(V.dofmap()->index_map, V.dofmap()->index_map_bs());
-  dfem::assemble_vector<T>(b.mutable_array(), form);
-  b.scatter_rev(std::plus<T>());
-  return b;
-}
-
 void require_same_layout(const dfem::FunctionSpace& a, const dfem::FunctionSpace& b)
 {
   const auto& la = a.dofmap()->list().array();
@@ -31,35 +20,18 @@ void require_same_layout(const dfem::FunctionSpace& a, const dfem::FunctionSpace
   if (!std::equal(la.begin(), la.end(), lb.begin(), lb.end()))
     throw std::logic_error("nodal recovery: P1 spaces with different node numbering");
 }
-
-/// P1 function space of `element` ("v_0" of its form) on the problem's mesh.
-std::shared_ptr<dfem::FunctionSpace> p1_space(const PenaltyContact& problem, ContactForms::SpaceFactory element)
-{
-  auto mesh = std::const_pointer_cast<dolfinx::mesh::Mesh>(problem.mesh());
-  return std::make_shared<dfem::FunctionSpace>(dfem::create_functionspace(element, "v_0", mesh));
-}
-
-/// The assembled load of `form` (one of the recovery forms) on `space`.
-dolfinx::la::Vector<T> recovery_load(const PenaltyContact& problem, ufcx_form* form,
-                                     std::shared_ptr<const dfem::FunctionSpace> space)
-{
-  auto mesh = std::const_pointer_cast<dolfinx::mesh::Mesh>(problem.mesh());
-  return assemble_load(dfem::create_form<T>(*form, {space}, problem.coefficients(), problem.constants(),
-                                            problem.subdomains(), mesh));
-}
 } // namespace
 
 ContactPressure recover_contact_pressure(const PenaltyContact& problem)
 {
-  const ContactForms& forms = problem.forms();
-  const auto Q = p1_space(problem, forms.scalar_p1_space);
-  const auto contact_mass = recovery_load(problem, forms.contact_mass, Q);
-  const auto pressure_load = recovery_load(problem, forms.pressure_load, Q);
+  const FormBindings bound = problem.form_bindings();
+  const auto Q = p1_space(bound, bound.forms.scalar_p1_space);
   ContactPressure c;
+  c.contact_weight = contact_surface_weight(bound, Q);
+  const auto pressure_load = recovery_load(bound, bound.forms.pressure_load, Q);
   c.pressure = std::make_shared<dfem::Function<T>>(Q);
   c.pressure->name = "contact_pressure";
   const std::int32_t n = Q->dofmap()->index_map->size_local();
-  c.contact_weight.assign(contact_mass.array().begin(), contact_mass.array().begin() + n);
   std::span<T> p = c.pressure->x()->mutable_array();
   for (std::int32_t i = 0; i < n; ++i)
     p[i] = c.contact_weight[i] > 0 ? pressure_load.array()[i] / c.contact_weight[i] : 0.0;
@@ -69,16 +41,16 @@ ContactPressure recover_contact_pressure(const PenaltyContact& problem)
 
 NodalFields recover_nodal_fields(const PenaltyContact& problem)
 {
-  const ContactForms& forms = problem.forms();
+  const FormBindings bound = problem.form_bindings();
   NodalFields f;
   static_cast<ContactPressure&>(f) = recover_contact_pressure(problem);
   const auto Q = f.pressure->function_space();
-  const auto S = p1_space(problem, forms.tensor_p1_space);
-  const auto V1 = p1_space(problem, forms.vector_p1_space);
+  const auto S = p1_space(bound, bound.forms.tensor_p1_space);
+  const auto V1 = p1_space(bound, bound.forms.vector_p1_space);
   require_same_layout(*Q, *S);
   require_same_layout(*Q, *V1);
-  const auto volume_mass = recovery_load(problem, forms.volume_mass, Q);
-  const auto stress_load = recovery_load(problem, forms.stress_load, S);
+  const auto volume_mass = recovery_load(bound, bound.forms.volume_mass, Q);
+  const auto stress_load = recovery_load(bound, bound.forms.stress_load, S);
 
   f.displacement = std::make_shared<dfem::Function<T>>(V1);
   f.displacement->name = "displacement";
@@ -108,6 +80,7 @@ NodalFields recover_nodal_fields(const PenaltyContact& problem)
     field->x()->scatter_fwd();
   return f;
 }
+
 std::vector<SurfacePressureNode> gather_surface_pressure(MPI_Comm comm, const ContactPressure& fields)
 {
   const std::vector<double> xq = fields.pressure->function_space()->tabulate_dof_coordinates(false);

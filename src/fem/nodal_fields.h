@@ -5,7 +5,8 @@
 //   stress            sigma_i = int sigma phi_i dV / int phi_i dV
 // with the axisymmetric weight 2 pi r in both integrals. The pressure is thus
 // the nodal contact force over the node's tributary area, which smooths the
-// penalty's quadrature-point pressure and conserves the total force.
+// penalty's quadrature-point pressure and conserves the total force (the
+// loads and the contact surface's weight: fem/lumped_projection.h).
 // von Mises and the maximum shear (Tresca, (sigma_1 - sigma_3) / 2) are
 // evaluated from the recovered nodal stress. A scene that reads only the
 // contact face takes the pressure alone (two surface assemblies, not the

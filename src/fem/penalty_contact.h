@@ -13,11 +13,14 @@
 // is checked: a diverged solve raises ComputationError, never a result.
 //
 // Linear solver: KSP with options prefix "hertz_". Defaults, overridable by
-// PETSC_OPTIONS or HertzSettings::petsc_options: 2D MUMPS LU; 3D GMRES (rtol
-// 1e-10) with GAMG on an aij matrix with the rigid-body near-nullspace, or,
-// once node pairs join two bodies, with hypre BoomerAMG (set_node_pairs).
+// PETSC_OPTIONS or HertzSettings::petsc_options (fem/solver_defaults.h): 2D
+// MUMPS LU; 3D GMRES (rtol 1e-10) with GAMG on an aij matrix with the
+// rigid-body near-nullspace, or, once node pairs join two bodies, with hypre
+// BoomerAMG (set_node_pairs).
 #include "fem/contact_forms.h"
+#include "fem/lumped_projection.h"
 #include "fem/mesh/scene_mesh.h"
+#include "fem/node_pairs.h"
 #include <dolfinx/fem/Constant.h>
 #include <dolfinx/fem/DirichletBC.h>
 #include <dolfinx/fem/Form.h>
@@ -45,64 +48,6 @@ struct NewtonReport
   double solve_s = 0;
 };
 
-/// Frictionless contact between two elastic bodies meshed together, the
-/// mesh carrying the interface flattened at height 0 and the bodies' profile
-/// in the initial gap. A pair reads the pressure at one node of the upper
-/// body's contact face from a gap that is a weighted sum over nodes of both
-/// sides: g = g0 + sum_k a_k u_z(upper_k) - sum_j w_j u_z(lower_j), the a_k
-/// and the w_j each summing to 1; p = kappa <-g>_+, energy kappa <-g>_+^2 A / 2,
-/// so the force p A acts down on the upper nodes (shared by a_k) and up on
-/// the lower ones (by w_j).
-/// - Node to node, where the two faces are conforming: the node and its twin,
-///   weights 1 (P. Wriggers, Computational Contact Mechanics, 2nd ed., 2006,
-///   sec. 4.1: exact for matching meshes and small slip).
-/// - Mortar, wherever the faces do not match (a fillet lifted off the
-///   interface) and beside it: the gap is the pointwise gap over the upper
-///   face, projected onto the interface, weighed by the node's dual shape
-///   function psi_i = 4 N_i - 1 on each linear triangle (int psi_i N_k dA =
-///   delta_ik int N_i dA), g_i = int psi_i g dA / A_i, so a_k = delta_ik,
-///   w_j = int psi_i phi_j dA / A_i (phi_j the lower face's shape
-///   functions), g0 = int psi_i g0(x) dA / A_i and A = A_i = int N_i dA
-///   (B. I. Wohlmuth, SIAM J. Numer. Anal. 38, 2000, 989: the dual space;
-///   A. Popp, M. Gitterle, M. W. Gee, W. A. Wall, Int. J. Numer. Meth.
-///   Engng 83, 2010, 1428: dual mortar contact in 3D; B. Yang, T. A.
-///   Laursen, X. Meng, Int. J. Numer. Meth. Engng 62, 2005, 1183: the
-///   weighted gap under a penalty; M. A. Puso, T. A. Laursen, Comput.
-///   Methods Appl. Mech. Engrg 193, 2004, 601: the segments in 3D). A
-///   uniform traction then reaches both faces' nodes as its consistent
-///   loads, whatever the meshes (the contact patch test; test_mortar_pairs),
-///   and where the faces match the pair is node to node. The standard weights N_i (a_k = int N_i N_k dA / A_i)
-///   pass the patch test too but couple each node's gap to its neighbours'
-///   even where the faces match: on the preprint's 60 deg end on steel they
-///   converged to the same ratio (3.4628 against the dual's 3.4716) with
-///   the far side's nodes scattering by 4.0-4.5 % instead of 2.5-2.8 % and
-///   up to 1.5 times the Newton and Krylov iterations (docs/rims.md).
-///   The node paired with the point of the lower facet below it (node to
-///   segment, Wriggers sec. 4.2), which this replaces on the rim's fillet,
-///   fails the patch test: there its pressures scattered by +-10 % from
-///   node to node. So does a node-to-node pair beside a mortar pair: each
-///   lumps the other's share of the facets they share (its test: a node's
-///   load 21 % off its consistent load).
-/// Indices are global dof blocks, so a pair may join nodes of different
-/// processes; a pair lives on the process that owns its node.
-struct WeightedBlock
-{
-  std::int64_t block = -1; ///< global dof block
-  double weight = 0;
-};
-
-struct NodePair
-{
-  /// Global dof block of the upper node: the pair's only upper block, with
-  /// a_k = delta_ik (node to node and the dual mortar alike).
-  std::int64_t node = -1;
-  std::vector<WeightedBlock> lower; ///< w_j (node to node: the twin, 1)
-  std::array<double, 3> x{0.0, 0.0, 0.0}; ///< the node's position
-  double area_m2 = 0;            ///< A (length in 2D)
-  double initial_gap_m = 0;      ///< g0
-  double stiffness_pa_per_m = 0; ///< kappa
-};
-
 /// A pair's place and state, as gathered from every process.
 struct PairPressure
 {
@@ -112,24 +57,10 @@ struct PairPressure
 
 class PenaltyContact;
 
-/// Interface nodes grouped by place: `nodes` holds (x, y, global index,
-/// contact area) per node; each group is the nodes within `tol` of one
-/// place (a twin pair, or a lone node).
-std::vector<std::vector<std::pair<std::int64_t, double>>> interface_twins(std::span<const double> nodes, double tol);
-
-/// The upper body's contact nodes owned by this process (those with contact
-/// area, on its contact facets), paired with the lower body: in
-/// `mortar_zone(x)` (none without it; 3D only) by the mortar's weighted gap
-/// against the lower body's interface facets beneath their contact facets
-/// (each facet's projection cut by them exactly, Sutherland-Hodgman, the
-/// pieces integrated by Dunavant's 6-point rule, exact for the shape
-/// functions' products), elsewhere at the interface (height within `tol` of
-/// 0) node to node with their twins at the same place (coordinates equal to
-/// `tol`). g0 is `initial_gap` at the node (node to node) or its mean
-/// (mortar); the stiffness is left for the caller. Twins and facets are
-/// found across processes. Collective; ComputationError where an interface
-/// node has no twin or a contact facet in the zone is not wholly over the
-/// lower body's interface.
+/// The node pairs of fem/node_pairs.h (interface_node_pairs) of the
+/// problem: its displacement space's nodes, their contact area (the lumped
+/// contact-surface weight, fem/lumped_projection.h) and the scene's contact
+/// facets. Collective.
 std::vector<NodePair> interface_node_pairs(const PenaltyContact& problem, double tol,
                                            const std::function<double(const double* x)>& initial_gap,
                                            const std::function<bool(const double* x)>& mortar_zone = {});
@@ -176,7 +107,7 @@ public:
   /// called): a surface the mesh carries flattened onto z = 0.
   void set_initial_gap(const std::function<double(const double* x)>& gap);
 
-  /// Contact between two bodies by node pairs, besides (or instead of: set
+  /// Contact between two bodies by node pairs (fem/node_pair.h), besides (or instead of: set
   /// the penalty scale to 0) the rigid plane's; each process passes the
   /// pairs whose upper node it owns. Collective. The lower blocks another
   /// process owns become extra ghosts of the pairs' index map (their
@@ -219,13 +150,14 @@ public:
   {
     return _subdomains;
   }
+  /// The forms and what they are bound to (mesh, coefficients, constants,
+  /// subdomains), for forms assembled beside the problem's own.
+  FormBindings form_bindings() const { return {_forms, _scene.mesh, _coefficients, _constants, _subdomains}; }
 
 private:
   void assemble_residual(dolfinx::la::Vector<T>& b) const;
   /// Adds the pairs' forces (the residual's part) to b, on _pair_map.
   void add_pair_forces(std::span<T> b) const;
-  /// 3D with node pairs: GMRES + hypre BoomerAMG unless -hertz_pc_type is given.
-  void use_pair_solver_defaults();
   void assemble_jacobian();
   double energy() const;
 

@@ -33,26 +33,17 @@ void flag(HertzResult& result, const std::string& name, const std::string& warni
   if (rank == 0 && warned.insert(name).second)
     spdlog::warn("{}", warning);
 }
-} // namespace
-
-HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
+/// The result's setup, Hertz reference and mesh grading, and the flags the
+/// setup alone raises.
+HertzResult start_result(MPI_Comm comm, const HertzSettings& setup, int rank)
 {
-  const auto start = Clock::now();
-  validate(setup);
-  ensure_petsc();
-  int rank = 0;
   HertzResult result;
-  MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &result.ranks);
   result.setup = setup;
   result.hertz = hertz_reference(setup);
   result.grading = mesh_grading(setup, result.hertz);
-  const HertzReference& ref = result.hertz;
-  const MeshGrading& grading = result.grading;
-  const bool line = setup.model == Model::plane_strain;
-  const double R = setup.radius_m, c_H = ref.contact_size_m;
-  result.elements_across_contact = c_H / grading.contact_size_m;
-
+  const double c_H = result.hertz.contact_size_m;
+  result.elements_across_contact = c_H / result.grading.contact_size_m;
   if (setup.elastic_plane)
     flag(result, "elastic_plane",
          "--elastic-plane: compared with the E* of two identical bodies, E / (2 (1 - nu^2)); the FEM body gets "
@@ -62,7 +53,7 @@ HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
     flag(result, "mesh_coarser_than_contact",
          fmt::format("the contact-zone elements ({:.3g} m) are coarse against the Hertz contact size {:.3g} m "
                      "({:.2g} elements across): the contact is not resolved and the comparison is not a verification",
-                     grading.contact_size_m, c_H, result.elements_across_contact),
+                     result.grading.contact_size_m, c_H, result.elements_across_contact),
          rank);
   if (setup.degree == 1 && setup.poisson_ratio > 0.45)
     flag(result, "volumetric_locking",
@@ -70,40 +61,48 @@ HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
                      "comes out too stiff; use --degree 2",
                      setup.poisson_ratio),
          rank);
+  return result;
+}
 
-  // Mesh and problem. Progress lines mark the long steps (3D: seconds each).
-  // Slices of a loop solve hundreds of these: their progress goes to -v.
-  const auto progress = setup.log_progress ? spdlog::level::info : spdlog::level::debug;
+/// The penalty stiffness kappa = c E / h_c.
+double penalty_stiffness(const HertzResult& result)
+{
+  return result.setup.penalty_c * result.hertz.body_modulus_pa / result.grading.contact_size_m;
+}
+
+/// The scene's mesh, graded towards the contact.
+SceneMesh mesh_hertz_scene(MPI_Comm comm, HertzResult& result, spdlog::level::level_enum progress, int rank)
+{
+  const HertzSettings& setup = result.setup;
   if (rank == 0)
     spdlog::log(progress, "hertz {} P{}: meshing with gmsh (h_c = {:.4g} m)", model_name(setup.model), setup.degree,
-                 grading.contact_size_m);
-  const SceneMesh scene = build_scene_mesh(comm, setup.model, R, grading);
+                result.grading.contact_size_m);
+  SceneMesh scene = build_scene_mesh(comm, setup.model, setup.radius_m, result.grading);
   result.mesh_s = scene.wall_s;
-  const double kappa = setup.penalty_c * ref.body_modulus_pa / grading.contact_size_m;
-  PenaltyContact problem(scene, setup.model, setup.degree, ref.body_modulus_pa, setup.poisson_ratio, kappa,
-                         setup.petsc_options);
-  result.dofs = problem.num_dofs();
   result.cells = scene.mesh->topology().index_map(scene.mesh->topology().dim())->size_global();
-  if (rank == 0)
-    spdlog::log(progress, "hertz {} P{}: {} cells, {} dofs, h_c = {:.4g} m ({:.3g} per {}), kappa = {:.4g} Pa/m",
-                 model_name(setup.model), setup.degree, result.cells, result.dofs, grading.contact_size_m,
-                 result.elements_across_contact, line ? "b" : "a", kappa);
+  return scene;
+}
 
-  // Load control. Start: the Hertz approach, the body shifted by the height
-  // of its surface at the Hertz contact edge, so that the first active set
-  // is the Hertz contact; a line contact starts from the classical approach
-  // of a cylinder's centre (line_contact_approach). Both only start the load
-  // control, which corrects them.
+/// Load control to the Hertz load. Start: the Hertz approach, the body
+/// shifted by the height of its surface at the Hertz contact edge, so that
+/// the first active set is the Hertz contact; a line contact starts from the
+/// classical approach of a cylinder's centre (line_contact_approach). Both
+/// only start the load control, which corrects them.
+void reach_hertz_load(PenaltyContact& problem, HertzResult& result, spdlog::level::level_enum progress, int rank)
+{
+  const HertzSettings& setup = result.setup;
+  const HertzReference& ref = result.hertz;
+  const bool line = setup.model == Model::plane_strain;
+  const double R = setup.radius_m, c_H = ref.contact_size_m;
   const double edge_height = c_H * c_H / (2 * R);
   const LineApproach line_start = line_contact_approach(ref.load, R, c_H, ref.effective_modulus_pa);
   const double first_approach = line ? line_start.approach_m : *ref.approach_m;
   const double exponent = line ? line_start.exponent : 1.5;
   if (rank == 0)
     spdlog::log(progress, "hertz {} P{}: load control to {:.6g} {} (Newton iterations with -v)", model_name(setup.model),
-                 setup.degree, ref.load, line ? "N/m" : "N");
-  const LoadControlReport load
-      = reach_force(problem, ref.load, first_approach, edge_height, exponent, setup.force_rtol,
-                    rank == 0 ? progress : spdlog::level::debug);
+                setup.degree, ref.load, line ? "N/m" : "N");
+  const LoadControlReport load = reach_force(problem, ref.load, first_approach, edge_height, exponent,
+                                             setup.force_rtol, rank == 0 ? progress : spdlog::level::debug);
   result.load_steps = load.load_steps;
   result.newton_iterations = load.newton.newton_iterations;
   result.krylov_iterations = load.newton.krylov_iterations;
@@ -112,34 +111,47 @@ HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
   result.approach_m = load.approach_m;
   result.load_reaction = load.force;
   result.load_contact = problem.contact_force_n();
+}
 
-  // Post-processing.
-  const auto post_start = Clock::now();
-  const NodalFields fields = recover_nodal_fields(problem);
-  const auto& Q = *fields.pressure->function_space();
-  const std::vector<double> xq = Q.tabulate_dof_coordinates(false);
-  const int zi = setup.model == Model::solid ? 2 : 1;
+/// Every rank's contact-surface nodes (s, pressure, gap) and the nodes within
+/// two contact-zone elements of the axis (depth, s, max shear, von Mises),
+/// whose fits give the subsurface maxima (contact_measures.h).
+struct GatheredNodes
+{
+  std::vector<double> surface, axis;
+};
+
+GatheredNodes gather_surface_and_axis(MPI_Comm comm, const NodalFields& fields, const HertzResult& result)
+{
+  const Model model = result.setup.model;
+  const std::vector<double> xq = fields.pressure->function_space()->tabulate_dof_coordinates(false);
+  const int zi = model == Model::solid ? 2 : 1;
   const int gdim = zi + 1;
   std::span<const double> p = fields.pressure->x()->array();
   std::span<const double> u1 = fields.displacement->x()->array();
   std::span<const double> tau = fields.max_shear->x()->array();
   std::span<const double> vm = fields.von_mises->x()->array();
   std::vector<double> surface_local, axis_local;
-  // Nodes within two contact-zone elements of the axis feed the fits of the
-  // subsurface maxima (contact_measures.h).
-  const double axis_tol = 1e-9 * R, near_axis = 2 * grading.contact_size_m;
+  const double near_axis = 2 * result.grading.contact_size_m;
   for (std::size_t i = 0; i < fields.contact_weight.size(); ++i)
   {
     const double* x = &xq[3 * i];
-    const double s = setup.model == Model::solid ? std::hypot(x[0], x[1]) : std::abs(x[0]);
+    const double s = model == Model::solid ? std::hypot(x[0], x[1]) : std::abs(x[0]);
     if (fields.contact_weight[i] > 0)
       surface_local.insert(surface_local.end(), {s, p[i], x[zi] + u1[gdim * i + zi]});
     if (s < near_axis)
       axis_local.insert(axis_local.end(), {x[zi], s, tau[i], vm[i]});
   }
-  const std::vector<double> surface = all_gather(comm, surface_local);
-  const std::vector<double> axis = all_gather(comm, axis_local);
+  return {all_gather(comm, surface_local), all_gather(comm, axis_local)};
+}
 
+/// Contact size, peak pressure, contact edge and the pressure profile against
+/// Hertz's, from the surface nodes. ComputationError where the mesh does not
+/// resolve the contact.
+void measure_contact(const std::vector<double>& surface, HertzResult& result)
+{
+  const HertzReference& ref = result.hertz;
+  const double c_H = ref.contact_size_m, h_c = result.grading.contact_size_m;
   std::vector<SurfaceNode> nodes;
   for (std::size_t i = 0; i < surface.size(); i += 3)
   {
@@ -151,12 +163,12 @@ HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
     throw ComputationError(fmt::format(
         "unresolved contact: only {} surface node(s) touch the plane (contact-zone element {:.3g} m against a "
         "Hertz contact size of {:.3g} m); refine the mesh or raise the load",
-        result.touching_nodes, grading.contact_size_m, c_H));
+        result.touching_nodes, h_c, c_H));
   const ProfileFit fit = fit_hertz_profile(nodes, result.max_nodal_pressure_pa);
   if (fit.nodes_used < 2)
     throw ComputationError(fmt::format("unresolved contact: fewer than two nodes carry half the peak pressure "
                                        "(contact-zone element {:.3g} m, Hertz contact size {:.3g} m)",
-                                       grading.contact_size_m, c_H));
+                                       h_c, c_H));
   result.contact_size_m = fit.contact_size_m;
   result.peak_pressure_pa = fit.peak_pressure_pa;
   result.contact_edge_m = contact_edge(nodes);
@@ -171,23 +183,35 @@ HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
       squares += d * d;
     }
   result.profile_rms_error = std::sqrt(squares / std::max<std::size_t>(1, result.profile.size()));
+}
 
+/// The largest maximum shear and von Mises stress on the axis and their
+/// depths, from the nodes near it.
+void measure_axis_maxima(const std::vector<double>& axis, HertzResult& result)
+{
   std::vector<AxisNode> shear_axis, mises_axis;
   for (std::size_t i = 0; i < axis.size(); i += 4)
   {
     shear_axis.push_back({axis[i], axis[i + 1], axis[i + 2]});
     mises_axis.push_back({axis[i], axis[i + 1], axis[i + 3]});
   }
+  const double axis_tol = 1e-9 * result.setup.radius_m;
   result.max_shear = maximum_along_axis(shear_axis, axis_tol);
   result.max_von_mises = maximum_along_axis(mises_axis, axis_tol);
+}
 
-  // Error estimates, calibrated by the penalty and convergence studies
-  // (README): the penalty adds a compliant layer whose penetration p0 / kappa,
-  // against the approach c^2 / R, lowers p0 by about half that ratio; the
-  // mesh error of a and p0 is of the order (h_c / c)^2.
+/// Error estimates, calibrated by the penalty and convergence studies
+/// (README): the penalty adds a compliant layer whose penetration p0 / kappa,
+/// against the approach c^2 / R, lowers p0 by about half that ratio; the
+/// mesh error of a and p0 is of the order (h_c / c)^2. Flags where the
+/// penalty's dominates or the contact leaves Hertz's small-strain range.
+void estimate_errors(HertzResult& result, int rank)
+{
+  const HertzSettings& setup = result.setup;
+  const double R = setup.radius_m, c_H = result.hertz.contact_size_m;
   const double c = result.contact_size_m;
-  result.penalty_error_estimate = result.peak_pressure_pa / kappa * R / (c * c);
-  result.discretisation_error_estimate = std::pow(grading.contact_size_m / c, 2);
+  result.penalty_error_estimate = result.peak_pressure_pa / penalty_stiffness(result) * R / (c * c);
+  result.discretisation_error_estimate = std::pow(result.grading.contact_size_m / c, 2);
   if (result.penalty_error_estimate > result.discretisation_error_estimate)
     flag(result, "penalty_error_dominates",
          fmt::format("penalty c = {}: its estimated error {:.2e} exceeds the mesh's {:.2e}; raise --penalty-c",
@@ -198,16 +222,54 @@ HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
          fmt::format("contact size / radius = {:.3g} > 0.1: beyond Hertz's small-strain, half-space assumptions",
                      std::max(c, c_H) / R),
          rank);
+}
 
-  if (!setup.xdmf_path.empty())
-    write_fields(setup.xdmf_path, fields);
-  result.postprocess_s = seconds_since(post_start);
-
+/// The largest resident set of one rank and the sum over ranks.
+void record_peak_memory(MPI_Comm comm, HertzResult& result)
+{
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   const double rss_mb = usage.ru_maxrss / 1024.0;
   MPI_Allreduce(&rss_mb, &result.peak_memory_mb, 1, MPI_DOUBLE, MPI_MAX, comm);
   MPI_Allreduce(&rss_mb, &result.total_peak_memory_mb, 1, MPI_DOUBLE, MPI_SUM, comm);
+}
+} // namespace
+
+HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
+{
+  const auto start = Clock::now();
+  validate(setup);
+  ensure_petsc();
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  HertzResult result = start_result(comm, setup, rank);
+
+  // Mesh and problem. Progress lines mark the long steps (3D: seconds each).
+  // Slices of a loop solve hundreds of these: their progress goes to -v.
+  const auto progress = setup.log_progress ? spdlog::level::info : spdlog::level::debug;
+  const SceneMesh scene = mesh_hertz_scene(comm, result, progress, rank);
+  const double kappa = penalty_stiffness(result);
+  PenaltyContact problem(scene, setup.model, setup.degree, result.hertz.body_modulus_pa, setup.poisson_ratio, kappa,
+                         setup.petsc_options);
+  result.dofs = problem.num_dofs();
+  if (rank == 0)
+    spdlog::log(progress, "hertz {} P{}: {} cells, {} dofs, h_c = {:.4g} m ({:.3g} per {}), kappa = {:.4g} Pa/m",
+                model_name(setup.model), setup.degree, result.cells, result.dofs, result.grading.contact_size_m,
+                result.elements_across_contact, setup.model == Model::plane_strain ? "b" : "a", kappa);
+  reach_hertz_load(problem, result, progress, rank);
+
+  // Post-processing against Hertz, then the fields.
+  const auto post_start = Clock::now();
+  const NodalFields fields = recover_nodal_fields(problem);
+  const GatheredNodes gathered = gather_surface_and_axis(comm, fields, result);
+  measure_contact(gathered.surface, result);
+  measure_axis_maxima(gathered.axis, result);
+  estimate_errors(result, rank);
+  if (!setup.xdmf_path.empty())
+    write_fields(setup.xdmf_path, fields);
+  result.postprocess_s = seconds_since(post_start);
+
+  record_peak_memory(comm, result);
   result.wall_s = wall_seconds_since(comm, start);
   return result;
 }

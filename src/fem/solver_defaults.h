@@ -1,0 +1,50 @@
+#pragma once
+// The linear solver of a penalty-contact problem (fem/penalty_contact.h) and
+// its PETSc defaults. Every option has the prefix "hertz_"; a default is set
+// before KSPSetFromOptions, so PETSC_OPTIONS or the scene's petsc_options
+// override it:
+// - 2D: MUMPS LU (KSPPREONLY + PCLU).
+// - 3D: GMRES (rtol 1e-10, at most 1000 iterations) with GAMG on an aij
+//   matrix whose near-nullspace holds the rigid-body modes; once node pairs
+//   join two bodies, hypre BoomerAMG with the usual 3D settings instead
+//   (use_pair_solver_defaults).
+// A value PETSc rejects is bad input (InputError), never a silently kept
+// default.
+#include "fem/model.h"
+#include <dolfinx/fem/FunctionSpace.h>
+#include <mpi.h>
+#include <string>
+#include <vector>
+#include <petscksp.h>
+
+namespace rollcheck::fem
+{
+/// The prefix of every linear-solver option ("-hertz_ksp_type").
+inline constexpr const char* solver_prefix = "hertz_";
+
+/// Inserts `petsc_options` ("-hertz_ksp_type cg ...") into PETSc's options
+/// database and returns the names it sets, to clear with clear_options when
+/// the problem ends. InputError if PETSc cannot parse them.
+std::vector<std::string> insert_options(const std::string& petsc_options);
+
+/// Removes the named options from PETSc's database (a study runs many
+/// problems, each with its own options).
+void clear_options(const std::vector<std::string>& names);
+
+/// The rigid-body modes of the displacement space V, orthonormalised:
+/// translations and, where the model allows them, rotations (none
+/// axisymmetric: u_r = const strains the hoop direction). GAMG's near-nullspace.
+/// The caller destroys it (MatNullSpaceDestroy).
+MatNullSpace rigid_body_near_nullspace(const dolfinx::fem::FunctionSpace& V, Model model);
+
+/// A KSP with the prefix, the model's default solver and then the options of
+/// the database. InputError, with PETSc's first message (what it rejected,
+/// e.g. an unknown KSP or PC type), on every rank if it rejects them;
+/// `petsc_options` only names them in that message. The caller destroys it.
+KSP create_linear_solver(MPI_Comm comm, Model model, const std::string& petsc_options);
+
+/// 3D with node pairs: GMRES + hypre BoomerAMG unless a -hertz_pc_type is
+/// given; each BoomerAMG setting is a default that a given option keeps.
+/// Returns the names of the options it set (for clear_options).
+std::vector<std::string> use_pair_solver_defaults(KSP ksp);
+} // namespace rollcheck::fem
