@@ -2,8 +2,8 @@
 // A rounded end of a line contact along a ruling, in 3D by half-space
 // theory: the end of a loaded ruling (a rim of interior angle 150-180 deg)
 // finished with edge radius r_e, pressed onto a rigid plane or a steel
-// half-space. The method of rollcheck flat-rim (study/rims/flat_rim_contact.h),
-// independent of how the end and its load were found.
+// half-space. The method of `rollcheck flat-rim`, independent of how the
+// end and its load were found.
 //  - the surface: the body's surface near the end (RoundedEndProblem)
 //    rounded by a ball of r_e rolled inside it (contact/ball_rounded_surface.h,
 //    small slopes), on a grid of cells of b / cells_per_half_width, b line
