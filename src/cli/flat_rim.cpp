@@ -9,7 +9,6 @@
 #include "cli/scenes.h"
 #include "study/rims/flat_rim_contact.h"
 #include <numbers>
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
@@ -80,37 +79,7 @@ nlohmann::json run_flat_rim(const io::Parameters& p)
 {
   const study::rims::FlatRimSettings setup = flat_rim_schema().bind(p);
   const study::rims::FlatRimContact r = study::rims::flat_rim_contact(setup);
-  std::string table = "| level | cell (m) | cells | CG iterations | solves | peak p (Pa) | peak at x', y (m) | "
-                      "contact from x' (m) | far station / line Hertz - 1 | s |\n|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const study::rims::FlatRimLevel& l : r.levels)
-    table += fmt::format("| {} | {:.3g} | {} | {} | {} | {:.5g} | {:.3g}, {:.3g} | {:.3g} | {:+.2f} % | {:.1f} |\n",
-                         &l - r.levels.data(), l.cell_m, l.cells, l.iterations, l.solves, l.peak_pressure_pa,
-                         l.peak_along_m, l.peak_across_m, l.contact_start_m,
-                         100 * (l.far_peak_pa / l.far_line_hertz_pa - 1), l.wall_s);
-  const double peak = r.levels.back().peak_pressure_pa;
-  const std::string what =
-      setup.interior_angle_rad > 0
-          ? fmt::format("straight rim of {:.4g} deg across a sheet of R = {} m, q = {} N/m", setup.interior_angle_rad * 180 / std::numbers::pi,
-                        setup.sheet_radius_m, setup.load_n_per_m)
-          : fmt::format("{} r1 = {} m at its loop's end of {:.4f} deg ({}c = {:.4f} from the end, hull's R there "
-                        "{:.4g} m), F = {} N, q = {:.6g} N/m at the end",
-                        setup.body.body, setup.body.radius_m, r.interior_angle_rad * 180 / std::numbers::pi,
-                        setup.end_angle_rad < std::numbers::pi ? (setup.loop_side == 0 ? "forwards, " : "backwards, ")
-                                                               : "the flattest, ",
-                        r.centre_of_pressure,
-                        r.end_radius_m, setup.normal_load_n, r.end_line_load_n_per_m);
-  const std::string window
-      = r.whole_ruling ? fmt::format("the whole loaded ruling: the grid reaches {:.4g} b along it", r.after_over_half_width)
-                       : fmt::format("{:+.2f} % with the first level's window twice as long; the window {:.4g} b along "
-                                     "the ruling",
-                                     100 * r.window_change, r.after_over_half_width);
-  spdlog::info("\n{}, counter-face {}, edge radius {} m: b = {:.4g} m (R = {:.4g} m), E* = {:.4g} Pa\n\n{}\npeak {:.5g} Pa "
-               "({}: {:+.2f} % at the last level, {}, {:.3g} times --across across); line Hertz at the end's q with R = max(R_end, r_e) gives {:.5g} Pa "
-               "(peak / that = {:.4f}); the rounded surface lies {:.3g} m above the ground at the end; largest slope "
-               "over the contact {:.3f} (half-space theory)\n",
-               what, setup.steel_counter_face ? "steel" : "rigid", setup.edge_radius_m, r.half_width_m,
-               r.reference_radius_m, r.effective_modulus_pa, table, peak, r.converged ? "converged" : "NOT converged",
-               100 * r.last_change, window, r.across_scale, r.line_hertz_peak_pa, peak / r.line_hertz_peak_pa, r.end_lift_m, r.largest_slope);
+  spdlog::info("{}", study::rims::report(setup, r));
   nlohmann::json j = to_json(r);
   j["counter_face"] = setup.steel_counter_face ? "steel" : "rigid";
   j["edge_radius_m"] = setup.edge_radius_m;
@@ -118,7 +87,7 @@ nlohmann::json run_flat_rim(const io::Parameters& p)
   j["body"] = setup.body.body;
   j["radius_m"] = setup.body.radius_m;
   j["interior_angle_deg"] = setup.interior_angle_rad * 180 / std::numbers::pi;
-  j["peak_over_line_hertz"] = peak / r.line_hertz_peak_pa;
+  j["peak_over_line_hertz"] = r.levels.back().peak_pressure_pa / r.line_hertz_peak_pa;
   return j;
 }
 } // namespace

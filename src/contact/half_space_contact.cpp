@@ -136,65 +136,114 @@ std::vector<double> HalfSpaceDeflection::operator()(std::span<const double> pres
   return deflection;
 }
 
-HalfSpaceContact solve_half_space_contact(const HalfSpaceDeflection& deflection, std::span<const double> gap_m,
-                                          double force_n, const HalfSpaceContactSettings& settings,
-                                          std::span<const double> initial_pressure_pa)
+namespace
 {
-  const HalfSpaceGrid& grid = deflection.grid();
-  const std::size_t n = grid.size();
-  if (gap_m.size() != n)
-    throw InputError(fmt::format("half-space contact: {} gap values for a grid of {} cells", gap_m.size(), n));
+/// InputError for a gap or force the solver cannot take.
+void check_problem(std::size_t cells, std::span<const double> gap_m, double force_n)
+{
+  if (gap_m.size() != cells)
+    throw InputError(fmt::format("half-space contact: {} gap values for a grid of {} cells", gap_m.size(), cells));
   if (!(force_n > 0) || !std::isfinite(force_n))
     throw InputError(fmt::format("half-space contact: the force must be positive and finite, got {} N", force_n));
   if (const auto bad = std::ranges::find_if(gap_m, [](double g) { return !std::isfinite(g); }); bad != gap_m.end())
     throw InputError(fmt::format("half-space contact: the gap is not finite at cell {}", bad - gap_m.begin()));
-  const double area = grid.cell_area_m2();
+}
 
+/// The iteration's start: `initial_pressure_pa` scaled to F where it carries
+/// any, else F spread evenly.
+std::vector<double> starting_pressure(std::span<const double> initial_pressure_pa, double force_n, double area,
+                                      std::size_t n)
+{
   std::vector<double> p(n, force_n / (area * static_cast<double>(n)));
-  if (!initial_pressure_pa.empty())
+  if (initial_pressure_pa.empty())
+    return p;
+  if (initial_pressure_pa.size() != n)
+    throw InputError("half-space contact: the initial pressure has the wrong size");
+  const double total = std::accumulate(initial_pressure_pa.begin(), initial_pressure_pa.end(), 0.0) * area;
+  if (total > 0)
+    for (std::size_t k = 0; k < n; ++k)
+      p[k] = std::max(0.0, initial_pressure_pa[k]) * force_n / total;
+  return p;
+}
+
+/// Polonsky and Keer (1999), section 3: conjugate gradients on the loaded
+/// cells, the gap's mean over them the approach, the force rescaled each step.
+class ConstrainedConjugateGradient
+{
+public:
+  ConstrainedConjugateGradient(const HalfSpaceDeflection& deflection, std::span<const double> gap_m, double force_n)
+      : deflection_(deflection), gap_m_(gap_m), force_(force_n), area_(deflection.grid().cell_area_m2()),
+        direction_(gap_m.size(), 0.0), gap_(gap_m.size())
   {
-    if (initial_pressure_pa.size() != n)
-      throw InputError("half-space contact: the initial pressure has the wrong size");
-    const double total = std::accumulate(initial_pressure_pa.begin(), initial_pressure_pa.end(), 0.0) * area;
-    if (total > 0)
-      for (std::size_t k = 0; k < n; ++k)
-        p[k] = std::max(0.0, initial_pressure_pa[k]) * force_n / total;
   }
 
-  // Polonsky and Keer (1999), section 3: conjugate gradients on the loaded
-  // cells, the gap's mean over them the approach, the force rescaled each step.
-  std::vector<double> direction(n, 0.0), gap(n), p_old(n);
-  double gap_norm_old = 1.0;
-  bool conjugate = false;
-  HalfSpaceContact result;
-  for (int iteration = 1;; ++iteration)
+  /// One step from p (in place); the change A sum |p_new - p_old| / F.
+  double step(std::vector<double>& p)
   {
-    const std::vector<double> u = deflection(p);
+    const std::size_t loaded = centre_gap(p);
+    const double length = step_length(p, loaded);
+    const std::vector<double> p_old = p;
+    bool overlap = false;
+    for (std::size_t k = 0; k < p.size(); ++k)
+    {
+      if (p[k] > 0)
+        p[k] = std::max(0.0, p[k] - length * direction_[k]);
+      else if (gap_[k] < 0)
+      {
+        // An unloaded cell the surfaces pass through joins the contact.
+        p[k] = -length * gap_[k];
+        overlap = true;
+      }
+    }
+    conjugate_ = !overlap;
+    const double total = std::accumulate(p.begin(), p.end(), 0.0) * area_;
+    if (!(total > 0))
+      throw ComputationError("half-space contact: the iteration lost every loaded cell");
+    double change = 0;
+    for (std::size_t k = 0; k < p.size(); ++k)
+    {
+      p[k] *= force_ / total;
+      change += std::abs(p[k] - p_old[k]);
+    }
+    return change * (area_ / force_);
+  }
+
+private:
+  /// The gap h + u less its mean over the loaded cells; their number.
+  std::size_t centre_gap(const std::vector<double>& p)
+  {
+    const std::vector<double> u = deflection_(p);
     double mean = 0;
     std::size_t loaded = 0;
-    for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t k = 0; k < p.size(); ++k)
     {
-      gap[k] = gap_m[k] + u[k];
+      gap_[k] = gap_m_[k] + u[k];
       if (p[k] > 0)
       {
-        mean += gap[k];
+        mean += gap_[k];
         ++loaded;
       }
     }
     if (loaded == 0)
       throw ComputationError("half-space contact: no cell carries load");
     mean /= static_cast<double>(loaded);
+    for (std::size_t k = 0; k < p.size(); ++k)
+      gap_[k] -= mean;
+    return loaded;
+  }
+
+  /// The conjugate direction over the loaded cells and the step along it.
+  double step_length(const std::vector<double>& p, std::size_t loaded)
+  {
+    const std::size_t n = p.size();
     double gap_norm = 0;
     for (std::size_t k = 0; k < n; ++k)
-    {
-      gap[k] -= mean;
       if (p[k] > 0)
-        gap_norm += gap[k] * gap[k];
-    }
+        gap_norm += gap_[k] * gap_[k];
     for (std::size_t k = 0; k < n; ++k)
-      direction[k] = p[k] > 0 ? gap[k] + (conjugate ? gap_norm / gap_norm_old : 0.0) * direction[k] : 0.0;
-    gap_norm_old = gap_norm;
-    std::vector<double> response = deflection(direction);
+      direction_[k] = p[k] > 0 ? gap_[k] + (conjugate_ ? gap_norm / gap_norm_old_ : 0.0) * direction_[k] : 0.0;
+    gap_norm_old_ = gap_norm;
+    const std::vector<double> response = deflection_(direction_);
     double response_mean = 0;
     for (std::size_t k = 0; k < n; ++k)
       if (p[k] > 0)
@@ -204,43 +253,27 @@ HalfSpaceContact solve_half_space_contact(const HalfSpaceDeflection& deflection,
     for (std::size_t k = 0; k < n; ++k)
       if (p[k] > 0)
       {
-        numerator += gap[k] * direction[k];
-        denominator += (response[k] - response_mean) * direction[k];
+        numerator += gap_[k] * direction_[k];
+        denominator += (response[k] - response_mean) * direction_[k];
       }
-    const double step = denominator != 0 ? numerator / denominator : 0.0;
-    p_old = p;
-    bool overlap = false;
-    for (std::size_t k = 0; k < n; ++k)
-    {
-      if (p[k] > 0)
-        p[k] = std::max(0.0, p[k] - step * direction[k]);
-      else if (gap[k] < 0)
-      {
-        // An unloaded cell the surfaces pass through joins the contact.
-        p[k] = -step * gap[k];
-        overlap = true;
-      }
-    }
-    conjugate = !overlap;
-    const double total = std::accumulate(p.begin(), p.end(), 0.0) * area;
-    if (!(total > 0))
-      throw ComputationError("half-space contact: the iteration lost every loaded cell");
-    double change = 0;
-    for (std::size_t k = 0; k < n; ++k)
-    {
-      p[k] *= force_n / total;
-      change += std::abs(p[k] - p_old[k]);
-    }
-    change *= area / force_n;
-    result.iterations = iteration;
-    result.change = change;
-    if (change < settings.tolerance)
-      break;
-    if (iteration >= settings.max_iterations || !std::isfinite(change))
-      throw ComputationError(fmt::format("half-space contact: no convergence in {} iterations (change {:.3g}, "
-                                         "tolerance {:.3g})",
-                                         iteration, change, settings.tolerance));
+    return denominator != 0 ? numerator / denominator : 0.0;
   }
+
+  const HalfSpaceDeflection& deflection_;
+  std::span<const double> gap_m_;
+  double force_, area_;
+  std::vector<double> direction_, gap_;
+  double gap_norm_old_ = 1.0;
+  bool conjugate_ = false;
+};
+
+/// The solved pressure's deflection, approach and largest gap violation into
+/// `result`; ContactBeyondGrid where a border cell carries load.
+void finish(HalfSpaceContact& result, const HalfSpaceDeflection& deflection, std::span<const double> gap_m,
+            std::vector<double> p, const HalfSpaceContactSettings& settings)
+{
+  const HalfSpaceGrid& grid = deflection.grid();
+  const std::size_t n = grid.size();
   result.deflection_m = deflection(p);
   result.approach_m = 0;
   std::size_t loaded = 0;
@@ -267,6 +300,30 @@ HalfSpaceContact solve_half_space_contact(const HalfSpaceDeflection& deflection,
                                 j == 0 || j + 1 == grid.ny);
     }
   result.pressure_pa = std::move(p);
+}
+} // namespace
+
+HalfSpaceContact solve_half_space_contact(const HalfSpaceDeflection& deflection, std::span<const double> gap_m,
+                                          double force_n, const HalfSpaceContactSettings& settings,
+                                          std::span<const double> initial_pressure_pa)
+{
+  const std::size_t n = deflection.grid().size();
+  check_problem(n, gap_m, force_n);
+  std::vector<double> p = starting_pressure(initial_pressure_pa, force_n, deflection.grid().cell_area_m2(), n);
+  ConstrainedConjugateGradient iteration(deflection, gap_m, force_n);
+  HalfSpaceContact result;
+  for (int k = 1;; ++k)
+  {
+    result.iterations = k;
+    result.change = iteration.step(p);
+    if (result.change < settings.tolerance)
+      break;
+    if (k >= settings.max_iterations || !std::isfinite(result.change))
+      throw ComputationError(fmt::format("half-space contact: no convergence in {} iterations (change {:.3g}, "
+                                         "tolerance {:.3g})",
+                                         k, result.change, settings.tolerance));
+  }
+  finish(result, deflection, gap_m, std::move(p), settings);
   return result;
 }
 } // namespace rollcheck::contact

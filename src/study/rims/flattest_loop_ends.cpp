@@ -2,6 +2,8 @@
 #include "contact/rim_overhang.h"
 #include "core/error.h"
 #include "oracle/contact_density.h"
+#include "oracle/rolling_study.h"
+#include "oracle/support_set.h"
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
@@ -136,5 +138,24 @@ FlattestLoopEnds flattest_loop_ends_below(std::span<const oracle::Circle> circle
     result.at_angle.push_back(sides);
   }
   return result;
+}
+
+LoopEnd body_loop_end(const geometry::BodySpec& body, double interior_angle_rad, int loop_side)
+{
+  if (loop_side != 0 && loop_side != 1)
+    throw InputError(fmt::format("flat-rim: the loop's side must be 0 (forwards) or 1 (backwards), got {}", loop_side));
+  const std::vector<oracle::Circle> circles = oracle::line_contact_circles(body);
+  if (body.body == "cylinder")
+    throw InputError("flat-rim: body 'cylinder': its ruling ends are square (90 deg), no rim end of 150-180 deg; a "
+                     "square end is `rollcheck rim --interior-angle 90`");
+  const Eigen::Vector3d centre_of_mass
+      = body.body == "oloid"
+            ? Eigen::Vector3d(0.5 * (circles[0].centre_m + circles[1].centre_m))
+            : oracle::mass_model_of_mesh(oracle::mass_mesh(body, oracle::RollingStudyParameters{}.mass_points), 1.0)
+                  .centre_of_mass_m;
+  if (interior_angle_rad >= std::numbers::pi)
+    return flattest_loop_ends(circles, centre_of_mass, {}).flattest;
+  const double angles[1] = {interior_angle_rad};
+  return flattest_loop_ends(circles, centre_of_mass, angles).at_angle[0][loop_side];
 }
 } // namespace rollcheck::study::rims

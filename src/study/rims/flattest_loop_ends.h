@@ -14,6 +14,9 @@
 // points about the best; from it the loop is walked both ways until the same
 // end's angle falls below each target, and the crossing is bisected (on the
 // chord between two points of the loop, projected onto it by ruling_at).
+// body_loop_end finds a body's end of one angle from its spec (its circles
+// and centre of mass).
+#include "geometry/body.h"
 #include "oracle/rolling_dynamics.h"
 #include <Eigen/Core>
 #include <array>
@@ -57,4 +60,12 @@ FlattestLoopEnds flattest_loop_ends_below(std::span<const oracle::Circle> circle
                                           const Eigen::Vector3d& centre_of_mass_m,
                                           const std::function<std::vector<double>(double)>& angles_below,
                                           int loop_points = 4000);
+/// A two-circle body at its loop's end of this interior angle (pi: the
+/// loop's flattest, the oloid's vertex), on the loop's side `loop_side` (0
+/// forwards, 1 backwards) from the flattest. The centre of mass is the
+/// rolling loop's (oracle::mass_mesh), except the oloid's: midway between
+/// its circles' centres by symmetry, exactly, so that its vertex has
+/// c = 1/4 exactly. InputError for a side other than 0 or 1 and for the
+/// cylinder (its ruling ends are square).
+LoopEnd body_loop_end(const geometry::BodySpec& body, double interior_angle_rad, int loop_side = 0);
 } // namespace rollcheck::study::rims
