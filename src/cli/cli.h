@@ -132,4 +132,5 @@ void add_report_command(CLI::App& app);
 void add_audit_command(CLI::App& app);
 void add_validate_command(CLI::App& app);
 void add_whole_body_command(CLI::App& app);
+void add_robustness_command(CLI::App& app);
 } // namespace rollcheck::cli

@@ -91,7 +91,7 @@ bool launched_by_mpi()
 
 bool fast_command(const std::vector<std::string>& args)
 {
-  static const std::set<std::string> fast = {"mesh", "oracle", "search", "report", "audit", "optimize"};
+  static const std::set<std::string> fast = {"mesh", "oracle", "search", "report", "audit", "optimize", "robustness"};
   const bool fem_score = std::ranges::find(args, "fem-sds") != args.end();
   return fast.contains(subcommand_in(args)) && !fem_score && !launched_by_mpi();
 }
@@ -122,6 +122,7 @@ int main(int argc, char** argv)
   cli::add_optimize_command(app);
   cli::add_report_command(app);
   cli::add_audit_command(app);
+  cli::add_robustness_command(app);
   cli::add_fem_commands(app);
 
   try

@@ -1,0 +1,305 @@
+#include "contact/continuum_loop_scores.h"
+#include "core/error.h"
+#include "oracle/line_load.h"
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fmt/format.h>
+#include <numbers>
+#include <vector>
+
+namespace rollcheck::contact
+{
+namespace
+{
+constexpr int n_quantities = 4; // contact time, peak pressure, accumulated pressure, damage
+
+/// Rates per unit time of the moments of each quantity x over the surface
+/// the ruling sweeps: integral 1[x > 0] dA, x dA, x^2 dA, and max x.
+struct Rates
+{
+  std::array<double, n_quantities> area{}, first{}, second{}, max{};
+  double swept = 0;
+  Rates& operator+=(const Rates& o)
+  {
+    for (int i = 0; i < n_quantities; ++i)
+      area[i] += o.area[i], first[i] += o.first[i], second[i] += o.second[i], max[i] = std::max(max[i], o.max[i]);
+    swept += o.swept;
+    return *this;
+  }
+};
+
+/// The load of one ruling under the rule: total N, centre of pressure c.
+struct RulingLoad
+{
+  double normal_n = 0;
+  double centre = 0.5;
+  bool uniform = false;
+  double from = 0, to = 1; ///< the loaded part of the ruling (no-tension rule)
+};
+
+RulingLoad ruling_load(const oracle::RollingSample& sample, const RollingBodyMass& body,
+                       const ContinuumLoopSettings& s)
+{
+  RulingLoad load;
+  const double length = (sample.contact_end_m - sample.contact_start_m).norm();
+  switch (s.load_rule)
+  {
+  case LoadRule::uniform:
+    load.normal_n = s.normal_load_n;
+    load.uniform = true;
+    return load;
+  case LoadRule::static_through_centre_of_mass:
+    load.normal_n = s.normal_load_n;
+    load.centre = (body.centre_of_mass_m - sample.contact_start_m).dot(sample.contact_end_m - sample.contact_start_m)
+                  / (length * length);
+    break;
+  case LoadRule::dynamic:
+    load.normal_n = s.normal_load_n * sample.normal_force_n / (body.mass_kg * body.gravity_m_s2);
+    load.centre = sample.centre_of_pressure;
+    break;
+  }
+  if (!(load.centre > 0 && load.centre < 1) || !(load.normal_n > 0))
+  {
+    load.normal_n = 0; // standing on a rim point: no ruling load (a singular end, study/rims)
+    return load;
+  }
+  load.from = load.centre > 2.0 / 3 ? 1 - 3 * (1 - load.centre) : 0;
+  load.to = load.centre < 1.0 / 3 ? 3 * load.centre : 1;
+  return load;
+}
+
+double line_load_at(const RulingLoad& load, double length_m, double s)
+{
+  if (load.uniform)
+    return load.normal_n / length_m;
+  return oracle::line_load(load.normal_n, load.centre, length_m, s);
+}
+
+/// integral_0^1 ds / R(s) for R linear from r0 to r1.
+double mean_reciprocal_radius(double r0, double r1)
+{
+  if (std::abs(r1 - r0) <= 1e-9 * std::max(r0, r1))
+    return 2 / (r0 + r1);
+  return std::log(r1 / r0) / (r1 - r0);
+}
+
+/// integral ds / R(s) over a piece of length h where R runs linearly from r0 to r1.
+double piece_reciprocal_radius(double r0, double r1, double h) { return h * mean_reciprocal_radius(r0, r1); }
+
+/// The geometric width's second moment of the contact time between two
+/// samples, integral L / |sigma'| integral_0^1 ds / R dt: it has a
+/// logarithmic singularity in time where a ruling end pivots on a rim
+/// (R_0 -> 0), which the trapezoid rule between samples resolves slowly; the
+/// samples' L, |sigma'|, R_0 and R_1 are interpolated linearly and the
+/// midpoint rule taken on `steps` sub-intervals.
+double rigid_time_second_moment(const oracle::RollingSample& a, const oracle::RollingSample& b, double rate_a,
+                                double rate_b, double dt, int steps)
+{
+  const double la = (a.contact_end_m - a.contact_start_m).norm(), lb = (b.contact_end_m - b.contact_start_m).norm();
+  double sum = 0;
+  for (int k = 0; k < steps; ++k)
+  {
+    const double w = (k + 0.5) / steps;
+    const double length = (1 - w) * la + w * lb, rate = (1 - w) * rate_a + w * rate_b;
+    sum += length / rate
+           * mean_reciprocal_radius((1 - w) * a.start_radius_m + w * b.start_radius_m,
+                                    (1 - w) * a.end_radius_m + w * b.end_radius_m);
+  }
+  return sum * dt / steps;
+}
+
+void add_point(Rates& r, int quantity, double x, double area_weight)
+{
+  if (!(x > 0))
+    return;
+  r.area[quantity] += area_weight;
+  r.first[quantity] += x * area_weight;
+  r.second[quantity] += x * x * area_weight;
+  r.max[quantity] = std::max(r.max[quantity], x);
+}
+
+/// The rates at one sample, sweeping at `rate` (|sigma'|, rad/s).
+Rates sample_rates(const oracle::RollingSample& sample, double rate, const RollingBodyMass& body,
+                   const ContinuumLoopSettings& s)
+{
+  Rates r;
+  const double length = (sample.contact_end_m - sample.contact_start_m).norm();
+  const double r0 = sample.start_radius_m, r1 = sample.end_radius_m;
+  auto radius = [&](double f) { return (1 - f) * r0 + f * r1; };
+  const double e_star = s.effective_modulus_pa;
+  const bool hertz = s.width == oracle::ContactWidthModel::hertz;
+  r.swept = length * rate * (r0 + r1) / 2;
+  const RulingLoad load = ruling_load(sample, body, s);
+  if (!(load.normal_n > 0))
+    return r;
+  // Contact time: the second moment and the touched area in closed form.
+  if (hertz)
+  {
+    r.second[0] = 16 * load.normal_n / (std::numbers::pi * e_star * rate);
+    r.area[0] = length * rate * (load.to - load.from) * radius((load.from + load.to) / 2);
+  }
+  else
+  {
+    r.first[0] = length;
+    r.area[0] = r.swept; // the second moment: rigid_time_second_moment, between samples
+  }
+  const double lo = load.from + s.end_margin, hi = load.to - s.end_margin;
+  const bool held_ends = lo <= hi;
+  auto held = [&](double f) { return held_ends ? std::clamp(f, lo, hi) : 0.5 * (load.from + load.to); };
+  // The loaded part in three parts, split where the held ends start, so
+  // that each part's integrand is smooth; pieces in proportion to length.
+  const std::array<double, 4> cuts
+      = held_ends ? std::array<double, 4>{load.from, lo, hi, load.to}
+                  : std::array<double, 4>{load.from, load.from, load.to, load.to};
+  for (int part = 0; part < 3; ++part)
+  {
+    const double a = cuts[part], b = cuts[part + 1];
+    if (!(b > a))
+      continue;
+    const int n = std::max(1, static_cast<int>(std::ceil(s.pieces * (b - a) / (load.to - load.from))));
+    const double h = (b - a) / n, offset = h / (2 * std::sqrt(3.0));
+    for (int k = 0; k < n; ++k)
+    {
+      const double s0 = a + k * h, s1 = s0 + h;
+      double accumulated_squared = 0; // K^2 at the piece's Gauss points, averaged
+      for (const double f : {s0 + h / 2 - offset, s0 + h / 2 + offset})
+      {
+        const double q = line_load_at(load, length, f);
+        const double weight = h / 2 * length * radius(f) * rate; // dA / dt of this Gauss point
+        if (!(q > 0))
+          continue;
+        if (hertz)
+        {
+          const double rho = 2 * std::sqrt(4 * q * radius(f) / (std::numbers::pi * e_star)) / (rate * radius(f));
+          r.first[0] += rho * weight;
+          r.max[0] = std::max(r.max[0], rho);
+        }
+        else
+          r.max[0] = std::max(r.max[0], 1 / (rate * radius(f)));
+        const double q_held = line_load_at(load, length, held(f));
+        const double p0 = std::sqrt(q_held * e_star / (std::numbers::pi * radius(held(f))));
+        const double b_held = std::sqrt(4 * q_held * radius(held(f)) / (std::numbers::pi * e_star));
+        // accumulated = K / (|sigma'| R(f)): its first moment is smooth in s,
+        // its second carries 1 / R, integrated exactly over the piece below.
+        const double k_pass = hertz ? std::numbers::pi / 2 * p0 * b_held : p0;
+        r.first[2] += k_pass * h / 2 * length;
+        r.area[2] += weight;
+        r.max[2] = std::max(r.max[2], k_pass / (rate * radius(f)));
+        accumulated_squared += k_pass * k_pass / 2;
+        // Damage relative to that of a 100 MPa amplitude: V does not see the scale.
+        add_point(r, 1, p0, weight);
+        add_point(r, 3, std::pow(p0 / 2 / 100e6, -1 / s.basquin_exponent), weight);
+      }
+      r.second[2] += accumulated_squared * length / rate * piece_reciprocal_radius(radius(s0), radius(s1), h);
+    }
+  }
+  return r;
+}
+
+ContinuumScore score_of(const Rates& total, int quantity, double surface_area_m2)
+{
+  ContinuumScore score;
+  const double first = total.first[quantity], second = total.second[quantity];
+  score.touched_area_m2 = total.area[quantity];
+  if (!(first > 0))
+    throw ComputationError("continuum loop scores: nothing is touched in the loop");
+  score.whole = surface_area_m2 * second / (first * first) - 1;
+  score.touched = score.touched_area_m2 * second / (first * first) - 1;
+  score.peak_to_mean = total.max[quantity] * score.touched_area_m2 / first;
+  return score;
+}
+
+void validate(const oracle::RollingTrajectory& trajectory, double begin_s, double end_s, double surface_area_m2,
+              const ContinuumLoopSettings& s)
+{
+  if (trajectory.mode != oracle::ContactMode::line)
+    throw InputError("continuum loop scores: defined for line contact only");
+  if (!(end_s > begin_s) || !(surface_area_m2 > 0))
+    throw InputError("continuum loop scores: needs end > begin and a positive surface area");
+  if (!(s.end_margin >= 0 && s.end_margin < 0.5))
+    throw InputError(fmt::format("end margin must be in [0, 0.5), got {}", s.end_margin));
+  if (!(s.normal_load_n > 0) || !std::isfinite(s.normal_load_n))
+    throw InputError(fmt::format("normal load (N) must be positive and finite, got {}", s.normal_load_n));
+  if (s.pieces < 1)
+    throw InputError(fmt::format("pieces along the ruling must be at least 1, got {}", s.pieces));
+}
+} // namespace
+
+std::string load_rule_name(LoadRule rule)
+{
+  switch (rule)
+  {
+  case LoadRule::static_through_centre_of_mass: return "static";
+  case LoadRule::dynamic: return "dynamic";
+  case LoadRule::uniform: return "uniform";
+  }
+  return "?";
+}
+
+LoadRule parse_load_rule(const std::string& name, const std::string& origin)
+{
+  for (LoadRule r : {LoadRule::static_through_centre_of_mass, LoadRule::dynamic, LoadRule::uniform})
+    if (name == load_rule_name(r))
+      return r;
+  throw InputError(fmt::format("{}: load rule must be static, dynamic or uniform, got '{}'", origin, name));
+}
+
+ContinuumLoopScores continuum_loop_scores(const oracle::RollingTrajectory& trajectory, double begin_s, double end_s,
+                                          double surface_area_m2, const RollingBodyMass& body,
+                                          const ContinuumLoopSettings& s)
+{
+  validate(trajectory, begin_s, end_s, surface_area_m2, s);
+  const auto& samples = trajectory.samples;
+  // The uniform rate sweeps the same loop in the same time at constant sigma'.
+  double swept_angle = 0, window = 0;
+  for (std::size_t k = 0; k + 1 < samples.size(); ++k)
+  {
+    const double t0 = std::max(samples[k].time_s, begin_s), t1 = std::min(samples[k + 1].time_s, end_s);
+    if (t1 > t0)
+      swept_angle += std::abs(samples[k + 1].turning_angle_rad - samples[k].turning_angle_rad)
+                     * (t1 - t0) / (samples[k + 1].time_s - samples[k].time_s),
+          window += t1 - t0;
+  }
+  const double uniform_rate = swept_angle / window;
+  const bool uniform = s.time_law == TimeLaw::uniform_rate;
+  auto rate_of = [&](const oracle::RollingSample& x) { return uniform ? uniform_rate : std::abs(x.rolling_rate_rad_s); };
+  // Each sample's rates once; then the trapezoid rule between samples.
+  std::vector<Rates> at(samples.size());
+  std::vector<bool> done(samples.size(), false);
+  auto rates = [&](std::size_t k) -> const Rates& {
+    if (!done[k])
+      at[k] = sample_rates(samples[k], rate_of(samples[k]), body, s), done[k] = true;
+    return at[k];
+  };
+  Rates total;
+  for (std::size_t k = 0; k + 1 < samples.size(); ++k)
+  {
+    const double t0 = std::max(samples[k].time_s, begin_s), t1 = std::min(samples[k + 1].time_s, end_s);
+    if (!(t1 > t0))
+      continue;
+    const double fraction = (t1 - t0) / (samples[k + 1].time_s - samples[k].time_s);
+    const double dt = uniform ? std::abs(samples[k + 1].turning_angle_rad - samples[k].turning_angle_rad) * fraction
+                                    / uniform_rate
+                              : t1 - t0;
+    Rates a = rates(k);
+    a += rates(k + 1);
+    for (int i = 0; i < n_quantities; ++i)
+      a.area[i] *= dt / 2, a.first[i] *= dt / 2, a.second[i] *= dt / 2;
+    a.swept *= dt / 2;
+    if (s.width == oracle::ContactWidthModel::rigid && (rates(k).first[0] > 0 || rates(k + 1).first[0] > 0))
+      a.second[0] = rigid_time_second_moment(samples[k], samples[k + 1], rate_of(samples[k]), rate_of(samples[k + 1]),
+                                             dt, 16);
+    total += a;
+  }
+  ContinuumLoopScores scores;
+  scores.surface_area_m2 = surface_area_m2;
+  scores.swept_area_m2 = total.swept;
+  scores.contact_time = score_of(total, 0, surface_area_m2);
+  scores.peak_pressure = score_of(total, 1, surface_area_m2);
+  scores.accumulated_pressure = score_of(total, 2, surface_area_m2);
+  scores.damage = score_of(total, 3, surface_area_m2);
+  scores.peak_pressure_max_pa = total.max[1];
+  return scores;
+}
+} // namespace rollcheck::contact

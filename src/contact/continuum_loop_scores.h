@@ -1,0 +1,123 @@
+#pragma once
+// Resolution-free distribution scores of one loop of a rolling line contact,
+// accumulated on the body's exact surface: the ruling coordinates of a
+// developable body, no mesh.
+//
+// Over one loop of the contact curve each surface point P is swept once by
+// the contact ruling, at turning angle sigma and fraction s of a ruling of
+// length L, where the radius of normal curvature across the ruling is
+// R(s) = (1 - s) R_0 + s R_1 and the surface element is dA = L R dsigma ds
+// = L R |sigma'| dt ds. A per-point quantity x(P) is scored by its
+// normalised variance (the squared coefficient of variation)
+//     V = A integral x^2 dA / (integral x dA)^2 - 1
+// over the whole surface (A its area: the preprint's template normalisation,
+// which charges a body for surface that never touches) and over the touched
+// surface only (A -> the area where x > 0), and by max x / mean x over the
+// touched surface. V = 0 for uniform x; x uniform on a fraction phi of the
+// surface and 0 elsewhere gives V = 1/phi - 1. For a cylinder of radius r
+// and length L rolling on its side, every x below is uniform on the side:
+// V_whole = A_caps / A_side = r / L, V_touched = 0, max/mean = 1.
+//
+// The quantities (line load q(s) from the load rule, E* the effective modulus):
+//  - contact time density rho: the time P spends in contact per loop,
+//    Hertz width: rho = 2 b / (|sigma'| R), b = sqrt(4 q R / (pi E*))
+//    (K. L. Johnson, "Contact Mechanics", CUP 1985, eq. 4.43); geometric
+//    width: rho = 1 / (|sigma'| R). Its V_whole is oracle/uniformity_score.h's
+//    U_inf (computed here with the second moment in closed form,
+//    integral rho^2 dA = integral 16 N / (pi E* |sigma'|) dt for Hertz).
+//  - peak pressure p0 = sqrt(q E* / (pi R)) (Johnson eq. 4.45), taken per pass;
+//    near a loaded end of the ruling it is held at its value `end_margin` of
+//    the ruling inside that end (the rim's own stress is a separate, singular
+//    problem: study/rims). It does not depend on how fast the body rolls.
+//  - accumulated pressure, the pressure-time integral of a pass: Hertz width
+//    integral p dt = (pi / 4) p0 2 b / (|sigma'| R) with p0, b held as above;
+//    geometric width p0 / (|sigma'| R) (the preprint's per-face sum of
+//    sampled pressures, in the limit of fine faces and samples).
+//  - Basquin damage of a pass (p0 / 2)^(-1 / b_B), b_B Basquin's exponent
+//    (contact/fatigue.h) without the endurance limit, so that loads below the
+//    limit still rank by damage; V is scale-free, so the strength does not
+//    enter.
+//
+// Load rules (the normal force N of the ruling, its centre of pressure c):
+//  - static through the centre of mass: N = F, c at the centre of mass's foot
+//    on the ruling, spread by the no-tension linear rule (oracle/line_load.h);
+//  - dynamic: N and c of the rolling motion itself (Newton-Euler,
+//    oracle/rolling_dynamics.h), N scaled by F / (m g), the same rule;
+//  - uniform: q = F / L along the whole ruling.
+// Time laws: the free rolling of the trajectory, or a uniform rate (sigma'
+// constant, the loop in the same time): the limit of a fast roll.
+//
+// Quadrature: the trapezoid rule between the trajectory's samples, and
+// two-point Gauss-Legendre on `pieces` equal pieces along each ruling.
+#include "contact/contact_parameters.h"
+#include "oracle/contact_density.h"
+#include "oracle/rolling_dynamics.h"
+#include <Eigen/Core>
+#include <string>
+
+namespace rollcheck::contact
+{
+enum class LoadRule
+{
+  static_through_centre_of_mass,
+  dynamic,
+  uniform
+};
+/// "static", "dynamic", "uniform".
+std::string load_rule_name(LoadRule rule);
+/// Inverse of load_rule_name; InputError naming `origin` otherwise.
+LoadRule parse_load_rule(const std::string& name, const std::string& origin);
+
+enum class TimeLaw
+{
+  free_rolling,
+  uniform_rate
+};
+
+struct ContinuumLoopSettings
+{
+  LoadRule load_rule = LoadRule::dynamic;
+  TimeLaw time_law = TimeLaw::free_rolling;
+  oracle::ContactWidthModel width = oracle::ContactWidthModel::hertz;
+  double end_margin = 0.05;   ///< fraction of the ruling held at each loaded end (peak and accumulated pressure, damage)
+  double normal_load_n = 100; ///< F (the preprint's)
+  double effective_modulus_pa = 200e9 / (2 * (1 - 0.3 * 0.3)); ///< steel on steel
+  double basquin_exponent = FatigueParameters{}.basquin_exponent;
+  int pieces = 64;            ///< Gauss pieces along each ruling
+};
+
+/// The scores of one per-point quantity x.
+struct ContinuumScore
+{
+  double whole = 0;        ///< V over the whole surface
+  double touched = 0;      ///< V over the touched surface
+  double peak_to_mean = 0; ///< max x / mean x over the touched surface
+  double touched_area_m2 = 0;
+};
+
+struct ContinuumLoopScores
+{
+  ContinuumScore contact_time;
+  ContinuumScore peak_pressure;
+  ContinuumScore accumulated_pressure;
+  ContinuumScore damage;
+  double swept_area_m2 = 0;    ///< integral L R dsigma ds over the loop
+  double surface_area_m2 = 0;  ///< A
+  double peak_pressure_max_pa = 0;
+};
+
+/// The body's mass properties the static rule needs.
+struct RollingBodyMass
+{
+  Eigen::Vector3d centre_of_mass_m = Eigen::Vector3d::Zero(); ///< body frame
+  double mass_kg = 1;
+  double gravity_m_s2 = 9.81;
+};
+
+/// The scores of the loop [begin_s, end_s] of a line-contact trajectory on a
+/// body of area `surface_area_m2`. InputError for point contact, an empty
+/// window or bad settings; ComputationError if nothing is touched.
+ContinuumLoopScores continuum_loop_scores(const oracle::RollingTrajectory& trajectory, double begin_s, double end_s,
+                                          double surface_area_m2, const RollingBodyMass& body,
+                                          const ContinuumLoopSettings& settings);
+} // namespace rollcheck::contact

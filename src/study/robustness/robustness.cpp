@@ -1,0 +1,325 @@
+#include "study/robustness/robustness.h"
+#include "core/error.h"
+#include "core/json_number.h"
+#include "oracle/rolling_study.h"
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+#include <map>
+#include <tuple>
+#include <spdlog/spdlog.h>
+
+namespace rollcheck::study::robustness
+{
+namespace
+{
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+/// The settings of one cell, read from the grid by the choices' names.
+struct CellSettings
+{
+  double energy_excess = 0.1;
+  bool uniform_rate = false;
+  contact::ContinuumLoopSettings scores;
+};
+
+int choice_index(const std::vector<Choice>& grid, const std::string& name)
+{
+  for (std::size_t c = 0; c < grid.size(); ++c)
+    if (grid[c].name == name)
+      return static_cast<int>(c);
+  throw InputError(fmt::format("robustness: the grid has no choice '{}'", name));
+}
+
+CellSettings decode(const std::vector<Choice>& grid, const Cell& cell, const RobustnessSettings& s)
+{
+  CellSettings c;
+  const std::string& energy = grid[choice_index(grid, "rolling_energy")].values[cell[choice_index(grid, "rolling_energy")]];
+  c.uniform_rate = energy == "uniform_rate";
+  c.energy_excess = c.uniform_rate ? 0.1 : std::stod(energy); // a uniform rate re-times the loop of E = 0.1
+  const std::string& width = grid[choice_index(grid, "contact_width")].values[cell[choice_index(grid, "contact_width")]];
+  c.scores.width = width == "hertz" ? oracle::ContactWidthModel::hertz : oracle::ContactWidthModel::rigid;
+  c.scores.load_rule = contact::parse_load_rule(
+      grid[choice_index(grid, "load_rule")].values[cell[choice_index(grid, "load_rule")]], "robustness grid");
+  c.scores.end_margin = std::stod(grid[choice_index(grid, "end_margin")].values[cell[choice_index(grid, "end_margin")]]);
+  c.scores.time_law = c.uniform_rate ? contact::TimeLaw::uniform_rate : contact::TimeLaw::free_rolling;
+  c.scores.normal_load_n = s.normal_load_n;
+  c.scores.pieces = s.pieces;
+  return c;
+}
+
+/// Rolling runs of each body, one per energy, kept for every cell and bisection.
+class Runs
+{
+public:
+  Runs(const RobustnessSettings& s) : settings_(s) {}
+  const oracle::RealRolling& at(int body, double energy_excess, long samples_per_loop)
+  {
+    const auto key = std::tuple{body, energy_excess, samples_per_loop};
+    if (auto it = runs_.find(key); it != runs_.end())
+      return it->second;
+    oracle::RollingStudyParameters p;
+    p.barrier_energy_excess = energy_excess;
+    p.samples_per_loop = samples_per_loop;
+    return runs_.emplace(key, oracle::real_rolling(settings_.bodies[body].spec, p)).first->second;
+  }
+
+private:
+  const RobustnessSettings& settings_;
+  std::map<std::tuple<int, double, long>, oracle::RealRolling> runs_;
+};
+
+contact::ContinuumLoopScores scores_of(const oracle::RealRolling& run, const contact::ContinuumLoopSettings& s)
+{
+  const double end = std::isfinite(run.first_loop_end_s) ? run.first_loop_end_s : run.scored_end_s;
+  const contact::RollingBodyMass mass{run.mass.centre_of_mass_m, run.mass.mass_kg, 9.81};
+  return contact::continuum_loop_scores(run.trajectory, 0, end, run.surface_area_m2, mass, s);
+}
+
+/// The score keys' values from one evaluation, in score_names() order.
+std::vector<double> pick(const contact::ContinuumLoopScores& r)
+{
+  return {r.contact_time.whole,  r.accumulated_pressure.whole, r.accumulated_pressure.touched, r.peak_pressure.whole,
+          r.peak_pressure.touched, r.peak_pressure.peak_to_mean, r.damage.whole};
+}
+
+/// Every score of body b at a cell; NaN where the model does not apply.
+std::vector<double> evaluate(Runs& runs, int b, const CellSettings& c, long samples_per_loop)
+{
+  if (c.uniform_rate && c.scores.load_rule == contact::LoadRule::dynamic)
+    return std::vector<double>(score_names().size(), nan); // no free motion rolls at a uniform rate
+  return pick(scores_of(runs.at(b, c.energy_excess, samples_per_loop), c.scores));
+}
+
+std::optional<double> ratio(double a, double b)
+{
+  if (std::isnan(a) || std::isnan(b) || (a == 0 && b == 0))
+    return std::nullopt;
+  return b == 0 ? std::numeric_limits<double>::infinity() : a / b;
+}
+
+/// Refines a flip along the rolling energy between two numeric energies by
+/// bisection in log(E), the other choices held.
+void refine_energy_flip(Flip& flip, const Comparison& comparison, const std::vector<Choice>& grid,
+                        const std::vector<int>& body_index, int score, Runs& runs, const RobustnessSettings& s)
+{
+  const auto& values = grid[flip.choice].values;
+  if (values[flip.from] == "uniform_rate" || values[flip.to] == "uniform_rate")
+    return;
+  CellSettings c = decode(grid, flip.cell, s);
+  auto r_at = [&](double energy) {
+    c.energy_excess = energy;
+    const double a = evaluate(runs, body_index[0], c, s.samples_per_loop)[score];
+    const double b = evaluate(runs, body_index[1], c, s.samples_per_loop)[score];
+    return ratio(a, b).value_or(nan);
+  };
+  double lo = std::stod(values[flip.from]), hi = std::stod(values[flip.to]);
+  const bool below_at_lo = r_at(lo) < 1;
+  for (int k = 0; k < s.bisection_steps; ++k)
+  {
+    const double mid = std::sqrt(lo * hi);
+    (r_at(mid) < 1) == below_at_lo ? lo = mid : hi = mid;
+  }
+  flip.value = std::sqrt(lo * hi);
+  spdlog::debug("robustness: {} {} flips at energy excess {:.4g}", comparison.name, comparison.score, *flip.value);
+}
+
+std::vector<BodyConvergence> convergence(Runs& runs, const RobustnessSettings& s)
+{
+  std::vector<BodyConvergence> out;
+  const auto names = score_names();
+  for (std::size_t b = 0; b < s.bodies.size(); ++b)
+  {
+    CellSettings c;
+    c.scores.normal_load_n = s.normal_load_n;
+    c.scores.pieces = s.pieces;
+    const std::vector<double> base = evaluate(runs, static_cast<int>(b), c, s.samples_per_loop);
+    c.scores.pieces = 2 * s.pieces;
+    const std::vector<double> fine = evaluate(runs, static_cast<int>(b), c, 2 * s.samples_per_loop);
+    BodyConvergence bc{s.bodies[b].name, {}, {}};
+    for (std::size_t k = 0; k < names.size(); ++k)
+    {
+      bc.scores.emplace_back(names[k].first, base[k]);
+      bc.change.emplace_back(names[k].first, base[k] != 0 ? fine[k] / base[k] - 1 : fine[k]);
+    }
+    out.push_back(bc);
+  }
+  return out;
+}
+
+nlohmann::json flip_json(const Flip& flip, const std::vector<Choice>& grid)
+{
+  nlohmann::json settings = nlohmann::json::object();
+  for (std::size_t c = 0; c < grid.size(); ++c)
+    if (static_cast<int>(c) != flip.choice)
+      settings[grid[c].name] = grid[c].values[flip.cell[c]];
+  const auto& values = grid[flip.choice].values;
+  nlohmann::json j{{"choice", grid[flip.choice].name},
+                   {"from", values[flip.from]},
+                   {"to", values[flip.to]},
+                   {"settings", settings}};
+  j["value"] = flip.value ? nlohmann::json(json_number(*flip.value)) : nlohmann::json(values[flip.to]);
+  return j;
+}
+} // namespace
+
+std::vector<NamedBody> default_bodies()
+{
+  auto roller = [](double theta, double offset, double ratio) {
+    geometry::BodySpec spec;
+    spec.body = "roller";
+    spec.family = geometry::RollerFamily::centre_line;
+    spec.genome = {theta, offset, ratio, 2};
+    return spec;
+  };
+  geometry::BodySpec oloid, cylinder, paper;
+  cylinder.body = "cylinder";
+  paper.body = "paper-oloid";
+  return {{"oloid", oloid},
+          {"cylinder", cylinder},
+          {"paper-oloid", paper},
+          {"u-optimum", roller(74.1, 0.757, 1.071)},
+          {"fem-sds-optimum", roller(112.7, 1.000, 0.999)}};
+}
+
+std::vector<Choice> default_grid()
+{
+  return {{"rolling_energy", {"0.02", "0.1", "0.36", "1", "3", "uniform_rate"}},
+          {"contact_width", {"hertz", "geometric"}},
+          {"load_rule", {"static", "dynamic", "uniform"}},
+          {"end_margin", {"0.02", "0.05", "0.1"}}};
+}
+
+std::vector<std::pair<std::string, std::string>> score_names()
+{
+  return {{"contact_time_u", "contact-time uniformity U_inf over the whole surface"},
+          {"accumulated_pressure_whole", "accumulated pressure over the whole surface (the preprint's SDS template)"},
+          {"accumulated_pressure_touched", "accumulated pressure over the touched surface"},
+          {"peak_pressure_whole", "per-pass peak pressure over the whole surface"},
+          {"peak_pressure_touched", "per-pass peak pressure over the touched surface"},
+          {"peak_to_mean_pressure", "largest per-pass peak pressure over its mean on the touched surface"},
+          {"basquin_damage_whole", "Basquin damage per loop over the whole surface"}};
+}
+
+RobustnessResult run_robustness(const RobustnessSettings& s)
+{
+  const auto start = std::chrono::steady_clock::now();
+  RobustnessResult result;
+  result.grid = s.grid;
+  for (const auto& [key, what] : score_names())
+    result.scores.push_back(key);
+  Runs runs(s);
+  const std::vector<Cell> cells = grid_cells(s.grid);
+  for (std::size_t b = 0; b < s.bodies.size(); ++b)
+  {
+    result.bodies.push_back(s.bodies[b].name);
+    std::vector<std::vector<double>> by_score(result.scores.size(), std::vector<double>(cells.size(), nan));
+    for (std::size_t i = 0; i < cells.size(); ++i)
+    {
+      const std::vector<double> v = evaluate(runs, static_cast<int>(b), decode(s.grid, cells[i], s), s.samples_per_loop);
+      for (std::size_t k = 0; k < v.size(); ++k)
+        by_score[k][i] = v[k];
+    }
+    result.values.push_back(std::move(by_score));
+    spdlog::info("robustness: {} scored over {} cells", s.bodies[b].name, cells.size());
+  }
+  const std::vector<std::array<std::string, 3>> pairs = {{"oloid vs cylinder", "oloid", "cylinder"},
+                                                         {"oloid vs the preprint's body", "oloid", "paper-oloid"},
+                                                         {"U optimum vs oloid", "u-optimum", "oloid"},
+                                                         {"FEM-SDS optimum vs oloid", "fem-sds-optimum", "oloid"}};
+  auto index_of = [&](const std::string& name) {
+    for (std::size_t b = 0; b < result.bodies.size(); ++b)
+      if (result.bodies[b] == name)
+        return static_cast<int>(b);
+    return -1;
+  };
+  const int energy_choice = choice_index(s.grid, "rolling_energy");
+  for (const auto& [name, a, b] : pairs)
+  {
+    const std::vector<int> body_index{index_of(a), index_of(b)};
+    if (body_index[0] < 0 || body_index[1] < 0)
+      continue;
+    for (std::size_t k = 0; k < result.scores.size(); ++k)
+    {
+      Comparison c{name, result.scores[k], {a, b}, {}};
+      c.verdict = judge_comparison(s.grid, [&](const Cell& cell) {
+        const std::size_t i = std::lower_bound(cells.begin(), cells.end(), cell) - cells.begin();
+        return ratio(result.values[body_index[0]][k][i], result.values[body_index[1]][k][i]);
+      });
+      for (Flip& flip : c.verdict.flips)
+        if (flip.choice == energy_choice)
+          refine_energy_flip(flip, c, s.grid, body_index, static_cast<int>(k), runs, s);
+      result.comparisons.push_back(std::move(c));
+    }
+  }
+  result.convergence = convergence(runs, s);
+  result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+nlohmann::json to_json(const RobustnessResult& r)
+{
+  nlohmann::json grid = nlohmann::json::object(), order = nlohmann::json::array();
+  for (const Choice& c : r.grid)
+    grid[c.name] = c.values, order.push_back(c.name);
+  nlohmann::json comparisons = nlohmann::json::array();
+  for (const Comparison& c : r.comparisons)
+  {
+    nlohmann::json flips = nlohmann::json::array();
+    for (const Flip& f : c.verdict.flips)
+      flips.push_back(flip_json(f, r.grid));
+    comparisons.push_back({{"name", c.name},
+                           {"score", c.score},
+                           {"bodies", c.bodies},
+                           {"verdict", c.verdict.text},
+                           {"ratio_min", json_number(c.verdict.ratio_min)},
+                           {"ratio_max", json_number(c.verdict.ratio_max)},
+                           {"cells", c.verdict.cells},
+                           {"flips", flips}});
+  }
+  nlohmann::json values = nlohmann::json::object();
+  for (std::size_t b = 0; b < r.bodies.size(); ++b)
+    for (std::size_t k = 0; k < r.scores.size(); ++k)
+    {
+      nlohmann::json row = nlohmann::json::array();
+      for (double v : r.values[b][k])
+        row.push_back(json_number_or_null(v));
+      values[r.bodies[b]][r.scores[k]] = row;
+    }
+  nlohmann::json conv = nlohmann::json::array();
+  for (const BodyConvergence& bc : r.convergence)
+  {
+    nlohmann::json scores = nlohmann::json::object(), change = nlohmann::json::object();
+    for (const auto& [k, v] : bc.scores)
+      scores[k] = json_number_or_null(v);
+    for (const auto& [k, v] : bc.change)
+      change[k] = json_number_or_null(v);
+    conv.push_back({{"body", bc.body}, {"scores_default_cell", scores}, {"change_doubled_resolution", change}});
+  }
+  nlohmann::json names = nlohmann::json::object();
+  for (const auto& [k, what] : score_names())
+    names[k] = what;
+  return {{"grid", grid},           {"bodies", r.bodies},           {"scores", names},
+          {"comparisons", comparisons}, {"values", values},         {"grid_order", order},
+          {"convergence", conv},    {"wall_s", r.wall_s}};
+}
+
+std::string markdown_report(const RobustnessResult& r)
+{
+  std::string out = "| comparison | score | verdict | ratio min | ratio max | flips |\n|---|---|---|---|---|---|\n";
+  for (const Comparison& c : r.comparisons)
+  {
+    std::string flips;
+    int shown = 0;
+    for (const Flip& f : c.verdict.flips)
+      if (f.value && shown < 3)
+        flips += fmt::format("{}E = {:.3g}", shown++ ? ", " : "", *f.value);
+    if (c.verdict.flips.size() > static_cast<std::size_t>(shown))
+      flips += fmt::format("{}{} flips", shown ? "; " : "", c.verdict.flips.size());
+    out += fmt::format("| {} | {} | {} | {:.3g} | {:.3g} | {} |\n", c.name, c.score, c.verdict.text,
+                       c.verdict.ratio_min, c.verdict.ratio_max, flips.empty() ? "-" : flips);
+  }
+  return out;
+}
+} // namespace rollcheck::study::robustness
