@@ -204,8 +204,13 @@ ContinuumScore score_of(const Rates& total, int quantity, double surface_area_m2
   score.touched_area_m2 = total.area[quantity];
   if (!(first > 0))
     throw ComputationError("continuum loop scores: nothing is touched in the loop");
-  score.whole = surface_area_m2 * second / (first * first) - 1;
-  score.touched = score.touched_area_m2 * second / (first * first) - 1;
+  // V >= 0 (Cauchy-Schwarz); a uniform x leaves rounding of either sign.
+  auto variance = [&](double area) {
+    const double v = area * second / (first * first) - 1;
+    return v < 1e-9 ? 0.0 : v;
+  };
+  score.whole = variance(surface_area_m2);
+  score.touched = variance(score.touched_area_m2);
   score.peak_to_mean = total.max[quantity] * score.touched_area_m2 / first;
   return score;
 }

@@ -89,8 +89,8 @@ struct ContinuumLoopSettings
 /// The scores of one per-point quantity x.
 struct ContinuumScore
 {
-  double whole = 0;        ///< V over the whole surface
-  double touched = 0;      ///< V over the touched surface
+  double whole = 0;        ///< V over the whole surface (below 1e-9: 0, uniform)
+  double touched = 0;      ///< V over the touched surface (below 1e-9: 0, uniform)
   double peak_to_mean = 0; ///< max x / mean x over the touched surface
   double touched_area_m2 = 0;
 };

@@ -7,6 +7,9 @@
 #include <fmt/format.h>
 #include <limits>
 #include <map>
+#include <future>
+#include <mutex>
+#include <set>
 #include <tuple>
 #include <spdlog/spdlog.h>
 
@@ -49,7 +52,8 @@ CellSettings decode(const std::vector<Choice>& grid, const Cell& cell, const Rob
   return c;
 }
 
-/// Rolling runs of each body, one per energy, kept for every cell and bisection.
+/// Rolling runs of each body, one per energy, kept for every cell and
+/// bisection. Safe to share between threads that each work on other bodies.
 class Runs
 {
 public:
@@ -57,16 +61,22 @@ public:
   const oracle::RealRolling& at(int body, double energy_excess, long samples_per_loop)
   {
     const auto key = std::tuple{body, energy_excess, samples_per_loop};
-    if (auto it = runs_.find(key); it != runs_.end())
-      return it->second;
+    {
+      std::lock_guard lock(mutex_);
+      if (auto it = runs_.find(key); it != runs_.end())
+        return it->second;
+    }
     oracle::RollingStudyParameters p;
     p.barrier_energy_excess = energy_excess;
     p.samples_per_loop = samples_per_loop;
-    return runs_.emplace(key, oracle::real_rolling(settings_.bodies[body].spec, p)).first->second;
+    oracle::RealRolling run = oracle::real_rolling(settings_.bodies[body].spec, p);
+    std::lock_guard lock(mutex_);
+    return runs_.emplace(key, std::move(run)).first->second; // std::map: references stay valid
   }
 
 private:
   const RobustnessSettings& settings_;
+  std::mutex mutex_;
   std::map<std::tuple<int, double, long>, oracle::RealRolling> runs_;
 };
 
@@ -99,30 +109,34 @@ std::optional<double> ratio(double a, double b)
   return b == 0 ? std::numeric_limits<double>::infinity() : a / b;
 }
 
-/// Refines a flip along the rolling energy between two numeric energies by
-/// bisection in log(E), the other choices held.
-void refine_energy_flip(Flip& flip, const Comparison& comparison, const std::vector<Choice>& grid,
-                        const std::vector<int>& body_index, int score, Runs& runs, const RobustnessSettings& s)
+/// Places a flip along the rolling energy between two numeric energies of
+/// the grid: log(ratio) interpolated linearly in log(E) at the grid's two
+/// ratios, then, if `bisect`, bisection in log(E) with the other choices held.
+void refine_energy_flip(Flip& flip, const std::vector<Choice>& grid, const std::vector<int>& body_index, int score,
+                        double ratio_from, double ratio_to, bool bisect, Runs& runs, const RobustnessSettings& s)
 {
   const auto& values = grid[flip.choice].values;
   if (values[flip.from] == "uniform_rate" || values[flip.to] == "uniform_rate")
     return;
+  double lo = std::stod(values[flip.from]), hi = std::stod(values[flip.to]);
+  const double a = std::log(ratio_from), b = std::log(ratio_to);
+  flip.value = std::exp(std::log(lo) + (std::log(hi) - std::log(lo)) * a / (a - b));
+  if (!bisect || !std::isfinite(a) || !std::isfinite(b))
+    return;
   CellSettings c = decode(grid, flip.cell, s);
   auto r_at = [&](double energy) {
     c.energy_excess = energy;
-    const double a = evaluate(runs, body_index[0], c, s.samples_per_loop)[score];
-    const double b = evaluate(runs, body_index[1], c, s.samples_per_loop)[score];
-    return ratio(a, b).value_or(nan);
+    const double x = evaluate(runs, body_index[0], c, s.samples_per_loop)[score];
+    const double y = evaluate(runs, body_index[1], c, s.samples_per_loop)[score];
+    return ratio(x, y).value_or(nan);
   };
-  double lo = std::stod(values[flip.from]), hi = std::stod(values[flip.to]);
-  const bool below_at_lo = r_at(lo) < 1;
+  const bool below_at_lo = ratio_from < 1;
   for (int k = 0; k < s.bisection_steps; ++k)
   {
     const double mid = std::sqrt(lo * hi);
     (r_at(mid) < 1) == below_at_lo ? lo = mid : hi = mid;
   }
   flip.value = std::sqrt(lo * hi);
-  spdlog::debug("robustness: {} {} flips at energy excess {:.4g}", comparison.name, comparison.score, *flip.value);
 }
 
 std::vector<BodyConvergence> convergence(Runs& runs, const RobustnessSettings& s)
@@ -211,9 +225,8 @@ RobustnessResult run_robustness(const RobustnessSettings& s)
     result.scores.push_back(key);
   Runs runs(s);
   const std::vector<Cell> cells = grid_cells(s.grid);
-  for (std::size_t b = 0; b < s.bodies.size(); ++b)
-  {
-    result.bodies.push_back(s.bodies[b].name);
+  // Every body over the grid, two bodies at a time (each body's runs are its own).
+  auto score_body = [&](std::size_t b) {
     std::vector<std::vector<double>> by_score(result.scores.size(), std::vector<double>(cells.size(), nan));
     for (std::size_t i = 0; i < cells.size(); ++i)
     {
@@ -221,9 +234,20 @@ RobustnessResult run_robustness(const RobustnessSettings& s)
       for (std::size_t k = 0; k < v.size(); ++k)
         by_score[k][i] = v[k];
     }
-    result.values.push_back(std::move(by_score));
     spdlog::info("robustness: {} scored over {} cells", s.bodies[b].name, cells.size());
+    return by_score;
+  };
+  result.values.resize(s.bodies.size());
+  for (std::size_t b = 0; b < s.bodies.size(); b += 2)
+  {
+    auto second = b + 1 < s.bodies.size() ? std::async(std::launch::async, score_body, b + 1)
+                                           : std::future<std::vector<std::vector<double>>>{};
+    result.values[b] = score_body(b);
+    if (second.valid())
+      result.values[b + 1] = second.get();
   }
+  for (const NamedBody& body : s.bodies)
+    result.bodies.push_back(body.name);
   const std::vector<std::array<std::string, 3>> pairs = {{"oloid vs cylinder", "oloid", "cylinder"},
                                                          {"oloid vs the preprint's body", "oloid", "paper-oloid"},
                                                          {"U optimum vs oloid", "u-optimum", "oloid"},
@@ -243,13 +267,20 @@ RobustnessResult run_robustness(const RobustnessSettings& s)
     for (std::size_t k = 0; k < result.scores.size(); ++k)
     {
       Comparison c{name, result.scores[k], {a, b}, {}};
-      c.verdict = judge_comparison(s.grid, [&](const Cell& cell) {
+      auto ratio_at = [&](const Cell& cell) {
         const std::size_t i = std::lower_bound(cells.begin(), cells.end(), cell) - cells.begin();
         return ratio(result.values[body_index[0]][k][i], result.values[body_index[1]][k][i]);
-      });
+      };
+      c.verdict = judge_comparison(s.grid, ratio_at);
+      const bool bisect = std::find(s.bisected.begin(), s.bisected.end(), name) != s.bisected.end();
       for (Flip& flip : c.verdict.flips)
         if (flip.choice == energy_choice)
-          refine_energy_flip(flip, c, s.grid, body_index, static_cast<int>(k), runs, s);
+        {
+          Cell next = flip.cell;
+          next[flip.choice] = flip.to;
+          refine_energy_flip(flip, s.grid, body_index, static_cast<int>(k), *ratio_at(flip.cell), *ratio_at(next),
+                             bisect, runs, s);
+        }
       result.comparisons.push_back(std::move(c));
     }
   }
@@ -307,16 +338,31 @@ nlohmann::json to_json(const RobustnessResult& r)
 
 std::string markdown_report(const RobustnessResult& r)
 {
-  std::string out = "| comparison | score | verdict | ratio min | ratio max | flips |\n|---|---|---|---|---|---|\n";
+  std::string out = "| comparison | score | verdict | ratio min | ratio max | where the ranking flips |\n"
+                    "|---|---|---|---|---|---|\n";
   for (const Comparison& c : r.comparisons)
   {
+    // Each distinct flip once: an energy with the width and load rule it
+    // holds at (the margin rarely moves it), or the categorical choice.
+    std::set<std::string> seen;
     std::string flips;
-    int shown = 0;
     for (const Flip& f : c.verdict.flips)
-      if (f.value && shown < 3)
-        flips += fmt::format("{}E = {:.3g}", shown++ ? ", " : "", *f.value);
-    if (c.verdict.flips.size() > static_cast<std::size_t>(shown))
-      flips += fmt::format("{}{} flips", shown ? "; " : "", c.verdict.flips.size());
+    {
+      const auto& value_of = [&](const std::string& name) {
+        for (std::size_t k = 0; k < r.grid.size(); ++k)
+          if (r.grid[k].name == name)
+            return r.grid[k].values[f.cell[k]];
+        return std::string();
+      };
+      const std::string text
+          = f.value ? fmt::format("E = {:.3g} ({}, {})", *f.value, value_of("contact_width"), value_of("load_rule"))
+                    : fmt::format("{} {} -> {}", r.grid[f.choice].name, r.grid[f.choice].values[f.from],
+                                  r.grid[f.choice].values[f.to]);
+      if (seen.insert(text).second && seen.size() <= 4)
+        flips += (flips.empty() ? "" : "; ") + text;
+    }
+    if (seen.size() > 4)
+      flips += fmt::format("; {} more", seen.size() - 4);
     out += fmt::format("| {} | {} | {} | {:.3g} | {:.3g} | {} |\n", c.name, c.score, c.verdict.text,
                        c.verdict.ratio_min, c.verdict.ratio_max, flips.empty() ? "-" : flips);
   }
