@@ -16,11 +16,11 @@ namespace rollcheck::cli
 {
 namespace
 {
-const io::BoundSchema<fem::CreaseSettings>& crease_schema()
+using fem::CreaseSettings;
+
+const io::BoundSchema<CreaseSettings>& crease_schema()
 {
-  using fem::CreaseSettings;
-  static const io::BoundSchema<CreaseSettings> schema = [] {
-    io::BoundSchema<CreaseSettings> s("crease");
+  return kept_schema<CreaseSettings>("crease", [](auto& s) {
     s.real("face_angle_deg", "--face-angle", &CreaseSettings::face_angle_rad, "deg",
            "beta, between each face of the crease and the plane: the crease's angle is 180 - 2 beta (half-space "
            "theory needs tan beta << 1)",
@@ -30,15 +30,12 @@ const io::BoundSchema<fem::CreaseSettings>& crease_schema()
         .real("width_m", "--width", &CreaseSettings::width_m, "m", "Width and height of the modelled half of the body",
               io::positive);
     add_material(s, &CreaseSettings::youngs_modulus_pa, &CreaseSettings::poisson_ratio);
-    s.real("penalty_c", "--penalty-c", &CreaseSettings::penalty_c, "", "Penalty kappa = c E / h_c (README: penalty study)",
-           io::positive)
+    s.include(penalty_schema(), &CreaseSettings::penalty_c)
         .integer("refine", "--refine", &CreaseSettings::refine, "", "First mesh level: h_c = a / (10 2^(level / 2))",
                  io::Bounds{0, 10})
         .integer("levels", "--levels", &CreaseSettings::levels, "", "Mesh levels, each h_c / sqrt 2 of the previous",
                  io::Bounds{2, 6});
-    return s;
-  }();
-  return schema;
+  });
 }
 
 nlohmann::json run_crease(const io::Parameters& p)
@@ -97,9 +94,9 @@ nlohmann::json run_crease(const io::Parameters& p)
 
 void add_crease_command(CLI::App& app)
 {
-  add_scene_command(app, "crease",
+  add_scene_command(app, crease_schema(),
                     "FEM pressure at a crease inside the contact (plane strain, several mesh levels) against the "
                     "blunt-wedge solution: the apex peak grows with the mesh, the rest converges",
-                    crease_schema().schema(), run_crease);
+                    run_crease);
 }
 } // namespace rollcheck::cli

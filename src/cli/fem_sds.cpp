@@ -1,13 +1,12 @@
 // `rollcheck fem-sds`: SDS over a whole rolling loop under FEM contact stress,
 // against the preprint's point-Hertz SDS and line-contact Hertz
 // (docs/fem-sds.md). Also the scene "fem-sds" of case files.
-// The method is study/loop_scores/fem_sds.h; here its parameters, its tables in the log,
-// its plots and its JSON.
+// The method, its tables and its report are study/loop_scores/fem_sds.h; here
+// its parameters, the report in the log, the folder of plots and the JSON.
 #include "cli/cli.h"
 #include "cli/scenes.h"
 #include "io/batch_report.h"
 #include "study/loop_scores/fem_sds.h"
-#include <fmt/format.h>
 #include <fstream>
 #include <mpi.h>
 #include <spdlog/spdlog.h>
@@ -16,11 +15,11 @@ namespace rollcheck::cli
 {
 namespace
 {
-const io::BoundSchema<study::loop_scores::FemSdsSettings>& fem_sds_schema()
+using study::loop_scores::FemSdsSettings;
+
+const io::BoundSchema<FemSdsSettings>& fem_sds_schema()
 {
-  using study::loop_scores::FemSdsSettings;
-  static const io::BoundSchema<FemSdsSettings> schema = [] {
-    io::BoundSchema<FemSdsSettings> s("fem-sds");
+  return kept_schema<FemSdsSettings>("fem-sds", [](auto& s) {
     s.include(body_schema(), &FemSdsSettings::body)
         .choice("oracle", "--oracle", &FemSdsSettings::oracle,
                 "Where the orientations come from: rolling (real rolling without slipping, the body on a ruling at "
@@ -70,8 +69,7 @@ const io::BoundSchema<study::loop_scores::FemSdsSettings>& fem_sds_schema()
         .integer("refine", "--refine", &FemSdsSettings::refine, "",
                  "Plane-strain mesh level of the slices (hertz --refine); the error estimate runs one level finer",
                  io::Bounds{-1, 12})
-        .real("penalty_c", "--penalty-c", &FemSdsSettings::penalty_c, "",
-              "Penalty kappa = c E / h_c (README: penalty study)", io::positive)
+        .include(penalty_schema(), &FemSdsSettings::penalty_c)
         .integer("slab_orientations", "--slab-check", &FemSdsSettings::slab_orientations, "",
                  "The first N solved orientations whose b / R varies at most 2-fold along the ruling are also solved "
                  "as one 3D slab of the whole ruling (fem/scenes/slab_contact.h, square end faces) at two section levels: "
@@ -88,73 +86,22 @@ const io::BoundSchema<study::loop_scores::FemSdsSettings>& fem_sds_schema()
                   "Folder for fem_sds.json, table.md and the plots (written whole or not at all); empty: none"})
         .unbound({"python", "--python", std::string("/usr/bin/python3"), "",
                   "Python with matplotlib for the plots (Debian's)"});
-    return s;
-  }();
-  return schema;
-}
-
-std::string markdown_table(const std::vector<study::loop_scores::FemSdsOrientation>& results)
-{
-  std::string t = "| # | t (s) | support | c | creases | point-Hertz p0 (MPa) | line-Hertz p0 (MPa) | FEM p0 (MPa) | "
-                  "FEM finer (MPa) | change | FEM / line - 1 | length (m) | width (um) | DOFs | Newton | s |\n"
-                  "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const study::loop_scores::FemSdsOrientation& r : results)
-  {
-    t += fmt::format("| {} | {:.4g} | {} | {} | {} | {:.4g} |", r.index, r.locus.time_s,
-                     study::loop_scores::support_name(r.locus.support.kind),
-                     r.locus.ruling ? fmt::format("{:.3f}", r.locus.centre_of_pressure) : std::string("-"),
-                     r.locus.creases.size(), r.point_hertz_peak_pa / 1e6);
-    if (r.solved)
-      t += fmt::format(" {:.4g} | {:.4g} | {:.4g} | {:+.2f} % | {:+.2f} % | {:.4g} | {:.3g} | {} | {} | {:.1f} |\n",
-                       r.line_hertz_peak_pa / 1e6, r.fem_peak_pa / 1e6, r.fem_peak_refined_pa / 1e6,
-                       100 * (r.fem_peak_refined_pa / r.fem_peak_pa - 1),
-                       100 * (r.fem_peak_pa / r.line_hertz_peak_pa - 1), r.contact_length_m, 1e6 * r.contact_width_m,
-                       r.dofs, r.newton_iterations, r.wall_s);
-    else
-      t += " - | - | - | - | - | - | - | - | - | - |\n";
-  }
-  return t;
-}
-
-std::string slab_table(const std::vector<study::loop_scores::FemSdsOrientation>& results)
-{
-  std::string t = "| # | level | DOFs | layers | Newton | s | approach factor | c (slab / locus) | slab peak / slices' - 1 "
-                  "| max over slices of abs(slab / slice - 1) | end p at s = 0, L (MPa) |\n"
-                  "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const study::loop_scores::FemSdsOrientation& r : results)
-    for (const fem::SlabFem& slab : r.slab)
-      t += fmt::format("| {} | {} | {} | {} | {} | {:.1f} | {:.4f} | {:.4f} / {:.4f} | {:+.2f} % | {:.2f} % | {:.4g}, "
-                       "{:.4g} |\n",
-                       r.index, slab.refine, slab.dofs, slab.layers, slab.newton_iterations, slab.wall_s,
-                       slab.approach_factor, slab.centre_of_pressure, r.locus.centre_of_pressure,
-                       100 * r.slab_peak_difference(slab), 100 * r.slab_slice_difference(slab),
-                       slab.end_peak_pressure_pa[0] / 1e6, slab.end_peak_pressure_pa[1] / 1e6);
-  return t;
+  });
 }
 
 nlohmann::json run_fem_sds(const io::Parameters& params)
 {
   const study::loop_scores::FemSdsResult result = study::loop_scores::run_fem_sds(MPI_COMM_WORLD, fem_sds_schema().bind(params));
   const nlohmann::json j = to_json(result);
-  std::string table = markdown_table(result.orientations);
-  if (result.slab_checked > 0)
-    table += "\n3D slab of the whole ruling against the slices (fem/scenes/slab_contact.h; square end faces; README "
-             "\"Creases\"):\n\n"
-             + slab_table(result.orientations);
   if (process_rank() != 0)
     return j;
   // Tables go to the log (stderr), so that `--json -` stays JSON alone.
-  spdlog::info("\nfem-sds {} ({}):\n\n{}\nover the {} samples of the loop: point-Hertz SDS (the preprint's) {}, "
-               "line-Hertz SDS {}, FEM-SDS {} ({}; {} FEM solves, K-to-2K change {}); table against direct FEM at "
-               "the orientations above: {:.3f} %\n\n",
-               result.body, result.source, table, result.loop.samples, j["analytic_sds"].dump(),
-               j["line_hertz_sds"].dump(), j["fem_sds"].dump(), j["fem_sds_status"].get<std::string>(),
-               result.loop.fem_solves, j["fem_sds_table_change"].dump(), 100 * result.table_vs_direct_worst);
+  spdlog::info("{}", study::loop_scores::report(result));
   if (const std::string& out = params.text("out"); !out.empty())
     io::draw_folder(out, params.text("python"), io::default_scripts_folder() / "plot_fem_orientations.py", {},
                     "plot.log", [&](const std::filesystem::path& folder) {
                       std::ofstream(folder / "fem_sds.json") << j.dump(1) << "\n";
-                      std::ofstream(folder / "table.md") << table;
+                      std::ofstream(folder / "table.md") << study::loop_scores::markdown_table(result);
                     });
   return j;
 }
@@ -162,10 +109,10 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
 
 void add_fem_sds_command(CLI::App& app)
 {
-  add_scene_command(app, "fem-sds",
+  add_scene_command(app, fem_sds_schema(),
                     "SDS over every sample of a rolling loop under FEM contact stress (plane-strain slices along the "
                     "contact ruling through their exact scaling, a converged table of FEM solves), beside the "
                     "preprint's point-Hertz SDS and line-contact Hertz; orientations solved directly check it",
-                    fem_sds_schema().schema(), run_fem_sds);
+                    run_fem_sds);
 }
 } // namespace rollcheck::cli

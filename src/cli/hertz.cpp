@@ -25,8 +25,7 @@ const io::BoundSchema<fem::HertzSettings>& hertz_schema()
   // Resource guard: refine 12 puts 640 elements across the contact, far
   // beyond the convergence study's finest level (6).
   static const io::Bounds refine_range{-1, 12};
-  static const io::BoundSchema<HertzSettings> schema = [] {
-    io::BoundSchema<HertzSettings> s("hertz");
+  return kept_schema<HertzSettings>("hertz", [](io::BoundSchema<HertzSettings>& s) {
     std::vector<std::pair<std::string, Model>> models;
     for (Model m : {Model::axisymmetric, Model::plane_strain, Model::solid})
       models.emplace_back(fem::model_name(m), m);
@@ -47,8 +46,7 @@ const io::BoundSchema<fem::HertzSettings>& hertz_schema()
                  "Mesh level: 10 * 2^(refine/2) elements across the Hertz contact radius; -1 = the model's default "
                  "(axi/plane-strain P1: 4, P2: 2; 3d P1: 2, P2: 0)",
                  refine_range)
-        .real("penalty_c", "--penalty-c", &HertzSettings::penalty_c, "", "Penalty kappa = c E / h_c (README: penalty study)",
-              io::positive)
+        .include(penalty_schema(), &HertzSettings::penalty_c)
         .flag("elastic_plane", "--elastic-plane", &HertzSettings::elastic_plane,
               "Compare with two identical elastic bodies, E* = E / (2 (1 - nu^2)), as the preprint did (flagged)")
         .real("contact_element_size_m", "--contact-element-size", &HertzSettings::contact_element_size_m, "m",
@@ -61,9 +59,7 @@ const io::BoundSchema<fem::HertzSettings>& hertz_schema()
               "they may also follow `--`")
         .text("xdmf", "--xdmf", &HertzSettings::xdmf_path,
               "Write displacement, stress, von Mises, max shear and contact pressure to this self-contained .xdmf");
-    return s;
-  }();
-  return schema;
+  });
 }
 
 nlohmann::json run_hertz(const io::Parameters& params)
@@ -130,8 +126,8 @@ void add_hertz_command(CLI::App& app)
 {
   static StudyChoice study;
   CLI::App* sub = add_scene_command(
-      app, "hertz", "Penalty-contact FEM of a sphere or cylinder on a rigid plane, verified against Hertz theory",
-      hertz_schema().schema(), run_hertz,
+      app, hertz_schema(), "Penalty-contact FEM of a sphere or cylinder on a rigid plane, verified against Hertz theory",
+      run_hertz,
       [](const io::Parameters& params) { return study.name.empty() ? run_hertz(params) : run_hertz_study(study, params); });
   sub->add_option("--study", study.name,
                   "Run a study instead of one case: convergence (refine levels of every model and degree) or "

@@ -23,16 +23,13 @@ struct MeshScene
 
 const io::BoundSchema<MeshScene>& mesh_schema()
 {
-  static const io::BoundSchema<MeshScene> schema = [] {
-    io::BoundSchema<MeshScene> s("mesh");
+  return kept_schema<MeshScene>("mesh", [](auto& s) {
     s.include(body_schema(), &MeshScene::body)
         .text("out", "--out", &MeshScene::out,
               "Write the mesh here: .obj/.stl/.ply/.off (surface) or .msh (gmsh tetrahedra)")
         .real("volume_mesh_size_m", "--size", &MeshScene::volume_mesh_size_m, "m",
               "Tetrahedron size of a .msh volume mesh", io::positive);
-    return s;
-  }();
-  return schema;
+  });
 }
 
 nlohmann::json run_mesh(const io::Parameters& params)
@@ -74,8 +71,6 @@ nlohmann::json run_mesh(const io::Parameters& params)
 
 void add_mesh_command(CLI::App& app)
 {
-  add_scene_command(app, "mesh",
-                    "Build or read a body, check it and write its mesh",
-                    mesh_schema().schema(), run_mesh);
+  add_scene_command(app, mesh_schema(), "Build or read a body, check it and write its mesh", run_mesh);
 }
 } // namespace rollcheck::cli

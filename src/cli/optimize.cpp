@@ -1,21 +1,18 @@
 // `rollcheck optimize`: where a two-circle roller family's optimum lies, and
 // what its (90, 1, 1) member is (gradient, Hessian, verdict), by a continuous
 // search with NLopt (docs/optimize.md). Also the scene "optimize" of case
-// files. The method is study/optimize/optimize_family.h; here its parameters, a line
-// in the log, the start's and the optimum's meshes, the JSON, the plots and
-// the finished runs kept in the output folder for a rerun
-// (io/evaluation_cache.h).
+// files. The method and its log line are study/optimize/optimize_family.h;
+// here its parameters, the log, the start's and the optimum's meshes, the
+// JSON, the plots and the finished runs kept in the output folder for a
+// rerun (cli/optimize_runs.h).
 #include "cli/cli.h"
+#include "cli/optimize_runs.h"
 #include "cli/scenes.h"
-#include "core/atomic_file.h"
 #include "geometry/write_mesh.h"
 #include "io/batch_report.h"
-#include "io/case_hash.h"
-#include "io/evaluation_cache.h"
 #include "study/optimize/optimize_family.h"
-#include "core/error.h"
 #include <fstream>
-#include <map>
+#include <memory>
 #include <spdlog/spdlog.h>
 
 namespace rollcheck::cli
@@ -104,84 +101,23 @@ void add_oracle_parameters(Schema& s)
 
 const Schema& optimize_schema()
 {
-  static const Schema schema = [] {
-    Schema s("optimize");
+  return kept_schema<FamilySearchSettings>("optimize", [](Schema& s) {
     add_method_parameters(s);
     add_axis(s, &FamilySearchSettings::theta_deg, "theta", "deg", "angle between the circle planes",
              io::Bounds{0, 180, true, true});
     add_axis(s, &FamilySearchSettings::offset, "offset", "", "centre distance d in units of r1", io::non_negative);
     add_axis(s, &FamilySearchSettings::ratio, "ratio", "", "radius ratio rho = r2 / r1", io::positive);
     add_oracle_parameters(s);
-    return s;
-  }();
-  return schema;
-}
-
-/// The parameters that steer the search but change no run's value (a run is
-/// one genome and replicate): a rerun that changes only these reuses the runs.
-const std::vector<std::string> search_only_keys{"method",       "max_evaluations", "replicates", "pilot_step",
-                                                "sweep_points", "threads",         "out",        "python"};
-
-/// What a run (genome, replicate) computes beyond the parameters: the genome a
-/// replicate moves to (study::optimize::replicate_genome) and the mesh it gets under
-/// matched face count. Hashed with the parameters, so that runs saved when
-/// the rigid replicates nudged the initial spins, or when matched ties went
-/// to the fewer points alone, are not recalled.
-constexpr const char* run_definition
-    = "replicates move the genome by resolution; matched ties keep points; FEM-SDS replicates add 2, -2, 4 points";
-
-/// case_hash of the parameters a run's value depends on (the version included).
-std::string run_settings_hash(const io::Parameters& params)
-{
-  nlohmann::json resolved = params.to_json();
-  for (const std::string& key : search_only_keys)
-    resolved.erase(key);
-  resolved["run_definition"] = run_definition;
-  return io::case_hash(resolved);
-}
-
-constexpr const char* evaluations_file = "evaluations.json";
-
-/// Whether this process saves the runs: under mpirun every rank of rollcheck-fem
-/// runs the same search (FEM-SDS solves are collective) and reads the same
-/// runs, and the first rank alone writes them.
-bool saves_runs()
-{
-  return process_rank() == 0;
-}
-
-/// The runs a previous search with the same settings left in `out`. The folder
-/// is made now (rollcheck's, with its marker) so that each batch of runs is
-/// saved there as it finishes; the results replace the folder whole at the end.
-io::EvaluationCache open_evaluation_cache(const std::filesystem::path& out, const io::Parameters& params)
-{
-  if (saves_runs() && !std::filesystem::exists(out / output_marker))
-    write_folder_atomically(out, "option --out", [](const std::filesystem::path&) {});
-  io::EvaluationCache cache(out / evaluations_file, run_settings_hash(params));
-  if (cache.size() > 0)
-    spdlog::info("optimize: {} finished runs of the same settings in {}", cache.size(),
-                 (out / evaluations_file).string());
-  return cache;
+  });
 }
 
 nlohmann::json run_optimize(const io::Parameters& params)
 {
   FamilySearchSettings settings = optimize_schema().bind(params);
   const std::string& out = params.text("out");
-  std::optional<io::EvaluationCache> cache;
+  std::shared_ptr<io::EvaluationCache> runs;
   if (!out.empty())
-  {
-    cache = open_evaluation_cache(out, params);
-    settings.run_store.recall = [&cache](std::span<const double> x, int replicate) {
-      return cache->recall(x, replicate);
-    };
-    settings.run_store.record = [&cache, saves = saves_runs()](std::span<const study::optimize::OracleRun> runs) {
-      for (const study::optimize::OracleRun& run : runs)
-        cache->add(run.x, run.replicate, run.value);
-      if (saves)
-        cache->save();
-    };
-  }
+    runs = keep_runs(out, params, settings);
   // The FEM-SDS loops' convergence, one status per body scored (a score is
   // reported with its convergence).
   auto fem_sds_statuses = std::make_shared<std::vector<std::string>>();
@@ -191,31 +127,19 @@ nlohmann::json run_optimize(const io::Parameters& params)
   nlohmann::json j = to_json(result);
   if (settings.score == study::optimize::FamilyScore::fem_sds)
   {
-    std::map<std::string, int> counts;
-    for (const std::string& status : *fem_sds_statuses)
-      ++counts[status.starts_with("converged") ? "converged" : status.starts_with("not converged") ? "not converged"
-                                                                                                   : status];
-    j["fem_sds_loops"] = {{"scored", fem_sds_statuses->size()}, {"by_status", counts}};
-    const int unconverged = counts.count("not converged") ? counts["not converged"] : 0;
-    if (unconverged > 0)
+    const study::optimize::LoopStatusCounts loops = study::optimize::count_loop_statuses(*fem_sds_statuses);
+    j["fem_sds_loops"] = loops;
+    if (loops.not_converged() > 0)
       spdlog::warn("optimize: {} of the {} FEM-SDS loops scored did not converge to the tolerance (JSON "
                    "fem_sds_loops)",
-                   unconverged, fem_sds_statuses->size());
+                   loops.not_converged(), loops.scored);
   }
-  const nlohmann::json& best = j["optimum"];
-  spdlog::info("optimize {} ({}): start {} -> {}, optimum {} -> {} ({} the start beyond the noise {}); at the start: "
-               "{}; hull faces {} at the start, {} at the optimum ({} points per circle); {} genomes, {} oracle "
-               "runs, {} recalled, {:.1f} s",
-               j["score"].get<std::string>(), j["oracle"].get<std::string>(), j["start"].dump(),
-               j["start_value"].dump(), best["x"].dump(), best["value"].dump(),
-               best["beats_start"].get<bool>() ? "beats" : "does not beat", j["noise"]["sigma"].dump(),
-               j["verdict_at_start"].dump(), result.start_mesh.faces, result.best_mesh.faces, result.best_mesh.points,
-               result.score_evaluations, result.oracle_runs, result.recalled_runs, result.wall_s);
+  spdlog::info("{}", study::optimize::summary_line(result));
   if (!out.empty())
     io::draw_folder(out, params.text("python"), io::default_scripts_folder() / "plot_optimize.py", {}, "plot.log",
                     [&](const std::filesystem::path& folder) {
                       std::ofstream(folder / "optimize.json") << j.dump(1) << "\n";
-                      cache->save(folder / evaluations_file);
+                      runs->save(folder / evaluations_file);
                       // Both bodies as they were scored, for the plot's side-by-side view.
                       const geometry::BodySpec start =
                           study::optimize::family_body(settings, result.search.start, result.start_mesh.points);
@@ -230,9 +154,9 @@ nlohmann::json run_optimize(const io::Parameters& params)
 
 void add_optimize_command(CLI::App& app)
 {
-  add_scene_command(app, "optimize",
+  add_scene_command(app, optimize_schema(),
                     "Search a two-circle roller family for the genome (theta, d, rho) minimising a score with NLopt, "
                     "judged against the noise, with the gradient and Hessian at the start and at the optimum",
-                    optimize_schema().schema(), run_optimize);
+                    run_optimize);
 }
 } // namespace rollcheck::cli

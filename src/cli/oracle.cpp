@@ -134,16 +134,13 @@ void add_rolling_parameters(Schema& s)
 
 const Schema& oracle_schema()
 {
-  static const Schema schema = [] {
-    Schema s("oracle");
+  return kept_schema<OracleScene>("oracle", [](Schema& s) {
     s.include(body_schema(), &OracleScene::body);
     add_scene_parameters(s);
     add_oracle_parameters(s);
     add_contact_parameters(s);
     add_rolling_parameters(s);
-    return s;
-  }();
-  return schema;
+  });
 }
 
 study::body_scores::ScoreBodySettings settings_of(const OracleScene& scene)
@@ -182,10 +179,10 @@ nlohmann::json run_oracle(const io::Parameters& params)
 
 void add_oracle_command(CLI::App& app)
 {
-  add_scene_command(app, "oracle",
+  add_scene_command(app, oracle_schema(),
                     "Roll a body with the approximate or rigid-body oracle and score its contact, stress, heat, wear "
                     "and fatigue distributions, or roll it for real (--oracle rolling) and score its contact with U. "
                     "Defaults: the preprint's values, else the reference code's",
-                    oracle_schema().schema(), run_oracle);
+                    run_oracle);
 }
 } // namespace rollcheck::cli

@@ -34,8 +34,7 @@ std::vector<std::string> scene_kinds()
 const io::BoundSchema<geometry::BodySpec>& body_schema()
 {
   using geometry::BodySpec;
-  static const io::BoundSchema<BodySpec> schema = [] {
-    io::BoundSchema<BodySpec> s("body");
+  return kept_schema<BodySpec>("body", [](auto& s) {
     s.text("body", "--body", &BodySpec::body,
            "Body: oloid (true oloid), paper-oloid (the preprint's (90,1,1) roller, not an oloid), roller, cylinder, "
            "sphere (icosphere), uv-sphere, hemisphere",
@@ -63,9 +62,14 @@ const io::BoundSchema<geometry::BodySpec>& body_schema()
                  "Icosphere subdivisions (the reference: 3)", io::Bounds{0, 8})
         .path("mesh_file", "--mesh", &BodySpec::mesh_file,
               "Read the body from a surface mesh file (OBJ/STL/PLY/OFF) instead");
-    return s;
-  }();
-  return schema;
+  });
 }
 
+const io::BoundSchema<double>& penalty_schema()
+{
+  return kept_schema<double>("penalty", [](auto& s) {
+    s.real("penalty_c", "--penalty-c", [](double& c) -> double& { return c; }, "",
+           "Penalty kappa = c E / h_c (README: penalty study)", io::positive);
+  });
+}
 } // namespace rollcheck::cli

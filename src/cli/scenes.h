@@ -2,11 +2,13 @@
 // A scene is what a case file runs: a schema of parameters and a function from
 // resolved parameters to a JSON summary. Subcommands register theirs, so that
 // `rollcheck run CASE.toml` and `rollcheck <kind> --options` share one code path.
+#include "cli/cli.h"
 #include "geometry/body.h"
 #include "io/bound_schema.h"
 #include "io/parameters.h"
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <type_traits>
 
 namespace rollcheck::cli
 {
@@ -21,6 +23,32 @@ void register_scene(const Scene& scene);
 const Scene& find_scene(const std::string& kind, const std::string& origin);
 std::vector<std::string> scene_kinds();
 
+/// A scene's schema, built on first use and kept for the process (the
+/// subcommand's options and case files refer to it): `declare` adds the
+/// scene's parameters to an empty schema of kind `kind`. `declare` is the
+/// scene's own lambda, whose type keys the kept schema.
+template <class Settings, class Declare>
+const io::BoundSchema<Settings>& kept_schema(const char* kind, Declare declare)
+{
+  static_assert(std::is_class_v<Declare>, "declare: a lambda, one type per scene");
+  static const io::BoundSchema<Settings> schema = [&] {
+    io::BoundSchema<Settings> s(kind);
+    declare(s);
+    return s;
+  }();
+  return schema;
+}
+
+/// add_scene_command for a scene of bound parameters: the subcommand's name
+/// is the schema's kind, declared once.
+template <class Settings>
+CLI::App* add_scene_command(CLI::App& app, const io::BoundSchema<Settings>& schema, const std::string& description,
+                            SceneRun run, SceneRun command = {})
+{
+  return add_scene_command(app, schema.schema().kind, description, schema.schema(), std::move(run),
+                           std::move(command));
+}
+
 /// Samples per generating circle: resource guard. 100k points per circle is a
 /// 200k-vertex hull, far beyond any converged score and about 0.1 GB.
 inline constexpr io::Bounds body_points_range{3, 100000};
@@ -28,6 +56,11 @@ inline constexpr io::Bounds body_points_range{3, 100000};
 /// The body's parameters, bound to geometry::BodySpec: include them with
 /// `schema.include(body_schema(), &Settings::body)`.
 const io::BoundSchema<geometry::BodySpec>& body_schema();
+
+/// The penalty of the FEM contact, one spelling in every scene that has
+/// it: penalty_c (--penalty-c), kappa = c E / h_c. A group of one parameter,
+/// bound to the scene's member: `schema.include(penalty_schema(), &Settings::penalty_c)`.
+const io::BoundSchema<double>& penalty_schema();
 
 /// The material pair's parameters, one spelling in every scene:
 /// youngs_modulus_pa (--youngs-modulus, Pa) and poisson_ratio (--poisson).

@@ -1,8 +1,9 @@
 // `rollcheck search`: the preprint's two-layer parametric search over the
 // paper family of rollers (README "rollcheck search"): approximate screening
 // of a grid, rigid-body revalidation of the best K (or all) scored by
-// study::body_scores::revalidation_scores, a ranked table, JSON and HDF5. Also the scene
-// "search" of case files.
+// study::body_scores::revalidation_scores, the ranked table
+// (study/body_scores/search_table.h), JSON and HDF5. Also the scene "search"
+// of case files.
 #include "cli/cli.h"
 #include "cli/scenes.h"
 #include "cli/search_family.h"
@@ -10,7 +11,7 @@
 #include "io/search_store.h"
 #include "oracle/parametric_search.h"
 #include "study/body_scores/score_body.h"
-#include <algorithm>
+#include "study/body_scores/search_table.h"
 #include <chrono>
 #include <cstdio>
 #include <fmt/format.h>
@@ -39,8 +40,7 @@ struct SearchScene : oracle::SearchSettings
 const io::BoundSchema<SearchScene>& search_schema()
 {
   using S = SearchScene;
-  static const io::BoundSchema<S> schema = [] {
-    io::BoundSchema<S> s("search");
+  return kept_schema<S>("search", [](auto& s) {
     s.choice("grid", "--grid", &S::grid,
              "Grid of the reference code: quick (45 genomes, the preprint's), standard (616) or deep (1430)",
              {{"quick", oracle::SearchGrid::quick}, {"standard", oracle::SearchGrid::standard},
@@ -82,9 +82,7 @@ const io::BoundSchema<SearchScene>& search_schema()
         .text("hdf5", "--hdf5", &S::hdf5, "Also write the results to this HDF5 file (README: search store)")
         .integer("table_rows", "--rows", &S::table_rows, "", "Rows of the ranked table printed",
                  io::Bounds{0, 100000});
-    return s;
-  }();
-  return schema;
+  });
 }
 
 /// A one-line progress bar with ETA on stderr, only when stderr is a terminal.
@@ -125,54 +123,6 @@ private:
   std::chrono::steady_clock::time_point start_{}, last_{};
 };
 
-std::string score_text(double v) { return std::isinf(v) ? "inf" : fmt::format("{:.4g}", v); }
-
-double metric(const oracle::GenomeResult& r, const std::string& name)
-{
-  for (const auto& [key, value] : r.metrics)
-    if (key == name)
-      return value;
-  return std::numeric_limits<double>::quiet_NaN();
-}
-
-/// The ranked table, to the log (stderr) as every scene's table, so that
-/// `--json -` prints JSON alone.
-void print_table(const oracle::SearchResult& result, std::size_t rows)
-{
-  const oracle::GenomeResult& anchor = result.anchor;
-  fmt::print(stderr, "{} grid: {} genomes, {} valid, {} revalidated; {} threads, {:.2f} s (approximate {:.2f} s, rigid-body "
-             "{:.2f} s)\n",
-             oracle::name_of(result.options.grid), result.genomes.size(),
-             std::count_if(result.genomes.begin(), result.genomes.end(), [](const auto& r) { return r.valid; }),
-             std::count_if(result.genomes.begin(), result.genomes.end(), [](const auto& r) { return r.validated; }),
-             result.threads, result.wall_s, result.approximate_wall_s, result.rigid_wall_s);
-  fmt::print(stderr, "{:>4} {:>6} {:>5} {:>5} {:>2} {:>5} {:>7} {:>11} {:>7} {:>11} {:>7} {:>5} {:>11} {:>11} {:>11}\n", "rank",
-             "theta", "d", "rho", "n", "faces", "area", "approx CDS", "/anchor", "rigid CDS", "/anchor", "rank",
-             "SDS", "TDS", "FDS");
-  auto row = [&](const std::string& rank, const oracle::GenomeResult& r) {
-    std::string rigid = r.validated ? fmt::format("{:>11} {:>7.3f} {:>5} {:>11} {:>11} {:>11}", score_text(r.rigid_cds),
-                                                  r.rigid_cds / anchor.rigid_cds,
-                                                  r.rigid_rank > 0 ? std::to_string(r.rigid_rank) : "-",
-                                                  score_text(metric(r, "sds")), score_text(metric(r, "tds")),
-                                                  score_text(metric(r, "fds")))
-                                    : "";
-    fmt::print(stderr, "{:>4} {:>6.1f} {:>5.2f} {:>5.2f} {:>2} {:>5} {:>7.3f} {:>11} {:>7.3f} {}\n", rank, r.genome.theta_deg,
-               r.genome.offset, r.genome.ratio, r.genome.n_circles, r.n_faces, r.area_m2, score_text(r.approximate_cds),
-               r.approximate_cds / anchor.approximate_cds, rigid);
-  };
-  row(fmt::format("{}pt", result.anchor_points).substr(0, 4), anchor);
-  std::vector<const oracle::GenomeResult*> ranked;
-  for (const auto& r : result.genomes)
-    if (r.valid)
-      ranked.push_back(&r);
-  std::sort(ranked.begin(), ranked.end(), [](auto a, auto b) { return a->approximate_rank < b->approximate_rank; });
-  for (std::size_t k = 0; k < std::min(rows, ranked.size()); ++k)
-    row(std::to_string(ranked[k]->approximate_rank) + (ranked[k]->is_anchor_genome ? "*" : ""), *ranked[k]);
-  fmt::print(stderr, "(first row: the anchor oloid at {} points per circle; * the grid's own (90, 1, 1) genome; ratios "
-             "against the anchor)\n",
-             result.anchor_points);
-}
-
 nlohmann::json run_search(const io::Parameters& params)
 {
   const SearchScene scene = search_schema().bind(params);
@@ -190,7 +140,8 @@ nlohmann::json run_search(const io::Parameters& params)
   ProgressBar bar;
   o.progress = [&](const oracle::SearchProgress& progress) { bar(progress); };
   const oracle::SearchResult result = oracle::parametric_search(o);
-  print_table(result, static_cast<std::size_t>(scene.table_rows));
+  // The table goes to the log (stderr), as every scene's, so that `--json -` prints JSON alone.
+  fmt::print(stderr, "{}", study::body_scores::ranked_table(result, static_cast<std::size_t>(scene.table_rows)));
   if (!scene.hdf5.empty())
   {
     io::write_search_hdf5(result, scene.hdf5);
@@ -202,9 +153,9 @@ nlohmann::json run_search(const io::Parameters& params)
 
 void add_search_command(CLI::App& app)
 {
-  add_scene_command(app, "search",
+  add_scene_command(app, search_schema(),
                     "Two-layer parametric search over the preprint's roller family: approximate screening, rigid-body "
                     "revalidation",
-                    search_schema().schema(), run_search);
+                    run_search);
 }
 } // namespace rollcheck::cli

@@ -1,6 +1,6 @@
 // `rollcheck search --score fem-sds`: the family table of FEM-SDS over whole
 // rolling loops (study/loop_scores/fem_sds_family.h): JSON with a row per genome, the
-// Markdown table on the log, and with --out the folder of family.json,
+// report with its Markdown table on the log, and with --out the folder of family.json,
 // table.md and family.png (postprocess/plot_fem_family.py).
 #include "cli/search_family.h"
 #include "cli/cli.h"
@@ -26,15 +26,12 @@ nlohmann::json run_family_scores(oracle::SearchGrid grid, int points, double rad
   const nlohmann::json j = to_json(result);
   if (process_rank() != 0)
     return j;
-  const std::string table = study::loop_scores::markdown_table(result);
-  spdlog::info("\nFEM-SDS of the {} grid over one loop of real rolling each, ranked by FEM-SDS ({} FEM solves shared, "
-               "{:.1f} s of FEM, {:.1f} s in all):\n\n{}",
-               oracle::name_of(settings.grid), result.fem_solves, result.table_wall_s, result.wall_s, table);
+  spdlog::info("{}", study::loop_scores::report(result, settings));
   if (!out.empty())
     io::draw_folder(out, python, io::default_scripts_folder() / "plot_fem_family.py", {}, "plot.log",
                     [&](const std::filesystem::path& folder) {
                       std::ofstream(folder / "family.json") << j.dump(1) << "\n";
-                      std::ofstream(folder / "table.md") << table;
+                      std::ofstream(folder / "table.md") << study::loop_scores::markdown_table(result);
                     });
   return j;
 }

@@ -116,7 +116,10 @@ nlohmann::json curvature_json(const contact::FaceCurvature& c)
           {"flat_faces", c.flat_faces}};
 }
 
-nlohmann::json oracle_json(const BodyScores& r, bool per_face)
+/// The keys of every oracle's record: the oracle, the body, the preprint's
+/// six scores (null where not computed, as under real rolling), the faces
+/// and the time.
+nlohmann::json record_json(const BodyScores& r)
 {
   const contact::ScoreVector& v = r.scores;
   nlohmann::json j = {{"oracle", oracle_name(r.oracle)},
@@ -128,8 +131,15 @@ nlohmann::json oracle_json(const BodyScores& r, bool per_face)
                       {"wds_depth", json_number(v.wds_depth)},
                       {"fds", json_number(v.fds)},
                       {"n_faces", r.n_faces},
-                      {"n_samples", v.n_samples},
-                      {"wall_s", r.wall_s},
+                      {"wall_s", r.wall_s}};
+  return j;
+}
+
+/// The preprint's oracles' keys beyond record_json.
+nlohmann::json oracle_json(const BodyScores& r, bool per_face)
+{
+  const contact::ScoreVector& v = r.scores;
+  nlohmann::json j = {{"n_samples", v.n_samples},
                       {"paper_compat", oracle::describe(r.compat) == oracle::describe(oracle::PaperCompat::reference())}};
   nlohmann::json quirks = nlohmann::json::object();
   for (const oracle::Quirk& q : oracle::quirks())
@@ -160,14 +170,13 @@ nlohmann::json oracle_json(const BodyScores& r, bool per_face)
   return j;
 }
 
+/// Real rolling's keys beyond record_json.
 nlohmann::json rolling_json(const BodyScores& s)
 {
   const oracle::RollingStudyResult& r = s.rolling;
   const oracle::RollingStudyParameters& p = s.rolling_parameters;
   auto maybe = [](double v) { return std::isnan(v) ? nlohmann::json(nullptr) : json_number(v); };
-  return {{"oracle", "rolling"},
-          {"body", s.body},
-          {"contact", r.contact},
+  return {{"contact", r.contact},
           {"contact_width", p.contact_width.model == oracle::ContactWidthModel::rigid ? "rigid" : "hertz"},
           {"uniformity_score", json_number(r.uniformity)},
           {"uniformity_score_continuum", maybe(r.continuum_uniformity)},
@@ -186,14 +195,6 @@ nlohmann::json rolling_json(const BodyScores& s)
           {"loops", p.loops},
           {"face_subdivisions", p.face_subdivisions},
           {"mass_points", p.mass_points},
-          {"n_faces", s.n_faces},
-          {"wall_s", s.wall_s},
-          {"cds", nullptr},
-          {"sds", nullptr},
-          {"tds", nullptr},
-          {"wds_vol", nullptr},
-          {"wds_depth", nullptr},
-          {"fds", nullptr},
           {"not_computed",
            "the rolling oracle scores its contact measure with the uniformity score U only (README \"The "
            "normalised uniformity score\"); cds, sds, tds, wds_vol, wds_depth and fds are not computed and are null"}};
@@ -270,7 +271,9 @@ BodyScores score_body(const ScoreBodySettings& s)
 
 nlohmann::json to_json(const BodyScores& scores, bool per_face)
 {
-  return scores.oracle == Oracle::rolling ? rolling_json(scores) : oracle_json(scores, per_face);
+  nlohmann::json j = record_json(scores);
+  j.update(scores.oracle == Oracle::rolling ? rolling_json(scores) : oracle_json(scores, per_face));
+  return j;
 }
 
 std::string summary_line(const BodyScores& s)

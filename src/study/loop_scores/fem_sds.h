@@ -166,6 +166,12 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& settings, fem::Sli
 
 nlohmann::json to_json(const FemSdsOrientation& orientation);
 nlohmann::json to_json(const FemSdsResult& result);
+/// The Markdown table of the directly solved orientations, and of their 3D
+/// slab check where it ran (the folder's table.md).
+std::string markdown_table(const FemSdsResult& result);
+/// The run in words for the log: the body, the table, the loop's scores with
+/// their convergence and the table's check against direct FEM.
+std::string report(const FemSdsResult& result);
 
 // The steps of the method, exposed for tests.
 

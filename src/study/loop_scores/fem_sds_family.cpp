@@ -78,15 +78,9 @@ nlohmann::json row_json(const FamilyRow& row, const FamilyRow& cylinder)
   }
   const LoopSds& l = row.loop.loop;
   const LoopSds& c = cylinder.loop.loop;
-  j["samples"] = l.samples;
-  j["singular_samples"] = l.singular_samples;
+  j.update(headline_json(l));
   j["point_hertz_sds"] = json_number(l.point_hertz.value);
-  j["line_hertz_sds"] = json_number(l.line_hertz.value);
-  j["fem_sds"] = json_number(l.fem.value);
   j["uniformity"] = json_number(row.loop.uniformity);
-  j["fem_sds_status"] = l.status();
-  j["fem_sds_table_change"] = json_number_or_null(l.table_change());
-  j["fem_sds_sample_change"] = json_number_or_null(l.fem_rulings.sample_change());
   if (cylinder.scored)
     j["over_cylinder"] = {{"point_hertz_sds", json_number(ratio(l.point_hertz.value, c.point_hertz.value))},
                           {"line_hertz_sds", json_number(ratio(l.line_hertz.value, c.line_hertz.value))},
@@ -213,5 +207,13 @@ std::string markdown_table(const FamilyResult& result)
                      100 * l.fem_rulings.sample_change(), l.status());
   }
   return t;
+}
+
+std::string report(const FamilyResult& result, const FamilySettings& settings)
+{
+  return fmt::format("\nFEM-SDS of the {} grid over one loop of real rolling each, ranked by FEM-SDS ({} FEM solves "
+                     "shared, {:.1f} s of FEM, {:.1f} s in all):\n\n{}",
+                     oracle::name_of(settings.grid), result.fem_solves, result.table_wall_s, result.wall_s,
+                     markdown_table(result));
 }
 } // namespace rollcheck::study::loop_scores

@@ -81,4 +81,6 @@ nlohmann::json to_json(const FamilyResult& result);
 
 /// The table of every row ranked by FEM-SDS, rows without scores last.
 std::string markdown_table(const FamilyResult& result);
+/// The table under a line naming the grid and the FEM table's cost: the log's report.
+std::string report(const FamilyResult& result, const FamilySettings& settings);
 } // namespace rollcheck::study::loop_scores

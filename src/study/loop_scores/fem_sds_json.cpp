@@ -139,25 +139,18 @@ nlohmann::json to_json(const FemSdsResult& result)
                      {"refined_dofs", node.fem.refined_dofs},
                      {"newton_iterations", node.fem.newton_iterations},
                      {"wall_s", json_number(node.fem.wall_s)}});
-  return {
+  nlohmann::json j = {
       {"fem_vs_line_hertz_worst", json_number(worst_fem_vs_line_hertz)},
       {"fem_sds_over_line_hertz_sds", both ? json_number(*loop.fem.value / *loop.line_hertz.value) : nullptr},
       {"body", result.body},
       {"oracle", oracle_name(result.oracle)},
       {"source", result.source},
-      {"samples", loop.samples},
       {"contact_held", result.contact_held},
-      {"singular_samples", loop.singular_samples},
       {"analytic_sds", json_number(loop.point_hertz.value)},
-      {"line_hertz_sds", json_number(loop.line_hertz.value)},
-      {"fem_sds", json_number(loop.fem.value)},
       {"fem_sds_half_table", json_number(loop.fem_half_table)},
-      {"fem_sds_table_change", json_number_or_null(loop.table_change())},
-      {"fem_sds_sample_change", json_number_or_null(loop.fem_rulings.sample_change())},
       {"fem_solves", loop.fem_solves},
       {"fem_solves_half_table", loop.fem_solves_half_table},
       {"converged", loop.converged()},
-      {"fem_sds_status", loop.status()},
       {"loop", to_json(loop)},
       {"fem_table", table},
       {"fem_table_wall_s", json_number(result.table_wall_s)},
@@ -183,5 +176,7 @@ nlohmann::json to_json(const FemSdsResult& result)
        "does not apply there (k1 k2 = 0 on the exact surface); the FEM and line-Hertz columns treat the ruling as "
        "plane-strain slices; peaks are taken away from the ruling's ends, where it meets the body's rims (creases: "
        "singular between two elastic bodies, not plane strain in any case; the 3D slab check shows the end)"}};
+  j.update(headline_json(loop));
+  return j;
 }
 } // namespace rollcheck::study::loop_scores

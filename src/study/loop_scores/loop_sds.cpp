@@ -490,4 +490,15 @@ nlohmann::json to_json(const LoopSds& loop)
     out["end_aware"] = end_aware;
   return out;
 }
+
+nlohmann::json headline_json(const LoopSds& loop)
+{
+  return {{"samples", loop.samples},
+          {"singular_samples", loop.singular_samples},
+          {"line_hertz_sds", json_number(loop.line_hertz.value)},
+          {"fem_sds", json_number(loop.fem.value)},
+          {"fem_sds_status", loop.status()},
+          {"fem_sds_table_change", json_number_or_null(loop.table_change())},
+          {"fem_sds_sample_change", json_number_or_null(loop.fem_rulings.sample_change())}};
+}
 } // namespace rollcheck::study::loop_scores

@@ -269,4 +269,9 @@ double line_hertz_peak(double force_n, double centre_of_pressure, const oracle::
 double held_fraction(double f, double loaded_from, double loaded_to, double crease_margin);
 
 nlohmann::json to_json(const LoopSds& loop);
+/// The loop's headline under the keys of every record of a whole loop
+/// (FEM-SDS's, the family table's rows): samples, singular_samples,
+/// line_hertz_sds, fem_sds, fem_sds_status, fem_sds_table_change and
+/// fem_sds_sample_change.
+nlohmann::json headline_json(const LoopSds& loop);
 } // namespace rollcheck::study::loop_scores

@@ -2,6 +2,8 @@
 #include "core/json_number.h"
 #include "core/error.h"
 #include "study/body_scores/score_body.h"
+#include "study/optimize/json_numbers.h"
+#include "study/optimize/names.h"
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
@@ -289,16 +291,6 @@ std::string multistart(Search& search, const OptimizeSettings& s)
   return fmt::format("{}", fmt::join(reasons, "; "));
 }
 
-nlohmann::json numbers(std::span<const double> values)
-{
-  nlohmann::json j = nlohmann::json::array();
-  for (const double v : values)
-    j.push_back(json_number(v));
-  return j;
-}
-
-nlohmann::json numbers(const Eigen::VectorXd& v) { return numbers(std::span<const double>(v.data(), v.size())); }
-
 nlohmann::json rows(const Eigen::MatrixXd& m)
 {
   nlohmann::json j = nlohmann::json::array();
@@ -316,13 +308,7 @@ const std::vector<std::pair<std::string, Method>>& method_names()
   return names;
 }
 
-std::string method_name(Method method)
-{
-  for (const auto& [name, value] : method_names())
-    if (value == method)
-      return name;
-  throw std::logic_error("unnamed optimisation method");
-}
+std::string method_name(Method method) { return name_of(method_names(), method, "optimisation method"); }
 
 OptimizeResult minimize(const Score& score, const OptimizeSettings& s)
 {
@@ -402,20 +388,12 @@ nlohmann::json to_json(const NoiseEstimate& e)
 
 std::string verdict_name(Verdict verdict)
 {
-  switch (verdict)
-  {
-  case Verdict::not_stationary:
-    return "not stationary";
-  case Verdict::local_minimum:
-    return "local minimum";
-  case Verdict::local_maximum:
-    return "local maximum";
-  case Verdict::saddle:
-    return "saddle";
-  case Verdict::undetermined:
-    return "undetermined";
-  }
-  throw std::logic_error("unnamed verdict");
+  static const std::vector<std::pair<std::string, Verdict>> names{{"not stationary", Verdict::not_stationary},
+                                                                  {"local minimum", Verdict::local_minimum},
+                                                                  {"local maximum", Verdict::local_maximum},
+                                                                  {"saddle", Verdict::saddle},
+                                                                  {"undetermined", Verdict::undetermined}};
+  return name_of(names, verdict, "verdict");
 }
 
 Derivatives finite_differences(const Score& score, std::span<const double> x, std::span<const double> steps,

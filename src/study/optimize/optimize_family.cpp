@@ -3,6 +3,8 @@
 #include "core/json_number.h"
 #include "geometry/convex_hull.h"
 #include "oracle/parallel_for.h"
+#include "study/optimize/json_numbers.h"
+#include "study/optimize/names.h"
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -231,14 +233,6 @@ double score_of(const body_scores::BodyScores& r, FamilyScore score, std::span<c
     throw ComputationError(fmt::format("no {} at genome {}", score == FamilyScore::cds ? "CDS" : "SDS",
                                        genome_text(x)));
   return *v;
-}
-
-nlohmann::json numbers(std::span<const double> values)
-{
-  nlohmann::json j = nlohmann::json::array();
-  for (const double v : values)
-    j.push_back(json_number(v));
-  return j;
 }
 
 std::string nuisance_text(const FamilySearchSettings& s)
@@ -505,15 +499,12 @@ nlohmann::json derivatives_json(const std::optional<StepChoice>& steps, const st
 
 nlohmann::json mesh_json(const FamilySearchResult& r)
 {
-  const auto resolution = [](const MeshResolution& m) {
-    return nlohmann::json{{"points", m.points}, {"faces", m.faces}};
-  };
   const bool faces = r.settings.match_face_count;
   return {{"matched_resolution", faces ? "faces" : "points"},
           {"points_per_circle", r.settings.points},
           {"target_faces", faces ? nlohmann::json(r.target_faces) : nlohmann::json()},
-          {"start", resolution(r.start_mesh)},
-          {"optimum", resolution(r.best_mesh)},
+          {"start", r.start_mesh},
+          {"optimum", r.best_mesh},
           {"radius_m", geometry::BodySpec{}.radius_m},
           {"note", faces ? "each body is meshed with the points per generating circle whose hull's face count is "
                            "nearest target_faces, the start's at points_per_circle (ties: points_per_circle itself, else the "
@@ -550,16 +541,13 @@ nlohmann::json optimum_json(const FamilySearchResult& r)
 nlohmann::json to_json(const FamilySearchResult& r)
 {
   const FamilySearchSettings& s = r.settings;
-  const auto name = [](const auto& names, auto value) {
-    return std::find_if(names.begin(), names.end(), [&](const auto& n) { return n.second == value; })->first;
-  };
   nlohmann::json noise = to_json(r.noise_replicates);
   noise["sigma"] = json_number(r.noise_sigma);
   noise["nuisance"] = nuisance_text(s);
   nlohmann::json sweeps = to_json(r.sweeps);
   for (nlohmann::json& sweep : sweeps)
     sweep["parameter"] = axis_names[sweep["axis"].get<std::size_t>()].parameter;
-  return {{"score", name(family_score_names(), s.score)},
+  return {{"score", name_of(family_score_names(), s.score, "family score")},
           {"oracle", s.oracle == body_scores::Oracle::rigid ? "rigid" : s.oracle == body_scores::Oracle::approximate ? "approx" : "rolling"},
           {"paper_compat", s.paper_compat},
           {"family", s.family == geometry::RollerFamily::paper ? "paper" : "centre-line"},

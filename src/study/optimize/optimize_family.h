@@ -125,6 +125,7 @@ struct MeshResolution
   int points = 0;
   long faces = 0;
 };
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(MeshResolution, points, faces)
 
 /// The face count of family_body(settings, x, points)'s hull (Qhull alone:
 /// no body checks, no scoring).
@@ -206,4 +207,22 @@ FamilySearchResult optimize_family(const FamilySearchSettings& settings);
 
 /// Named keys (docs/optimize.md "rollcheck optimize").
 nlohmann::json to_json(const FamilySearchResult& result);
+
+/// One line for the log: the score and oracle, the start and the optimum
+/// with their values, whether the optimum beats the start beyond the noise,
+/// the verdict at the start, the meshes and the cost.
+std::string summary_line(const FamilySearchResult& result);
+
+/// The convergence of the FEM-SDS loops a search with --score fem-sds scored
+/// (one status per body, loop_scores::fem_sds_scorer's): how many, and how
+/// many of each status, "converged", "not converged" or the status itself
+/// (singular, or why the body has no whole loop).
+struct LoopStatusCounts
+{
+  std::size_t scored = 0;
+  std::map<std::string, int> by_status;
+  int not_converged() const;
+};
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LoopStatusCounts, scored, by_status)
+LoopStatusCounts count_loop_statuses(std::span<const std::string> statuses);
 } // namespace rollcheck::study::optimize

@@ -1,6 +1,7 @@
 // FEM-SDS at library level (study/loop_scores/fem_sds.h, study/loop_scores/loop_sds.h): the steps of
 // the method against hand computations (where the slices go, where the
-// mapped pressures are held, the line-load Hertz peak), and the whole loop of
+// mapped pressures are held, the line-load Hertz peak), the table of the
+// orientations with its slab check, and the whole loop of
 // the cylinder against the value its geometry implies. A cylinder rolling
 // without slipping carries the same line load along every generator, so over
 // a loop each side face collects the same pressure sum and the end discs
@@ -18,6 +19,7 @@
 #include "geometry/body.h"
 #include "geometry/face_areas.h"
 #include "study/loop_scores/fem_sds.h"
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <limits>
@@ -43,6 +45,37 @@ TEST(FemSdsSteps, SlicesStayClearOfTheCreasesAndMappingPointsSplitTheLoadedPart)
   EXPECT_DOUBLE_EQ(study::loop_scores::held_fraction(0.59, 0.2, 0.6, 0.05), 0.55);
   // ... or at its middle when it is shorter than two margins.
   EXPECT_DOUBLE_EQ(study::loop_scores::held_fraction(0.0, 0.0, 0.06, 0.05), 0.03);
+}
+
+TEST(FemSdsSteps, TheTableHasARowPerOrientationAndTheSlabCheckWhereItRan)
+{
+  study::loop_scores::FemSdsResult result;
+  result.body = "cylinder";
+  result.source = "a made-up loop";
+  result.loop.samples = 16;
+  result.orientations.resize(2);
+  study::loop_scores::FemSdsOrientation& solved = result.orientations[1];
+  solved.index = 1;
+  solved.solved = true;
+  solved.locus.ruling = oracle::Ruling{};
+  solved.locus.centre_of_pressure = 0.5;
+  solved.fem_peak_pa = solved.fem_peak_refined_pa = solved.line_hertz_peak_pa = 2e6;
+  std::string table = study::loop_scores::markdown_table(result);
+  EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 4); // head, rule and a row each
+  EXPECT_NE(table.find("| 0 | 0 | point | - | 0 | 0 | - | - |"), std::string::npos) << table;
+  EXPECT_NE(table.find("| 1 | 0 | point | 0.500 | 0 | 0 | 2 | 2 | 2 | +0.00 % | +0.00 % |"), std::string::npos)
+      << table;
+  EXPECT_EQ(table.find("3D slab"), std::string::npos);
+  fem::SlabFem slab;
+  slab.slice_peak_pressure_pa = {2.02e6};
+  solved.slab.push_back(slab);
+  result.slab_checked = 1;
+  table = study::loop_scores::markdown_table(result);
+  EXPECT_NE(table.find("3D slab of the whole ruling against the slices"), std::string::npos) << table;
+  EXPECT_NE(table.find("| +1.00 % |"), std::string::npos) << table;
+  const std::string report = study::loop_scores::report(result);
+  EXPECT_TRUE(report.starts_with("\nfem-sds cylinder (a made-up loop):\n\n" + table)) << report;
+  EXPECT_NE(report.find("over the 16 samples of the loop"), std::string::npos) << report;
 }
 
 TEST(FemSdsSteps, LineHertzPeakFollowsTheNoTensionLineLoad)

@@ -6,7 +6,8 @@
 // returns a body no worse than its start, the whole search finds the body a
 // geometric score with a known minimum picks out, and under matched face
 // count each genome's hull has the start's face count while the start keeps
-// its own points per circle.
+// its own points per circle; the log line says what the JSON says, and the
+// FEM-SDS loops' statuses are counted by convergence.
 #include "study/optimize/optimize_family.h"
 #include "core/error.h"
 #include "geometry/body.h"
@@ -15,6 +16,7 @@
 #include "study/body_scores/score_body.h"
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <fmt/format.h>
 #include <iostream>
 #include "study/optimize/family_search_fixture.h"
 #include <gtest/gtest.h>
@@ -337,4 +339,32 @@ TEST(OptimizeFamily, FemSdsReplicatesAlsoChangeTheMesh)
     replicate_score(s, meshes, start, r);
     EXPECT_EQ(seen.back(), s.points + offsets[r]);
   }
+}
+
+TEST(OptimizeFamily, TheLogLineSaysWhatTheJsonSays)
+{
+  const FamilySearchResult r = optimize_family(cheap_family_search());
+  const nlohmann::json j = to_json(r);
+  const std::string line = summary_line(r);
+  EXPECT_TRUE(line.starts_with("optimize " + j["score"].get<std::string>() + " (" + j["oracle"].get<std::string>()
+                               + "): start " + j["start"].dump() + " -> " + j["start_value"].dump()))
+      << line;
+  EXPECT_NE(line.find("optimum " + j["optimum"]["x"].dump() + " -> " + j["optimum"]["value"].dump()),
+            std::string::npos)
+      << line;
+  EXPECT_NE(line.find(fmt::format("{} genomes, {} oracle runs", r.score_evaluations, r.oracle_runs)),
+            std::string::npos)
+      << line;
+}
+
+TEST(OptimizeFamily, LoopStatusesAreCountedByConvergence)
+{
+  const std::vector<std::string> statuses{"converged", "not converged (table change 2 %)", "converged",
+                                          "singular: 3 samples on a rim point", "not converged (samples)"};
+  const LoopStatusCounts counts = count_loop_statuses(statuses);
+  EXPECT_EQ(counts.not_converged(), 2);
+  const nlohmann::json j = counts;
+  EXPECT_EQ(j, nlohmann::json::parse(R"({"scored": 5, "by_status": {"converged": 2, "not converged": 2,
+                                          "singular: 3 samples on a rim point": 1}})"));
+  EXPECT_EQ(count_loop_statuses({}).not_converged(), 0);
 }
