@@ -1,6 +1,6 @@
 // `rollcheck robustness`: every headline comparison of bodies over the grid
 // of modelling choices, with resolution-free scores and a verdict each
-// (study/robustness/robustness.h). Prints the verdict table; --json writes
+// (study/robustness/robustness.h). Logs the verdict table; --json writes
 // the grid, the comparisons and every body's scores per cell.
 #include "cli/cli.h"
 #include "core/atomic_file.h"
@@ -8,7 +8,7 @@
 #include "study/robustness/robustness.h"
 #include <fmt/format.h>
 #include <fstream>
-#include <iostream>
+#include <spdlog/spdlog.h>
 
 namespace rollcheck::cli
 {
@@ -33,7 +33,7 @@ void add_robustness_command(CLI::App& app)
             if (!out)
               throw ComputationError(fmt::format("option --markdown: cannot write '{}'", markdown_path));
           });
-        std::cout << table;
+        spdlog::info("\n{}", table);
         return CommandResult{study::robustness::to_json(result), 0};
       });
   sub->add_option("--samples-per-loop", settings.samples_per_loop,

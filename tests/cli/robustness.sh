@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# `rollcheck robustness`: the JSON the robustness study promises (the grid,
+# each comparison's verdict, ratio range and flips), its Markdown table, the
+# headline U comparison's flip, and an output path refused before computing.
+set -u
+source "$(dirname "$0")/lib.sh"
+bin=$1; source=$2; tmp=$3
+rm -rf "$tmp"; mkdir -p "$tmp"
+# A coarse loop: the keys and verdicts, not the converged values (tests/study/robustness).
+"$bin" -q robustness --samples-per-loop 1000 --pieces 8 --json "$tmp/r.json" --markdown "$tmp/r.md" \
+  || { echo "FAIL: robustness run"; fail=1; }
+check_json "grid names each choice" \
+  '.grid.rolling_energy == ["0.02","0.1","0.36","1","3","uniform_rate"] and .grid.contact_width == ["hertz","geometric"] and .grid.load_rule == ["static","dynamic","uniform"] and .grid.end_margin == ["0.02","0.05","0.1"]' \
+  "$tmp/r.json"
+check_json "every comparison record has its fields" \
+  '[.comparisons[] | has("name") and has("score") and has("bodies") and has("verdict") and has("ratio_min") and has("ratio_max") and has("flips")] | all' \
+  "$tmp/r.json"
+check_json "a verdict is robust or names its choices" \
+  '[.comparisons[].verdict | test("^(robust|depends on [a-z_, ]+|cannot be tested)$")] | all' "$tmp/r.json"
+# With the Hertz width and the motion's own load the oloid's U falls below the
+# cylinder's 0.500 near 1.36 times the barrier energy (bisected).
+check_json "oloid vs cylinder U flips near energy excess 0.36" \
+  '[.comparisons[] | select(.name == "oloid vs cylinder" and .score == "contact_time_u") | .flips[]
+    | select(.choice == "rolling_energy" and .settings.contact_width == "hertz" and .settings.load_rule == "dynamic")
+    | .value | (. > 0.3 and . < 0.42)] | (length > 0 and all)' "$tmp/r.json"
+grep -q '^| oloid vs cylinder | contact_time_u |' "$tmp/r.md" || { echo "FAIL: no Markdown row"; fail=1; }
+# An output path that cannot be written is refused (before any rolling: the
+# check comes first in the command).
+"$bin" -q robustness --markdown /nonexistent/r.md > /dev/null 2> "$tmp/err.txt"; code=$?
+[[ $code -eq 2 ]] || { echo "FAIL: bad --markdown path gave exit $code"; fail=1; }
+grep -q -- '--markdown' "$tmp/err.txt" || { echo "FAIL: the message does not name --markdown"; fail=1; }
+exit $fail
