@@ -2,7 +2,7 @@
 and report.html (the same, PNGs embedded: one self-contained file), rendered
 from templates/report.md.j2 and templates/report.html.j2 (Jinja2).
 
-In order (docs/report.md): 1. verdicts: the validation checks (--validation,
+In order (docs/guide/report.md): 1. verdicts: the validation checks (--validation,
 the JSON `rollcheck validate` writes) and the status of every case; 2. the
 audit of the preprint's claims (--audit, the JSON of `rollcheck audit
 --json`); 3. the plots, each with what it shows and what to conclude; 4. FEM

@@ -13,7 +13,7 @@
 #    evaluations; it usually stops by itself) and a global one (DIRECT-L,
 #    1000 evaluations), each timed as the whole command (noise replicates,
 #    search, derivatives at the start and at the optimum, sweeps). Rigid
-#    scores average 16 replicates, the costlier choice docs/optimize.md
+#    scores average 16 replicates, the costlier choice docs/methods/optimize.md
 #    recommends. FEM-SDS is not a fast score (rollcheck-fem under mpirun).
 #
 # Both tables use the JSON's wall_s; the search itself is sequential, and the

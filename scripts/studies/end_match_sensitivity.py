@@ -12,7 +12,7 @@ the slice at the coarse body's q at d, taken as the run's slice at d_m
 scaled by sqrt(q(d) / q(d_m)) (line Hertz at fixed R: an approximation
 away from d_m; exact at d = d_m, where it reproduces the check), against
 the whole body's reading. Needs `rollcheck whole-body --load-rule
-coarse-body --json CHECK.json` (docs/whole-body.md).
+coarse-body --json CHECK.json` (docs/methods/whole-body.md).
 """
 import json
 import math

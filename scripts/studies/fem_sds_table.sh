@@ -1,5 +1,5 @@
 #!/bin/bash
-# The FEM-SDS tables of docs/fem-sds.md: runs the four fem-sds cases on two
+# The FEM-SDS tables of docs/results/fem-sds.md: runs the four fem-sds cases on two
 # ranks and prints, over one loop of real rolling each, the preprint's
 # point-Hertz SDS, the line-Hertz SDS and FEM-SDS with their convergence (FEM
 # table K to 2K, samples halved), the oloid/cylinder discrimination under

@@ -2,7 +2,7 @@
 """Peak-stress comparison at the rims (issue 14): `rollcheck rim --body` for
 the true oloid, the preprint's body, the cylinder and the family's best
 bodies (the FEM-SDS optimum and the real-rolling U optimum of
-`rollcheck optimize --family centre-line`, docs/optimize.md), on one
+`rollcheck optimize --family centre-line`, docs/methods/optimize.md), on one
 counter-face and edge, and one Markdown table of what each run printed.
 
     scripts/studies/rim_peaks.py BUILD_DIR [--counter-face rigid|steel] [--ranks 2]

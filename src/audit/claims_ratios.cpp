@@ -57,7 +57,7 @@ std::vector<Claim> ratio_claims(const ClaimCommands& c)
        "oloid 2.42e-6, cylinder ∞",
        "holds when the cylinder's FDS is infinite and the oloid's finite.",
        "With every quirk corrected both are infinite: the stress amplitude of a zero-to-p0 cycle is p0/2, which alone "
-       "makes the oloid's FDS infinite (README quirk table); the right E* alone makes the cylinder's finite.",
+       "makes the oloid's FDS infinite (docs/results/oracles.md#paper-compat-quirk-table); the right E* alone makes the cylinder's finite.",
        joined({cells_in(oracle_modes, c.fatigue, rules::cylinder_fds_infinite()),
                {not_built(mode::rolling),
                 {mode::contact, c.fem_sds_pair,

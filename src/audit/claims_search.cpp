@@ -33,7 +33,7 @@ std::vector<Claim> search_claims(const ClaimCommands& c)
        "holds when the search from the family's (90, 1, 1) finds no body better by more than the score's noise "
        "threshold and the gradient and Hessian there say local minimum.",
        "The paper family's (90, 1, 1) is the preprint's body, the centre-line family's is the true oloid "
-       "(docs/optimize.md). Scores over faces fall with the face count, which moves with the genome at a fixed number "
+       "(docs/methods/optimize.md). Scores over faces fall with the face count, which moves with the genome at a fixed number "
        "of points per circle; U does not depend on it.",
        cells_in({mode::paper, mode::true_oloid, mode::corrected, mode::rolling, mode::contact}, c.optimize,
                 rules::start_is_local_optimum())},

@@ -37,7 +37,7 @@ std::vector<Claim> stress_claims(const ClaimCommands& c)
        "at most its largest interior pressure.",
        "Every loaded ruling ends on the body's rims, for the oloid its two generating circles: fixed loci of the body. "
        "A sharp obtuse edge there is singular against the rigid plane (Williams's wedge), which a 3D FEM of each end "
-       "confirms (`rollcheck rim`, docs/rims.md); against a block of the same steel every sharp edge above 77.45 deg "
+       "confirms (`rollcheck rim`, docs/methods/rims.md); against a block of the same steel every sharp edge above 77.45 deg "
        "is, the cylinder's square ends too. Rounded edges are finite: README, \"The rims\".",
        {{mode::contact, c.rims, rules::rims_free_of_concentration()}}},
   };

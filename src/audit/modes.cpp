@@ -12,7 +12,7 @@ std::vector<std::pair<std::string, std::string>> audit_modes()
       {mode::true_oloid, "paper-compatible, with the true oloid (`--body oloid`: hull of two unit circles in "
                          "perpendicular planes, each through the other's centre) instead of the preprint's (90,1,1) "
                          "roller"},
-      {mode::corrected, "every paper-compat quirk switch corrected (no `--paper-compat`; README quirk table); for the "
+      {mode::corrected, "every paper-compat quirk switch corrected (no `--paper-compat`; docs/results/oracles.md#paper-compat-quirk-table); for the "
                         "FEM item, the penalty-contact FEM against analytic Hertz"},
       {mode::rolling, "rolling without slipping under gravity from the stable ruling with 1.1x the barrier energy, "
                       "exact support sets, Hertz contact width, scored with the normalised uniformity score U on the "

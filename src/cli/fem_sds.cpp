@@ -1,6 +1,6 @@
 // `rollcheck fem-sds`: SDS over a whole rolling loop under FEM contact stress,
 // against the preprint's point-Hertz SDS and line-contact Hertz
-// (docs/fem-sds.md). Also the scene "fem-sds" of case files.
+// (docs/methods/fem-sds.md). Also the scene "fem-sds" of case files.
 // The method, its tables and its report are study/loop_scores/fem_sds.h; here
 // its parameters, the report in the log, the folder of plots and the JSON.
 #include "cli/cli.h"
@@ -43,7 +43,7 @@ const io::BoundSchema<FemSdsSettings>& fem_sds_schema()
         .integer("seed", "--seed", &FemSdsSettings::seed, "",
                  "Seed of the stratified sampling (the same seed, the same picks)", io::non_negative)
         .real("barrier_energy_excess", "--energy-excess", &FemSdsSettings::barrier_energy_excess, "",
-              "Rolling oracle: initial kinetic energy / potential barrier - 1 (README real-rolling table)",
+              "Rolling oracle: initial kinetic energy / potential barrier - 1 (docs/results/real-rolling.md#u-against-the-rolling-speed-rollcheck-oracle---oracle-rolling)",
               io::non_negative)
         .integer("runs", "--runs", &FemSdsSettings::runs, "",
                  "Rigid oracle: runs with the reference's initial spins (the preprint: 3)", io::Bounds{1, 5})

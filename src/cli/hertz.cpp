@@ -1,5 +1,5 @@
 // `rollcheck hertz`: penalty-contact FEM of a sphere or cylinder on a rigid
-// plane, every result next to Hertz theory (src/fem, README "Hertz FEM").
+// plane, every result next to Hertz theory (src/fem, docs/methods/hertz-fem.md).
 // Also the scene "hertz" of case files, and the convergence and penalty
 // studies (`--study`).
 #include "cli/cli.h"

@@ -1,6 +1,6 @@
 // `rollcheck optimize`: where a two-circle roller family's optimum lies, and
 // what its (90, 1, 1) member is (gradient, Hessian, verdict), by a continuous
-// search with NLopt (docs/optimize.md). Also the scene "optimize" of case
+// search with NLopt (docs/methods/optimize.md). Also the scene "optimize" of case
 // files. The method and its log line are study/optimize/optimize_family.h;
 // here its parameters, the log, the start's and the optimum's meshes, the
 // JSON, the plots and the finished runs kept in the output folder for a
@@ -65,7 +65,7 @@ void add_method_parameters(Schema& s)
             "Match the face count, not the points per circle: mesh each genome with the points per circle whose "
             "hull's face count is nearest the start's at --points (ties: --points itself, else the fewer points), "
             "since CDS falls about as faces^-2; off: every body with --points per circle")
-      .choice("method", "--method", &S::method, "NLopt method (docs/optimize.md)", study::optimize::method_names())
+      .choice("method", "--method", &S::method, "NLopt method (docs/methods/optimize.md)", study::optimize::method_names())
       .integer("max_evaluations", "--max-evaluations", &S::max_evaluations, "",
                "Distinct genomes the search scores, the start included", io::Bounds{1, 100000})
       .integer("replicates", "--replicates", &S::replicates, "",

@@ -1,5 +1,5 @@
 // `rollcheck oracle` and the case-file scene "oracle": study::body_scores::score_body, the preprint's oracles scored with CDS ...
-// FDS (README "rollcheck oracle") or real rolling scored with U (`--oracle rolling`, README "Corrected physics"),
+// FDS (docs/methods/oracles.md#rollcheck-oracle) or real rolling scored with U (`--oracle rolling`, docs/methods/real-rolling.md),
 // and the paper-compat quirk table (`--quirk-table`, study::body_scores::quirk_table).
 #include "cli/cli.h"
 #include "cli/scenes.h"
@@ -36,7 +36,7 @@ void add_scene_parameters(Schema& s)
       .flag("paper_compat", "--paper-compat", &OracleScene::paper_compat,
             "Reproduce the reference code, quirks included (every switch of --quirks paper); else all are corrected")
       .text("quirks", "--quirks", &OracleScene::quirks,
-            "Set single paper-compat switches after --paper-compat: name=paper|corrected,... (README quirk table)")
+            "Set single paper-compat switches after --paper-compat: name=paper|corrected,... (docs/results/oracles.md#paper-compat-quirk-table)")
       .flag("per_face", "--per-face", &OracleScene::per_face, "Add the per-face arrays to the JSON")
       .flag("quirk_table", "--quirk-table", &OracleScene::quirk_table,
             "Print the table of each paper-compat switch's effect, alone, on the rigid-body scores, with the band")

@@ -1,5 +1,5 @@
 // `rollcheck report --from STORE`: the Markdown and HTML report of a results
-// store, with the plots of postprocess/ (README "Report").
+// store, with the plots of postprocess/ (docs/guide/report.md).
 #include "cli/cli.h"
 #include "io/batch_report.h"
 #include <fmt/format.h>

@@ -10,7 +10,7 @@ void add_run_command(CLI::App& app)
 {
   static std::string case_path;
   static std::vector<std::string> overrides;
-  CLI::App* sub = add_command(app, "run", "Run a case file (TOML, see README 'Case files')", [] {
+  CLI::App* sub = add_command(app, "run", "Run a case file (TOML, see docs/guide/case-files.md)", [] {
     const io::CaseFile file = io::read_case_file(case_path);
     const std::string origin = fmt::format("case file '{}'", case_path);
     const Scene& scene = find_scene(file.kind, origin);

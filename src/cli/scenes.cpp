@@ -69,7 +69,7 @@ const io::BoundSchema<double>& penalty_schema()
 {
   return kept_schema<double>("penalty", [](auto& s) {
     s.real("penalty_c", "--penalty-c", [](double& c) -> double& { return c; }, "",
-           "Penalty kappa = c E / h_c (README: penalty study)", io::positive);
+           "Penalty kappa = c E / h_c (docs/results/hertz.md#penalty-study-error-against-c-at-fixed-mesh)", io::positive);
   });
 }
 } // namespace rollcheck::cli

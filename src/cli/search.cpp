@@ -1,5 +1,5 @@
 // `rollcheck search`: the preprint's two-layer parametric search over the
-// paper family of rollers (README "rollcheck search"): approximate screening
+// paper family of rollers (docs/methods/oracles.md#rollcheck-search): approximate screening
 // of a grid, rigid-body revalidation of the best K (or all) scored by
 // study::body_scores::revalidation_scores, the ranked table
 // (study/body_scores/search_table.h), JSON and HDF5. Also the scene "search"
@@ -49,7 +49,7 @@ const io::BoundSchema<SearchScene>& search_schema()
                 "cds: the preprint's two-layer search by contact-time score (approximate screening, rigid-body "
                 "revalidation); fem-sds: every genome of the grid and the references (the preprint's body, the true "
                 "oloid, the cylinder at the oloid's face count) over one loop of real rolling each, scored by "
-                "point-Hertz SDS, line-Hertz SDS, FEM-SDS and U (docs/fem-sds.md)",
+                "point-Hertz SDS, line-Hertz SDS, FEM-SDS and U (docs/methods/fem-sds.md)",
                 {{"cds", SearchScore::cds}, {"fem-sds", SearchScore::fem_sds}})
         .text("out", "--out", &S::out,
               "--score fem-sds: folder for family.json, table.md and family.png (written whole or not at all)")
@@ -79,7 +79,7 @@ const io::BoundSchema<SearchScene>& search_schema()
         .text("metrics", "--metrics", &S::metric_list,
               "Scores of revalidated genomes besides CDS, from sds,tds,wds,fds, or all (contact parameters at the "
               "preprint's values)")
-        .text("hdf5", "--hdf5", &S::hdf5, "Also write the results to this HDF5 file (README: search store)")
+        .text("hdf5", "--hdf5", &S::hdf5, "Also write the results to this HDF5 file (docs/guide/fields.md#hdf5-stores)")
         .integer("table_rows", "--rows", &S::table_rows, "", "Rows of the ranked table printed",
                  io::Bounds{0, 100000});
   });

@@ -8,7 +8,7 @@
 // pointing into the contact at that end, has tan g = -(b . u') / (u . u');
 // the overhang is 90 deg - g: 0 for a square rim (the cylinder's, where u' is
 // the axis), positive for an obtuse edge, whose end pressure is singular
-// against a rigid plane (README "Creases"). The edge's own plane, the one
+// against a rigid plane (docs/methods/fem-sds.md#creases). The edge's own plane, the one
 // perpendicular to t, is where the wedge angle strictly belongs; the slab
 // carries only this trace (its end faces contain the horizontal normal to the
 // ruling).

@@ -15,7 +15,7 @@
 // box: DOLFINx's nearest cell, searched for them alone). On the rounded
 // 120 deg rim end (cases/rim_obtuse_rounded.toml, 2 ranks, 53k-97k
 // unknowns) it takes 0.20-0.27 s a level; DOLFINx's nearest-cell search for
-// every node beyond a rank's own boxes took 4.6-15 s (docs/rims.md, "Speed").
+// every node beyond a rank's own boxes took 4.6-15 s (docs/notes/rims-log.md#speed).
 //
 // Parts: where two bodies meet on one interface (a body and the block it
 // presses on), the twin nodes there hold different values; `part(x)`, given

@@ -44,7 +44,7 @@ namespace rollcheck::fem
 ///   even where the faces match: on the preprint's 60 deg end on steel they
 ///   converged to the same ratio (3.4628 against the dual's 3.4716) with
 ///   the far side's nodes scattering by 4.0-4.5 % instead of 2.5-2.8 % and
-///   up to 1.5 times the Newton and Krylov iterations (docs/rims.md).
+///   up to 1.5 times the Newton and Krylov iterations (docs/methods/rims.md).
 ///   The node paired with the point of the lower facet below it (node to
 ///   segment, Wriggers sec. 4.2), which this replaces on the rim's fillet,
 ///   fails the patch test: there its pressures scattered by +-10 % from

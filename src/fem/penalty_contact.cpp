@@ -267,7 +267,7 @@ NewtonReport PenaltyContact::solve()
   // the linear solve's tolerance. (The first residual, under the new
   // approach's jump, is left out of the scale: a stricter test.) On a rim
   // end on steel the converged residuals fell to 1e-15 to 2e-9 of that
-  // scale, the others stayed above 7.9e-6 (docs/rims.md, "Speed").
+  // scale, the others stayed above 7.9e-6 (docs/notes/rims-log.md#speed).
   double largest_residual = 0;
   bool full_step = false;
   for (int it = 1; it <= max_newton_iterations && failure.empty(); ++it)

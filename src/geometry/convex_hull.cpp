@@ -31,7 +31,7 @@ SurfaceMesh convex_hull(const Vertices& points, std::string_view what)
   FILE* errors = std::tmpfile();
   // Triangulated output. Coplanar facets (a roller's flat disc) are fanned
   // from another apex than trimesh picks, so face sets can differ there from
-  // the reference's meshes (README, "known differences").
+  // the reference's meshes (docs/methods/oracles.md#limits).
   char options[] = "qhull Qt";
   const int status = qh_new_qhull(qh, 3, static_cast<int>(points.rows()), coords.data(), False, options,
                                   nullptr, errors);

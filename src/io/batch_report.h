@@ -1,7 +1,7 @@
 #pragma once
 // The report of a results store: Markdown and HTML with the plots and tables
 // that postprocess/make_report.py draws from the store (Debian's
-// /usr/bin/python3 with matplotlib and h5py; README "Report").
+// /usr/bin/python3 with matplotlib and h5py; docs/guide/report.md).
 #include <filesystem>
 #include <functional>
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
 // The finished runs of a search, kept in a file so that rerunning the same
 // command after an interruption reuses them (`rollcheck optimize --out DIR`
-// keeps DIR/evaluations.json; docs/optimize.md "Resuming"). Each run is
+// keeps DIR/evaluations.json; docs/methods/optimize.md "Resuming"). Each run is
 // (genome, replicate) -> value, and the file holds the hash of the settings
 // the values depend on (case_hash): a file written under another hash is not
 // read, and the next save replaces it. The file is rewritten whole after each

@@ -108,7 +108,7 @@ void flatten(const nlohmann::json& node, std::vector<const nlohmann::json*>& lea
 
 void write_attribute(hid_t object, const std::string& name, const nlohmann::json& value);
 
-/// The unit a key's suffix names (README "Conventions": keys carry their
+/// The unit a key's suffix names (docs/guide/command-line.md#conventions: keys carry their
 /// unit), "1" for a pure number or a count.
 std::string unit_of(const std::string& key)
 {

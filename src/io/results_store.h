@@ -2,7 +2,7 @@
 // The results store of a batch: one HDF5 file holding every case's record,
 // written whole or not at all (a temporary file renamed over the target).
 // The scene summaries are stored generically, so a new scene needs no change
-// here. Layout (README "Results store"):
+// here. Layout (docs/guide/fields.md#hdf5-stores):
 //
 //   /                      attrs: layout = "rollcheck-results-1", rollcheck_version,
 //                                 and the batch attributes given (n_cases, ...)

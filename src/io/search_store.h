@@ -5,7 +5,7 @@
 // touched, or no stress above the endurance limit) as the string "inf", a
 // score not asked for as null. NaN never appears: it raises ComputationError.
 //
-// HDF5 layout (README "rollcheck search"):
+// HDF5 layout (docs/methods/oracles.md#rollcheck-search):
 //   /          attrs: layout = "rollcheck-search-1", grid, approximate_steps,
 //              points, anchor_points, matched_resolution, validate_top,
 //              validate_all, compat (the paper-compat switches), threads,

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `rollcheck oracle --oracle rolling`: real rolling of a named body scored with
-# the uniformity score U (README "Corrected physics").
+# the uniformity score U (docs/methods/real-rolling.md).
 # - cylinder: only its side is touched, uniformly in time, so its continuum
 #   score is U_inf = A / A_side - 1 = (2 pi r h + 2 pi r^2) / (2 pi r h) - 1 = r / h
 #   = 1/2 for r = 1, h = 2, at any rolling rate (two energy excesses); the exact

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The content of the report (postprocess/make_report.py, docs/report.md) of a
+# The content of the report (postprocess/make_report.py, docs/guide/report.md) of a
 # small store (a mesh case and the axisymmetric Hertz case): the verdicts come
 # first, a failed validation check is marked failed, the numbers in a caption
 # are the store's, a single refine level is said not to be a curve, a missing

@@ -3,7 +3,7 @@
 # (no solve): the cylinder's every direction is the same generator under
 # uniform line Hertz; the oloid's scan reaches its vertex (180 deg at c =
 # 1/4 from the loaded end) and its --direction 67.5 is the nearest-square
-# orientation docs/whole-body.md checks; bodies without a ruling exit 2.
+# orientation docs/methods/whole-body.md checks; bodies without a ruling exit 2.
 set -u
 source "$(dirname "$0")/lib.sh"
 bin=$1; here=$2; tmp=$3

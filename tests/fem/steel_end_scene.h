@@ -3,9 +3,9 @@
 // the rim block scene (fem/mesh/scene_mesh.h build_rim_block_mesh) at coarse edge
 // elements, h_e = b / 8, which gmsh meshes in seconds. The preprint's body's
 // 60 deg end (b = 0.116 mm, H = 36.2 b, r_e = 0.4 mm, R = 22.4 mm; the end
-// table's node whose fillet swung, docs/rim-results.md) and the oloid's
+// table's node whose fillet swung, docs/notes/rim-runs.md) and the oloid's
 // square end at its loop's load (b = 34.6 um, r_e = 11.5 b; its pairing met
-// a side plane's facet on the fillet's arc, docs/rims.md).
+// a side plane's facet on the fillet's arc, docs/methods/rims.md).
 #include "fem/mesh/scene_mesh.h"
 #include <mpi.h>
 #include <numbers>

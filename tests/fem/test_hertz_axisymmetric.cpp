@@ -108,7 +108,7 @@ TEST(HertzAxisymmetric, PenaltySweepWarnsWhenThePenaltyErrorDominates)
       EXPECT_FALSE(has_flag(r, "penalty_error_dominates"));
       expect_verified(r, 0.003);
     }
-    // The estimate follows the observed penalty error (README, penalty study).
+    // The estimate follows the observed penalty error (docs/results/hertz.md#penalty-study-error-against-c-at-fixed-mesh).
     if (c <= 1)
       EXPECT_NEAR(r.penalty_error_estimate / p0_error, 1.0, 0.25);
   }

@@ -29,7 +29,7 @@ TEST(SliceContact, EverySliceMeetsLineHertzAndTheFinerLevelAgrees)
     const double b = std::sqrt(4 * q * R / (std::numbers::pi * e_star));
     EXPECT_NEAR(s.hertz_peak_pressure_pa / p0, 1.0, 1e-12);
     EXPECT_NEAR(s.hertz_half_width_m / b, 1.0, 1e-12);
-    // The Hertz plane-strain verification's accuracy (README "Hertz FEM": p0 within 0.1 %, b within 0.1 %).
+    // The Hertz plane-strain verification's accuracy (docs/methods/hertz-fem.md: p0 within 0.1 %, b within 0.1 %).
     EXPECT_NEAR(s.peak_pressure_pa / p0, 1.0, 5e-3) << "slice " << k;
     EXPECT_NEAR(s.half_width_m / b, 1.0, 5e-3) << "slice " << k;
     EXPECT_LT(std::abs(s.refinement_change()), 3e-3) << "slice " << k;
@@ -86,7 +86,7 @@ TEST(SliceScaling, TheSliceScalesWithItsRadiusAndTheTableMeetsDirectSolves)
 // A slice's mesh is graded from its b; gmsh's nodes follow b's last digits,
 // so two loads equal but for their last bits (a whole body's q through
 // MUMPS's parallel sums) meshed differently and their peaks differed by up to
-// 0.18 % (docs/whole-body.md). A slice is now solved at q rounded to 9
+// 0.18 % (docs/results/whole-body.md). A slice is now solved at q rounded to 9
 // significant digits: such loads give one mesh, so peaks equal to the load's
 // own relative change.
 TEST(SliceContact, LoadsEqualButForTheirLastBitsGiveTheSamePeak)

@@ -1,7 +1,7 @@
 #pragma once
 // The JSON summary of a Hertz verification run: every measured value next to
 // its Hertz value and their relative error, under named keys with units
-// (README "Hertz FEM"; the audit's pointers and the plots read these keys).
+// (docs/methods/hertz-fem.md; the audit's pointers and the plots read these keys).
 #include "fem/scenes/hertz_solve.h"
 #include <nlohmann/json.hpp>
 

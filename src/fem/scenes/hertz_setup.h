@@ -1,7 +1,7 @@
 #pragma once
 // What a Hertz verification run is given: the model, the body, the load and
 // the numerical choices, with the defaults that the penalty and convergence
-// studies justify (README, "Hertz FEM"). Also the analytic reference the run
+// studies justify (docs/methods/hertz-fem.md). Also the analytic reference the run
 // is compared with, and the mesh sizes derived from it.
 #include "fem/mesh/mesh_grading.h"
 #include "fem/model.h"
@@ -49,7 +49,7 @@ struct HertzSettings
 };
 
 /// The model's default refine level for a degree: the coarsest level that
-/// meets the model's tolerances with a 2x margin (README, convergence table);
+/// meets the model's tolerances with a 2x margin (docs/results/hertz.md#convergence-study-speed-against-error);
 /// plane strain, within them from level 0, takes the axisymmetric level.
 int default_refine(Model model, int degree);
 

@@ -31,10 +31,10 @@ struct HertzResult
   int touching_nodes = 0;           ///< contact-surface nodes with a negative gap
   double elements_across_contact = 0; ///< c_H / h_c
   /// Estimated relative error of the contact size due to the penalty alone
-  /// and due to the mesh alone (README, penalty study).
+  /// and due to the mesh alone (docs/results/hertz.md#penalty-study-error-against-c-at-fixed-mesh).
   double penalty_error_estimate = 0;
   double discretisation_error_estimate = 0;
-  std::vector<std::string> flags;   ///< see README "Hertz FEM: flags"
+  std::vector<std::string> flags;   ///< see docs/methods/hertz-fem.md#flags-and-hard-cases-each-a-test-in-testsfemtest_hertz_axisymmetriccpp
 
   // Cost.
   std::int64_t dofs = 0;

@@ -1,5 +1,5 @@
 #pragma once
-// The two studies behind the defaults (README, "Hertz FEM"):
+// The two studies behind the defaults (docs/methods/hertz-fem.md):
 // - convergence: each model and degree over its refine levels, for the
 //   speed-against-error plot and the choice of default_refine();
 // - penalty: penalty_c from 0.1 to 1000 on each model's default mesh, for

@@ -8,8 +8,8 @@
 // band half-width is its largest change under a nudge.
 //
 // The quirk table: the rigid-body oracle's scores in paper-compatible mode,
-// the band, and the scores with each switch alone corrected (README quirk
-// table, `rollcheck oracle --quirk-table`).
+// the band, and the scores with each switch alone corrected (`rollcheck oracle
+// --quirk-table`, docs/results/oracles.md#paper-compat-quirk-table).
 #include "contact/trajectory_scores.h"
 #include "oracle/paper_compat.h"
 #include "study/body_scores/score_body.h"

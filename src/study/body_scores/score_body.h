@@ -90,7 +90,7 @@ contact::ScoreVector score_trajectory(const geometry::SurfaceMesh& mesh, const o
 /// mean_peak_pressure_pa, stress_cv, tds, wds_vol, wds_depth and fds as settings.metrics asks.
 oracle::RevalidationMetrics revalidation_scores(const ScoreBodySettings& settings);
 
-/// Named keys (README "rollcheck oracle"); scores not computed are null,
+/// Named keys (docs/methods/oracles.md#rollcheck-oracle); scores not computed are null,
 /// infinite ones "inf". With `per_face`, the per-face arrays.
 nlohmann::json to_json(const BodyScores& scores, bool per_face);
 

@@ -216,7 +216,7 @@ double table_against_direct(MPI_Comm comm, const FemSdsOrientation& r, fem::Slic
 /// under the slices' approaches, at the slab level and one finer. Its end
 /// faces are square: leaning them as the rims do (SlabBody::end_overhang_rad)
 /// shears the whole slab, and that moved the oloid's peak by +3.7 % against
-/// the slices (README "Creases"), so the rims' lean is reported, not modelled.
+/// the slices (docs/methods/fem-sds.md#creases), so the rims' lean is reported, not modelled.
 void check_with_slab(MPI_Comm comm, FemSdsOrientation& r, const FemSdsSettings& s, const Models& m)
 {
   const oracle::Ruling& ruling = *r.locus.ruling;

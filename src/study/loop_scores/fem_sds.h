@@ -1,7 +1,7 @@
 #pragma once
 // FEM-SDS: the SDS of a whole rolling loop under FEM contact stress, beside
 // the preprint's point-Hertz SDS and the line-Hertz SDS of the same samples
-// (docs/fem-sds.md).
+// (docs/methods/fem-sds.md).
 //
 // The loop: one loop of real rolling (default) or the rigid-body oracle's
 // samples. Every sample is scored (study/loop_scores/loop_sds.h) through the FEM

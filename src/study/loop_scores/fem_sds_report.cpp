@@ -52,8 +52,8 @@ std::string markdown_table(const FemSdsResult& result)
 {
   std::string table = orientation_table(result.orientations);
   if (result.slab_checked > 0)
-    table += "\n3D slab of the whole ruling against the slices (fem/scenes/slab_contact.h; square end faces; README "
-             "\"Creases\"):\n\n"
+    table += "\n3D slab of the whole ruling against the slices (fem/scenes/slab_contact.h; square end faces; "
+             "docs/methods/fem-sds.md#creases):\n\n"
              + slab_table(result.orientations);
   return table;
 }

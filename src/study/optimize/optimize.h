@@ -16,7 +16,7 @@
 //    uncertainty propagated from the noise, and a verdict (minimum, saddle, ...);
 //    balanced_steps() picks steps whose truncation and noise errors balance;
 //  - sweep_axes(): the score along each parameter axis through a point.
-// The library half of `rollcheck optimize` (docs/optimize.md). A score must be
+// The library half of `rollcheck optimize` (docs/methods/optimize.md). A score must be
 // a deterministic function of its point (the oracles are: the chaos is in the
 // parameters), so a point evaluated twice is evaluated once.
 #include <Eigen/Core>

@@ -1,6 +1,6 @@
 #pragma once
 // Where a two-circle roller family's optimum lies, and what the family's
-// (90, 1, 1) member is: the method of `rollcheck optimize` (docs/optimize.md).
+// (90, 1, 1) member is: the method of `rollcheck optimize` (docs/methods/optimize.md).
 // A genome x = (theta_deg, offset d, ratio rho) is meshed (r1 = 1) with the
 // same points per circle as every other body, or with the points per circle
 // whose hull has the start's face count (matched face count), and scored by
@@ -93,7 +93,7 @@ struct FamilySearchSettings
   /// replicates. A 1e-12 rad/s spin nudge (study/body_scores/paper_quirks.h's band) is not
   /// used: over the 10 s runs it moves the preprint's body's scores by only
   /// 0.05 %, while a moved genome's runs lose the nominal trajectory and spread
-  /// by about 11 % (docs/optimize.md "The rigid-body noise"). FEM-SDS: the
+  /// by about 11 % (docs/methods/optimize.md "The rigid-body noise"). FEM-SDS: the
   /// replicates also change the mesh (replicate_mesh_offset).
   int replicates = 4;
   /// Fraction of each box width the search resolves (its xtol); the
@@ -205,7 +205,7 @@ struct FamilySearchResult
 /// genome where scoring fails.
 FamilySearchResult optimize_family(const FamilySearchSettings& settings);
 
-/// Named keys (docs/optimize.md "rollcheck optimize").
+/// Named keys (docs/methods/optimize.md "rollcheck optimize").
 nlohmann::json to_json(const FamilySearchResult& result);
 
 /// One line for the log: the score and oracle, the start and the optimum

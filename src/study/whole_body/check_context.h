@@ -9,7 +9,7 @@
 //   b = sqrt(4 q R / (pi E*)),
 // at the stations and the loaded ends whichever the load rule (one
 // reference for every rule: its station readings move by 0.13 % at most on
-// a finer strip, docs/whole-body.md): contact elements b_min /
+// a finer strip, docs/methods/whole-body.md): contact elements b_min /
 // contact_elements, the strip b_max strip_over_half_width, end layers
 // body_end_layer times the smallest of the locus's b at the loaded ends.
 #include "fem/scenes/whole_body_contact.h"

@@ -29,7 +29,7 @@ void check_settings(const WholeBodyCheckSettings& s)
   if (s.body.body != "cylinder" && s.body.body != "oloid")
     throw InputError(fmt::format(
         "body '{}': the whole-body check meshes the cylinder (extruded) and the oloid (mapped); other bodies have no "
-        "whole-body mesh (docs/whole-body.md)",
+        "whole-body mesh (docs/methods/whole-body.md)",
         s.body.body));
   if (s.body.body == "oloid" && s.body.points < 64)
     throw InputError(fmt::format("points {}: the oloid's sections are ray cast against its hull, which needs at least "

@@ -79,7 +79,7 @@ enum class EndModelDepth
 /// each node plane: the body's 3D compliance, the sections coupled along the
 /// ruling, at a quarter of the fine mesh's DOFs. The contact's local
 /// compliance is then off by its coarse strip, nearly uniformly along the
-/// ruling, which the load's distribution hardly feels (docs/whole-body.md
+/// ruling, which the load's distribution hardly feels (docs/results/whole-body.md
 /// has the measured difference from the fine body's line load). Each rule
 /// is one strategy, chosen once per check (study/whole_body/load_rules.h).
 enum class LoadRule
@@ -132,7 +132,7 @@ struct WholeBodyCheckSettings
   /// cut through the centre of mass, e.g. 588 b for the 10 mm cylinder), or
   /// the rim scene's local default 10 b. The square end's edge pressure
   /// falls as the block deepens, since its top is held flat (grid, h_e = b/32:
-  /// 0.538 at 10 b, 0.488 at 400 b; docs/rims.md): a local block overstates
+  /// 0.538 at 10 b, 0.488 at 400 b; docs/results/rim-ends.md#the-blocks-depth): a local block overstates
   /// a deep body's square end by about 10 %.
   EndModelDepth end_depth = EndModelDepth::body;
   int end_levels = 2;               ///< the end models' edge levels
@@ -149,7 +149,7 @@ struct WholeBodyCheckSettings
   /// size within end_zone_over_half_width b of the contact line, so that its
   /// elements at the ends are isotropic (as the end model's at its edge).
   /// Set, only the end layers are thin: the edge pressure then is a number of
-  /// the mesh (docs/whole-body.md), kept to show it.
+  /// the mesh (docs/results/whole-body.md), kept to show it.
   bool end_layers_only = false;
   double end_zone_over_half_width = 1.0;
   double tolerance = 0.03;          ///< largest relative difference that passes
@@ -226,7 +226,7 @@ struct StationComparison
 /// d_m = end_match_over_half_width b (the locus's b at the end, 4 by
 /// default): inside it lies the edge's own 3D zone (an acute end's near-edge
 /// peak within 2 b), beyond it the coarse body's line load meets the fine
-/// body's within 1 % (docs/whole-body.md).
+/// body's within 1 % (docs/methods/whole-body.md).
 struct EndComparison
 {
   double position_m = 0, radius_m = 0, load_n_per_m = 0, half_width_m = 0;

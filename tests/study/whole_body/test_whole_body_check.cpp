@@ -133,7 +133,7 @@ TEST(WholeBodyCheck, OloidAgreesWithSlicesAndItsAcuteEndWithinThreePercent)
 
 TEST(WholeBodyCheckQuick, LargestPeakComparesTheLargestOfEachEvenAtDifferentStations)
 {
-  // The oloid's run at --direction 67.5 (docs/whole-body.md): the slices'
+  // The oloid's run at --direction 67.5 (docs/methods/whole-body.md): the slices'
   // largest peak is at 95 % of the ruling (221.32 MPa), the whole body's at
   // 83.75 % (216.5 MPa), where the locus overstates its own line load less.
   const double slice_mpa[] = {194.03, 197.21, 200.73, 204.09, 207.5, 210.84, 214.08, 217.85, 221.32};
@@ -338,7 +338,7 @@ TEST(WholeBodyCheck, OloidSectionsRuleMeetsTheInteriorStationsWithinThreePercent
   // OloidAgreesWith...: away from the end zones the whole body's peaks meet
   // slices under the sections' q within the check's 3 %; at the stations 5 %
   // inside the ends the sections, without their neighbours' shear, are
-  // softer than the whole body (docs/whole-body.md), so those two are not
+  // softer than the whole body (docs/methods/whole-body.md), so those two are not
   // asserted.
   const auto [s, check] = oloid_check_under(study::whole_body::LoadRule::sections);
   ASSERT_TRUE(check.section_rule.has_value());
