@@ -2,6 +2,11 @@
 #include "fem/mesh/gmsh_raw_mesh.h"
 #include "core/error.h"
 #include <algorithm>
+#include <dolfinx/fem/CoordinateElement.h>
+#include <dolfinx/graph/AdjacencyList.h>
+#include <dolfinx/io/cells.h>
+#include <dolfinx/mesh/cell_types.h>
+#include <dolfinx/mesh/utils.h>
 #include <fmt/format.h>
 #include <gmsh.h>
 #include <unordered_map>
@@ -69,6 +74,7 @@ RawMesh read_gmsh_mesh(int dim)
   }
   return raw;
 }
+
 int add_threshold_field(int distance_field, double size_min, double size_max, double dist_min, double growth)
 {
   namespace field = gmsh::model::mesh::field;
@@ -79,5 +85,62 @@ int add_threshold_field(int distance_field, double size_min, double size_max, do
   field::setNumber(threshold, "DistMin", dist_min);
   field::setNumber(threshold, "DistMax", dist_min + (size_max - size_min) / growth);
   return threshold;
+}
+
+void sizes_from_fields_alone()
+{
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+}
+
+RawMesh run_gmsh_session(const std::string& model_name, const std::string& what, const std::function<RawMesh()>& make)
+{
+  gmsh::initialize();
+  RawMesh raw;
+  try
+  {
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::option::setNumber("General.NumThreads", 1);
+    gmsh::model::add(model_name);
+    raw = make();
+  }
+  catch (const InputError&)
+  {
+    gmsh::finalize();
+    throw;
+  }
+  catch (const std::exception& e)
+  {
+    gmsh::finalize();
+    throw ComputationError("gmsh failed to mesh the " + what + ": " + e.what());
+  }
+  catch (...)
+  {
+    std::string last;
+    gmsh::logger::getLastError(last);
+    gmsh::finalize();
+    throw ComputationError("gmsh failed to mesh the " + what + (last.empty() ? std::string() : ": " + last));
+  }
+  gmsh::finalize();
+  return raw;
+}
+
+std::shared_ptr<dolfinx::mesh::Mesh> distribute_raw_mesh(MPI_Comm comm, int gdim, const RawMesh& raw)
+{
+  const auto cell_type = gdim == 3 ? dolfinx::mesh::CellType::tetrahedron : dolfinx::mesh::CellType::triangle;
+  const int nodes_per_cell = gdim + 1;
+  const std::size_t num_cells = raw.cells.size() / nodes_per_cell;
+  const std::vector<std::uint8_t> perm = dolfinx::io::cells::perm_gmsh(cell_type, nodes_per_cell);
+  std::vector<std::int64_t> cells
+      = dolfinx::io::cells::apply_permutation(raw.cells, {num_cells, std::size_t(nodes_per_cell)}, perm);
+  const dolfinx::fem::CoordinateElement cmap(cell_type, 1);
+  auto mesh = std::make_shared<dolfinx::mesh::Mesh>(dolfinx::mesh::create_mesh(
+      comm, dolfinx::graph::regular_adjacency_list(std::move(cells), nodes_per_cell), cmap, raw.x,
+      {raw.x.size() / gdim, std::size_t(gdim)}, dolfinx::mesh::GhostMode::none));
+  const int tdim = mesh->topology().dim();
+  mesh->topology_mutable().create_entities(tdim - 1);
+  mesh->topology_mutable().create_connectivity(tdim - 1, tdim);
+  return mesh;
 }
 } // namespace rollcheck::fem

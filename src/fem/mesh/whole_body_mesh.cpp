@@ -1,33 +1,26 @@
 // The whole body's mesh (fem/mesh/whole_body_mesh.h): gmsh OpenCASCADE on rank 0,
 // structured layers along the ruling, distributed by DOLFINx.
-#include "fem/mesh/gmsh_raw_mesh.h"
-#include "fem/on_rank_zero.h"
 #include "fem/mesh/whole_body_mesh.h"
 #include "core/error.h"
+#include "fem/mesh/gmsh_raw_mesh.h"
+#include "fem/mesh/scene_parts.h"
+#include "fem/on_rank_zero.h"
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <dolfinx/common/IndexMap.h>
-#include <dolfinx/fem/CoordinateElement.h>
-#include <dolfinx/graph/AdjacencyList.h>
-#include <dolfinx/io/cells.h>
-#include <dolfinx/mesh/cell_types.h>
 #include <dolfinx/mesh/utils.h>
 #include <fmt/format.h>
 #include <functional>
 #include <numbers>
 #include <gmsh.h>
-#include <xtensor/xtensor.hpp>
 
 namespace rollcheck::fem
 {
+using scene_build::boundary_facets;
+
 namespace
 {
-double seconds_since(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 /// The disc segment z <= c of the circle of radius r about (0, r) in gmsh's
 /// xy-plane (gmsh x is the body's y, gmsh y its z), graded about the contact
 /// point, extruded along gmsh z through the given planes, meshed.
@@ -35,13 +28,7 @@ RawMesh mesh_extruded_segment(double r, double c, const std::vector<double>& pla
 {
   namespace occ = gmsh::model::occ;
   namespace field = gmsh::model::mesh::field;
-  gmsh::initialize();
-  RawMesh raw;
-  try
-  {
-    gmsh::option::setNumber("General.Terminal", 0);
-    gmsh::option::setNumber("General.NumThreads", 1);
-    gmsh::model::add("whole_body");
+  return run_gmsh_session("whole_body", "whole body", [&] {
     gmsh::option::setNumber("Mesh.Algorithm", 6); // Frontal-Delaunay in the section
     const double w = std::sqrt(std::max(0.0, r * r - (c - r) * (c - r)));
     const int pole = occ::addPoint(0, 0, 0);
@@ -72,69 +59,39 @@ RawMesh mesh_extruded_segment(double r, double c, const std::vector<double>& pla
       field::setNumbers(background, "FieldsList", {static_cast<double>(threshold), static_cast<double>(edge)});
     }
     field::setAsBackgroundMesh(background);
-    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+    sizes_from_fields_alone();
     gmsh::model::mesh::generate(3);
 
-    raw = read_gmsh_mesh(3);
+    RawMesh raw = read_gmsh_mesh(3);
     // gmsh (across, up, along) -> (along, across, up)
     for (std::size_t i = 0; i < raw.x.size(); i += 3)
       std::rotate(raw.x.begin() + i, raw.x.begin() + i + 2, raw.x.begin() + i + 3);
     // The extruded tetrahedra of gmsh keep the orientation of the section's
     // triangles, which may be either; DOLFINx needs none in particular.
-  }
-  catch (const InputError&)
-  {
-    gmsh::finalize();
-    throw;
-  }
-  catch (const std::exception& e)
-  {
-    gmsh::finalize();
-    throw ComputationError(std::string("gmsh failed to mesh the whole body: ") + e.what());
-  }
-  catch (...)
-  {
-    gmsh::finalize();
-    throw ComputationError("gmsh failed to mesh the whole body");
-  }
-  gmsh::finalize();
-  return raw;
+    return raw;
+  });
 }
 
-/// Rank 0's raw mesh distributed over `comm`; rank 0's error raised on every
-/// rank. `gmsh_s`: rank 0's time making it.
-std::shared_ptr<dolfinx::mesh::Mesh> distribute(MPI_Comm comm, const std::function<RawMesh()>& make_raw,
-                                                double& gmsh_s)
+/// The mesh `make_raw` makes on rank 0 over the node planes `planes`
+/// (0 ... length_m along the ruling), distributed over `comm` (rank 0's
+/// error raised on every rank): symmetry multiplicity 1, no facets tagged.
+/// gmsh_s: rank 0's time making it.
+WholeBodyMesh distribute_layers(MPI_Comm comm, double length_m, std::vector<double> planes,
+                                const std::function<RawMesh()>& make_raw)
 {
+  WholeBodyMesh result;
+  result.length_m = length_m;
+  result.planes_m = std::move(planes);
   const auto start = std::chrono::steady_clock::now();
   const RawMesh raw = on_rank_zero<RawMesh>(comm, make_raw);
-  gmsh_s = seconds_since(start);
-  MPI_Bcast(&gmsh_s, 1, MPI_DOUBLE, 0, comm);
-  const auto cell_type = dolfinx::mesh::CellType::tetrahedron;
-  const std::size_t num_cells = raw.cells.size() / 4;
-  const std::vector<std::uint8_t> perm = dolfinx::io::cells::perm_gmsh(cell_type, 4);
-  std::vector<std::int64_t> cells = dolfinx::io::cells::apply_permutation(raw.cells, {num_cells, 4}, perm);
-  const dolfinx::fem::CoordinateElement cmap(cell_type, 1);
-  auto mesh = std::make_shared<dolfinx::mesh::Mesh>(
-      dolfinx::mesh::create_mesh(comm, dolfinx::graph::regular_adjacency_list(std::move(cells), 4), cmap, raw.x,
-                                 {raw.x.size() / 3, 3}, dolfinx::mesh::GhostMode::none));
-  mesh->topology_mutable().create_entities(2);
-  mesh->topology_mutable().create_connectivity(2, 3);
-  return mesh;
-}
-
-using Predicate = std::function<bool(double, double, double)>;
-
-std::vector<std::int32_t> boundary_facets(const dolfinx::mesh::Mesh& mesh, const Predicate& on)
-{
-  return dolfinx::mesh::locate_entities_boundary(mesh, 2, [&](const xt::xtensor<double, 2>& x) {
-    xt::xtensor<bool, 1> marked = xt::zeros<bool>({x.shape(1)});
-    for (std::size_t i = 0; i < x.shape(1); ++i)
-      marked(i) = on(x(0, i), x(1, i), x(2, i));
-    return marked;
-  });
+  result.gmsh_s = scene_build::seconds_since(start);
+  MPI_Bcast(&result.gmsh_s, 1, MPI_DOUBLE, 0, comm);
+  result.scene.mesh = distribute_raw_mesh(comm, 3, raw);
+  result.scene.symmetry_multiplicity = 1;
+  result.scene.wall_s = result.gmsh_s;
+  result.section_nodes = result.scene.mesh->geometry().index_map()->size_global()
+                         / static_cast<std::int64_t>(result.planes_m.size());
+  return result;
 }
 
 /// Distance from (0, z_c) along (sin psi, -cos psi) to the boundary of the
@@ -313,11 +270,20 @@ void check_sizes(const WholeBodySizes& sizes, double size_m)
                                  "which gmsh does not mesh reliably",
                                  sizes.contact_m, size_m));
 }
+
+/// How near a point of a mapped mesh lies to one of its planes (the cut, a
+/// section's faces) to be on it.
+double mapped_tolerance(const MappedBodyPose& pose)
+{
+  return 1e-9 * std::max(pose.reference_radius_m, pose.length_m);
+}
+
 /// A mapped mesh's top facets (the cut z = z_G) and contact facets (the
 /// others facing down: the sheet, and an obtuse end's face).
-void mark_cut_and_contact(SceneMesh& scene, double z_G, double tol)
+void mark_cut_and_contact(SceneMesh& scene, const MappedBodyPose& pose)
 {
   const dolfinx::mesh::Mesh& mesh = *scene.mesh;
+  const double z_G = pose.cut_height_m, tol = mapped_tolerance(pose);
   scene.top_facets = boundary_facets(mesh, [&](double, double, double z) { return std::abs(z - z_G) < tol; });
   const std::vector<std::int32_t> others
       = boundary_facets(mesh, [&](double, double, double z) { return std::abs(z - z_G) >= tol; });
@@ -369,11 +335,9 @@ WholeBodyMesh build_cylinder_body_mesh(MPI_Comm comm, const CylinderPose& pose, 
                                  "height {} m within (0, 2 r)",
                                  r, L, c));
   check_sizes(sizes, std::max(r, L));
-  WholeBodyMesh result;
-  result.length_m = L;
-  result.planes_m = layer_planes(L, sizes);
-  result.scene.mesh = distribute(comm, [&] { return mesh_extruded_segment(r, c, result.planes_m, sizes); },
-                                 result.gmsh_s);
+  const std::vector<double> planes = layer_planes(L, sizes);
+  WholeBodyMesh result
+      = distribute_layers(comm, L, planes, [&] { return mesh_extruded_segment(r, c, planes, sizes); });
   SceneMesh& scene = result.scene;
   const dolfinx::mesh::Mesh& mesh = *scene.mesh;
   const double tol = 1e-9 * std::max(r, L);
@@ -387,10 +351,6 @@ WholeBodyMesh build_cylinder_body_mesh(MPI_Comm comm, const CylinderPose& pose, 
     if (std::abs(x) > tol && std::abs(x - L) > tol && std::abs(z - c) > tol)
       scene.contact_facets.push_back(curved[i]);
   }
-  scene.symmetry_multiplicity = 1;
-  const std::int64_t nodes = mesh.geometry().index_map()->size_global();
-  result.section_nodes = nodes / static_cast<std::int64_t>(result.planes_m.size());
-  scene.wall_s = result.gmsh_s;
   return result;
 }
 
@@ -406,25 +366,13 @@ WholeBodyMesh build_mapped_body_mesh(MPI_Comm comm, const MappedBodyPose& pose, 
                                    "2 z_G tan(-t) ({} m) for the end's overhang t = {} deg (within +-60 deg)",
                                    zone, 0.5 * L, 2 * z_G * std::max(0.0, -std::tan(t)), t * 180 / std::numbers::pi));
   check_sizes(sizes, std::max(r_ref, L));
-  WholeBodyMesh result;
-  result.length_m = L;
-  result.planes_m = layer_planes(L, sizes);
-  result.scene.mesh = distribute(
-      comm,
-      [&] {
-        RawMesh raw = mesh_extruded_segment(r_ref, z_G, result.planes_m, sizes);
-        map_onto_body(raw.x, pose, result.planes_m, r_ref);
-        return raw;
-      },
-      result.gmsh_s);
-  SceneMesh& scene = result.scene;
-  const dolfinx::mesh::Mesh& mesh = *scene.mesh;
-  const double tol = 1e-9 * std::max(r_ref, L);
-  mark_cut_and_contact(scene, z_G, tol);
-  scene.symmetry_multiplicity = 1;
-  result.section_nodes
-      = mesh.geometry().index_map()->size_global() / static_cast<std::int64_t>(result.planes_m.size());
-  scene.wall_s = result.gmsh_s;
+  const std::vector<double> planes = layer_planes(L, sizes);
+  WholeBodyMesh result = distribute_layers(comm, L, planes, [&] {
+    RawMesh raw = mesh_extruded_segment(r_ref, z_G, planes, sizes);
+    map_onto_body(raw.x, pose, planes, r_ref);
+    return raw;
+  });
+  mark_cut_and_contact(result.scene, pose);
   result.along = [pose](const double* x) { return mapped_along(pose, x); };
   result.initial_gap = [pose](const double* x) { return sheet_gap(pose, mapped_along(pose, x), x[1]); };
   // Up an end face an element above the edge: within a thousandth of the
@@ -445,35 +393,24 @@ WholeBodyMesh build_mapped_section_mesh(MPI_Comm comm, const MappedBodyPose& pos
                                  "thickness {} m be positive",
                                  station_m, L, thickness_m));
   check_sizes(sizes, std::max(r_ref, L));
-  WholeBodyMesh result;
-  result.length_m = thickness_m;
-  result.planes_m = {station_m, station_m + thickness_m};
   const double a = section_station(pose, station_m);
-  result.scene.mesh = distribute(
-      comm,
-      [&] {
-        RawMesh raw = mesh_extruded_segment(r_ref, z_G, {0.0, thickness_m}, sizes);
-        const SectionMap map = section_map(pose, a, 0.5 * z_G, reference_half_width(pose));
-        for (std::size_t i = 0; i < raw.x.size(); i += 3)
-        {
-          const Eigen::Vector2d p = map_section_point(pose, map, r_ref, raw.x[i + 1], raw.x[i + 2]);
-          raw.x[i] += station_m;
-          raw.x[i + 1] = p.x();
-          raw.x[i + 2] = p.y();
-        }
-        return raw;
-      },
-      result.gmsh_s);
-  SceneMesh& scene = result.scene;
-  const dolfinx::mesh::Mesh& mesh = *scene.mesh;
-  const double tol = 1e-9 * std::max(r_ref, L);
-  mark_cut_and_contact(scene, z_G, tol);
-  scene.symmetry_x_facets = boundary_facets(mesh, [&](double x, double, double) {
+  WholeBodyMesh result = distribute_layers(comm, thickness_m, {station_m, station_m + thickness_m}, [&] {
+    RawMesh raw = mesh_extruded_segment(r_ref, z_G, {0.0, thickness_m}, sizes);
+    const SectionMap map = section_map(pose, a, 0.5 * z_G, reference_half_width(pose));
+    for (std::size_t i = 0; i < raw.x.size(); i += 3)
+    {
+      const Eigen::Vector2d p = map_section_point(pose, map, r_ref, raw.x[i + 1], raw.x[i + 2]);
+      raw.x[i] += station_m;
+      raw.x[i + 1] = p.x();
+      raw.x[i + 2] = p.y();
+    }
+    return raw;
+  });
+  mark_cut_and_contact(result.scene, pose);
+  const double tol = mapped_tolerance(pose);
+  result.scene.symmetry_x_facets = boundary_facets(*result.scene.mesh, [&](double x, double, double) {
     return std::abs(x - station_m) < tol || std::abs(x - station_m - thickness_m) < tol;
   });
-  scene.symmetry_multiplicity = 1;
-  result.section_nodes = mesh.geometry().index_map()->size_global() / 2;
-  scene.wall_s = result.gmsh_s;
   result.along = [station_m](const double*) { return station_m; };
   result.initial_gap = [pose, a](const double* x) { return sheet_gap(pose, a, x[1]); };
   return result;

@@ -1,6 +1,6 @@
 #pragma once
 // The fuller model behind the plane-strain slices of a line contact
-// (fem/scenes/slice_contact.h): the 3D slab of the contact ruling (fem/mesh/scene_mesh.h
+// (fem/scenes/slice_contact.h): the 3D slab of the contact ruling (fem/mesh/slab_mesh.h
 // build_slab_mesh), whose sections across the ruling are the slices' quarter
 // discs of radius R(x), pressed onto the rigid plane with its top face (height
 // R(x)) following the slices' own approaches, linear between slice centres
@@ -21,7 +21,7 @@
 // a flat-ended roller (T. A. Harris, M. N. Kotzalas, "Rolling Bearing
 // Analysis", 5th ed., 2007, ch. 6) needs an elastic counter-face, which the
 // rigid-plane model does not have. An end face that overhangs by t > 0
-// (an obtuse edge of 90 deg + t, fem/mesh/scene_mesh.h) mirrors into a re-entrant
+// (an obtuse edge of 90 deg + t, fem/mesh/slab_mesh.h) mirrors into a re-entrant
 // free-free wedge of 180 deg + 2 t, which is singular: its FEM end peak
 // exceeds the middle's and grows under refinement. The end sections' peaks
 // are reported at each level so that a study can see which case it is in.
@@ -80,7 +80,7 @@ struct SlabFem
 };
 
 /// The ruling's body: length L, radii R(0) and R(L), the force its line load
-/// integrates to, and the overhang of its end faces (fem/mesh/scene_mesh.h).
+/// integrates to, and the overhang of its end faces (fem/mesh/slab_mesh.h).
 struct SlabBody
 {
   double length_m = 0;

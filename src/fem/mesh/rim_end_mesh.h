@@ -1,0 +1,79 @@
+#pragma once
+// The rim end's mesh (build_rim_end_mesh, fem/scenes/rim_end_contact.h),
+// built with the gmsh C++ API (OpenCASCADE) on rank 0 and distributed by
+// DOLFINx; its geometry and sizes are those of the rim end on a block
+// (fem/mesh/rim_block_mesh.h) and of the structured grid
+// (fem/mesh/square_end_grid_mesh.h) too.
+//
+// Geometry: the neighbourhood of one end of a loaded ruling, the y >= 0 half
+// by symmetry. The ruling runs along x and ends at the origin, on the body's
+// rim (the edge, along y). The contacting sheet is the cylinder of radius R
+// about (x, 0, R) (its curvature across the ruling); beyond the edge the
+// other face is the plane through the y axis at the interior angle a from
+// the sheet, measured through the body in the ruling's vertical plane
+// (90 deg: a square end, the face x = 0; below, an acute rim whose other face
+// leans back over the sheet; towards 180 deg the other face rises gently
+// beyond x = 0). The block is cut at x = -L (the far side, a plane of
+// symmetry: plane strain), x = H (beyond the edge), y = H and z = H (the
+// loaded top); the edge may be rounded with a fillet of radius r_e. Built in
+// units of H (OpenCASCADE's tolerances are absolute) and scaled back.
+//
+// Grading: rim_end_element_size (RimEndSizes) as gmsh's size callback.
+//
+// Tags (SceneMesh, Model::solid conventions): contact, every face but the
+// block's planes (the sheet, the fillet, the other face) where it faces the
+// plane z = 0; top, z = H; symmetry_x, the far side x = -L; symmetry_y,
+// y = 0. Symmetry multiplicity 2.
+#include "fem/mesh/scene_facets.h"
+#include <mpi.h>
+
+namespace rollcheck::fem
+{
+/// The largest fillet against the rim end's block, r_e / H: the fillet (at
+/// most 1.5 r_e high, at 60 deg) inside the block with room below it. Whether
+/// a block is deep enough for the end's pressure is a question of the end:
+/// docs/rims.md, "The block's depth" (an acute rounded end's ratio still
+/// falls between 4 and 10.5 r_e).
+inline constexpr double largest_edge_radius_over_depth = 0.25;
+
+struct RimEndGeometry
+{
+  double radius_m = 0;           ///< R, of the contacting sheet across the ruling
+  double interior_angle_rad = 0; ///< a, in [60, 180) deg
+  double edge_radius_m = 0;      ///< r_e of the fillet; 0: a sharp edge
+  double depth_m = 0;            ///< H: the block's height and half-width (R >= H for the cylinder sheet)
+  double length_m = 0;           ///< L: contact modelled from the far side x = -L to the edge
+  /// The sheet flattened onto z = 0 (its height, R - sqrt(R^2 - y^2), then
+  /// belongs in the contact's initial gap: PenaltyContact::set_initial_gap).
+  /// OpenCASCADE's cylinder surface of R >> H is too thin in its parameters
+  /// for gmsh to mesh (R / H = 3400 failed); flattened, the geometry errs by
+  /// H^2 / (2 R) at y = H, far from the contact.
+  bool flat_sheet = false;
+};
+
+/// Element size min(far, edge + growth d_edge, contact + growth d_strip),
+/// d_edge the distance from the band |x - edge_x_m| <= edge_band_m on z = 0
+/// for y < edge_zone_m (the sharp edge at x = 0 with no band, or where a
+/// fillet leaves the sheet with the band its peak lies in), d_strip from the
+/// strip y < contact_zone_m along the ruling.
+struct RimEndSizes
+{
+  double edge_m = 0, edge_zone_m = 0, edge_x_m = 0, edge_band_m = 0;
+  double contact_m = 0, contact_zone_m = 0;
+  double growth = 0.3;
+  double far_m = 0;
+};
+
+/// The size at the point x (m) of the rim end scene.
+double rim_end_element_size(const RimEndSizes& sizes, const double* x);
+
+/// How far from the sharp edge, along the sheet, a fillet of radius r_e
+/// leaves it (m): tangent to both faces of the interior angle a, x_t = r_e
+/// tan((180 deg - a) / 2) (above r_e for an acute rim).
+double fillet_start_distance(double edge_radius_m, double interior_angle_rad);
+
+/// InputError for a geometry outside the ranges above (R, H, L and the sizes
+/// positive and finite, a in [60, 180) deg, 0 <= r_e <
+/// largest_edge_radius_over_depth H, R >= H for the cylinder sheet).
+SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& geometry, const RimEndSizes& sizes);
+} // namespace rollcheck::fem

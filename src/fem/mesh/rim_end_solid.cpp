@@ -1,0 +1,117 @@
+// The rim end's solid meshed (fem/mesh/rim_end_solid.h).
+#include "fem/mesh/rim_end_solid.h"
+#include "core/error.h"
+#include "fem/mesh/gmsh_scene.h"
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <gmsh.h>
+#include <numbers>
+
+namespace rollcheck::fem::scene_build
+{
+namespace
+{
+/// The rim end's solid (build_rim_end_mesh): the block x in [-L, H],
+/// y in [0, H], z <= H, inside the cylinder of radius R about the line
+/// (x, 0, R), cut by the other face's half-space, its edge filleted.
+void add_rim_end(const RimEndGeometry& g)
+{
+  namespace occ = gmsh::model::occ;
+  const double H = g.depth_m, L = g.length_m, R = g.radius_m;
+  gmsh::vectorpair body, cut;
+  std::vector<gmsh::vectorpair> map;
+  if (g.flat_sheet)
+    body = {{3, occ::addBox(-L, 0, 0, L + H, H, H)}};
+  else
+  {
+    // The box overlaps the tangent plane z = 0 instead of touching it.
+    const int box = occ::addBox(-L, 0, -0.1 * H, L + H, H, 1.1 * H);
+    const int cylinder = occ::addCylinder(-L - H, 0, R, L + 3 * H, 0, 0, R);
+    occ::intersect({{3, box}}, {{3, cylinder}}, body, map);
+  }
+  // Beyond the other face: n . p > 0, n = (sin a, 0, cos a) for the interior
+  // angle a, which is +x (a square end) turned about y by a - 90 deg.
+  const double span = 10 * (L + H);
+  const int half_space = occ::addBox(0, -span, -span, span, 2 * span, 2 * span);
+  occ::rotate({{3, half_space}}, 0, 0, 0, 0, 1, 0, g.interior_angle_rad - std::numbers::pi / 2);
+  occ::cut(body, {{3, half_space}}, cut, map);
+  occ::synchronize();
+  if (cut.size() != 1)
+    throw ComputationError(fmt::format("rim end: the cut left {} volumes, not one", cut.size()));
+  if (!(g.edge_radius_m > 0))
+    return;
+  // The edge: the one curve from the origin across the block in y. On the
+  // cylinder sheet it rises with the sheet, and along a nearly level other
+  // face (a -> 180 deg) it runs out in x: at 170 deg, R = 2.4 H, it leaves
+  // the block through its end x = H at y = 0.9 H. So it is told by starting
+  // at x = 0 on the bottom and reaching past y = H / 2 (the contact stays
+  // within a few b of y = 0), which neither the far side's curve (x = -L)
+  // nor the sheet's and the cut's centre lines (y = 0) do.
+  gmsh::vectorpair curves;
+  gmsh::model::getEntities(curves, 1);
+  std::vector<int> edges;
+  const double tol = 1e-5 * H;
+  for (const auto& [dim, tag] : curves)
+  {
+    double x0, y0, z0, x1, y1, z1;
+    gmsh::model::getBoundingBox(dim, tag, x0, y0, z0, x1, y1, z1);
+    if (y0 < tol && y1 > 0.5 * H && x0 < tol && x1 > -tol && z0 < tol)
+      edges.push_back(tag);
+  }
+  if (edges.size() != 1)
+    throw ComputationError(fmt::format("rim end: found {} edge curves, not one", edges.size()));
+  gmsh::vectorpair filleted;
+  occ::fillet({cut[0].second}, edges, {g.edge_radius_m}, filleted, true);
+  occ::synchronize();
+  if (filleted.size() != 1)
+    throw ComputationError(fmt::format("rim end: the fillet of radius {:.3g} m failed", g.edge_radius_m));
+}
+} // namespace
+
+RawMesh mesh_rim_end(const RimEndGeometry& unit, const RimEndSizes& sizes, double H, bool with_block)
+{
+  RawMesh raw = mesh_with_gmsh(3, [&] {
+    add_rim_end(unit);
+    if (with_block)
+    {
+      namespace occ = gmsh::model::occ;
+      gmsh::vectorpair bodies, out;
+      gmsh::model::getEntities(bodies, 3);
+      const int block = occ::addBox(-unit.length_m, 0, -1, unit.length_m + 1, 1, 1);
+      std::vector<gmsh::vectorpair> map;
+      occ::fragment(bodies, {{3, block}}, out, map);
+      occ::synchronize();
+    }
+    gmsh::model::mesh::setSizeCallback([sizes, H](int, int, double x, double y, double z) {
+      const double point[3] = {x * H, y * H, std::abs(z) * H};
+      return rim_end_element_size(sizes, point) / H;
+    });
+    sizes_from_fields_alone();
+    return std::min(sizes.edge_m, sizes.contact_m) / H;
+  });
+  for (double& x : raw.x)
+    x *= H;
+  return raw;
+}
+
+SceneParts rim_end_planes(double L, double tol)
+{
+  SceneParts parts;
+  parts.symmetry_x = [=](double x, double, double) { return std::abs(x + L) < tol; };
+  parts.symmetry_y = [=](double, double y, double) { return std::abs(y) < tol; };
+  return parts;
+}
+
+void tag_rim_end(SceneMesh& scene, double H, double L, const Predicate& curved, const Predicate& in_plane)
+{
+  const double tol = 1e-9 * H;
+  SceneParts parts = rim_end_planes(L, tol);
+  parts.top = [=](double, double, double z) { return std::abs(z - H) < tol; };
+  parts.curved = curved;
+  parts.in_plane = in_plane;
+  parts.facing_plane_only = true;
+  tag_parts(scene, parts);
+  scene.symmetry_multiplicity = 2;
+}
+} // namespace rollcheck::fem::scene_build
