@@ -57,7 +57,7 @@ TEST(RimBlockContact, SquareEndOnSteelIsSingularAsTheElasticWedge)
 // The 120 deg rim rounded to r_e = 0.364 mm (1.41 b of the steel pair) at a
 // bearing's line load, on the block: its boundary layer s = 4 p0 r_e / (pi
 // E*) = 0.0232 b needs edge elements of s / 4 = 0.0058 b, which meshes only
-// since each volume is tetrahedralised alone (fem/mesh/scene_mesh.cpp
+// since each volume is tetrahedralised alone (fem/mesh/gmsh_scene.cpp
 // generate_volume_by_volume). Measured with the dual-weighted mortar pairs
 // on 2 ranks alone (`rollcheck rim --counter-face steel --interior-angle 120
 // --load-per-length 571769.86 --edge-radius 3.64e-4 --depth 25
@@ -134,7 +134,7 @@ TEST(RimBlockContact, RoundedSquareEndAtTheOloidsLoopLoadConvergesInTwoLevels)
   EXPECT_NEAR(study.boundary_layer_m / b, 0.27, 0.01);
 }
 
-// The preprint's body's load at twice its end table's R (docs/rims.md, item
+// The preprint's body's load at twice its end table's R (docs/results/rim-ends.md#a-rounded-ends-ratio-against-r-and-q, item
 // 3): asked for h_e = b / 8, one level, the model refines to just below
 // s / 4 and gives the ratio of the run resolved by hand (`rollcheck rim
 // --interior-angle 87.5 --edge-radius 4e-4 --edge-element 0.0089 --levels 2

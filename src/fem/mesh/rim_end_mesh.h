@@ -32,7 +32,7 @@ namespace rollcheck::fem
 /// The largest fillet against the rim end's block, r_e / H: the fillet (at
 /// most 1.5 r_e high, at 60 deg) inside the block with room below it. Whether
 /// a block is deep enough for the end's pressure is a question of the end:
-/// docs/rims.md, "The block's depth" (an acute rounded end's ratio still
+/// docs/results/rim-ends.md#the-blocks-depth (an acute rounded end's ratio still
 /// falls between 4 and 10.5 r_e).
 inline constexpr double largest_edge_radius_over_depth = 0.25;
 
