@@ -173,8 +173,8 @@ SceneMesh level_mesh(MPI_Comm comm, const RimEndStudy& study, const RimEndSizes&
 {
   const RimEndSettings& s = study.setup;
   const BlockSize block = block_size(study);
-  const RimEndGeometry geometry{s.radius_m,      s.interior_angle_rad, s.edge_radius_m,
-                                block.depth_m,   block.length_m,       study.flat_sheet};
+  const RimEndGeometry geometry{
+      s.radius_m, s.interior_angle_rad, s.edge_radius_m, block.depth_m, block.length_m, study.flat_sheet};
   if (s.counter_face == CounterFace::block)
     return build_rim_block_mesh(comm, geometry, sizes);
   return s.mesh == RimEndMesh::grid ? build_square_end_grid_mesh(comm, geometry, sizes)

@@ -13,11 +13,12 @@
 // when its boundary layer is resolved (fem/scenes/rim_end_contact.h).
 //
 // Over the whole loop the end's pressure is taken as the end/interior ratio
-// times the FEM pressure at the end. The ratio comes from a table: end
-// models at evenly spaced interior angles across the loop's range, and for a
-// rounded edge at geometrically spaced R across the range of the loop's ends
-// (its columns), all at the directly modelled ends' median q, interpolated
-// linearly in the angle and in log R. A rounded end's ratio depends on r_e /
+// times the FEM pressure at the end (study/rims/end_ratios.h). The ratio
+// comes from a table (study/rims/end_table.h): end models at evenly spaced
+// interior angles across the loop's range, and for a rounded edge at
+// geometrically spaced R across the range of the loop's ends (its columns),
+// all at the directly modelled ends' median q, interpolated linearly in the
+// angle and in log R. A rounded end's ratio depends on r_e /
 // R (its boundary layer s / b = 2 r_e / (pi R)) far more than on q: at the
 // preprint's body's 91.9 deg end, with b held, 2.353, 2.888 and 3.58 at R =
 // 2.96, 5.93 and 11.9 mm; with R held, 2.802 at twice q (docs/rims.md). A
@@ -30,7 +31,8 @@
 //
 // A rounded edge's flattest ends (interior angle from flat_rim_from_rad,
 // 160 deg, on; where half-space theory is refused at some nodes, from
-// flat_rim_table_start's) take the flat-rim table instead: the loop's own
+// flat_rim_table_start's) take the flat-rim table instead
+// (study/rims/flat_rim_table.h): the loop's own
 // ends at angles 2.5 deg apart up to its flattest (study/rims/flattest_loop_ends.h),
 // solved in 3D by half-space theory on the hull's own surface with the
 // ruling's own load and the body's balance (study/rims/flat_rim_contact.h); an
@@ -50,6 +52,9 @@
 // pressure grows without bound and its b / R leaves line contact; the
 // finished part's end is taken at R = r_e (study/loop_scores/loop_sds.h
 // loop_scores::end_aware_scores; the direct ends too).
+//
+// The result's JSON: study/rims/rim_loop_json.cpp; its text report:
+// study/rims/rim_report.h.
 #include "fem/scenes/rim_end_contact.h"
 #include "study/loop_scores/fem_sds.h"
 #include "study/rims/end_ratios.h"
