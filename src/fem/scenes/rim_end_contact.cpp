@@ -115,7 +115,7 @@ double far_line_load(const std::vector<SurfacePressureNode>& nodes, double far_x
   return 2 * force / (0.75 * depth_m);
 }
 
-/// The block's depth H and length L, in the end's b.
+/// The end's b and its block's depth H = (H / b) b and length L = (L / H) H (m).
 struct BlockSize
 {
   double half_width_m, depth_m, length_m;
