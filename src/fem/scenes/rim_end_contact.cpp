@@ -4,6 +4,7 @@
 #include "contact/wedge_exponent.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/refinement_series.h"
 #include "fem/all_gather.h"
 #include "fem/load_control.h"
 #include "fem/nodal_fields.h"
@@ -114,23 +115,43 @@ double far_line_load(const std::vector<SurfacePressureNode>& nodes, double far_x
   return 2 * force / (0.75 * depth_m);
 }
 
-/// `fields_out`, if given, receives the level's recovered fields (the caller
-/// writes the last level's once the study has finished). `previous`: the
-/// level before, whose approach and solution (`state`, on its own mesh) start
-/// this one's load control: the levels differ only near
-/// the edge, so its approach carries q_far to within a few per mille (line
-/// contact's estimate overshot by 40 %) and its displacement, interpolated
-/// onto this mesh, leaves Newton only the edge's correction. `state` is
-/// replaced by this level's.
-RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_element_m,
-                        std::optional<NodalFields>* fields_out, const RimEndLevel* previous,
-                        std::shared_ptr<const dolfinx::fem::Function<double>>& state)
+/// The end's b and its block's depth H = (H / b) b and length L = (L / H) H (m).
+struct BlockSize
 {
-  const auto start = std::chrono::steady_clock::now();
+  double half_width_m, depth_m, length_m;
+};
+
+BlockSize block_size(const RimEndStudy& study)
+{
+  const double b = study.half_width_m, H = study.setup.depth_over_half_width * b;
+  return {b, H, study.setup.length_over_depth * H};
+}
+
+/// The flattened sheet's height at y, R - sqrt(R^2 - y^2); beyond y = R (a
+/// block deeper than R) the sheet has turned away and its gap R never
+/// closes against b << R.
+double sheet_height(double radius_m, double y)
+{
+  const double on_sheet = std::min(std::abs(y), radius_m);
+  return radius_m - std::sqrt(radius_m * radius_m - on_sheet * on_sheet);
+}
+
+/// A rounded edge on the block: the body's contact face up to r_e / 8 above
+/// the block's top (on the fillet, within about r_e / 2 of its start, some
+/// 20 boundary layers s at the bearing's load) meets it by mortar pairs,
+/// the sheet's conforming part too: where a node-to-node pair shares facets
+/// with a mortar pair, each lumps the other's share of them (measured on
+/// the preprint's 60 deg end: the seam's node read 0.8 of the sheet beside
+/// it, the fillet's first node 1.1 of the next). The contact must stay well
+/// inside the zone (check_contact_inside_mortar_zone).
+double mortar_zone_height(const RimEndSettings& s) { return s.edge_radius_m / 8; }
+
+/// A level's element sizes, its edge elements h_e.
+RimEndSizes level_sizes(const RimEndStudy& study, double edge_element_m)
+{
   const RimEndSettings& s = study.setup;
-  const double b = study.half_width_m, H = s.depth_over_half_width * b, L = s.length_over_depth * H;
-  RimEndLevel level;
-  level.edge_element_m = edge_element_m;
+  const BlockSize block = block_size(study);
+  const double b = block.half_width_m;
   RimEndSizes sizes;
   sizes.contact_m = b / s.contact_elements;
   sizes.contact_zone_m = 1.5 * b;
@@ -142,86 +163,109 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   // square end 1.3 s onto the fillet, graded from the line alone at 4 h_e):
   // the edge's elements cover +-2 s about that line (sharp: s = 0, the line).
   sizes.edge_band_m = 2 * study.boundary_layer_m;
-  sizes.far_m = H / 4;
-  const bool block = s.counter_face == CounterFace::block;
-  const RimEndGeometry geometry{s.radius_m, s.interior_angle_rad, s.edge_radius_m, H, L, study.flat_sheet};
-  const SceneMesh scene = block                             ? build_rim_block_mesh(comm, geometry, sizes)
-                          : s.mesh == RimEndMesh::grid ? build_square_end_grid_mesh(comm, geometry, sizes)
-                                                       : build_rim_end_mesh(comm, geometry, sizes);
-  const double body_modulus = s.youngs_modulus_pa;
-  PenaltyContact problem(scene, Model::solid, 1, body_modulus, s.poisson_ratio,
-                         s.penalty_c * body_modulus / sizes.contact_m, s.petsc_options);
-  // kappa = c E / h(x) with the mesh's own size: a penalty as soft as at the
-  // strip's elements would cut the edge's singular pressure off at h_c / c.
-  auto penalty_scale = [&](const double* x) { return sizes.contact_m / rim_end_element_size(sizes, x); };
-  // The flattened sheet's height at y; beyond y = R (a block deeper than R)
-  // the sheet has turned away and its gap R never closes against b << R.
-  auto sheet_height = [&](double y) {
-    const double on_sheet = std::min(std::abs(y), s.radius_m);
-    return s.radius_m - std::sqrt(s.radius_m * s.radius_m - on_sheet * on_sheet);
+  sizes.far_m = block.depth_m / 4;
+  return sizes;
+}
+
+/// The level's mesh: the body and the block, or the body alone on the rigid
+/// plane (gmsh's, or the structured grid).
+SceneMesh level_mesh(MPI_Comm comm, const RimEndStudy& study, const RimEndSizes& sizes)
+{
+  const RimEndSettings& s = study.setup;
+  const BlockSize block = block_size(study);
+  const RimEndGeometry geometry{
+      s.radius_m, s.interior_angle_rad, s.edge_radius_m, block.depth_m, block.length_m, study.flat_sheet};
+  if (s.counter_face == CounterFace::block)
+    return build_rim_block_mesh(comm, geometry, sizes);
+  return s.mesh == RimEndMesh::grid ? build_square_end_grid_mesh(comm, geometry, sizes)
+                                    : build_rim_end_mesh(comm, geometry, sizes);
+}
+
+/// kappa = c E / h(x) with the mesh's own size, over the strip's c E / h_c:
+/// a penalty as soft as at the strip's elements would cut the edge's
+/// singular pressure off at h_c / c.
+double penalty_scale(const RimEndSizes& sizes, const double* x)
+{
+  return sizes.contact_m / rim_end_element_size(sizes, x);
+}
+
+/// The block counter-face: its top stays still, no rigid plane; the body's
+/// contact face meets the block's top by node pairs (mortar pairs in a
+/// rounded edge's zone), their gap the fillet's height plus the flattened
+/// sheet's.
+void pair_with_block(PenaltyContact& problem, const RimEndStudy& study, const RimEndSizes& sizes)
+{
+  const RimEndSettings& s = study.setup;
+  // The block's top stays still: its bottom is the "top" face of weight 0.
+  problem.set_approach_profile([](const double* x) { return x[2] > 0 ? 1.0 : 0.0; });
+  problem.set_penalty_scale([](const double*) { return 0.0; }); // no rigid plane
+  std::function<bool(const double*)> mortar_zone;
+  if (s.edge_radius_m > 0)
+    mortar_zone = [zone = mortar_zone_height(s)](const double* x) { return x[2] <= zone; };
+  // The fillet's height (0 on the sheet) plus the flattened sheet's.
+  const double r_e = s.edge_radius_m, x_t = study.fillet_start_m;
+  auto initial_gap = [&](const double* x) {
+    const double along_fillet = std::clamp(x[0] + x_t, 0.0, r_e);
+    return r_e - std::sqrt(r_e * r_e - along_fillet * along_fillet) + sheet_height(s.radius_m, x[1]);
   };
-  const double tol = 1e-9 * H;
-  // A rounded edge on the block: the body's contact face up to r_e / 8 above
-  // the block's top (on the fillet, within about r_e / 2 of its start, some
-  // 20 boundary layers s at the bearing's load) meets it by mortar pairs,
-  // the sheet's conforming part too: where a node-to-node pair shares facets
-  // with a mortar pair, each lumps the other's share of them (measured on
-  // the preprint's 60 deg end: the seam's node read 0.8 of the sheet beside
-  // it, the fillet's first node 1.1 of the next). The contact must stay well
-  // inside the zone (checked after the solve).
-  const double surface_zone_m = s.edge_radius_m / 8;
-  if (block)
-  {
-    // The block's top stays still: its bottom is the "top" face of weight 0.
-    problem.set_approach_profile([](const double* x) { return x[2] > 0 ? 1.0 : 0.0; });
-    problem.set_penalty_scale([](const double*) { return 0.0; }); // no rigid plane
-    std::function<bool(const double*)> mortar_zone;
-    if (s.edge_radius_m > 0)
-      mortar_zone = [&](const double* x) { return x[2] <= surface_zone_m; };
-    // The fillet's height (0 on the sheet) plus the flattened sheet's.
-    const double r_e = s.edge_radius_m, x_t = study.fillet_start_m;
-    auto initial_gap = [&](const double* x) {
-      const double along_fillet = std::clamp(x[0] + x_t, 0.0, r_e);
-      return r_e - std::sqrt(r_e * r_e - along_fillet * along_fillet) + sheet_height(x[1]);
-    };
-    std::vector<NodePair> pairs = interface_node_pairs(
-        problem, rim_interface_tolerance(H, sizes.edge_m, s.edge_radius_m), initial_gap, mortar_zone);
-    for (NodePair& pair : pairs)
-      pair.stiffness_pa_per_m = s.penalty_c * body_modulus / sizes.contact_m * penalty_scale(pair.x.data());
-    problem.set_node_pairs(std::move(pairs));
-  }
-  else
-  {
-    problem.set_penalty_scale(penalty_scale);
-    if (study.flat_sheet)
-      problem.set_initial_gap([&](const double* x) { return sheet_height(x[1]); });
-  }
-  level.dofs = problem.num_dofs();
-  // The contact face's nodal pressures: the pairs' (block), or the rigid
-  // plane's recovered pressure (the caller's fields, when it has them).
-  auto surface = [&](const NodalFields* fields = nullptr) {
-    if (!block)
-      return fields ? gather_surface_pressure(comm, *fields)
-                    : gather_surface_pressure(comm, recover_contact_pressure(problem));
-    std::vector<SurfacePressureNode> nodes;
-    for (const PairPressure& pair : gather_pair_pressures(problem))
-      nodes.push_back({pair.x, pair.pressure_pa, pair.area_m2});
-    return nodes;
-  };
-  // Start as the slices do: the sheet's height at the contact edge as the
-  // shift, and that plus a line contact's approach for the top.
+  std::vector<NodePair> pairs = interface_node_pairs(
+      problem, rim_interface_tolerance(block_size(study).depth_m, sizes.edge_m, s.edge_radius_m), initial_gap,
+      mortar_zone);
+  for (NodePair& pair : pairs)
+    pair.stiffness_pa_per_m = s.penalty_c * s.youngs_modulus_pa / sizes.contact_m * penalty_scale(sizes, pair.x.data());
+  problem.set_node_pairs(std::move(pairs));
+}
+
+/// The rigid plane: the penalty graded with the mesh, and a flattened
+/// sheet's height in the gap.
+void press_on_rigid_plane(PenaltyContact& problem, const RimEndStudy& study, const RimEndSizes& sizes)
+{
+  problem.set_penalty_scale([&](const double* x) { return penalty_scale(sizes, x); });
+  if (study.flat_sheet)
+    problem.set_initial_gap([&](const double* x) { return sheet_height(study.setup.radius_m, x[1]); });
+}
+
+/// The contact face's nodal pressures: the pairs' (block), or the rigid
+/// plane's recovered pressure (from `fields` when given). Collective.
+std::vector<SurfacePressureNode> contact_face_pressures(MPI_Comm comm, const PenaltyContact& problem, bool block,
+                                                        const NodalFields* fields = nullptr)
+{
+  if (!block)
+    return fields ? gather_surface_pressure(comm, *fields)
+                  : gather_surface_pressure(comm, recover_contact_pressure(problem));
+  std::vector<SurfacePressureNode> nodes;
+  for (const PairPressure& pair : gather_pair_pressures(problem))
+    nodes.push_back({pair.x, pair.pressure_pa, pair.area_m2});
+  return nodes;
+}
+
+/// Load control until the far side carries q, from the level before's
+/// solution and approach (`previous` and `state`), or at the first level as
+/// the slices start: the sheet's height at the contact edge as the shift,
+/// and that plus a line contact's approach (times first_approach_scale) for
+/// the top. Sets the level's load-control record; `state` becomes its
+/// solution.
+void load_to_line_load(MPI_Comm comm, PenaltyContact& problem, const RimEndStudy& study, const RimEndLevel* previous,
+                       std::shared_ptr<const dolfinx::fem::Function<double>>& state, RimEndLevel& level)
+{
+  const RimEndSettings& s = study.setup;
+  const BlockSize block = block_size(study);
+  const double b = block.half_width_m;
   const double shift = 0.5 * b * b / s.radius_m;
-  const LineApproach line = line_contact_approach(s.load_n_per_m, H, b, study.effective_modulus_pa);
+  const LineApproach line = line_contact_approach(s.load_n_per_m, block.depth_m, b, study.effective_modulus_pa);
   level.estimated_approach_m = shift + line.approach_m;
   if (previous && state)
     // The body is z > 0, the block z < 0: twin nodes on z = 0 take their own body's values.
     problem.start_interpolated(*state, previous->approach_m, [](const double* x) { return x[2] > 0 ? 1 : 0; });
   else
     problem.start_translated(shift, s.first_approach_scale * level.estimated_approach_m);
+  const bool on_block = s.counter_face == CounterFace::block;
   const LoadControlReport report
       = continue_to_force(problem, s.load_n_per_m, line.exponent, 2e-3,
-                          world_rank() == 0 ? spdlog::level::info : spdlog::level::debug,
-                          [&] { return far_line_load(surface(), -L, H); });
+                          world_rank() == 0 ? spdlog::level::info : spdlog::level::debug, [&] {
+                            return far_line_load(contact_face_pressures(comm, problem, on_block), -block.length_m,
+                                                 block.depth_m);
+                          });
   state = problem.displacement();
   level.approach_m = report.approach_m;
   level.load_steps = report.load_steps;
@@ -229,28 +273,37 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   level.krylov_iterations = report.newton.krylov_iterations;
   level.far_load_n_per_m = report.force;
   level.start_load_n_per_m = report.first_force;
-  if (block && s.edge_radius_m > 0)
-    for (const PairPressure& pair : gather_pair_pressures(problem))
-      if (pair.x[2] > surface_zone_m / 2 && pair.pressure_pa > 0)
-        throw ComputationError(fmt::format("rim: the contact runs up the fillet to {:.3g} m above the block, beyond "
-                                           "half the mortar pairs' zone ({:.3g} m)",
-                                           pair.x[2], surface_zone_m));
+}
 
-  // Where the sheet ends: an acute rim's fillet starts further out than r_e
-  // (x_t = r_e tan((180 deg - a) / 2) > r_e below 90 deg).
-  const double end_zone = 2 * b + std::max(s.edge_radius_m, study.fillet_start_m);
+/// ComputationError where a rounded edge's contact on the block runs above
+/// half its mortar zone.
+void check_contact_inside_mortar_zone(const PenaltyContact& problem, const RimEndSettings& s)
+{
+  const double zone = mortar_zone_height(s);
+  for (const PairPressure& pair : gather_pair_pressures(problem))
+    if (pair.x[2] > zone / 2 && pair.pressure_pa > 0)
+      throw ComputationError(fmt::format("rim: the contact runs up the fillet to {:.3g} m above the block, beyond "
+                                         "half the mortar pairs' zone ({:.3g} m)",
+                                         pair.x[2], zone));
+}
+
+/// The level's centre line (sorted by x) and a sharp edge's mean pressure
+/// over its nodes with y <= b / 2, from the contact face's nodes.
+void read_contact_face(const RimEndStudy& study, const std::vector<SurfacePressureNode>& nodes,
+                       double edge_element_m, RimEndLevel& level)
+{
+  const RimEndSettings& s = study.setup;
+  const BlockSize block = block_size(study);
+  const double b = block.half_width_m, tol = 1e-9 * block.depth_m;
   double edge_sum = 0;
   int edge_nodes = 0;
-  std::optional<NodalFields> fields;
-  if (fields_out)
-    fields = recover_nodal_fields(problem);
-  for (const SurfacePressureNode& n : surface(fields ? &*fields : nullptr))
+  for (const SurfacePressureNode& n : nodes)
   {
     if (std::abs(n.x[1]) < tol)
       level.centre_line.push_back({n.x[0], n.pressure_pa});
     // A sharp edge at y: on the sheet, z_e = R - sqrt(R^2 - y^2) (0 flat),
     // and on the other face, x_e = -z_e cot a.
-    const double z_edge = study.flat_sheet ? 0.0 : sheet_height(n.x[1]);
+    const double z_edge = study.flat_sheet ? 0.0 : sheet_height(s.radius_m, n.x[1]);
     const double x_edge = -z_edge / std::tan(s.interior_angle_rad);
     // The structured grid puts a node at y = b / 2 exactly: the tolerance
     // keeps it in whatever the last bit of b (the edge pressure moved by 1 %
@@ -268,13 +321,21 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
             [](const CentreLineNode& a, const CentreLineNode& c) { return a.x_m < c.x_m; });
   if (level.centre_line.size() < 3)
     throw ComputationError(fmt::format("rim: unresolved contact (h_e = {:.3g} m, b = {:.3g} m)", edge_element_m, b));
-  // P1 tetrahedra scatter the nodal pressure by about 2 % from node to node
-  // (measured along the far strip: 2.3-2.5 % at 6 and 10 elements across b,
-  // penalty c = 10), so pressures are read as means over a stretch of the
-  // ruling: H at the far side and in the middle, and about each node near the
-  // end +-b / 4, the scale on which a square end's pressure falls (a rounded
-  // edge: at most half its boundary layer; +-b / 8 left the square end's peak
-  // changing by 2-4 % from level to level, the scatter's size).
+}
+
+/// The centre line's pressures as means over a stretch of the ruling: the far
+/// side's and the middle's (over H) and the end's peak. P1 tetrahedra
+/// scatter the nodal pressure by about 2 % from node to node (measured along
+/// the far strip: 2.3-2.5 % at 6 and 10 elements across b, penalty c = 10),
+/// so each node near the end is read as the mean over +-b / 4 about it, the
+/// scale on which a square end's pressure falls (a rounded edge: at most
+/// half its boundary layer; +-b / 8 left the square end's peak changing by
+/// 2-4 % from level to level, the scatter's size).
+void read_centre_line(const RimEndStudy& study, double edge_element_m, RimEndLevel& level)
+{
+  const RimEndSettings& s = study.setup;
+  const BlockSize block = block_size(study);
+  const double b = block.half_width_m, H = block.depth_m, L = block.length_m;
   const double window = s.edge_radius_m > 0 ? std::min(b / 4, study.boundary_layer_m / 2) : b / 4;
   const Sample far = centre_line_mean(level.centre_line, -L, -L + H);
   const Sample mid = centre_line_mean(level.centre_line, -L / 2 - H / 2, -L / 2 + H / 2);
@@ -283,7 +344,10 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   level.mid_peak_pa = mid.mean;
   level.mid_to_far_standard_error
       = std::hypot(far.standard_error() / far.mean, mid.standard_error() / mid.mean) * mid.mean / far.mean;
-  // The sheet and the fillet (beyond them lies the other face, out of contact).
+  // Where the sheet ends: an acute rim's fillet starts further out than r_e
+  // (x_t = r_e tan((180 deg - a) / 2) > r_e below 90 deg). The sheet and the
+  // fillet (beyond them lies the other face, out of contact).
+  const double end_zone = 2 * b + std::max(s.edge_radius_m, study.fillet_start_m);
   for (const CentreLineNode& node : level.centre_line)
     if (node.x_m > -end_zone && node.x_m <= s.edge_radius_m)
     {
@@ -297,6 +361,43 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   if (!(level.end_peak_pa > 0))
     throw ComputationError(fmt::format("rim: no pressure near the edge (h_e = {:.3g} m, b = {:.3g} m)",
                                        edge_element_m, b));
+}
+
+/// `fields_out`, if given, receives the level's recovered fields (the caller
+/// writes the last level's once the study has finished). `previous`: the
+/// level before, whose approach and solution (`state`, on its own mesh) start
+/// this one's load control: the levels differ only near
+/// the edge, so its approach carries q_far to within a few per mille (line
+/// contact's estimate overshot by 40 %) and its displacement, interpolated
+/// onto this mesh, leaves Newton only the edge's correction. `state` is
+/// replaced by this level's.
+RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_element_m,
+                        std::optional<NodalFields>* fields_out, const RimEndLevel* previous,
+                        std::shared_ptr<const dolfinx::fem::Function<double>>& state)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const RimEndSettings& s = study.setup;
+  RimEndLevel level;
+  level.edge_element_m = edge_element_m;
+  const RimEndSizes sizes = level_sizes(study, edge_element_m);
+  const SceneMesh scene = level_mesh(comm, study, sizes);
+  PenaltyContact problem(scene, Model::solid, 1, s.youngs_modulus_pa, s.poisson_ratio,
+                         s.penalty_c * s.youngs_modulus_pa / sizes.contact_m, s.petsc_options);
+  const bool block = s.counter_face == CounterFace::block;
+  if (block)
+    pair_with_block(problem, study, sizes);
+  else
+    press_on_rigid_plane(problem, study, sizes);
+  level.dofs = problem.num_dofs();
+  load_to_line_load(comm, problem, study, previous, state, level);
+  if (block && s.edge_radius_m > 0)
+    check_contact_inside_mortar_zone(problem, s);
+  std::optional<NodalFields> fields;
+  if (fields_out)
+    fields = recover_nodal_fields(problem);
+  read_contact_face(study, contact_face_pressures(comm, problem, block, fields ? &*fields : nullptr), edge_element_m,
+                    level);
+  read_centre_line(study, edge_element_m, level);
   if (fields_out)
     *fields_out = std::move(fields);
   level.wall_s = wall_seconds_since(comm, start);
@@ -326,7 +427,7 @@ double end_to_interior(const RimEndLevel& level, bool sharp_edge)
   return (sharp_edge ? level.edge_pressure_pa : level.end_peak_pa) / level.far_peak_pa;
 }
 
-double end_to_interior_change(const RimEndLevel& before, const RimEndLevel& last, bool sharp_edge)
+double end_to_interior_ratio_change(double before, double last)
 {
   // The ratio's, not the end's pressure in Pa: the interior's own pressure
   // moves with the mesh by a per cent or two (P1 nodal scatter; 1.498 then
@@ -334,12 +435,26 @@ double end_to_interior_change(const RimEndLevel& before, const RimEndLevel& last
   // pressure carries but the ratio does not. Over the larger of the ratio
   // and 1: an acute edge's pressure tends to zero, where its own relative
   // change means nothing.
-  const double ratio = end_to_interior(last, sharp_edge);
-  return (ratio - end_to_interior(before, sharp_edge)) / std::max(ratio, 1.0);
+  return (last - before) / std::max(last, 1.0);
+}
+
+double end_to_interior_change(const RimEndLevel& before, const RimEndLevel& last, bool sharp_edge)
+{
+  return end_to_interior_ratio_change(end_to_interior(before, sharp_edge), end_to_interior(last, sharp_edge));
 }
 
 namespace
 {
+/// One quantity of every level against its edge elements h_e.
+template <typename Quantity>
+RefinementSeries level_series(const std::vector<RimEndLevel>& levels, Quantity quantity)
+{
+  RefinementSeries series;
+  for (const RimEndLevel& l : levels)
+    series.add(l.edge_element_m, quantity(l));
+  return series;
+}
+
 /// What the levels so far say: the resolution, the plane strain of the far
 /// side, a sharp edge's exponent, and a non-singular end's ratio, its change
 /// over the last level and whether it converged.
@@ -353,33 +468,23 @@ void judge_levels(RimEndStudy& study, bool sharp)
     study.end_to_interior = end_to_interior(last, sharp);
   if (study.levels.size() < 2)
     return; // one level: nothing to say of convergence
-  const RimEndLevel& before = study.levels[study.levels.size() - 2];
   const bool edge_loaded = std::all_of(study.levels.begin(), study.levels.end(),
                                        [](const RimEndLevel& l) { return l.edge_pressure_pa > 0; });
   if (study.singular && !edge_loaded)
     throw ComputationError("rim: a singular edge without pressure at some level (the contact does not reach it)");
-  // An acute edge lifts off the plane under refinement: no growth to measure.
+  // An acute edge lifts off the plane under refinement: no growth to
+  // measure. Least squares of ln p_edge on ln h_e over every level: the
+  // nodal pressures scatter by a few per cent, which two levels alone would
+  // carry into the exponent (at 120 deg the pairs gave -0.39, -0.47 and -0.36).
   if (sharp && edge_loaded)
-  {
-    // Least squares of ln p_edge on ln h_e over every level: the nodal
-    // pressures scatter by a few per cent, which two levels alone would carry
-    // into the exponent (at 120 deg the pairs gave -0.39, -0.47 and -0.36).
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (const RimEndLevel& l : study.levels)
-    {
-      const double lx = std::log(l.edge_element_m), ly = std::log(l.edge_pressure_pa);
-      sx += lx;
-      sy += ly;
-      sxx += lx * lx;
-      sxy += lx * ly;
-    }
-    const double n = static_cast<double>(study.levels.size());
-    study.measured_exponent = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-  }
+    study.measured_exponent
+        = fitted_exponent(level_series(study.levels, [](const RimEndLevel& l) { return l.edge_pressure_pa; }));
   if (!study.singular)
   {
-    study.end_change = end_to_interior_change(before, last, sharp);
-    study.converged = study.resolved && std::abs(*study.end_change) < study.setup.tolerance;
+    const RefinementSeries ratio
+        = level_series(study.levels, [sharp](const RimEndLevel& l) { return end_to_interior(l, sharp); });
+    study.end_change = last_change(ratio, end_to_interior_ratio_change);
+    study.converged = study.resolved && converged(ratio, study.setup.tolerance, end_to_interior_ratio_change);
   }
 }
 } // namespace

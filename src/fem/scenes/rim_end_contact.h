@@ -23,7 +23,8 @@
 // towards the edge, and the edge's nodal pressure (a force over an element's
 // area) grows as h_e^(lambda - 1) when the edge elements h_e shrink. The
 // study halves h_e level by level and measures that exponent as the least
-// squares slope of ln p_edge on ln h_e over the levels. A sharp
+// squares slope of ln p_edge on ln h_e over the levels (fitted_exponent of
+// core/refinement_series.h, whose series the levels are). A sharp
 // edge of a > 90 deg is reported singular with both exponents and no peak
 // value; a square edge (a = 90 deg, not singular on the rigid plane) has an
 // edge pressure, a rounded edge an end peak, that must converge: its change
@@ -240,8 +241,13 @@ double end_to_interior(const RimEndLevel& level, bool sharp_edge);
 /// a distance -x_m from its edge. ComputationError outside the centre line.
 double centre_line_pressure_at(const RimEndLevel& level, double x_m);
 
-/// The change of end_to_interior from `before` to `last` over the larger of
-/// its last value and 1: what `tolerance` judges.
+/// The rim end's change of its end/interior ratio from one level to the
+/// next, the LevelChange its refinement series is judged by
+/// (core/refinement_series.h): (last - before) / max(last, 1), over the
+/// larger of its last value and 1. What `tolerance` judges.
+double end_to_interior_ratio_change(double before, double last);
+
+/// end_to_interior_ratio_change of end_to_interior from `before` to `last`.
 double end_to_interior_change(const RimEndLevel& before, const RimEndLevel& last, bool sharp_edge);
 
 /// The height (m) within which a node of the rim block scene lies on the

@@ -8,6 +8,7 @@
 // discretisation error of the peak pressure. The slices are independent
 // problems, so the ranks of `comm` share them out, each solving its slices on
 // its own (MPI_COMM_SELF).
+#include "core/refinement_series.h"
 #include <cstdint>
 #include <mpi.h>
 #include <span>
@@ -47,10 +48,10 @@ struct SliceFem
   int newton_iterations = 0;            ///< both levels
   int krylov_iterations = 0;            ///< both levels
   double wall_s = 0;                    ///< both levels, on the rank that solved it
-  /// Relative change of the peak pressure from the settings' level to the finer one.
+  /// Relative change of the peak pressure from the settings' level to the finer one (0 without a peak).
   double refinement_change() const
   {
-    return peak_pressure_pa > 0 ? refined_peak_pressure_pa / peak_pressure_pa - 1 : 0;
+    return peak_pressure_pa > 0 ? relative_change(peak_pressure_pa, refined_peak_pressure_pa) : 0;
   }
 };
 

@@ -13,11 +13,12 @@
 // when its boundary layer is resolved (fem/scenes/rim_end_contact.h).
 //
 // Over the whole loop the end's pressure is taken as the end/interior ratio
-// times the FEM pressure at the end. The ratio comes from a table: end
-// models at evenly spaced interior angles across the loop's range, and for a
-// rounded edge at geometrically spaced R across the range of the loop's ends
-// (its columns), all at the directly modelled ends' median q, interpolated
-// linearly in the angle and in log R. A rounded end's ratio depends on r_e /
+// times the FEM pressure at the end (study/rims/end_ratios.h). The ratio
+// comes from a table (study/rims/end_table.h): end models at evenly spaced
+// interior angles across the loop's range, and for a rounded edge at
+// geometrically spaced R across the range of the loop's ends (its columns),
+// all at the directly modelled ends' median q, interpolated linearly in the
+// angle and in log R. A rounded end's ratio depends on r_e /
 // R (its boundary layer s / b = 2 r_e / (pi R)) far more than on q: at the
 // preprint's body's 91.9 deg end, with b held, 2.353, 2.888 and 3.58 at R =
 // 2.96, 5.93 and 11.9 mm; with R held, 2.802 at twice q (docs/rims.md). A
@@ -30,7 +31,8 @@
 //
 // A rounded edge's flattest ends (interior angle from flat_rim_from_rad,
 // 160 deg, on; where half-space theory is refused at some nodes, from
-// flat_rim_table_start's) take the flat-rim table instead: the loop's own
+// flat_rim_table_start's) take the flat-rim table instead
+// (study/rims/flat_rim_table.h): the loop's own
 // ends at angles 2.5 deg apart up to its flattest (study/rims/flattest_loop_ends.h),
 // solved in 3D by half-space theory on the hull's own surface with the
 // ruling's own load and the body's balance (study/rims/flat_rim_contact.h); an
@@ -50,9 +52,14 @@
 // pressure grows without bound and its b / R leaves line contact; the
 // finished part's end is taken at R = r_e (study/loop_scores/loop_sds.h
 // loop_scores::end_aware_scores; the direct ends too).
+//
+// The result's JSON: study/rims/rim_loop_json.cpp; its text report:
+// study/rims/rim_report.h.
 #include "fem/scenes/rim_end_contact.h"
 #include "study/loop_scores/fem_sds.h"
-#include "study/rims/flat_rim_contact.h"
+#include "study/rims/end_ratios.h"
+#include "study/rims/end_table.h"
+#include "study/rims/flat_rim_table.h"
 #include <cstddef>
 #include <mpi.h>
 #include <nlohmann/json.hpp>
@@ -105,43 +112,6 @@ struct RimLoopSettings
   double flat_rim_step_rad = 2.5 * std::numbers::pi / 180;
 };
 
-/// One loaded end solved by flat-rim (study/rims/flat_rim_contact.h), as the
-/// loop needs it.
-struct FlatRimSide
-{
-  double centre_of_pressure = 0;     ///< c from the end
-  double end_line_load_n_per_m = 0;
-  double end_radius_m = 0;           ///< the hull's R across the ruling at the end
-  double peak_pressure_pa = 0;
-  double line_hertz_peak_pa = 0;     ///< at the end's q and R = max(R_end, r_e)
-  double last_change = 0, window_change = 0;
-  bool converged = false;
-  double wall_s = 0;
-  double after_over_half_width = 0;  ///< the window along the ruling (shortened where the body could not balance)
-  double across_scale = 1;           ///< the window's width across over the set one (widened: > 1)
-  /// Solved over its whole loaded ruling (study::needs_whole_ruling: its
-  /// shortened window did not converge), with that window's peak (Pa).
-  bool whole_ruling = false;
-  double window_peak_pa = 0;
-};
-
-/// One node of the flat-rim table: the loop's orientations whose loaded end
-/// has this angle, one per side of the flattest end (one when the two sides
-/// are mirror images: the same c and R within 1e-6).
-struct FlatRimNode
-{
-  double interior_angle_rad = 0;
-  std::vector<FlatRimSide> sides;
-  /// The largest peak over the sides (Pa): the loop's ends near this angle
-  /// take it, interpolated linearly in the angle (it is smooth there, where
-  /// line Hertz at R = max(R_end, r_e) has a kink at R_end = r_e).
-  double peak_pa() const;
-  /// The largest over the sides of the peak over line Hertz at the end's q
-  /// and R = max(R_end, r_e), as the end table's ratio (reported).
-  double ratio() const;
-  bool converged() const;
-};
-
 /// One loaded ruling end of a directly solved orientation.
 struct RimLoopEnd
 {
@@ -158,14 +128,6 @@ struct RimLoopEnd
   /// end_to_interior times the end model's interior pressure (none: singular or not converged).
   std::optional<double> end_peak_pa;
   std::optional<double> table_ratio; ///< the end table's ratio at this angle (none: singular)
-};
-
-struct EndTableNode
-{
-  double interior_angle_rad = 0;
-  /// The node's column: R of its end model.
-  double sheet_radius_m = 0;
-  fem::RimEndStudy study;
 };
 
 struct RimLoopResult
@@ -213,6 +175,17 @@ struct RimLoopResult
   std::optional<double> covered_limit_change() const;
   /// In words: singular, converged, or not converged and why.
   std::string end_aware_status() const;
+  /// Where the two tables meet (none without both, or without the end
+  /// table's last ratio): the FEM end model (a straight rim under a uniform
+  /// load) against the body's own end (flat-rim) at flat_from_rad, at the R
+  /// of the first flat-rim node's side with the largest ratio (held to r_e).
+  struct FlatRimSeam
+  {
+    double sheet_radius_m = 0;
+    double end_table_ratio = 0;
+    double flat_rim_ratio = 0;
+  };
+  std::optional<FlatRimSeam> flat_rim_seam() const;
 };
 
 /// Collective on `comm` (every rank gets the result). The end's counter-face
@@ -221,49 +194,8 @@ struct RimLoopResult
 /// ComputationError from the FEM.
 RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings);
 
-/// The table's end/interior ratio at `interior_angle_rad` and the sheet's
-/// `radius_m` (unused with one column): within each column linear in the
-/// angle, across them linear in log R, held at
-/// the table's edges; in a direction with 3 or more nodes by every
-/// `stride`-th (the check of its spacing). None when the angle lies above
-/// `singular_from_rad`.
-std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, int stride, double singular_from_rad,
-                                      double interior_angle_rad, double radius_m);
-
-/// The loop's end/interior ratio of a loaded end (as loop_scores::finished_end has it):
-/// from flat_from_rad on the flat-rim table's peak at its interior angle
-/// over its line Hertz peak, below it the end table's ratio at its angle
-/// (held to [60 deg, largest_modelled_rad]) and R; each table by every
-/// stride-th node when it has 3 or more (the check of its spacing), else by all.
-struct EndRatios
-{
-  std::vector<EndTableNode> table;
-  std::vector<FlatRimNode> flat_table;
-  double flat_from_rad = std::numbers::pi;
-  double singular_from_rad = std::numbers::pi;
-  double largest_modelled_rad = std::numbers::pi;
-  std::optional<double> operator()(int stride, const loop_scores::LoadedEnd& end) const;
-};
-
-/// The end table's interior angles over [lo, hi]: evenly, at most `step_rad`
-/// apart, an odd number of them (every other one is a table too); with
-/// `acute_step_rad` > 0 and 90 deg inside the range, [lo, 90 deg] and
-/// [90 deg, hi] each so, the first at most `acute_step_rad` apart (their
-/// union is odd again, 90 deg an even node). One node where lo = hi.
-std::vector<double> end_table_angles(double lo, double hi, double step_rad, double acute_step_rad);
-
-/// Where the flat-rim table starts when some of its nodes are refused (a
-/// failed solve, or contact on slopes too steep for half-space theory, as
-/// beside a crease of the hull): the first node after the last refused one,
-/// moved one on where needed to keep the kept nodes odd in number (every
-/// other one, the check of the spacing, still ends on the flattest). None
-/// when the flattest node is refused or too few are left. `refused` is in
-/// ascending angle.
-std::optional<std::size_t> flat_rim_table_start(const std::vector<bool>& refused);
-
-/// The smallest interior angle whose sharp edge is singular against the
-/// counter-face (bisection on the wedge exponent), pi when none is.
-double singular_from_angle(const fem::RimEndSettings& end);
-
+// The loop's JSON (study/rims/rim_loop_json.cpp; an end table's node and a
+// flat-rim node's beside their structs).
+nlohmann::json to_json(const RimLoopEnd& end);
 nlohmann::json to_json(const RimLoopResult& result);
 } // namespace rollcheck::study::rims

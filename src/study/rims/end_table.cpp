@@ -1,0 +1,107 @@
+// The rim loop's FEM end table (study/rims/end_table.h).
+#include "study/rims/end_table.h"
+#include "contact/edge_on_elastic_block_exponent.h"
+#include "contact/wedge_exponent.h"
+#include "core/error.h"
+#include "study/rims/table_nodes.h"
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <span>
+
+namespace rollcheck::study::rims
+{
+namespace
+{
+constexpr double degree = std::numbers::pi / 180;
+
+double sharp_edge_exponent(const fem::RimEndSettings& end, double interior_angle_rad)
+{
+  return end.counter_face == fem::CounterFace::rigid
+             ? contact::edge_on_rigid_plane_exponent(interior_angle_rad)
+             : contact::edge_on_elastic_block_exponent(interior_angle_rad, end.youngs_modulus_pa, end.poisson_ratio,
+                                                       end.youngs_modulus_pa, end.poisson_ratio);
+}
+
+/// The table's columns: its runs of nodes of one R.
+std::vector<std::span<const EndTableNode>> table_columns(const std::vector<EndTableNode>& table)
+{
+  std::vector<std::span<const EndTableNode>> columns;
+  for (auto first = table.begin(); first != table.end();)
+  {
+    const auto last = std::find_if(first, table.end(), [&](const EndTableNode& n) {
+      return n.sheet_radius_m != first->sheet_radius_m;
+    });
+    columns.emplace_back(first, last);
+    first = last;
+  }
+  return columns;
+}
+} // namespace
+
+double largest_modelled_angle(const fem::RimEndSettings& end)
+{
+  return end.edge_radius_m > 0 ? largest_rounded_angle_rad : largest_modelled_angle_rad;
+}
+
+double singular_from_angle(const fem::RimEndSettings& end)
+{
+  if (end.edge_radius_m > 0)
+    return std::numbers::pi;
+  // Singular as the end model calls it (fem/scenes/rim_end_contact.h): any negative exponent.
+  auto singular = [&](double a) { return sharp_edge_exponent(end, a) < 0; };
+  double lo = smallest_modelled_angle_rad, hi = largest_modelled_angle_rad;
+  if (singular(lo))
+    return lo;
+  if (!singular(hi))
+    return std::numbers::pi;
+  while (hi - lo > singular_angle_tolerance_rad)
+  {
+    const double mid = 0.5 * (lo + hi);
+    (singular(mid) ? hi : lo) = mid;
+  }
+  return hi;
+}
+
+std::vector<double> end_table_angles(double lo, double hi, double step_rad, double acute_step_rad)
+{
+  constexpr double square = std::numbers::pi / 2;
+  if (!(acute_step_rad > 0) || lo >= square - 1e-9)
+    return even_nodes(lo, hi, step_rad);
+  if (hi <= square + 1e-9)
+    return even_nodes(lo, hi, acute_step_rad);
+  std::vector<double> angles = even_nodes(lo, square, acute_step_rad);
+  const std::vector<double> obtuse = even_nodes(square, hi, step_rad);
+  angles.insert(angles.end(), obtuse.begin() + 1, obtuse.end());
+  return angles;
+}
+
+std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, int stride, double singular_from_rad,
+                                      double interior_angle_rad, double radius_m)
+{
+  if (interior_angle_rad > singular_from_rad)
+    return std::nullopt;
+  if (table.empty())
+    throw ComputationError("rim loop: a non-singular loaded end, but the end table is empty");
+  const std::vector<std::span<const EndTableNode>> columns = table_columns(table);
+  if (columns.size() > 1 && !(radius_m > 0))
+    throw ComputationError(fmt::format("rim loop: the end table's ratio needs R > 0, got {} m", radius_m));
+  std::vector<std::pair<double, double>> across;
+  for (std::size_t c = 0; c < columns.size(); c += own_stride(stride, columns.size()))
+  {
+    std::vector<std::pair<double, double>> nodes;
+    for (std::size_t k = 0; k < columns[c].size(); k += own_stride(stride, columns[c].size()))
+    {
+      const EndTableNode& n = columns[c][k];
+      if (!n.study.end_to_interior)
+        throw ComputationError(fmt::format("rim loop: the end table's node at {:.2f} deg, R = {:.4g} m has no "
+                                           "end/interior ratio (its rounded edge is not resolved)",
+                                           n.interior_angle_rad / degree, n.sheet_radius_m));
+      nodes.emplace_back(n.interior_angle_rad, *n.study.end_to_interior);
+    }
+    across.emplace_back(columns.size() > 1 ? std::log(columns[c].front().sheet_radius_m) : 0.0,
+                        interpolate_held(nodes, interior_angle_rad));
+  }
+  return interpolate_held(across, columns.size() > 1 ? std::log(radius_m) : 0.0);
+}
+} // namespace rollcheck::study::rims

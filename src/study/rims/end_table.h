@@ -1,0 +1,67 @@
+#pragma once
+// The rim loop's FEM end table (study/rims/rim_loop.h): end models
+// (fem/scenes/rim_end_contact.h) at evenly spaced interior angles across the
+// loop's range of loaded ends, and for a rounded edge at geometrically
+// spaced R across the range of the loop's ends (its columns), all at one q;
+// its end/interior ratio at an end, interpolated linearly in the angle and
+// in log R (study/rims/table_nodes.h).
+//
+// The end model stands for interior angles in [60, 179.5] deg, a rounded
+// edge's in [60, 170] deg; a sharp edge is singular above the angle where
+// its wedge's exponent turns negative (contact/wedge_exponent.h on the
+// rigid plane, contact/edge_on_elastic_block_exponent.h on a block of the
+// body's own material), and has no ratio there.
+#include "fem/scenes/rim_end_contact.h"
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <optional>
+#include <vector>
+
+namespace rollcheck::study::rims
+{
+/// The end model's range of interior angles, 180 deg open.
+constexpr double smallest_modelled_angle_rad = 60 * (std::numbers::pi / 180);
+constexpr double largest_modelled_angle_rad = 179.5 * (std::numbers::pi / 180);
+/// A rounded edge's largest: OpenCASCADE finds no edge to fillet between
+/// faces this close to tangent (176 deg failed, 170 deg meshed); ends above
+/// it are modelled at it, where the rounded end's ratio no longer changes
+/// with the angle (the oloid's table: 1.945 and 1.939 at 142 and 161 deg).
+constexpr double largest_rounded_angle_rad = 170 * (std::numbers::pi / 180);
+/// The bisection's tolerance on the angle where sharp edges turn singular.
+constexpr double singular_angle_tolerance_rad = 1e-10;
+
+/// The largest interior angle the end model takes with `end`'s edge.
+double largest_modelled_angle(const fem::RimEndSettings& end);
+
+/// The smallest interior angle whose sharp edge is singular against the
+/// counter-face (bisection on the wedge exponent), pi when none is.
+double singular_from_angle(const fem::RimEndSettings& end);
+
+struct EndTableNode
+{
+  double interior_angle_rad = 0;
+  /// The node's column: R of its end model.
+  double sheet_radius_m = 0;
+  fem::RimEndStudy study;
+};
+
+/// The node's angle and its end model in brief (study/rims/rim_end_json.h
+/// end_model_json; defined in study/rims/rim_loop_json.cpp).
+nlohmann::json to_json(const EndTableNode& node);
+
+/// The end table's interior angles over [lo, hi]: evenly, at most `step_rad`
+/// apart, an odd number of them (every other one is a table too); with
+/// `acute_step_rad` > 0 and 90 deg inside the range, [lo, 90 deg] and
+/// [90 deg, hi] each so, the first at most `acute_step_rad` apart (their
+/// union is odd again, 90 deg an even node). One node where lo = hi.
+std::vector<double> end_table_angles(double lo, double hi, double step_rad, double acute_step_rad);
+
+/// The table's end/interior ratio at `interior_angle_rad` and the sheet's
+/// `radius_m` (unused with one column): within each column linear in the
+/// angle, across them linear in log R, held at
+/// the table's edges; in a direction with 3 or more nodes by every
+/// `stride`-th (the check of its spacing). None when the angle lies above
+/// `singular_from_rad`.
+std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, int stride, double singular_from_rad,
+                                      double interior_angle_rad, double radius_m);
+} // namespace rollcheck::study::rims

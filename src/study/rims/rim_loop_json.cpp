@@ -1,0 +1,116 @@
+// The rim loop's JSON (study/rims/rim_loop.h): every record's to_json,
+// declared beside its struct.
+#include "study/rims/rim_loop.h"
+#include "core/json_number.h"
+#include "study/rims/rim_end_json.h"
+#include <numbers>
+
+namespace rollcheck::study::rims
+{
+namespace
+{
+constexpr double degree = std::numbers::pi / 180;
+
+template <typename Record>
+nlohmann::json array_json(const std::vector<Record>& records)
+{
+  nlohmann::json array = nlohmann::json::array();
+  for (const Record& r : records)
+    array.push_back(to_json(r));
+  return array;
+}
+
+/// Where the two tables meet (RimLoopResult::flat_rim_seam), or null.
+nlohmann::json seam_json(const RimLoopResult& r)
+{
+  const auto seam = r.flat_rim_seam();
+  if (!seam)
+    return nullptr;
+  return {{"interior_angle_deg", r.flat_from_rad / degree},
+          {"sheet_radius_m", seam->sheet_radius_m},
+          {"end_table_ratio", seam->end_table_ratio},
+          {"flat_rim_ratio", seam->flat_rim_ratio}};
+}
+} // namespace
+
+nlohmann::json to_json(const EndTableNode& node)
+{
+  nlohmann::json j = end_model_json(node.study);
+  j["interior_angle_deg"] = node.interior_angle_rad / degree;
+  return j;
+}
+
+nlohmann::json to_json(const FlatRimSide& side)
+{
+  return {{"centre_of_pressure", side.centre_of_pressure},
+          {"end_line_load_n_per_m", side.end_line_load_n_per_m},
+          {"end_sheet_radius_m", side.end_radius_m},
+          {"peak_pressure_pa", side.peak_pressure_pa},
+          {"line_hertz_peak_pa", side.line_hertz_peak_pa},
+          {"last_change", side.last_change},
+          {"window_change", side.window_change},
+          {"converged", side.converged},
+          {"wall_s", side.wall_s},
+          {"after_over_half_width", side.after_over_half_width},
+          {"across_scale", side.across_scale},
+          {"whole_ruling", side.whole_ruling},
+          {"window_peak_pa", side.whole_ruling ? nlohmann::json(side.window_peak_pa) : nlohmann::json(nullptr)}};
+}
+
+nlohmann::json to_json(const FlatRimNode& node)
+{
+  return {{"interior_angle_deg", node.interior_angle_rad / degree},
+          {"peak_pressure_pa", node.peak_pa()},
+          {"ratio", node.ratio()},
+          {"converged", node.converged()},
+          {"sides", array_json(node.sides)}};
+}
+
+nlohmann::json to_json(const RimLoopEnd& e)
+{
+  nlohmann::json j = end_model_json(e.study);
+  j["orientation"] = e.orientation;
+  j["end"] = e.end == 0 ? "start" : "end";
+  j["interior_angle_deg"] = e.interior_angle_rad / degree;
+  j["modelled_angle_deg"] = e.modelled_angle_rad / degree;
+  j["interior_peak_pa"] = e.interior_peak_pa;
+  j["end_peak_pa"] = json_number(e.end_peak_pa);
+  j["end_peak_over_interior_peak"]
+      = e.end_peak_pa ? json_number(*e.end_peak_pa / e.interior_peak_pa) : nlohmann::json(nullptr);
+  j["table_ratio"] = json_number(e.table_ratio);
+  j["outside_model"] = e.outside_model.empty() ? nlohmann::json(nullptr) : nlohmann::json(e.outside_model);
+  return j;
+}
+
+nlohmann::json to_json(const RimLoopResult& r)
+{
+  const bool end_aware = !r.loop.end_aware.empty();
+  return {{"body", r.fem_sds.body},
+          {"loop", r.fem_sds.source},
+          {"counter_face", counter_face_name(r.end_setup.counter_face)},
+          {"edge_radius_m", r.end_setup.edge_radius_m},
+          {"singular_from_deg", r.singular_from_rad / degree},
+          {"ends", array_json(r.ends)},
+          {"worst_end_to_interior", json_number(r.worst_end_to_interior())},
+          {"loop_end_to_interior", json_number(r.loop_end_to_interior())},
+          {"covered_end_to_interior", json_number(r.covered_end_to_interior())},
+          {"covered_limit_change", json_number(r.covered_limit_change())},
+          {"outside_model_ends", end_aware ? r.loop.end_aware[0].outside_model_ends : 0},
+          {"outside_model_samples", end_aware ? r.loop.end_aware[0].outside_model_samples : 0},
+          {"finished_ends", end_aware ? r.loop.end_aware[0].finished_ends : 0},
+          {"end_table", array_json(r.table)},
+          {"end_table_load_n_per_m", r.reference_load_n_per_m},
+          // The table's R only when it has one column; its nodes carry their own.
+          {"direct_ends_median_sheet_radius_m", r.reference_radius_m},
+          {"end_table_converged", r.table_converged},
+          {"flat_rim_from_deg", r.flat_table.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.flat_from_rad / degree)},
+          {"flat_rim_table", array_json(r.flat_table)},
+          {"flat_rim_refused", r.flat_rim_refused.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.flat_rim_refused)},
+          {"flat_rim_seam", seam_json(r)},
+          {"end_table_vs_direct", json_number(r.table_vs_direct)},
+          {"end_aware_status", r.end_aware_status()},
+          {"loop_scores", to_json(r.loop)},
+          {"interior", to_json(r.fem_sds)},
+          {"wall_s", r.wall_s}};
+}
+} // namespace rollcheck::study::rims
