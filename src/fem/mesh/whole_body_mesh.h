@@ -1,7 +1,7 @@
 #pragma once
 // The whole body standing on the rigid plane z = 0 along its contact ruling,
 // as an OpenCASCADE solid meshed by gmsh on rank 0 and distributed by
-// DOLFINx (issue 14's whole-body check, study/whole_body/whole_body_check.h).
+// DOLFINx (the whole-body check, study/whole_body/whole_body_check.h).
 //
 // Frame: the contact ruling runs along x from 0 to L, the body lies above
 // z = 0, y is across the ruling. The body is modelled below the horizontal

@@ -102,7 +102,7 @@ Sample centre_line_mean(const std::vector<CentreLineNode>& line, double from, do
 /// P1 interpolant: exact for the penalty's own pressure up to w's two kinks,
 /// where a trapezoid of p across one section, over the contact edge's
 /// square root, missed by a few per cent and differently on each mesh
-/// (docs/rims.md, "Speed").
+/// (docs/notes/rims-log.md#speed).
 double far_line_load(const std::vector<SurfacePressureNode>& nodes, double far_x, double depth_m)
 {
   double force = 0;

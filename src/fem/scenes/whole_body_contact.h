@@ -1,7 +1,7 @@
 #pragma once
 // The whole body (fem/mesh/whole_body_mesh.h) pressed onto the rigid frictionless
 // plane z = 0 by the normal force F along the vertical through its centre of
-// mass, as the preprint loads it (issue 14's whole-body check).
+// mass, as the preprint loads it (the whole-body check, study/whole_body).
 //
 // Load and rigid-body modes: the body's section z = z_G through the centre
 // of mass is moved rigidly (fem/penalty_contact.h top face, every component

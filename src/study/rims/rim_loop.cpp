@@ -75,7 +75,7 @@ fem::RimEndSettings end_settings(const RimLoopSettings& s, double radius_m, doub
   e.resolve_boundary_layer = true; // every end's ratio is a number of the end, not of the mesh
   // An end whose levels still differ gets a third, as a flat-rim node does:
   // the preprint's body's steel end table had 4 of 15 nodes at 3.3-6.4 %
-  // per level (docs/rim-results.md).
+  // per level (docs/notes/rim-runs.md).
   e.extra_levels = std::max(e.extra_levels, 1);
   // The fillet must fit in the block, and b varies from end to end: deepen
   // the block where the setting's H / b would be too shallow for this end's b.
@@ -98,7 +98,7 @@ FlatRimSettings flat_rim_settings(const RimLoopSettings& s)
   setup.tolerance = s.end.tolerance;
   // A node whose cells do not yet resolve its end gets a third level (the
   // U optimum's 178 deg side on steel, -8.44 % at b/8, -0.44 % at b/16; the
-  // FEM-SDS optimum's vertex on steel, +3.98 % then -2.41 %: docs/flat-rim.md).
+  // FEM-SDS optimum's vertex on steel, +3.98 % then -2.41 %: docs/methods/flat-rim.md).
   setup.extra_levels = 1;
   return setup;
 }

@@ -1,5 +1,5 @@
 #pragma once
-// The rims over a body's rolling loop (issue 14; docs/rims.md): the 3D end
+// The rims over a body's rolling loop (docs/methods/rims.md): the 3D end
 // model (fem/scenes/rim_end_contact.h) at every loaded ruling end of the
 // orientations fem-sds solves directly, and FEM-SDS and FEM-FDS over every
 // sample of the loop with the ends' pressures in them (study/loop_scores/loop_sds.h).
@@ -21,7 +21,7 @@
 // angle and in log R. A rounded end's ratio depends on r_e /
 // R (its boundary layer s / b = 2 r_e / (pi R)) far more than on q: at the
 // preprint's body's 91.9 deg end, with b held, 2.353, 2.888 and 3.58 at R =
-// 2.96, 5.93 and 11.9 mm; with R held, 2.802 at twice q (docs/rims.md). A
+// 2.96, 5.93 and 11.9 mm; with R held, 2.802 at twice q (docs/results/rim-ends.md#a-rounded-ends-ratio-against-r-and-q). A
 // sharp edge's ratio has no such length: one column, at the median q and R.
 // The table is a reduction and is checked twice: against the direct end
 // models at their own q and R (`table_vs_direct`), and by the end-aware
@@ -40,7 +40,7 @@
 // ends near the flattest are one family per side, whose c, q and R follow
 // the angle) times the slices' factor. The straight rim of the FEM end
 // model is the weaker reduction there: on the oloid at 170 deg it gives
-// 1.92-1.97 where the body's own end gives 1.49-1.53 (docs/flat-rim.md).
+// 1.92-1.97 where the body's own end gives 1.49-1.53 (docs/methods/flat-rim.md).
 // A side on a short ruling whose shortened window does not converge is
 // solved over its whole loaded ruling instead (study::needs_whole_ruling).
 //
@@ -86,7 +86,7 @@ struct RimLoopSettings
   /// A rounded edge: every end model's block at least this many r_e deep
   /// however small the end's b (above 1 / fem::largest_edge_radius_over_depth,
   /// for the fillet to fit). Not a reduction to make freely: an acute end's
-  /// ratio depends on it (docs/rims.md, "The block's depth": 8 % higher at
+  /// ratio depends on it (docs/results/rim-ends.md#the-blocks-depth: 8 % higher at
   /// 4 r_e than at 10.5 r_e at 66.7 deg, R = r_e).
   double depth_over_edge_radius = 10.5;
   /// Largest spacing of the end table's nodes over the interior angle.
@@ -95,19 +95,19 @@ struct RimLoopSettings
   /// instead, with a node at 90 deg: an acute rounded end's ratio rises
   /// steeply towards 90 deg and bends (the preprint's body at R = 8.2 mm:
   /// 2.369, 3.075, 3.347 at 60, 87.5, 115 deg), above it is nearly flat, so
-  /// a table even in the angle misses the acute ends first (docs/rims.md).
+  /// a table even in the angle misses the acute ends first (docs/notes/rims-log.md).
   double end_table_acute_step_rad = 0;
   /// A rounded edge: the largest ratio between neighbouring columns' R in
   /// the end table (> 1), or 0 for one column at the direct ends' median q
   /// and R (the reduction that put the preprint's body's table 4.7 % from its
-  /// direct ends, docs/rims.md).
+  /// direct ends, docs/methods/rims.md).
   double end_table_radius_step = 2;
   /// A rounded edge's ends of at least this interior angle are solved in 3D
   /// on the body's own loop by half-space theory (flat-rim: its surface, its
   /// load along the ruling, its balance), nodes at most flat_rim_step_rad
   /// apart up to the loop's flattest end; the FEM end table stops there. pi:
   /// never. Half-space theory is checked against the FEM end model at 160
-  /// and 170 deg (docs/flat-rim.md).
+  /// and 170 deg (docs/methods/flat-rim.md).
   double flat_rim_from_rad = 160 * std::numbers::pi / 180;
   double flat_rim_step_rad = 2.5 * std::numbers::pi / 180;
 };

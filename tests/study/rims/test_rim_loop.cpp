@@ -50,7 +50,7 @@ TEST(RimLoop, SharpEdgeOnSteelTurnsSingularBelowTheSquareEnd)
   fem::RimEndSettings end;
   end.counter_face = fem::CounterFace::block;
   const double from = study::rims::singular_from_angle(end);
-  // docs/rims.md: for steel on steel from 77.45 deg (the square end: -0.226).
+  // docs/methods/rims.md: for steel on steel from 77.45 deg (the square end: -0.226).
   EXPECT_NEAR(from / degree, 77.45, 0.01);
   const double E = end.youngs_modulus_pa, nu = end.poisson_ratio;
   EXPECT_LT(contact::edge_on_elastic_block_exponent(from + 0.01 * degree, E, nu, E, nu), 0);
