@@ -8,11 +8,10 @@ roll a whole loop are left out of the panels and listed in the title.
 
     /usr/bin/python3 postprocess/plot_fem_family.py --out OUT
 """
-import argparse
-import json
 import os
 
 import matplotlib
+from out_folder import read_summary
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
@@ -28,11 +27,7 @@ def label(row):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", required=True, help="folder holding family.json; family.png goes there")
-    args = parser.parse_args()
-    with open(os.path.join(args.out, "family.json")) as f:
-        family = json.load(f)
+    out, family = read_summary(__doc__, "family.json", "folder holding family.json; family.png goes there")
     rows = family["genomes"] + family["references"]
     scored = [r for r in rows if r["scored"] and "over_cylinder" in r]
     unscored = [label(r) for r in rows if not r["scored"]]
@@ -52,7 +47,7 @@ def main():
     note = f"; no whole loop: {', '.join(unscored)}" if unscored else ""
     fig.suptitle(f"the family over one loop of real rolling each: {len(scored)} bodies scored{note}", fontsize=9)
     fig.tight_layout()
-    fig.savefig(os.path.join(args.out, "family.png"), dpi=110)
+    fig.savefig(os.path.join(out, "family.png"), dpi=110)
 
 
 if __name__ == "__main__":

@@ -11,21 +11,16 @@ Reads OUT/fem_sds.json (written by `rollcheck fem-sds --out OUT` or
 
     /usr/bin/python3 postprocess/plot_fem_orientations.py --out OUT
 """
-import argparse
-import json
 import os
 
 import matplotlib
+from out_folder import read_summary
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", required=True, help="folder holding fem_sds.json; the PNGs go there")
-    args = parser.parse_args()
-    with open(os.path.join(args.out, "fem_sds.json")) as f:
-        summary = json.load(f)
+    out, summary = read_summary(__doc__, "fem_sds.json", "folder holding fem_sds.json; the PNGs go there")
     rows = summary["per_orientation"]
     solved = [r for r in rows if r["fem_solved"]]
     title = f"{summary['body']}: {summary['source']}"
@@ -48,7 +43,7 @@ def main():
     ax.set_title(title, fontsize=9)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(args.out, "peaks.png"), dpi=120)
+    fig.savefig(os.path.join(out, "peaks.png"), dpi=120)
     print("peaks.png: FEM against analytic peak pressure per orientation")
 
     if solved:
@@ -64,7 +59,7 @@ def main():
         ax.set_title(f"{title}\nlines: line-contact Hertz; markers: FEM", fontsize=9)
         ax.legend(fontsize=7, ncol=2)
         fig.tight_layout()
-        fig.savefig(os.path.join(args.out, "profiles.png"), dpi=120)
+        fig.savefig(os.path.join(out, "profiles.png"), dpi=120)
         print("profiles.png: pressure along the contact ruling")
 
 

@@ -15,11 +15,10 @@ Reads OUT/optimize.json (written by `rollcheck optimize --out OUT` or
 
     /usr/bin/python3 postprocess/plot_optimize.py --out OUT
 """
-import argparse
-import json
 import os
 
 import matplotlib
+from out_folder import read_summary
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
@@ -96,11 +95,7 @@ def draw_bodies(folder, result):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", required=True, help="folder holding optimize.json and the meshes; the plots go there")
-    args = parser.parse_args()
-    with open(os.path.join(args.out, "optimize.json")) as f:
-        result = json.load(f)
+    out, result = read_summary(__doc__, "optimize.json", "folder holding optimize.json and the meshes; the plots go there")
     names = result["parameters"]
     sweeps = result["sweeps"]
     start, start_value = result["start"], result["start_value"]
@@ -129,9 +124,9 @@ def main():
     fig.suptitle(f"{result['score']} of the {result['family']} family, {result['oracle']} oracle, "
                  f"{result['mesh']['points_per_circle']} points per circle", fontsize=9)
     fig.tight_layout()
-    fig.savefig(os.path.join(args.out, "sweeps.png"), dpi=120)
+    fig.savefig(os.path.join(out, "sweeps.png"), dpi=120)
     print("sweeps.png: the score along each axis through the start, and the search's points")
-    draw_bodies(args.out, result)
+    draw_bodies(out, result)
 
 
 if __name__ == "__main__":

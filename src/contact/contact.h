@@ -13,18 +13,35 @@
 // (wedge_exponent.h) or on a block of elastic material
 // (edge_on_elastic_block_exponent.h), and frictionless contact of two
 // half-spaces across a gap on a grid (half_space_contact.h: boundary
-// elements by FFT), which the flat rim end is solved with.
-// Knows nothing of how the trajectory was produced.
+// elements by FFT), and the rounded ruling end solved on it (rounded_end.h:
+// its surface, the line load along the ruling, the window and whole-ruling
+// levels); the load ratio of a line contact (load_ratio.h); and the
+// resolution-free scores of a rolling loop on the body's exact surface
+// (continuum_loop_scores.h). Knows nothing of how the trajectory was produced.
+#include "contact/ball_rounded_surface.h"
 #include "contact/contact_locus.h"
-#include "contact/edge_on_elastic_block_exponent.h"
 #include "contact/contact_parameters.h"
+#include "contact/continuum_loop_scores.h"
+#include "contact/edge_on_elastic_block_exponent.h"
+#include "contact/exact_curvature.h"
 #include "contact/face_curvature.h"
 #include "contact/face_pressure.h"
 #include "contact/fatigue.h"
 #include "contact/half_space_contact.h"
 #include "contact/hertz.h"
+#include "contact/line_contact.h"
+#include "contact/line_hertz_beyond.h"
+#include "contact/load_ratio.h"
 #include "contact/rim_overhang.h"
+#include "contact/rounded_end.h"
+#include "contact/rounded_end_level.h"
+#include "contact/rounded_end_problem.h"
+#include "contact/rounded_end_whole_ruling.h"
+#include "contact/rounded_end_window.h"
+#include "contact/ruling_end_surface.h"
+#include "contact/ruling_line_load.h"
 #include "contact/sliding_speed.h"
+#include "contact/straight_rim_end.h"
 #include "contact/trajectory_scores.h"
 #include "contact/wear.h"
 #include "contact/wedge_exponent.h"

@@ -1,5 +1,6 @@
 #include "contact/continuum_loop_scores.h"
 #include "core/error.h"
+#include "core/named_values.h"
 #include "oracle/line_load.h"
 #include <algorithm>
 #include <array>
@@ -231,23 +232,22 @@ void validate(const oracle::RollingTrajectory& trajectory, double begin_s, doubl
 }
 } // namespace
 
-std::string load_rule_name(LoadRule rule)
+namespace
 {
-  switch (rule)
-  {
-  case LoadRule::static_through_centre_of_mass: return "static";
-  case LoadRule::dynamic: return "dynamic";
-  case LoadRule::uniform: return "uniform";
-  }
-  return "?";
+const NamedValues<LoadRule>& load_rule_names()
+{
+  static const NamedValues<LoadRule> names = {{"static", LoadRule::static_through_centre_of_mass},
+                                              {"dynamic", LoadRule::dynamic},
+                                              {"uniform", LoadRule::uniform}};
+  return names;
 }
+} // namespace
+
+std::string load_rule_name(LoadRule rule) { return name_of(load_rule_names(), rule, "load rule"); }
 
 LoadRule parse_load_rule(const std::string& name, const std::string& origin)
 {
-  for (LoadRule r : {LoadRule::static_through_centre_of_mass, LoadRule::dynamic, LoadRule::uniform})
-    if (name == load_rule_name(r))
-      return r;
-  throw InputError(fmt::format("{}: load rule must be static, dynamic or uniform, got '{}'", origin, name));
+  return parse_named(load_rule_names(), name, "load rule", origin);
 }
 
 ContinuumLoopScores continuum_loop_scores(const oracle::RollingTrajectory& trajectory, double begin_s, double end_s,

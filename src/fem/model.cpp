@@ -1,26 +1,22 @@
 #include "fem/model.h"
-#include "core/error.h"
-#include <fmt/format.h>
+#include "core/named_values.h"
 
 namespace rollcheck::fem
 {
-std::string model_name(Model model)
+namespace
 {
-  switch (model)
-  {
-  case Model::axisymmetric: return "axi";
-  case Model::plane_strain: return "plane-strain";
-  case Model::solid: return "3d";
-  }
-  return "?";
+const NamedValues<Model>& model_names()
+{
+  static const NamedValues<Model> names = {
+      {"axi", Model::axisymmetric}, {"plane-strain", Model::plane_strain}, {"3d", Model::solid}};
+  return names;
 }
+} // namespace
+
+std::string model_name(Model model) { return name_of(model_names(), model, "model"); }
 
 Model parse_model(const std::string& name, const std::string& origin)
 {
-  for (Model m : {Model::axisymmetric, Model::plane_strain, Model::solid})
-    if (name == model_name(m))
-      return m;
-  throw InputError(fmt::format("{}: model must be axi, plane-strain or 3d, got '{}'", origin, name));
+  return parse_named(model_names(), name, "model", origin);
 }
-
 } // namespace rollcheck::fem

@@ -3,7 +3,7 @@
 // square_end_grid_mesh.h): the rim end's solid meshed by gmsh, alone or on
 // its block, and the scene's planes of symmetry.
 #include "fem/mesh/gmsh_raw_mesh.h"
-#include "fem/mesh/rim_end_mesh.h"
+#include "fem/mesh/rim_end_geometry.h"
 #include "fem/mesh/scene_parts.h"
 
 namespace rollcheck::fem::scene_build

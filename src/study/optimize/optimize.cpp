@@ -3,7 +3,7 @@
 #include "core/error.h"
 #include "study/body_scores/score_body.h"
 #include "study/optimize/json_numbers.h"
-#include "study/optimize/names.h"
+#include "core/named_values.h"
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>

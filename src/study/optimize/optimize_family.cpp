@@ -4,7 +4,7 @@
 #include "geometry/convex_hull.h"
 #include "oracle/parallel_for.h"
 #include "study/optimize/json_numbers.h"
-#include "study/optimize/names.h"
+#include "core/named_values.h"
 #include <algorithm>
 #include <array>
 #include <chrono>
