@@ -18,9 +18,13 @@ namespace
 {
 using fem::CreaseSettings;
 
-const io::BoundSchema<CreaseSettings>& crease_schema()
+const SceneSchema<CreaseSettings>& crease_schema()
 {
-  return kept_schema<CreaseSettings>("crease", [](auto& s) {
+  return kept_schema<CreaseSettings>("crease",
+                                     "FEM pressure at a crease inside the contact (plane strain, several mesh levels) "
+                                     "against the blunt-wedge solution: the apex peak grows with the mesh, the rest "
+                                     "converges",
+                                     [](auto& s) {
     s.real("face_angle_deg", "--face-angle", &CreaseSettings::face_angle_rad, "deg",
            "beta, between each face of the crease and the plane: the crease's angle is 180 - 2 beta (half-space "
            "theory needs tan beta << 1)",
@@ -92,11 +96,5 @@ nlohmann::json run_crease(const io::Parameters& p)
 }
 } // namespace
 
-void add_crease_command(CLI::App& app)
-{
-  add_scene_command(app, crease_schema(),
-                    "FEM pressure at a crease inside the contact (plane strain, several mesh levels) against the "
-                    "blunt-wedge solution: the apex peak grows with the mesh, the rest converges",
-                    run_crease);
-}
+void add_crease_command(CLI::App& app) { add_scene_command(app, crease_schema(), run_crease); }
 } // namespace rollcheck::cli

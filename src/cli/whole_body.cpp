@@ -16,11 +16,18 @@ namespace rollcheck::cli
 {
 namespace
 {
-const io::BoundSchema<study::whole_body::WholeBodyCheckSettings>& whole_body_schema()
+const SceneSchema<study::whole_body::WholeBodyCheckSettings>& whole_body_schema()
 {
   using study::whole_body::WholeBodyCheckSettings;
-  static const io::BoundSchema<WholeBodyCheckSettings> schema = [] {
-    io::BoundSchema<WholeBodyCheckSettings> s("whole-body");
+  return kept_schema<WholeBodyCheckSettings>("whole-body",
+                                             "Issue 14's whole-body check: one orientation of the body (r1 = 10 mm) "
+                                             "meshed whole (gmsh OpenCASCADE, layers along the ruling) and pressed on "
+                                             "the rigid plane in 3D under F through its centre of mass, against the "
+                                             "plane-strain slices along the ruling and the end models (rollcheck rim) "
+                                             "at its loaded ends; PASS, SINGULAR ENDS (every comparison that has a "
+                                             "value within --tolerance, a sharp obtuse end singular: no value to "
+                                             "compare) or FAIL",
+                                             [](auto& s) {
     s.include(body_schema(), &WholeBodyCheckSettings::body)
         .real("direction_deg", "--direction", &WholeBodyCheckSettings::direction_deg, "deg",
               "The orientation: the ground's normal (body frame) nearest to (cos a, sin a, 0) on the body's contact "
@@ -110,9 +117,7 @@ const io::BoundSchema<study::whole_body::WholeBodyCheckSettings>& whole_body_sch
               "Largest relative difference of the whole body's pressure from the reduced models' that passes "
               "(issue 14: 3 %)",
               io::Bounds{0, 1, true, true});
-    return s;
-  }();
-  return schema;
+  });
 }
 
 nlohmann::json run_whole_body(const io::Parameters& p)
@@ -134,14 +139,5 @@ nlohmann::json run_whole_body(const io::Parameters& p)
 }
 } // namespace
 
-void add_whole_body_command(CLI::App& app)
-{
-  add_scene_command(app, "whole-body",
-                    "Issue 14's whole-body check: one orientation of the body (r1 = 10 mm) meshed whole (gmsh "
-                    "OpenCASCADE, layers along the ruling) and pressed on the rigid plane in 3D under F through its "
-                    "centre of mass, against the plane-strain slices along the ruling and the end models (rollcheck "
-                    "rim) at its loaded ends; PASS, SINGULAR ENDS (every comparison that has a value within "
-                    "--tolerance, a sharp obtuse end singular: no value to compare) or FAIL",
-                    whole_body_schema().schema(), run_whole_body);
-}
+void add_whole_body_command(CLI::App& app) { add_scene_command(app, whole_body_schema(), run_whole_body); }
 } // namespace rollcheck::cli
