@@ -9,8 +9,16 @@
 #include "core/error.h"
 #include <fmt/format.h>
 #include <mpi.h>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <spdlog/spdlog.h>
+
+namespace rollcheck::fem
+{
+// A level's JSON record: every member under its own name.
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CreaseLevel, refine, contact_element_m, apex_pressure_pa, half_contact_pressure_pa,
+                                   contact_edge_m, dofs, newton_iterations, krylov_iterations, wall_s)
+} // namespace rollcheck::fem
 
 namespace rollcheck::cli
 {
@@ -18,9 +26,13 @@ namespace
 {
 using fem::CreaseSettings;
 
-const io::BoundSchema<CreaseSettings>& crease_schema()
+const SceneSchema<CreaseSettings>& crease_schema()
 {
-  return kept_schema<CreaseSettings>("crease", [](auto& s) {
+  return kept_schema<CreaseSettings>("crease",
+                                     "FEM pressure at a crease inside the contact (plane strain, several mesh levels) "
+                                     "against the blunt-wedge solution: the apex peak grows with the mesh, the rest "
+                                     "converges",
+                                     [](auto& s) {
     s.real("face_angle_deg", "--face-angle", &CreaseSettings::face_angle_rad, "deg",
            "beta, between each face of the crease and the plane: the crease's angle is 180 - 2 beta (half-space "
            "theory needs tan beta << 1)",
@@ -43,22 +55,12 @@ nlohmann::json run_crease(const io::Parameters& p)
   const fem::CreaseSettings setup = crease_schema().bind(p);
   const fem::CreaseStudy study = fem::solve_crease(MPI_COMM_WORLD, setup);
 
-  nlohmann::json levels = nlohmann::json::array();
   std::string table = "| level | h_c (m) | DOFs | Newton | s | apex p (Pa) | growth (Pa) | growth / theory | "
                       "p(a/2) (Pa) | p(a/2) / theory - 1 | contact edge / a |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (std::size_t k = 0; k < study.levels.size(); ++k)
   {
     const fem::CreaseLevel& l = study.levels[k];
     const double growth = k > 0 ? l.apex_pressure_pa - study.levels[k - 1].apex_pressure_pa : 0.0;
-    levels.push_back({{"refine", l.refine},
-                      {"contact_element_m", l.contact_element_m},
-                      {"dofs", l.dofs},
-                      {"newton_iterations", l.newton_iterations},
-                      {"krylov_iterations", l.krylov_iterations},
-                      {"wall_s", l.wall_s},
-                      {"apex_pressure_pa", l.apex_pressure_pa},
-                      {"half_contact_pressure_pa", l.half_contact_pressure_pa},
-                      {"contact_edge_m", l.contact_edge_m}});
     table += fmt::format("| {} | {:.3g} | {} | {} | {:.2f} | {:.5g} | {} | {} | {:.5g} | {:+.2f} % | {:.3f} |\n",
                          l.refine, l.contact_element_m, l.dofs, l.newton_iterations, l.wall_s, l.apex_pressure_pa,
                          k > 0 ? fmt::format("{:.4g}", growth) : "-",
@@ -88,15 +90,9 @@ nlohmann::json run_crease(const io::Parameters& p)
                / static_cast<double>(study.levels.size() - 1) / study.apex_growth_per_level_pa},
           {"finest_half_contact_pressure_error",
            study.levels.back().half_contact_pressure_pa / study.half_contact_pressure_pa - 1},
-          {"levels", levels}};
+          {"levels", study.levels}};
 }
 } // namespace
 
-void add_crease_command(CLI::App& app)
-{
-  add_scene_command(app, crease_schema(),
-                    "FEM pressure at a crease inside the contact (plane strain, several mesh levels) against the "
-                    "blunt-wedge solution: the apex peak grows with the mesh, the rest converges",
-                    run_crease);
-}
+void add_crease_command(CLI::App& app) { add_scene_command(app, crease_schema(), run_crease); }
 } // namespace rollcheck::cli

@@ -17,9 +17,14 @@ namespace
 {
 using study::loop_scores::FemSdsSettings;
 
-const io::BoundSchema<FemSdsSettings>& fem_sds_schema()
+const SceneSchema<FemSdsSettings>& fem_sds_schema()
 {
-  return kept_schema<FemSdsSettings>("fem-sds", [](auto& s) {
+  return kept_schema<FemSdsSettings>("fem-sds",
+                                     "SDS over every sample of a rolling loop under FEM contact stress (plane-strain "
+                                     "slices along the contact ruling through their exact scaling, a converged table of "
+                                     "FEM solves), beside the preprint's point-Hertz SDS and line-contact Hertz; "
+                                     "orientations solved directly check it",
+                                     [](auto& s) {
     s.include(body_schema(), &FemSdsSettings::body)
         .choice("oracle", "--oracle", &FemSdsSettings::oracle,
                 "Where the orientations come from: rolling (real rolling without slipping, the body on a ruling at "
@@ -107,12 +112,5 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
 }
 } // namespace
 
-void add_fem_sds_command(CLI::App& app)
-{
-  add_scene_command(app, fem_sds_schema(),
-                    "SDS over every sample of a rolling loop under FEM contact stress (plane-strain slices along the "
-                    "contact ruling through their exact scaling, a converged table of FEM solves), beside the "
-                    "preprint's point-Hertz SDS and line-contact Hertz; orientations solved directly check it",
-                    run_fem_sds);
-}
+void add_fem_sds_command(CLI::App& app) { add_scene_command(app, fem_sds_schema(), run_fem_sds); }
 } // namespace rollcheck::cli

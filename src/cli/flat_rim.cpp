@@ -16,11 +16,15 @@ namespace rollcheck::cli
 {
 namespace
 {
-const io::BoundSchema<study::rims::FlatRimSettings>& flat_rim_schema()
+const SceneSchema<study::rims::FlatRimSettings>& flat_rim_schema()
 {
   using S = study::rims::FlatRimSettings;
-  static const io::BoundSchema<S> schema = [] {
-    io::BoundSchema<S> s("flat-rim");
+  return kept_schema<S>("flat-rim",
+                        "A rounded rim end whose rim is nearly flat, in 3D by half-space theory on the ball-rounded "
+                        "surface, rigid or steel counter-face, several grid levels: the finished oloid at a vertex "
+                        "orientation (the ruling's largest line load at the sheet's apex), or a straight rim of 150-180 "
+                        "deg across a flattened sheet (rim's one end)",
+                        [](auto& s) {
     s.include(body_schema(), [](S& settings) -> geometry::BodySpec& { return settings.body; });
     s.real("normal_load_n", "--load", &S::normal_load_n, "N",
               "Force F pressing the body onto the counter-face through its centre of mass (rim --body's)",
@@ -70,9 +74,7 @@ const io::BoundSchema<study::rims::FlatRimSettings>& flat_rim_schema()
         .real("tolerance", "--tolerance", &S::tolerance, "",
               "Largest change of the peak between the last two levels, and when the first level's window doubles, that counts as converged",
               io::Bounds{0, 1, true, false});
-    return s;
-  }();
-  return schema;
+  });
 }
 
 nlohmann::json run_flat_rim(const io::Parameters& p)
@@ -92,13 +94,5 @@ nlohmann::json run_flat_rim(const io::Parameters& p)
 }
 } // namespace
 
-void add_flat_rim_command(CLI::App& app)
-{
-  add_scene_command(app, "flat-rim",
-                    "A rounded rim end whose rim is nearly flat, in 3D by half-space theory on the ball-rounded "
-                    "surface, rigid or steel counter-face, several grid levels: the finished oloid at a vertex "
-                    "orientation (the ruling's largest line load at the sheet's apex), or a straight rim of "
-                    "150-180 deg across a flattened sheet (rim's one end)",
-                    flat_rim_schema().schema(), run_flat_rim);
-}
+void add_flat_rim_command(CLI::App& app) { add_scene_command(app, flat_rim_schema(), run_flat_rim); }
 } // namespace rollcheck::cli

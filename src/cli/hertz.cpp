@@ -18,14 +18,17 @@ namespace rollcheck::cli
 {
 namespace
 {
-const io::BoundSchema<fem::HertzSettings>& hertz_schema()
+const SceneSchema<fem::HertzSettings>& hertz_schema()
 {
   using fem::HertzSettings;
   using fem::Model;
   // Resource guard: refine 12 puts 640 elements across the contact, far
   // beyond the convergence study's finest level (6).
   static const io::Bounds refine_range{-1, 12};
-  return kept_schema<HertzSettings>("hertz", [](io::BoundSchema<HertzSettings>& s) {
+  return kept_schema<HertzSettings>("hertz",
+                                    "Penalty-contact FEM of a sphere or cylinder on a rigid plane, verified against "
+                                    "Hertz theory",
+                                    [](io::BoundSchema<HertzSettings>& s) {
     std::vector<std::pair<std::string, Model>> models;
     for (Model m : {Model::axisymmetric, Model::plane_strain, Model::solid})
       models.emplace_back(fem::model_name(m), m);
@@ -125,10 +128,9 @@ nlohmann::json run_hertz_study(const StudyChoice& choice, const io::Parameters& 
 void add_hertz_command(CLI::App& app)
 {
   static StudyChoice study;
-  CLI::App* sub = add_scene_command(
-      app, hertz_schema(), "Penalty-contact FEM of a sphere or cylinder on a rigid plane, verified against Hertz theory",
-      run_hertz,
-      [](const io::Parameters& params) { return study.name.empty() ? run_hertz(params) : run_hertz_study(study, params); });
+  CLI::App* sub = add_scene_command(app, hertz_schema(), run_hertz, [](const io::Parameters& params) {
+    return study.name.empty() ? run_hertz(params) : run_hertz_study(study, params);
+  });
   sub->add_option("--study", study.name,
                   "Run a study instead of one case: convergence (refine levels of every model and degree) or "
                   "penalty (penalty_c from 0.1 to 1000); writes a CSV and a PNG to --out")

@@ -21,9 +21,11 @@ struct MeshScene
   double volume_mesh_size_m = 0.1;  ///< tetrahedron size of a .msh volume mesh
 };
 
-const io::BoundSchema<MeshScene>& mesh_schema()
+const SceneSchema<MeshScene>& mesh_schema()
 {
-  return kept_schema<MeshScene>("mesh", [](auto& s) {
+  return kept_schema<MeshScene>("mesh",
+                                "Build or read a body, check it and write its mesh",
+                                [](auto& s) {
     s.include(body_schema(), &MeshScene::body)
         .text("out", "--out", &MeshScene::out,
               "Write the mesh here: .obj/.stl/.ply/.off (surface) or .msh (gmsh tetrahedra)")
@@ -69,8 +71,5 @@ nlohmann::json run_mesh(const io::Parameters& params)
 }
 } // namespace
 
-void add_mesh_command(CLI::App& app)
-{
-  add_scene_command(app, mesh_schema(), "Build or read a body, check it and write its mesh", run_mesh);
-}
+void add_mesh_command(CLI::App& app) { add_scene_command(app, mesh_schema(), run_mesh); }
 } // namespace rollcheck::cli

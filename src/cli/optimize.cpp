@@ -99,9 +99,13 @@ void add_oracle_parameters(Schema& s)
                 "Python with matplotlib for the plot (Debian's)"});
 }
 
-const Schema& optimize_schema()
+const SceneSchema<FamilySearchSettings>& optimize_schema()
 {
-  return kept_schema<FamilySearchSettings>("optimize", [](Schema& s) {
+  return kept_schema<FamilySearchSettings>("optimize",
+                                           "Search a two-circle roller family for the genome (theta, d, rho) minimising "
+                                           "a score with NLopt, judged against the noise, with the gradient and Hessian "
+                                           "at the start and at the optimum",
+                                           [](Schema& s) {
     add_method_parameters(s);
     add_axis(s, &FamilySearchSettings::theta_deg, "theta", "deg", "angle between the circle planes",
              io::Bounds{0, 180, true, true});
@@ -152,11 +156,5 @@ nlohmann::json run_optimize(const io::Parameters& params)
 }
 } // namespace
 
-void add_optimize_command(CLI::App& app)
-{
-  add_scene_command(app, optimize_schema(),
-                    "Search a two-circle roller family for the genome (theta, d, rho) minimising a score with NLopt, "
-                    "judged against the noise, with the gradient and Hessian at the start and at the optimum",
-                    run_optimize);
-}
+void add_optimize_command(CLI::App& app) { add_scene_command(app, optimize_schema(), run_optimize); }
 } // namespace rollcheck::cli

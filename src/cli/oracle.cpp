@@ -132,9 +132,13 @@ void add_rolling_parameters(Schema& s)
             &OracleScene::rolling);
 }
 
-const Schema& oracle_schema()
+const SceneSchema<OracleScene>& oracle_schema()
 {
-  return kept_schema<OracleScene>("oracle", [](Schema& s) {
+  return kept_schema<OracleScene>("oracle",
+                                  "Roll a body with the approximate or rigid-body oracle and score its contact, stress, "
+                                  "heat, wear and fatigue distributions, or roll it for real (--oracle rolling) and "
+                                  "score its contact with U. Defaults: the preprint's values, else the reference code's",
+                                  [](Schema& s) {
     s.include(body_schema(), &OracleScene::body);
     add_scene_parameters(s);
     add_oracle_parameters(s);
@@ -177,12 +181,5 @@ nlohmann::json run_oracle(const io::Parameters& params)
 }
 } // namespace
 
-void add_oracle_command(CLI::App& app)
-{
-  add_scene_command(app, oracle_schema(),
-                    "Roll a body with the approximate or rigid-body oracle and score its contact, stress, heat, wear "
-                    "and fatigue distributions, or roll it for real (--oracle rolling) and score its contact with U. "
-                    "Defaults: the preprint's values, else the reference code's",
-                    run_oracle);
-}
+void add_oracle_command(CLI::App& app) { add_scene_command(app, oracle_schema(), run_oracle); }
 } // namespace rollcheck::cli

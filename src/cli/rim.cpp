@@ -152,15 +152,17 @@ void add_end_model_options(RimSchema& s)
             "(ParaView)");
 }
 
-const RimSchema& rim_schema()
+const SceneSchema<RimCommand>& rim_schema()
 {
-  static const RimSchema schema = [] {
-    RimSchema s("rim");
+  return kept_schema<RimCommand>("rim",
+                                 "FEM of a loaded ruling end at the body's rim in 3D on the rigid plane or a steel "
+                                 "block (gmsh OpenCASCADE, sharp or rounded edge, several edge mesh levels): singular "
+                                 "with its exponent, or the converged end/interior pressure ratio. With --body: every "
+                                 "loaded end of the body's rolling loop, and FEM-SDS and FEM-FDS with the ends",
+                                 [](RimSchema& s) {
     for (auto add_options : {add_loop_options, add_end_table_options, add_end_options, add_end_model_options})
       add_options(s);
-    return s;
-  }();
-  return schema;
+  });
 }
 
 // Tables go to the log (stderr), so that `--json -` stays JSON alone.
@@ -184,13 +186,5 @@ nlohmann::json run_rim(const io::Parameters& p)
 }
 } // namespace
 
-void add_rim_command(CLI::App& app)
-{
-  add_scene_command(app, "rim",
-                    "FEM of a loaded ruling end at the body's rim in 3D on the rigid plane or a steel block (gmsh "
-                    "OpenCASCADE, sharp or rounded edge, several edge mesh levels): singular with its exponent, or the "
-                    "converged end/interior pressure ratio. With --body: every loaded end of the body's rolling loop, "
-                    "and FEM-SDS and FEM-FDS with the ends",
-                    rim_schema().schema(), run_rim);
-}
+void add_rim_command(CLI::App& app) { add_scene_command(app, rim_schema(), run_rim); }
 } // namespace rollcheck::cli

@@ -8,6 +8,7 @@
 #include "io/parameters.h"
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <type_traits>
 
 namespace rollcheck::cli
@@ -23,29 +24,48 @@ void register_scene(const Scene& scene);
 const Scene& find_scene(const std::string& kind, const std::string& origin);
 std::vector<std::string> scene_kinds();
 
+/// A scene's schema: its bound parameters, and the one-line description of
+/// its subcommand, whose name is the schema's kind.
+template <class Settings>
+struct SceneSchema : io::BoundSchema<Settings>
+{
+  SceneSchema(std::string kind, std::string description)
+      : io::BoundSchema<Settings>(std::move(kind)), description(std::move(description))
+  {
+  }
+  std::string description;
+};
+
 /// A scene's schema, built on first use and kept for the process (the
 /// subcommand's options and case files refer to it): `declare` adds the
 /// scene's parameters to an empty schema of kind `kind`. `declare` is the
 /// scene's own lambda, whose type keys the kept schema.
 template <class Settings, class Declare>
-const io::BoundSchema<Settings>& kept_schema(const char* kind, Declare declare)
+const SceneSchema<Settings>& kept_schema(const char* kind, const char* description, Declare declare)
 {
   static_assert(std::is_class_v<Declare>, "declare: a lambda, one type per scene");
-  static const io::BoundSchema<Settings> schema = [&] {
-    io::BoundSchema<Settings> s(kind);
+  static const SceneSchema<Settings> schema = [&] {
+    SceneSchema<Settings> s(kind, description);
     declare(s);
     return s;
   }();
   return schema;
 }
 
-/// add_scene_command for a scene of bound parameters: the subcommand's name
-/// is the schema's kind, declared once.
-template <class Settings>
-CLI::App* add_scene_command(CLI::App& app, const io::BoundSchema<Settings>& schema, const std::string& description,
-                            SceneRun run, SceneRun command = {})
+/// A group of parameters that scenes include (body_schema, penalty_schema):
+/// a kept schema with no subcommand of its own.
+template <class Settings, class Declare>
+const io::BoundSchema<Settings>& kept_schema(const char* kind, Declare declare)
 {
-  return add_scene_command(app, schema.schema().kind, description, schema.schema(), std::move(run),
+  return kept_schema<Settings>(kind, "", declare);
+}
+
+/// add_scene_command for a scene of bound parameters: the subcommand's name
+/// and description are the schema's, declared once.
+template <class Settings>
+CLI::App* add_scene_command(CLI::App& app, const SceneSchema<Settings>& schema, SceneRun run, SceneRun command = {})
+{
+  return add_scene_command(app, schema.schema().kind, schema.description, schema.schema(), std::move(run),
                            std::move(command));
 }
 

@@ -37,10 +37,13 @@ struct SearchScene : oracle::SearchSettings
   long table_rows = 20;
 };
 
-const io::BoundSchema<SearchScene>& search_schema()
+const SceneSchema<SearchScene>& search_schema()
 {
   using S = SearchScene;
-  return kept_schema<S>("search", [](auto& s) {
+  return kept_schema<S>("search",
+                        "Two-layer parametric search over the preprint's roller family: approximate screening, "
+                        "rigid-body revalidation",
+                        [](auto& s) {
     s.choice("grid", "--grid", &S::grid,
              "Grid of the reference code: quick (45 genomes, the preprint's), standard (616) or deep (1430)",
              {{"quick", oracle::SearchGrid::quick}, {"standard", oracle::SearchGrid::standard},
@@ -151,11 +154,5 @@ nlohmann::json run_search(const io::Parameters& params)
 }
 } // namespace
 
-void add_search_command(CLI::App& app)
-{
-  add_scene_command(app, search_schema(),
-                    "Two-layer parametric search over the preprint's roller family: approximate screening, rigid-body "
-                    "revalidation",
-                    run_search);
-}
+void add_search_command(CLI::App& app) { add_scene_command(app, search_schema(), run_search); }
 } // namespace rollcheck::cli

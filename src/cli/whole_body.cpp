@@ -16,11 +16,95 @@ namespace rollcheck::cli
 {
 namespace
 {
-const io::BoundSchema<study::whole_body::WholeBodyCheckSettings>& whole_body_schema()
+using study::whole_body::WholeBodyCheckSettings;
+using WholeBodySchema = io::BoundSchema<WholeBodyCheckSettings>;
+
+/// F, and the whole body's mesh: its strip along the ruling, its section and
+/// layers, its penalty.
+void add_whole_body_options(WholeBodySchema& s)
 {
-  using study::whole_body::WholeBodyCheckSettings;
-  static const io::BoundSchema<WholeBodyCheckSettings> schema = [] {
-    io::BoundSchema<WholeBodyCheckSettings> s("whole-body");
+  s.real("normal_load_n", "--load", &WholeBodyCheckSettings::normal_load_n, "N",
+         "Force F pressing the body onto the rigid plane along the vertical through its centre of mass (the "
+         "preprint's 100 N)",
+         io::positive)
+      .integer("contact_elements", "--contact-elements", &WholeBodyCheckSettings::contact_elements, "",
+               "Whole body: elements across the contact half-width b in the strip along the ruling",
+               io::Bounds{2, 40})
+      .real("strip_over_half_width", "--strip", &WholeBodyCheckSettings::strip_over_half_width, "",
+            "Whole body: half-width of the fine strip along the ruling, in units of b", io::Bounds{1, 20})
+      .real("section_growth", "--section-growth", &WholeBodyCheckSettings::section_growth, "",
+            "Whole body: element size per distance beyond the strip, in the section across the ruling",
+            io::Bounds{0.05, 1})
+      .real("layer_growth", "--layer-growth", &WholeBodyCheckSettings::layer_growth, "",
+            "Whole body: thickness ratio of neighbouring layers along the ruling, from the ends to the middle",
+            io::Bounds{1, 3})
+      .integer("layers_across_length", "--layers", &WholeBodyCheckSettings::layers_across_length, "",
+               "Whole body: the thickest layer (in the middle of the ruling) is L / this", io::Bounds{2, 10000})
+      .real("penalty_c", "--penalty-c", &WholeBodyCheckSettings::penalty_c, "",
+            "Whole body: penalty kappa = c E / h_c, h_c the strip's element size (the slices' 100)", io::positive);
+}
+
+/// The reduced models it is compared with: the slices, the rule that shares F
+/// along the ruling, and the end models.
+void add_reduced_model_options(WholeBodySchema& s)
+{
+  s.integer("stations", "--stations", &WholeBodyCheckSettings::stations, "",
+            "Plane-strain slices along the loaded ruling, compared with the whole body's peak there",
+            io::Bounds{2, 200})
+      .choice("load_rule", "--load-rule", &WholeBodyCheckSettings::load_rule,
+              "How the slices and end models share F along the ruling: locus (the contact locus's no-tension "
+              "linear rule, fem-sds's), sections (each section across the ruling in plane strain under one "
+              "rigid approach and tilt of the held cut, balanced for F and its moment; both ends loaded) or "
+              "coarse-body (the whole body meshed coarsely, its line load on each node plane). Under sections "
+              "and coarse-body an end model is matched to the rule near the edge (--end-match)",
+              {{"locus", study::whole_body::LoadRule::locus},
+               {"sections", study::whole_body::LoadRule::sections},
+               {"coarse-body", study::whole_body::LoadRule::coarse_body}})
+      .integer("rule_stations", "--rule-stations", &WholeBodyCheckSettings::rule_stations, "",
+               "Sections of the sections' load rule (midpoint rule along the ruling)", io::Bounds{4, 200})
+      .integer("rule_contact_elements", "--rule-contact-elements",
+               &WholeBodyCheckSettings::rule_contact_elements, "",
+               "The coarse-body load rule's elements across b (the whole body's: --contact-elements)",
+               io::Bounds{2, 40})
+      .real("rule_end_layer", "--rule-end-layer", &WholeBodyCheckSettings::rule_end_layer, "",
+            "The coarse-body load rule's end layers, h / b (the whole body's: --body-end-layer)",
+            io::Bounds{0, 1, true, false})
+      .real("end_match_over_half_width", "--end-match", &WholeBodyCheckSettings::end_match_over_half_width, "",
+            "Under the sections and coarse-body rules: the end models are matched to the rule this many b (the "
+            "locus's at the end) from the edge, their reading over their own pressure there times the slice at "
+            "the rule's q there",
+            io::Bounds{1, 100})
+      .real("crease_margin", "--crease-margin", &WholeBodyCheckSettings::crease_margin, "",
+            "Fraction of the ruling kept clear inside each loaded end for the stations (fem-sds's 5 %)",
+            io::Bounds{0, 0.25, true, true})
+      .integer("slice_refine", "--refine", &WholeBodyCheckSettings::slice_refine, "",
+               "The slices' mesh level (-1: the plane-strain default)", io::Bounds{-1, 8})
+      .choice("end_depth", "--end-depth", &WholeBodyCheckSettings::end_depth,
+              "The end models' block: body (as deep as the whole body's held section, the cut through its centre "
+              "of mass; square ends on rim's structured grid, MUMPS LU) or local (rim's default 10 b, which "
+              "overstates a deep body's square end by about 10 %)",
+              {{"body", study::whole_body::EndModelDepth::body}, {"local", study::whole_body::EndModelDepth::local}})
+      .integer("end_levels", "--end-levels", &WholeBodyCheckSettings::end_levels, "",
+               "The end models' edge mesh levels (rollcheck rim --levels)", io::Bounds{1, 6})
+      .real("end_edge_element", "--end-edge-element", &WholeBodyCheckSettings::end_edge_element, "",
+            "The end models' first edge element h_e / b (rollcheck rim --edge-element); each level halves it",
+            io::Bounds{1e-3, 1, false, true})
+      .integer("end_contact_elements", "--end-contact-elements", &WholeBodyCheckSettings::end_contact_elements, "",
+               "The end models' elements per b along the edge and the strip (rollcheck rim --contact-elements)",
+               io::Bounds{2, 40});
+}
+
+const SceneSchema<WholeBodyCheckSettings>& whole_body_schema()
+{
+  return kept_schema<WholeBodyCheckSettings>("whole-body",
+                                             "Issue 14's whole-body check: one orientation of the body (r1 = 10 mm) "
+                                             "meshed whole (gmsh OpenCASCADE, layers along the ruling) and pressed on "
+                                             "the rigid plane in 3D under F through its centre of mass, against the "
+                                             "plane-strain slices along the ruling and the end models (rollcheck rim) "
+                                             "at its loaded ends; PASS, SINGULAR ENDS (every comparison that has a "
+                                             "value within --tolerance, a sharp obtuse end singular: no value to "
+                                             "compare) or FAIL",
+                                             [](WholeBodySchema& s) {
     s.include(body_schema(), &WholeBodyCheckSettings::body)
         .real("direction_deg", "--direction", &WholeBodyCheckSettings::direction_deg, "deg",
               "The orientation: the ground's normal (body frame) nearest to (cos a, sin a, 0) on the body's contact "
@@ -32,73 +116,12 @@ const io::BoundSchema<study::whole_body::WholeBodyCheckSettings>& whole_body_sch
               "obtuse end), to choose --direction from",
               io::Bounds{0, 360});
     add_material(s, &WholeBodyCheckSettings::youngs_modulus_pa, &WholeBodyCheckSettings::poisson_ratio);
-    s.real("normal_load_n", "--load", &WholeBodyCheckSettings::normal_load_n, "N",
-           "Force F pressing the body onto the rigid plane along the vertical through its centre of mass (the "
-           "preprint's 100 N)",
-           io::positive)
-        .integer("contact_elements", "--contact-elements", &WholeBodyCheckSettings::contact_elements, "",
-                 "Whole body: elements across the contact half-width b in the strip along the ruling",
-                 io::Bounds{2, 40})
-        .real("strip_over_half_width", "--strip", &WholeBodyCheckSettings::strip_over_half_width, "",
-              "Whole body: half-width of the fine strip along the ruling, in units of b", io::Bounds{1, 20})
-        .real("section_growth", "--section-growth", &WholeBodyCheckSettings::section_growth, "",
-              "Whole body: element size per distance beyond the strip, in the section across the ruling",
-              io::Bounds{0.05, 1})
-        .real("layer_growth", "--layer-growth", &WholeBodyCheckSettings::layer_growth, "",
-              "Whole body: thickness ratio of neighbouring layers along the ruling, from the ends to the middle",
-              io::Bounds{1, 3})
-        .integer("layers_across_length", "--layers", &WholeBodyCheckSettings::layers_across_length, "",
-                 "Whole body: the thickest layer (in the middle of the ruling) is L / this", io::Bounds{2, 10000})
-        .real("penalty_c", "--penalty-c", &WholeBodyCheckSettings::penalty_c, "",
-              "Whole body: penalty kappa = c E / h_c, h_c the strip's element size (the slices' 100)", io::positive)
-        .integer("stations", "--stations", &WholeBodyCheckSettings::stations, "",
-                 "Plane-strain slices along the loaded ruling, compared with the whole body's peak there",
-                 io::Bounds{2, 200})
-        .choice("load_rule", "--load-rule", &WholeBodyCheckSettings::load_rule,
-                "How the slices and end models share F along the ruling: locus (the contact locus's no-tension "
-                "linear rule, fem-sds's), sections (each section across the ruling in plane strain under one "
-                "rigid approach and tilt of the held cut, balanced for F and its moment; both ends loaded) or "
-                "coarse-body (the whole body meshed coarsely, its line load on each node plane). Under sections "
-                "and coarse-body an end model is matched to the rule near the edge (--end-match)",
-                {{"locus", study::whole_body::LoadRule::locus},
-                 {"sections", study::whole_body::LoadRule::sections},
-                 {"coarse-body", study::whole_body::LoadRule::coarse_body}})
-        .integer("rule_stations", "--rule-stations", &WholeBodyCheckSettings::rule_stations, "",
-                 "Sections of the sections' load rule (midpoint rule along the ruling)", io::Bounds{4, 200})
-        .integer("rule_contact_elements", "--rule-contact-elements",
-                 &WholeBodyCheckSettings::rule_contact_elements, "",
-                 "The coarse-body load rule's elements across b (the whole body's: --contact-elements)",
-                 io::Bounds{2, 40})
-        .real("rule_end_layer", "--rule-end-layer", &WholeBodyCheckSettings::rule_end_layer, "",
-              "The coarse-body load rule's end layers, h / b (the whole body's: --body-end-layer)",
-              io::Bounds{0, 1, true, false})
-        .real("end_match_over_half_width", "--end-match", &WholeBodyCheckSettings::end_match_over_half_width, "",
-              "Under the sections and coarse-body rules: the end models are matched to the rule this many b (the "
-              "locus's at the end) from the edge, their reading over their own pressure there times the slice at "
-              "the rule's q there",
-              io::Bounds{1, 100})
-        .real("crease_margin", "--crease-margin", &WholeBodyCheckSettings::crease_margin, "",
-              "Fraction of the ruling kept clear inside each loaded end for the stations (fem-sds's 5 %)",
-              io::Bounds{0, 0.25, true, true})
-        .integer("slice_refine", "--refine", &WholeBodyCheckSettings::slice_refine, "",
-                 "The slices' mesh level (-1: the plane-strain default)", io::Bounds{-1, 8})
-        .choice("end_depth", "--end-depth", &WholeBodyCheckSettings::end_depth,
-                "The end models' block: body (as deep as the whole body's held section, the cut through its centre "
-                "of mass; square ends on rim's structured grid, MUMPS LU) or local (rim's default 10 b, which "
-                "overstates a deep body's square end by about 10 %)",
-                {{"body", study::whole_body::EndModelDepth::body}, {"local", study::whole_body::EndModelDepth::local}})
-        .integer("end_levels", "--end-levels", &WholeBodyCheckSettings::end_levels, "",
-                 "The end models' edge mesh levels (rollcheck rim --levels)", io::Bounds{1, 6})
-        .real("end_edge_element", "--end-edge-element", &WholeBodyCheckSettings::end_edge_element, "",
-              "The end models' first edge element h_e / b (rollcheck rim --edge-element); each level halves it",
-              io::Bounds{1e-3, 1, false, true})
-        .integer("end_contact_elements", "--end-contact-elements", &WholeBodyCheckSettings::end_contact_elements, "",
-                 "The end models' elements per b along the edge and the strip (rollcheck rim --contact-elements)",
-                 io::Bounds{2, 40})
-        .real("body_end_layer", "--body-end-layer", &WholeBodyCheckSettings::body_end_layer, "",
-              "Whole body: thickness of its end layers (and of its section's elements near the contact line at the "
-              "ends), h / b",
-              io::Bounds{1e-3, 1, false, true})
+    add_whole_body_options(s);
+    add_reduced_model_options(s);
+    s.real("body_end_layer", "--body-end-layer", &WholeBodyCheckSettings::body_end_layer, "",
+           "Whole body: thickness of its end layers (and of its section's elements near the contact line at the "
+           "ends), h / b",
+           io::Bounds{1e-3, 1, false, true})
         .flag("end_layers_only", "--end-layers-only", &WholeBodyCheckSettings::end_layers_only,
               "Whole body: do not refine the section near the contact line to the end layers' size (by default the "
               "elements at the ends are as small across and in depth as along the ruling, as the end model's "
@@ -110,9 +133,7 @@ const io::BoundSchema<study::whole_body::WholeBodyCheckSettings>& whole_body_sch
               "Largest relative difference of the whole body's pressure from the reduced models' that passes "
               "(issue 14: 3 %)",
               io::Bounds{0, 1, true, true});
-    return s;
-  }();
-  return schema;
+  });
 }
 
 nlohmann::json run_whole_body(const io::Parameters& p)
@@ -134,14 +155,5 @@ nlohmann::json run_whole_body(const io::Parameters& p)
 }
 } // namespace
 
-void add_whole_body_command(CLI::App& app)
-{
-  add_scene_command(app, "whole-body",
-                    "Issue 14's whole-body check: one orientation of the body (r1 = 10 mm) meshed whole (gmsh "
-                    "OpenCASCADE, layers along the ruling) and pressed on the rigid plane in 3D under F through its "
-                    "centre of mass, against the plane-strain slices along the ruling and the end models (rollcheck "
-                    "rim) at its loaded ends; PASS, SINGULAR ENDS (every comparison that has a value within "
-                    "--tolerance, a sharp obtuse end singular: no value to compare) or FAIL",
-                    whole_body_schema().schema(), run_whole_body);
-}
+void add_whole_body_command(CLI::App& app) { add_scene_command(app, whole_body_schema(), run_whole_body); }
 } // namespace rollcheck::cli
