@@ -232,22 +232,12 @@ void validate(const oracle::RollingTrajectory& trajectory, double begin_s, doubl
 }
 } // namespace
 
-namespace
-{
 const NamedValues<LoadRule>& load_rule_names()
 {
   static const NamedValues<LoadRule> names = {{"static", LoadRule::static_through_centre_of_mass},
                                               {"dynamic", LoadRule::dynamic},
                                               {"uniform", LoadRule::uniform}};
   return names;
-}
-} // namespace
-
-std::string load_rule_name(LoadRule rule) { return name_of(load_rule_names(), rule, "load rule"); }
-
-LoadRule parse_load_rule(const std::string& name, const std::string& origin)
-{
-  return parse_named(load_rule_names(), name, "load rule", origin);
 }
 
 ContinuumLoopScores continuum_loop_scores(const oracle::RollingTrajectory& trajectory, double begin_s, double end_s,

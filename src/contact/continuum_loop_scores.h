@@ -50,6 +50,7 @@
 // Quadrature: the trapezoid rule between the trajectory's samples, and
 // two-point Gauss-Legendre on `pieces` equal pieces along each ruling.
 #include "contact/contact_parameters.h"
+#include "core/named_values.h"
 #include "oracle/contact_density.h"
 #include "oracle/rolling_dynamics.h"
 #include <Eigen/Core>
@@ -63,10 +64,9 @@ enum class LoadRule
   dynamic,
   uniform
 };
-/// "static", "dynamic", "uniform".
-std::string load_rule_name(LoadRule rule);
-/// Inverse of load_rule_name; InputError naming `origin` otherwise.
-LoadRule parse_load_rule(const std::string& name, const std::string& origin);
+/// The rules' names ("static", "dynamic", "uniform"), read with
+/// core/named_values.h's name_of and parse_named.
+const NamedValues<LoadRule>& load_rule_names();
 
 enum class TimeLaw
 {

@@ -19,3 +19,15 @@ expect() {
   if ! grep -qiE -- "$pattern" <<<"$out"; then echo "FAIL (output lacks '$pattern'): $*"; echo "$out" | head -c 2000; fail=1; return; fi
   if grep -q "internal error" <<<"$out"; then echo "FAIL (internal error): $*"; echo "$out" | head -c 2000; fail=1; fi
 }
+
+# refuses SUBCOMMAND 'ARGS:TEXT'...: each command line `$bin -q SUBCOMMAND ARGS`
+# exits 2 with a message holding TEXT (the input named) and writes no result.
+refuses() {
+  local sub=$1 args rc; shift
+  for args in "$@"; do
+    "$bin" -q "$sub" ${args%%:*} --json "$tmp/bad.json" > "$tmp/bad.log" 2>&1; rc=$?
+    if [[ $rc -ne 2 ]] || ! grep -q -- "${args#*:}" "$tmp/bad.log" || [[ -e "$tmp/bad.json" ]]; then
+      echo "FAIL: $sub ${args%%:*} gave exit $rc without '${args#*:}' (or wrote a result):"; cat "$tmp/bad.log"; fail=1
+    fi
+  done
+}

@@ -30,12 +30,7 @@ check '/usr/bin/python3 -c "import meshio, sys; m = meshio.read(sys.argv[1]); as
 check_json "steel block: the square end singular with the elastic wedge's exponent, b of E* halved" \
   '.counter_face == "steel" and .singular == true and .wedge_exponent < -0.225 and .wedge_exponent > -0.227
    and .half_width_m > 3.40e-5 and .half_width_m < 3.41e-5 and .end_to_interior == null' "$tmp/steel.json"
-for args in "--interior-angle 180:interior_angle_deg" "--interior-angle 50:interior_angle_deg" "--sheet-radius -1:sheet_radius_m" \
-            "--load-per-length nan:load_n_per_m" "--levels 0:levels" "--xdmf $tmp/f.vtu:--xdmf" \
-            "--edge-radius 1e-3:edge_radius_m"; do
-  "$bin" -q rim ${args%%:*} --json "$tmp/bad.json" > "$tmp/bad.log" 2>&1; rc=$?
-  if [[ $rc -ne 2 ]] || ! grep -q -- "${args#*:}" "$tmp/bad.log" || [[ -e "$tmp/bad.json" ]]; then
-    echo "FAIL: rim ${args%%:*} gave exit $rc without '${args#*:}' (or wrote a result):"; cat "$tmp/bad.log"; fail=1
-  fi
-done
+refuses rim "--interior-angle 180:interior_angle_deg" "--interior-angle 50:interior_angle_deg" \
+  "--sheet-radius -1:sheet_radius_m" "--load-per-length nan:load_n_per_m" "--levels 0:levels" \
+  "--xdmf $tmp/f.vtu:--xdmf" "--edge-radius 1e-3:edge_radius_m"
 exit $fail

@@ -54,6 +54,20 @@ void validate(const HertzSettings& s)
   }
 }
 
+namespace
+{
+/// The peak pressure and the subsurface maxima of point or line Hertz.
+template <class Hertz>
+void take_peak_and_subsurface(HertzReference& r, const Hertz& h)
+{
+  r.peak_pressure_pa = h.peak_pressure_pa;
+  r.max_shear_pa = h.max_shear_pa;
+  r.max_shear_depth_m = h.max_shear_depth_m;
+  r.max_von_mises_pa = h.max_von_mises_pa;
+  r.max_von_mises_depth_m = h.max_von_mises_depth_m;
+}
+} // namespace
+
 HertzReference hertz_reference(const HertzSettings& s)
 {
   const double E = s.youngs_modulus_pa, nu = s.poisson_ratio;
@@ -66,23 +80,15 @@ HertzReference hertz_reference(const HertzSettings& s)
     r.load = s.force_n / s.length_m;
     const contact::LineHertz h = contact::line_contact(r.load, s.radius_m, r.effective_modulus_pa, nu);
     r.contact_size_m = h.half_width_m;
-    r.peak_pressure_pa = h.peak_pressure_pa;
-    r.max_shear_pa = h.max_shear_pa;
-    r.max_shear_depth_m = h.max_shear_depth_m;
-    r.max_von_mises_pa = h.max_von_mises_pa;
-    r.max_von_mises_depth_m = h.max_von_mises_depth_m;
+    take_peak_and_subsurface(r, h);
   }
   else
   {
     r.load = s.force_n;
     const contact::PointHertz h = contact::point_contact(r.load, s.radius_m, r.effective_modulus_pa, nu);
     r.contact_size_m = h.contact_radius_m;
-    r.peak_pressure_pa = h.peak_pressure_pa;
     r.approach_m = h.approach_m;
-    r.max_shear_pa = h.max_shear_pa;
-    r.max_shear_depth_m = h.max_shear_depth_m;
-    r.max_von_mises_pa = h.max_von_mises_pa;
-    r.max_von_mises_depth_m = h.max_von_mises_depth_m;
+    take_peak_and_subsurface(r, h);
   }
   return r;
 }

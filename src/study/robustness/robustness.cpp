@@ -43,8 +43,9 @@ CellSettings decode(const std::vector<Choice>& grid, const Cell& cell, const Rob
   c.energy_excess = c.uniform_rate ? 0.1 : std::stod(energy); // a uniform rate re-times the loop of E = 0.1
   const std::string& width = grid[choice_index(grid, "contact_width")].values[cell[choice_index(grid, "contact_width")]];
   c.scores.width = width == "hertz" ? oracle::ContactWidthModel::hertz : oracle::ContactWidthModel::rigid;
-  c.scores.load_rule = contact::parse_load_rule(
-      grid[choice_index(grid, "load_rule")].values[cell[choice_index(grid, "load_rule")]], "robustness grid");
+  c.scores.load_rule = parse_named(contact::load_rule_names(),
+                                    grid[choice_index(grid, "load_rule")].values[cell[choice_index(grid, "load_rule")]],
+                                    "load rule", "robustness grid");
   c.scores.end_margin = std::stod(grid[choice_index(grid, "end_margin")].values[cell[choice_index(grid, "end_margin")]]);
   c.scores.time_law = c.uniform_rate ? contact::TimeLaw::uniform_rate : contact::TimeLaw::free_rolling;
   c.scores.normal_load_n = s.normal_load_n;

@@ -118,7 +118,7 @@ TEST(ContinuumLoopScores, RefusesBadSettings)
   s.end_margin = 0.05;
   s.normal_load_n = -1;
   EXPECT_THROW(scores(run, s), InputError);
-  EXPECT_THROW(contact::parse_load_rule("quasi", "--load-rule"), InputError);
+  EXPECT_THROW(parse_named(contact::load_rule_names(), std::string("quasi"), "load rule", "--load-rule"), InputError);
 }
 
 TEST(ComparisonVerdict, RobustDependentAndUntestable)
