@@ -68,6 +68,21 @@ const SceneSchema<FemSdsSettings>& fem_sds_schema()
               "Fraction of the ruling kept clear of each end of the loaded contact: the FEM peaks are taken inside, "
               "away from the creases (end effects decay within a few contact widths b, and b / L < 1e-3 here)",
               io::Bounds{0, 0.25, true, true})
+        .choice("load_rule", "--load-rule", &FemSdsSettings::load_rule,
+                "The continuum value's load on each ruling: dynamic (the normal force and centre of pressure of the "
+                "same rolling motion, scaled to --load), static (--load through the centre of mass) or uniform "
+                "(--load / L along the ruling); the template keeps the static load (docs/methods/fem-sds.md)",
+                contact::load_rule_names())
+        .choice("contact_width", "--contact-width", &FemSdsSettings::contact_width,
+                "The continuum value's pass: geometric (each pass adds its peak pressure, as the template's samples "
+                "do) or hertz (the pressure-time integral over the Hertz patch)",
+                {{"geometric", oracle::ContactWidthModel::rigid}, {"hertz", oracle::ContactWidthModel::hertz}})
+        .flag("uniform_rate", "--uniform-rate", &FemSdsSettings::uniform_rate,
+              "The continuum value at a uniform rolling rate over the same loop (the limit of a fast roll; needs "
+              "--load-rule static or uniform)")
+        .integer("continuum_pieces", "--continuum-pieces", &FemSdsSettings::continuum_pieces, "",
+                 "Gauss pieces along each ruling of the continuum value (its convergence halves them)",
+                 io::Bounds{2, 100000})
         .integer("map_points", "--map-points", &FemSdsSettings::map_points, "",
                  "Points along each ruling at which the peak pressures are mapped onto the faces (FEM-SDS)",
                  io::Bounds{2, 100000})

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -21,11 +22,14 @@ struct Rates
 {
   std::array<double, n_quantities> area{}, first{}, second{}, max{};
   double swept = 0;
+  double load_ratio_min = std::numeric_limits<double>::infinity(), load_ratio_max = 0;
   Rates& operator+=(const Rates& o)
   {
     for (int i = 0; i < n_quantities; ++i)
       area[i] += o.area[i], first[i] += o.first[i], second[i] += o.second[i], max[i] = std::max(max[i], o.max[i]);
     swept += o.swept;
+    load_ratio_min = std::min(load_ratio_min, o.load_ratio_min);
+    load_ratio_max = std::max(load_ratio_max, o.load_ratio_max);
     return *this;
   }
 };
@@ -179,7 +183,11 @@ Rates sample_rates(const oracle::RollingSample& sample, double rate, const Rolli
         else
           r.max[0] = std::max(r.max[0], 1 / (rate * radius(f)));
         const double q_held = line_load_at(load, length, held(f));
-        const double p0 = std::sqrt(q_held * e_star / (std::numbers::pi * radius(held(f))));
+        const double load_ratio = q_held / (e_star * radius(held(f)));
+        r.load_ratio_min = std::min(r.load_ratio_min, load_ratio);
+        r.load_ratio_max = std::max(r.load_ratio_max, load_ratio);
+        const double p0 = std::sqrt(q_held * e_star / (std::numbers::pi * radius(held(f))))
+                          * (s.pressure_factor ? s.pressure_factor(load_ratio) : 1.0);
         const double b_held = std::sqrt(4 * q_held * radius(held(f)) / (std::numbers::pi * e_star));
         // accumulated = K / (|sigma'| R(f)): its first moment is smooth in s,
         // its second carries 1 / R, integrated exactly over the piece below.
@@ -295,6 +303,8 @@ ContinuumLoopScores continuum_loop_scores(const oracle::RollingTrajectory& traje
   scores.accumulated_pressure = score_of(total, 2, surface_area_m2);
   scores.damage = score_of(total, 3, surface_area_m2);
   scores.peak_pressure_max_pa = total.max[1];
+  scores.load_ratio_min = total.load_ratio_min;
+  scores.load_ratio_max = total.load_ratio_max;
   return scores;
 }
 } // namespace rollcheck::contact

@@ -29,6 +29,10 @@
 //    near a loaded end of the ruling it is held at its value `end_margin` of
 //    the ruling inside that end (the rim's own stress is a separate, singular
 //    problem: study/rims). It does not depend on how fast the body rolls.
+//    With a pressure factor g, p0 g(lambda), lambda = q / (E* R) at the held
+//    point: the plane-strain FEM's correction to line Hertz, which depends on
+//    lambda alone (fem/scenes/slice_scaling.h); the accumulated pressure and
+//    the damage follow it.
 //  - accumulated pressure, the pressure-time integral of a pass: Hertz width
 //    integral p dt = (pi / 4) p0 2 b / (|sigma'| R) with p0, b held as above;
 //    geometric width p0 / (|sigma'| R) (the preprint's per-face sum of
@@ -54,6 +58,7 @@
 #include "oracle/contact_density.h"
 #include "oracle/rolling_dynamics.h"
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 
 namespace rollcheck::contact
@@ -84,6 +89,8 @@ struct ContinuumLoopSettings
   double effective_modulus_pa = 200e9 / (2 * (1 - 0.3 * 0.3)); ///< steel on steel
   double basquin_exponent = FatigueParameters{}.basquin_exponent;
   int pieces = 64;            ///< Gauss pieces along each ruling
+  /// g(lambda), lambda = q / (E* R), multiplying every peak pressure; empty: 1 (line Hertz).
+  std::function<double(double)> pressure_factor;
 };
 
 /// The scores of one per-point quantity x.
@@ -104,6 +111,9 @@ struct ContinuumLoopScores
   double swept_area_m2 = 0;    ///< integral L R dsigma ds over the loop
   double surface_area_m2 = 0;  ///< A
   double peak_pressure_max_pa = 0;
+  /// Least and largest lambda = q / (E* R) at which a peak pressure was taken
+  /// (the range a pressure factor must cover).
+  double load_ratio_min = 0, load_ratio_max = 0;
 };
 
 /// The body's mass properties the static rule needs.

@@ -63,12 +63,12 @@ Models models_of(const FemSdsSettings& s)
 /// One loop of real rolling; `uniformity`, if given, gets U of its contact
 /// density on `mesh` (oracle/uniformity_score.h).
 LoopSource rolling_source(const FemSdsSettings& s, const geometry::SurfaceMesh& mesh, bool& contact_held,
-                          std::optional<double>* uniformity)
+                          std::optional<double>* uniformity, std::optional<oracle::RealRolling>& kept_run)
 {
   oracle::RollingStudyParameters rp;
   rp.barrier_energy_excess = s.barrier_energy_excess;
   rp.samples_per_loop = s.samples_per_loop;
-  const oracle::RealRolling run = oracle::real_rolling(s.body, rp);
+  const oracle::RealRolling& run = kept_run.emplace(oracle::real_rolling(s.body, rp));
   LoopSource source{run.circles, run.mass.centre_of_mass_m, {}, {}, {}, ""};
   for (const oracle::RollingSample& sample : run.trajectory.samples)
     if (sample.time_s <= run.scored_end_s)
@@ -120,11 +120,15 @@ struct Scene
   LoopSource source;
   bool contact_held = true;
   std::optional<double> uniformity;
+  std::optional<oracle::RealRolling> run; ///< the rolling oracle's
 };
 
 Scene make_scene(const FemSdsSettings& s, bool with_uniformity)
 {
   oracle::require_line_contact(s.body);
+  if (s.uniform_rate && s.load_rule == contact::LoadRule::dynamic)
+    throw InputError("--uniform-rate needs --load-rule static or uniform: the dynamic load is the free motion's, and no "
+                     "free motion rolls at a uniform rate");
   Scene scene;
   scene.models = models_of(s);
   const Models& m = scene.models;
@@ -134,9 +138,19 @@ Scene make_scene(const FemSdsSettings& s, bool with_uniformity)
   scene.pressure = contact::face_pressure(curvature.effective_radius_m, m.hertz, m.compat);
   scene.cones = oracle::face_cones(scene.mesh);
   scene.source = s.oracle == OrientationOracle::rolling
-                     ? rolling_source(s, scene.mesh, scene.contact_held, with_uniformity ? &scene.uniformity : nullptr)
+                     ? rolling_source(s, scene.mesh, scene.contact_held, with_uniformity ? &scene.uniformity : nullptr,
+                                      scene.run)
                      : rigid_source(s, m, scene.body);
   return scene;
+}
+
+/// The continuum value of a whole rolling loop; none otherwise.
+std::optional<ContinuumSds> scene_continuum(MPI_Comm comm, const Scene& scene, const FemSdsSettings& s,
+                                            fem::SliceScaling& table)
+{
+  if (!scene.run || !scene.contact_held || !std::isfinite(scene.run->first_loop_end_s))
+    return std::nullopt;
+  return continuum_sds(comm, *scene.run, continuum_settings(s), table);
 }
 
 /// The slices' FEM along the loaded ruling and their peaks, and the line
@@ -231,8 +245,12 @@ void check_with_slab(MPI_Comm comm, FemSdsOrientation& r, const FemSdsSettings& 
 }
 
 /// Rank 0's lines for the loop's scores.
-void log_loop(const LoopSds& loop, const fem::SliceScaling& table)
+void log_loop(const LoopSds& loop, const std::optional<ContinuumSds>& continuum, const fem::SliceScaling& table)
 {
+  if (continuum)
+    spdlog::info("continuum (exact surface): line-Hertz SDS {:.4g}, FEM-SDS {:.4g} ({:+.3f} % from half the "
+                 "resolution)",
+                 continuum->line_hertz, continuum->fem, 100 * continuum->change());
   auto text = [](const std::optional<double>& v) { return v ? fmt::format("{:.4g}", *v) : std::string("singular"); };
   spdlog::info("loop of {} samples ({} singular): point-Hertz SDS {}, line-Hertz SDS {}, FEM-SDS {}; FEM table {} "
                "solves ({} per decade, {:.1f} s), K-to-2K change {:+.3f} %, half-samples change {:+.3f} %{}",
@@ -356,8 +374,9 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScali
   result.loop_samples = map_loop_samples(comm, source, body, pressure.peak_pressure_pa, scene.cones,
                                          table.effective_modulus_pa(), loop);
   result.loop = loop_sds(comm, result.loop_samples, table, loop);
+  result.continuum = scene_continuum(comm, scene, s, table);
   if (rank == 0)
-    log_loop(result.loop, table);
+    log_loop(result.loop, result.continuum, table);
 
   const std::vector<std::size_t> picks = oracle::stratified_samples(source.rotations.size(), s.orientations, s.seed);
   for (const std::size_t pick : picks)
@@ -407,6 +426,7 @@ BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScali
                     map_loop_samples(comm, scene.source, scene.body, scene.pressure.peak_pressure_pa, scene.cones,
                                      table.effective_modulus_pa(), loop),
                     table, loop);
+  r.continuum = scene_continuum(comm, scene, s, table);
   return r;
 }
 
@@ -421,5 +441,18 @@ LoopSdsSettings loop_settings(const FemSdsSettings& s)
   loop.locus = models_of(s).locus;
   loop.tolerance = s.tolerance;
   return loop;
+}
+
+contact::ContinuumLoopSettings continuum_settings(const FemSdsSettings& s)
+{
+  contact::ContinuumLoopSettings c;
+  c.load_rule = s.load_rule;
+  c.time_law = s.uniform_rate ? contact::TimeLaw::uniform_rate : contact::TimeLaw::free_rolling;
+  c.width = s.contact_width;
+  c.end_margin = s.crease_margin;
+  c.normal_load_n = s.normal_load_n;
+  c.effective_modulus_pa = models_of(s).effective_modulus_pa;
+  c.pieces = s.continuum_pieces;
+  return c;
 }
 } // namespace rollcheck::study::loop_scores

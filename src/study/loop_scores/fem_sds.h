@@ -15,6 +15,7 @@
 #include "contact/contact_parameters.h"
 #include "fem/scenes/slab_contact.h"
 #include "fem/scenes/slice_contact.h"
+#include "study/loop_scores/fem_sds_continuum.h"
 #include "study/loop_scores/loop_sds.h"
 #include "geometry/body.h"
 #include <Eigen/Core>
@@ -75,6 +76,18 @@ struct FemSdsSettings
   std::size_t slab_orientations = 0;
   int slab_refine = 0;             ///< the slab's section level; the second solve is one finer
   bool elastic_plane = false;      ///< the E* of two identical bodies instead of a rigid plane
+  // The continuum value (fem_sds_continuum.h) of a rolling loop: its
+  // modelling choices (contact/continuum_loop_scores.h). The template keeps
+  // F through the centre of mass, the paper-compatible column.
+  /// dynamic: N and the centre of pressure of the same rolling motion, so
+  /// that the load agrees with the time law; static: F through the centre of
+  /// mass; uniform: F / L along the ruling.
+  contact::LoadRule load_rule = contact::LoadRule::dynamic;
+  /// geometric: each pass adds its peak pressure, as the template's samples
+  /// do; hertz: the pressure-time integral over the patch.
+  oracle::ContactWidthModel contact_width = oracle::ContactWidthModel::rigid;
+  bool uniform_rate = false;       ///< sigma' constant over the loop (the limit of a fast roll)
+  int continuum_pieces = 64;       ///< Gauss pieces along each ruling
 };
 
 struct FemSdsOrientation
@@ -134,6 +147,8 @@ struct FemSdsResult
   double effective_modulus_pa = 0;          ///< of the FEM and the line-Hertz slices
   double analytic_effective_modulus_pa = 0; ///< of the preprint's face pressures
   std::int64_t n_faces = 0;
+  /// The continuum value; none for the rigid oracle or a loop a rim cut short.
+  std::optional<ContinuumSds> continuum;
   double wall_s = 0;
 };
 
@@ -148,6 +163,7 @@ struct BodyLoop
   std::int64_t n_faces = 0;
   LoopSds loop;
   std::optional<double> uniformity; ///< U (oracle/uniformity_score.h), rolling oracle only
+  std::optional<ContinuumSds> continuum; ///< rolling oracle, a whole loop only
 };
 BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& settings, fem::SliceScaling& table);
 
@@ -156,6 +172,8 @@ fem::SliceSettings slice_settings(const FemSdsSettings& settings);
 /// The loop's scoring settings of `settings`: what its samples are mapped
 /// and scored with (end_aware_scores of FemSdsResult::loop_samples too).
 LoopSdsSettings loop_settings(const FemSdsSettings& settings);
+/// The continuum value's settings of `settings` (its end margin is the crease margin).
+contact::ContinuumLoopSettings continuum_settings(const FemSdsSettings& settings);
 
 /// Runs the method on the ranks of `comm` (every rank gets the whole result
 /// but for its share of loop_samples; rank 0 logs each orientation). InputError naming the setting for a mesh
@@ -166,6 +184,8 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& settings, fem::Sli
 
 nlohmann::json to_json(const FemSdsOrientation& orientation);
 nlohmann::json to_json(const FemSdsResult& result);
+/// The continuum keys of fem_sds_continuum.h's to_json, null where there is none.
+nlohmann::json continuum_json(const std::optional<ContinuumSds>& continuum);
 /// The Markdown table of the directly solved orientations, and of their 3D
 /// slab check where it ran (the folder's table.md).
 std::string markdown_table(const FemSdsResult& result);

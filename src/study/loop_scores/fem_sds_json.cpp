@@ -177,6 +177,14 @@ nlohmann::json to_json(const FemSdsResult& result)
        "plane-strain slices; peaks are taken away from the ruling's ends, where it meets the body's rims (creases: "
        "singular between two elastic bodies, not plane strain in any case; the 3D slab check shows the end)"}};
   j.update(headline_json(loop));
+  j.update(continuum_json(result.continuum));
   return j;
+}
+
+nlohmann::json continuum_json(const std::optional<ContinuumSds>& continuum)
+{
+  if (continuum)
+    return to_json(*continuum);
+  return {{"line_hertz_sds_continuum", nullptr}, {"fem_sds_continuum", nullptr}, {"fem_sds_continuum_change", nullptr}};
 }
 } // namespace rollcheck::study::loop_scores

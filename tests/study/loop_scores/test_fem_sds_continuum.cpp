@@ -1,0 +1,92 @@
+// FEM-SDS's continuum value (study/loop_scores/fem_sds_continuum.h): the
+// cylinder against its closed form, V = A_caps / A_side = r / L, under every
+// load rule and contact width (its line load is the same on every generator,
+// so the FEM's g is one constant and cancels); the true oloid's and the
+// cylinder's values when the loop's samples and the pieces along each ruling
+// double; the oloid's FEM value against its line-Hertz value within the FEM's
+// correction (under 1 %, docs/results/fem-sds.md).
+#include "core/error.h"
+#include "fem/petsc_session.h"
+#include "fem/scenes/slice_scaling.h"
+#include "study/loop_scores/fem_sds.h"
+#include "study/loop_scores/fem_sds_continuum.h"
+#include <cmath>
+#include <gtest/gtest.h>
+
+using namespace rollcheck;
+using study::loop_scores::ContinuumSds;
+using study::loop_scores::FemSdsSettings;
+
+namespace
+{
+oracle::RealRolling roll(const std::string& body, long samples)
+{
+  geometry::BodySpec spec;
+  spec.body = body;
+  oracle::RollingStudyParameters p;
+  p.samples_per_loop = samples;
+  return oracle::real_rolling(spec, p);
+}
+
+ContinuumSds continuum(const oracle::RealRolling& run, const FemSdsSettings& s, fem::SliceScaling& table)
+{
+  return study::loop_scores::continuum_sds(MPI_COMM_WORLD, run, study::loop_scores::continuum_settings(s), table);
+}
+} // namespace
+
+TEST(FemSdsContinuum, CylinderMeetsItsClosedFormUnderEveryLoadRuleAndWidth)
+{
+  fem::ensure_petsc();
+  FemSdsSettings s; // r = 1 m, L = 2 m: V = r / L = 0.5
+  fem::SliceScaling table(study::loop_scores::slice_settings(s), s.table_nodes_per_decade);
+  const oracle::RealRolling run = roll("cylinder", 2000);
+  for (auto rule : {contact::LoadRule::static_through_centre_of_mass, contact::LoadRule::dynamic,
+                    contact::LoadRule::uniform})
+    for (auto width : {oracle::ContactWidthModel::rigid, oracle::ContactWidthModel::hertz})
+    {
+      s.load_rule = rule;
+      s.contact_width = width;
+      const ContinuumSds c = continuum(run, s, table);
+      EXPECT_NEAR(c.fem, 0.5, 2e-4); // the 2048-sided mass mesh's area
+      EXPECT_NEAR(c.line_hertz, 0.5, 2e-4);
+      EXPECT_NEAR(c.load_ratio_min / c.load_ratio_max, 1.0, 1e-9); // one line load
+      EXPECT_LT(std::abs(c.change()), 1e-6);
+    }
+}
+
+TEST(FemSdsContinuum, OloidAndCylinderAreResolutionFree)
+{
+  fem::ensure_petsc();
+  FemSdsSettings s; // the defaults: dynamic load, geometric width, 5 % end margin
+  fem::SliceScaling table(study::loop_scores::slice_settings(s), s.table_nodes_per_decade);
+  for (const char* body : {"oloid", "cylinder"})
+  {
+    s.continuum_pieces = 32;
+    const ContinuumSds coarse = continuum(roll(body, 4000), s, table);
+    s.continuum_pieces = 64;
+    const ContinuumSds fine = continuum(roll(body, 8000), s, table);
+    EXPECT_LT(std::abs(fine.fem / coarse.fem - 1), 0.01) << body << ": " << coarse.fem << " -> " << fine.fem;
+    EXPECT_LT(std::abs(fine.line_hertz / coarse.line_hertz - 1), 0.01) << body;
+    EXPECT_LT(std::abs(fine.change()), 0.01) << body;
+    // The FEM's correction g varies by under 1 % over the loop's load ratios.
+    EXPECT_NEAR(fine.fem / fine.line_hertz, 1.0, 0.01) << body;
+  }
+}
+
+TEST(FemSdsContinuum, OloidIsAboveTheCylinderAndRefusesAUniformRateUnderTheDynamicLoad)
+{
+  fem::ensure_petsc();
+  FemSdsSettings s;
+  s.samples_per_loop = 2000;
+  s.body.body = "oloid";
+  s.uniform_rate = true;
+  fem::SliceScaling table(study::loop_scores::slice_settings(s), s.table_nodes_per_decade);
+  EXPECT_THROW(study::loop_scores::score_body_loop(MPI_COMM_WORLD, s, table), InputError);
+  s.load_rule = contact::LoadRule::static_through_centre_of_mass;
+  const study::loop_scores::BodyLoop oloid = study::loop_scores::score_body_loop(MPI_COMM_WORLD, s, table);
+  ASSERT_TRUE(oloid.continuum);
+  EXPECT_GT(oloid.continuum->fem, 0.5); // the cylinder's r / L: its load is even, the oloid's is not
+  const nlohmann::json j = study::loop_scores::continuum_json(oloid.continuum);
+  EXPECT_EQ(j.at("fem_sds_continuum").get<double>(), oloid.continuum->fem);
+  EXPECT_TRUE(study::loop_scores::continuum_json(std::nullopt).at("fem_sds_continuum").is_null());
+}
