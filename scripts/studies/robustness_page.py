@@ -63,6 +63,23 @@ def main(argv):
         for c in rows:
             out.append(f"| {c['score']} | {c['verdict']} | {fmt(c['ratio_min'])} | {fmt(c['ratio_max'])} | {flips_text(c)} |")
         out.append("")
+    fam = d.get("family")
+    if fam:
+        ref = fam["reference_cell"]
+        scored = [g for g in fam["genomes"] if g["reference_value"] is not None]
+        ranked = sorted(scored, key=lambda g: g["reference_value"])
+        out.append("## The family's best bodies\n")
+        out.append(f"The {fam['grid']} grid's {len(fam['genomes'])} genomes scored by `{fam['score']}` at every cell; "
+                   f"the reference cell is E = {ref['rolling_energy']}, {ref['contact_width']} width, "
+                   f"the {ref['load_rule']} load, end margin {ref['end_margin']} (fem-sds's defaults). "
+                   f"{len(scored)} genomes roll a whole loop there; the ten best:\n")
+        out.append("| rank | genome (theta, d, rho) | score at the reference cell | cells scored |")
+        out.append("|---|---|---|---|")
+        for i, g in enumerate(ranked[:10], 1):
+            label = f"({g['theta_deg']:g}, {g['offset']:g}, {g['ratio']:g})"
+            out.append(f"| {i} | {label} | {g['reference_value']:.4g} | {g['cells_scored']} |")
+        out.append(f"\nThe five best: {', '.join(fam['best'])}; their verdict over the grid is the comparison "
+                   f"\"the {fam['grid']} grid's {len(fam['best'])} best\" above.\n")
     out.append("## Scores at the default cell, and their convergence\n")
     out.append("Default cell: E = 0.1, Hertz width, the dynamic load, 5 % end margin. The change is that of")
     out.append("doubling the loop's samples and the Gauss pieces along each ruling together.\n")

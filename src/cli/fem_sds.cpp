@@ -47,7 +47,7 @@ const SceneSchema<FemSdsSettings>& fem_sds_schema()
                  io::Bounds{1, 10000})
         .integer("seed", "--seed", &FemSdsSettings::seed, "",
                  "Seed of the stratified sampling (the same seed, the same picks)", io::non_negative)
-        .real("barrier_energy_excess", "--energy-excess", &FemSdsSettings::barrier_energy_excess, "",
+        .real("rolling_energy", "--rolling-energy", &FemSdsSettings::barrier_energy_excess, "",
               "Rolling oracle: initial kinetic energy / potential barrier - 1 (docs/results/real-rolling.md#u-against-the-rolling-speed-rollcheck-oracle---oracle-rolling)",
               io::non_negative)
         .integer("runs", "--runs", &FemSdsSettings::runs, "",
@@ -64,9 +64,10 @@ const SceneSchema<FemSdsSettings>& fem_sds_schema()
         .integer("fem_slices", "--fem-slices", &FemSdsSettings::fem_slices, "",
                  "Plane-strain FEM slices per orientation, evenly spread over the loaded ruling away from its ends",
                  io::Bounds{2, 1000})
-        .real("crease_margin", "--crease-margin", &FemSdsSettings::crease_margin, "",
+        .real("end_margin", "--end-margin", &FemSdsSettings::crease_margin, "",
               "Fraction of the ruling kept clear of each end of the loaded contact: the FEM peaks are taken inside, "
-              "away from the creases (end effects decay within a few contact widths b, and b / L < 1e-3 here)",
+              "away from the creases (end effects decay within a few contact widths b, and b / L < 1e-3 here); "
+              "the continuum value holds the pressure there too",
               io::Bounds{0, 0.25, true, true})
         .choice("load_rule", "--load-rule", &FemSdsSettings::load_rule,
                 "The continuum value's load on each ruling: dynamic (the normal force and centre of pressure of the "
@@ -77,9 +78,10 @@ const SceneSchema<FemSdsSettings>& fem_sds_schema()
                 "The continuum value's pass: geometric (each pass adds its peak pressure, as the template's samples "
                 "do) or hertz (the pressure-time integral over the Hertz patch)",
                 {{"geometric", oracle::ContactWidthModel::rigid}, {"hertz", oracle::ContactWidthModel::hertz}})
-        .flag("uniform_rate", "--uniform-rate", &FemSdsSettings::uniform_rate,
-              "The continuum value at a uniform rolling rate over the same loop (the limit of a fast roll; needs "
-              "--load-rule static or uniform)")
+        .choice("time_law", "--time-law", &FemSdsSettings::time_law,
+                "The continuum value's time law: free (the loop's own rolling) or uniform_rate (the same loop at a "
+                "constant rolling rate, the limit of a fast roll; needs --load-rule static or uniform)",
+                contact::time_law_names())
         .integer("continuum_pieces", "--continuum-pieces", &FemSdsSettings::continuum_pieces, "",
                  "Gauss pieces along each ruling of the continuum value (its convergence halves them)",
                  io::Bounds{2, 100000})

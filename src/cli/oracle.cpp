@@ -113,7 +113,7 @@ void add_rolling_parameters(Schema& s)
 {
   using P = oracle::RollingStudyParameters;
   s.include(io::BoundSchema<P>("rolling")
-                .real("barrier_energy_excess", "--energy-excess", &P::barrier_energy_excess, "",
+                .real("rolling_energy", "--rolling-energy", &P::barrier_energy_excess, "",
                       "Rolling oracle: initial kinetic energy / potential barrier dV - 1 (0.1: over every barrier, "
                       "no rim lifts)", io::non_negative)
                 .integer("loops", "--loops", &P::loops, "",
@@ -127,9 +127,26 @@ void add_rolling_parameters(Schema& s)
                          "mass, inertia and area (error ~ 1/this^2); at most 2^20, a resource guard",
                          io::Bounds{16, 1 << 20})
                 .choice("contact_width", "--contact-width", [](auto& p) -> auto& { return p.contact_width.model; },
-                        "Rolling oracle: contact strip width, hertz (Hertz patch) or rigid (unit width, geometric)",
-                        {{"hertz", oracle::ContactWidthModel::hertz}, {"rigid", oracle::ContactWidthModel::rigid}}),
+                        "Rolling oracle: contact strip width, hertz (Hertz patch) or geometric (unit width; rigid: "
+                        "the same, its former name)",
+                        {{"hertz", oracle::ContactWidthModel::hertz}, {"geometric", oracle::ContactWidthModel::rigid},
+                         {"rigid", oracle::ContactWidthModel::rigid}}),
             &OracleScene::rolling);
+  using C = contact::ContinuumLoopSettings;
+  s.include(io::BoundSchema<C>("continuum")
+                .choice("load_rule", "--load-rule", &C::load_rule,
+                        "Rolling oracle, continuum scores: the load on each ruling, dynamic (the normal force and "
+                        "centre of pressure of the same rolling motion), static (through the centre of mass) or "
+                        "uniform (along the ruling)",
+                        contact::load_rule_names())
+                .real("end_margin", "--end-margin", &C::end_margin, "",
+                      "Rolling oracle, continuum pressure scores: fraction of the ruling held at each loaded end",
+                      io::Bounds{0, 0.5, false, true})
+                .choice("time_law", "--time-law", &C::time_law,
+                        "Rolling oracle, continuum scores: free (the rolling motion's) or uniform_rate (the same loop "
+                        "at a constant rolling rate; needs --load-rule static or uniform)",
+                        contact::time_law_names()),
+            &OracleScene::continuum);
 }
 
 const SceneSchema<OracleScene>& oracle_schema()

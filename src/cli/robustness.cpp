@@ -41,6 +41,9 @@ void add_robustness_command(CLI::App& app)
       ->check(CLI::Range(200L, 200000L));
   sub->add_option("--pieces", settings.pieces, "Gauss pieces along each ruling (default: 64)")
       ->check(CLI::Range(4, 1024));
+  sub->add_option("--family-samples-per-loop", settings.family_samples_per_loop,
+                  "Samples of each rolling loop of the quick grid's genomes (default: 4000)")
+      ->check(CLI::Range(200L, 200000L));
   sub->add_option("--markdown", markdown_path, "Also write the verdict table as Markdown to PATH (default: none)");
 }
 } // namespace rollcheck::cli

@@ -248,6 +248,12 @@ const NamedValues<LoadRule>& load_rule_names()
   return names;
 }
 
+const NamedValues<TimeLaw>& time_law_names()
+{
+  static const NamedValues<TimeLaw> names = {{"free", TimeLaw::free_rolling}, {"uniform_rate", TimeLaw::uniform_rate}};
+  return names;
+}
+
 ContinuumLoopScores continuum_loop_scores(const oracle::RollingTrajectory& trajectory, double begin_s, double end_s,
                                           double surface_area_m2, const RollingBodyMass& body,
                                           const ContinuumLoopSettings& s)

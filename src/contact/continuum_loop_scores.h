@@ -78,6 +78,8 @@ enum class TimeLaw
   free_rolling,
   uniform_rate
 };
+/// The time laws' names ("free", "uniform_rate").
+const NamedValues<TimeLaw>& time_law_names();
 
 struct ContinuumLoopSettings
 {

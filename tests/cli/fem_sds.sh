@@ -48,6 +48,9 @@ assert r["converged"] and r["fem_sds_status"] == "converged", r["fem_sds_status"
 assert abs(r["fem_sds_table_change"]) < 0.01 and abs(r["fem_sds_sample_change"]) < 0.01
 assert r["fem_solves"] >= r["fem_solves_half_table"] >= 2
 assert len(r["fem_table"]) >= r["fem_solves"] and r["table_vs_direct_worst"] < 0.003
+# The continuum value on the exact surface: r / L = 0.5 (docs/methods/fem-sds.md), resolution-free.
+assert abs(r["fem_sds_continuum"] - 0.5) < 2e-4 and abs(r["line_hertz_sds_continuum"] - 0.5) < 2e-4, r["fem_sds_continuum"]
+assert abs(r["fem_sds_continuum_change"]) < 0.01
 rigid = json.load(open(f"{d}/rigid.json"))
 unsolved = [o for o in rigid["per_orientation"] if not o["fem_solved"]]
 assert len(unsolved) == rigid["orientations"] - rigid["fem_solved_orientations"]
@@ -58,6 +61,7 @@ print(f"rigid oracle on the oloid: {len(unsolved)} of {rigid['orientations']} or
 loop = rigid["loop"]
 assert rigid["singular_samples"] == loop["samples"] - loop["samples_by_contact"].get("ruling", 0) > 0, loop
 assert rigid["fem_sds"] is None and rigid["line_hertz_sds"] is None and rigid["analytic_sds"] > 0
+assert rigid["fem_sds_continuum"] is None  # no rolling loop
 assert rigid["fem_sds_status"].startswith("singular:") and "rim point" in rigid["fem_sds_status"], rigid["fem_sds_status"]
 assert rigid["orientations_standing_on_crease"] == sum(o["support"] != "segment" for o in rigid["per_orientation"])
 PY
@@ -71,9 +75,11 @@ expect_input_error() { # args...; expected text
 expect_input_error "orientations" fem-sds --body cylinder --orientations 0
 expect_input_error "samples_per_loop" fem-sds --body cylinder --samples 1
 expect_input_error "tolerance" fem-sds --body cylinder --tolerance 0
-expect_input_error "crease_margin" fem-sds --body cylinder --crease-margin 0.3
+expect_input_error "end_margin" fem-sds --body cylinder --end-margin 0.3
 expect_input_error "normal_load_n" fem-sds --body cylinder --load nan
 expect_input_error "mesh_file" fem-sds --mesh "$tmp/none.obj"
 expect_input_error "sphere" fem-sds --body sphere
 expect_input_error "slab_orientations" fem-sds --body cylinder --slab-check -1
+expect_input_error "load_rule" fem-sds --body cylinder --load-rule quasi
+expect_input_error "uniform_rate" fem-sds --body cylinder --time-law uniform_rate
 exit $fail

@@ -22,7 +22,7 @@ run() { # run NAME ARGS...: the JSON goes to $tmp/NAME.json
 }
 
 run cylinder --body cylinder --face-subdivisions 2 --mass-points 16384
-run cylinder_fast --body cylinder --face-subdivisions 2 --mass-points 16384 --energy-excess 1
+run cylinder_fast --body cylinder --face-subdivisions 2 --mass-points 16384 --rolling-energy 1
 for name in cylinder cylinder_fast; do
   check_json "$name: continuum U = r/h = 0.5" '(.uniformity_score_continuum - 0.5 | fabs) <= 1e-6' "$tmp/$name.json"
   check_json "$name: contact held over one loop" '.contact_held == true and (.loops_completed - 1 | fabs) < 1e-6' "$tmp/$name.json"
@@ -49,7 +49,7 @@ jq -n --slurpfile a "$tmp/oloid2.json" --slurpfile b "$tmp/oloid4.json" \
 [[ $(cat "$tmp/converge.txt") == true ]] || { echo "FAIL: oloid U should rise towards U_inf as faces are cut finer"; fail=1; }
 
 "$bin" oracle --help > "$tmp/help.txt"
-for option in --energy-excess --loops --face-subdivisions --contact-width; do
+for option in --rolling-energy --loops --face-subdivisions --contact-width; do
   grep -A3 -- "$option" "$tmp/help.txt" | grep -q "default" || { echo "FAIL: --help lacks $option with its default"; fail=1; }
 done
 

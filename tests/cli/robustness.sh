@@ -7,7 +7,8 @@ source "$(dirname "$0")/lib.sh"
 bin=$1; source=$2; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp"
 # A coarse loop: the keys and verdicts, not the converged values (tests/study/robustness).
-"$bin" -q robustness --samples-per-loop 1000 --pieces 8 --json "$tmp/r.json" --markdown "$tmp/r.md" \
+"$bin" -q robustness --samples-per-loop 1000 --pieces 8 --family-samples-per-loop 500 --json "$tmp/r.json" \
+  --markdown "$tmp/r.md" \
   || { echo "FAIL: robustness run"; fail=1; }
 check_json "grid names each choice" \
   '.grid.rolling_energy == ["0.02","0.1","0.36","1","3","uniform_rate"] and .grid.contact_width == ["hertz","geometric"] and .grid.load_rule == ["static","dynamic","uniform"] and .grid.end_margin == ["0.02","0.05","0.1"]' \
@@ -23,6 +24,17 @@ check_json "oloid vs cylinder U flips near energy excess 0.36" \
   '[.comparisons[] | select(.name == "oloid vs cylinder" and .score == "contact_time_u") | .flips[]
     | select(.choice == "rolling_energy" and .settings.contact_width == "hertz" and .settings.load_rule == "dynamic")
     | .value | (. > 0.3 and . < 0.42)] | (length > 0 and all)' "$tmp/r.json"
+# The family: its five best at the reference cell, judged against the rest,
+# and the best of them against the oloid under every score.
+check_json "the family names its five best and its reference cell" \
+  '(.family.best | length) == 5 and .family.grid == "quick" and (.family.genomes | length) == 45
+   and .family.reference_cell == {"rolling_energy":"0.1","contact_width":"geometric","load_rule":"dynamic","end_margin":"0.05"}' \
+  "$tmp/r.json"
+check_json "the five best are judged against the rest" \
+  '[.comparisons[] | select(.name == "the quick grid'"'"'s 5 best" and .score == "accumulated_pressure_whole")] | length == 1' \
+  "$tmp/r.json"
+check_json "the best genome is compared with the oloid under every score" \
+  '. as $j | [.comparisons[] | select(.name == "quick-grid best vs oloid")] | length == ($j.scores | length)' "$tmp/r.json"
 grep -q '^| oloid vs cylinder | contact_time_u |' "$tmp/r.md" || { echo "FAIL: no Markdown row"; fail=1; }
 # An output path that cannot be written is refused (before any rolling: the
 # check comes first in the command).

@@ -6,7 +6,8 @@
 # own (90, 1, 1) genome and the preprint's body are one body: the same
 # scores), every scored row converged, the mirror genomes (theta, 180 - theta)
 # scoring alike under FEM-SDS, the cylinder's FEM-SDS at its even-side value
-# (tests/study/loop_scores/test_study_fem_sds.cpp derives it), and the folder written whole.
+# (tests/study/loop_scores/test_study_fem_sds.cpp derives it), the continuum value's closed form
+# for the cylinder and its convergence, and the folder written whole.
 set -u
 source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
@@ -53,6 +54,13 @@ for (theta, d, rho), r in by_genome.items():
     mirror = by_genome.get((180 - theta, d, rho))
     if mirror:
         assert abs(r["fem_sds"] / mirror["fem_sds"] - 1) < 1e-3, (theta, d, rho)
+        assert abs(r["fem_sds_continuum"] / mirror["fem_sds_continuum"] - 1) < 1e-3, (theta, d, rho)
+# The continuum value (docs/methods/fem-sds.md): the cylinder's closed form r / L = 0.5, every
+# scored row's within 1 % of its value at half the resolution.
+assert abs(cylinder["fem_sds_continuum"] - 0.5) < 2e-4, cylinder["fem_sds_continuum"]
+for r in rows:
+    if r["scored"]:
+        assert r["fem_sds_continuum"] > 0 and abs(r["fem_sds_continuum_change"]) < 0.01, r
 print(f"{len(rows)} bodies, {len(unscored)} genomes lift a rim; cylinder FEM-SDS {cylinder['fem_sds']:.6g} "
       f"(even side {even:.6g}); oloid FEM / cylinder {refs['oloid']['over_cylinder']['fem_sds']:.3g}")
 PY

@@ -17,6 +17,10 @@ void validate(const ScoreBodySettings& s)
     throw InputError(fmt::format("mesh file '{}': the rolling oracle rolls an exact named body, not a mesh; give a "
                                  "body oloid, paper-oloid, roller, cylinder or sphere instead",
                                  s.body.mesh_file));
+  if (s.oracle == Oracle::rolling && s.continuum.time_law == contact::TimeLaw::uniform_rate
+      && s.continuum.load_rule == contact::LoadRule::dynamic)
+    throw InputError("--time-law uniform_rate needs --load-rule static or uniform: the dynamic load is the free motion's, and no "
+                     "free motion rolls at a uniform rate");
   if (s.oracle == Oracle::rolling)
     return; // oracle::real_rolling checks its parameters and the body
   contact::validate(s.contact);
@@ -176,10 +180,23 @@ nlohmann::json rolling_json(const BodyScores& s)
   const oracle::RollingStudyResult& r = s.rolling;
   const oracle::RollingStudyParameters& p = s.rolling_parameters;
   auto maybe = [](double v) { return std::isnan(v) ? nlohmann::json(nullptr) : json_number(v); };
-  return {{"contact", r.contact},
-          {"contact_width", p.contact_width.model == oracle::ContactWidthModel::rigid ? "rigid" : "hertz"},
+  const contact::ContinuumLoopSettings& c = s.continuum_settings;
+  auto continuum = [&](auto value) { return s.continuum ? json_number(value(*s.continuum)) : nlohmann::json(nullptr); };
+  using Scores = contact::ContinuumLoopScores;
+  nlohmann::json j = {
+      {"load_rule", name_of(contact::load_rule_names(), c.load_rule, "load rule")},
+      {"end_margin", c.end_margin},
+      {"time_law", name_of(contact::time_law_names(), c.time_law, "time law")},
+      {"accumulated_pressure_continuum", continuum([](const Scores& x) { return x.accumulated_pressure.whole; })},
+      {"peak_pressure_continuum", continuum([](const Scores& x) { return x.peak_pressure.whole; })},
+      {"peak_to_mean_pressure_continuum", continuum([](const Scores& x) { return x.peak_pressure.peak_to_mean; })},
+      {"basquin_damage_continuum", continuum([](const Scores& x) { return x.damage.whole; })}};
+  j.update(nlohmann::json{{"contact", r.contact},
+          {"contact_width", p.contact_width.model == oracle::ContactWidthModel::rigid ? "geometric" : "hertz"},
           {"uniformity_score", json_number(r.uniformity)},
-          {"uniformity_score_continuum", maybe(r.continuum_uniformity)},
+          // U_inf under the named choices (contact/continuum_loop_scores.h); the oracle's own (dynamic load) for point contact.
+          {"uniformity_score_continuum",
+           s.continuum ? json_number(s.continuum->contact_time.whole) : maybe(r.continuum_uniformity)},
           {"coverage", json_number(r.coverage)},
           {"max_over_mean", json_number(r.max_over_mean)},
           {"contact_held", r.contact_held},
@@ -191,13 +208,15 @@ nlohmann::json rolling_json(const BodyScores& s)
           {"centre_of_pressure_min", json_number(r.centre_of_pressure_min)},
           {"centre_of_pressure_max", json_number(r.centre_of_pressure_max)},
           {"friction_ratio_max", json_number(r.friction_ratio_max)},
-          {"barrier_energy_excess", p.barrier_energy_excess},
+          {"rolling_energy", p.barrier_energy_excess},
           {"loops", p.loops},
           {"face_subdivisions", p.face_subdivisions},
           {"mass_points", p.mass_points},
           {"not_computed",
-           "the rolling oracle scores its contact measure with the uniformity score U only (README \"The "
-           "normalised uniformity score\"); cds, sds, tds, wds_vol, wds_depth and fds are not computed and are null"}};
+           "the rolling oracle scores its contact measure with the uniformity score U and the continuum scores of "
+           "contact/continuum_loop_scores.h; the template scores cds, sds, tds, wds_vol, wds_depth and fds are not "
+           "computed and are null"}});
+  return j;
 }
 } // namespace
 
@@ -229,6 +248,13 @@ oracle::RevalidationMetrics revalidation_scores(const ScoreBodySettings& setting
   };
 }
 
+contact::ContinuumLoopSettings rolling_continuum_settings(const ScoreBodySettings& s)
+{
+  contact::ContinuumLoopSettings c = s.continuum;
+  c.width = s.rolling.contact_width.model;
+  return c;
+}
+
 BodyScores score_body(const ScoreBodySettings& s)
 {
   validate(s);
@@ -238,16 +264,23 @@ BodyScores score_body(const ScoreBodySettings& s)
   r.oracle = s.oracle;
   if (s.oracle == Oracle::rolling)
   {
+    oracle::RealRolling run;
     try
     {
-      r.rolling = oracle::rolling_study(s.body, s.rolling);
+      run = oracle::real_rolling(s.body, s.rolling);
     }
     catch (const InputError& e)
     {
       throw InputError(fmt::format("rolling oracle on {}: {}", r.body, e.what()));
     }
+    r.rolling = oracle::score_real_rolling(run, geometry::make_body(s.body), s.rolling);
     r.rolling_parameters = s.rolling;
     r.n_faces = r.rolling.faces;
+    r.continuum_settings = rolling_continuum_settings(s);
+    if (run.trajectory.mode == oracle::ContactMode::line && std::isfinite(run.first_loop_end_s))
+      r.continuum = contact::continuum_loop_scores(
+          run.trajectory, 0, run.first_loop_end_s, run.surface_area_m2,
+          {run.mass.centre_of_mass_m, run.mass.mass_kg, s.rolling.gravity_m_s2}, r.continuum_settings);
   }
   else
   {

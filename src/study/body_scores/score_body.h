@@ -19,9 +19,11 @@
 #include "oracle/rigid_body_oracle.h"
 #include "oracle/rolling_body.h"
 #include "oracle/rolling_study.h"
+#include "contact/continuum_loop_scores.h"
 #include "oracle/trajectory.h"
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 namespace rollcheck::study::body_scores
@@ -50,6 +52,11 @@ struct ScoreBodySettings
     return p;
   }();
   contact::ContactParameters contact;
+  /// Real rolling's continuum scores on the exact surface (line contact):
+  /// their load rule (dynamic: the motion's own normal force, which the time
+  /// law's dynamics imply), end margin and time law; the contact width is
+  /// rolling's. U_inf (uniformity_score_continuum) is their contact time.
+  contact::ContinuumLoopSettings continuum;
   oracle::PaperCompat compat = oracle::PaperCompat::corrected();
   contact::MetricSet metrics;
   long convergence_every = 50; ///< score snapshots every this many samples (the reference outputs': 50); 0: none
@@ -71,12 +78,17 @@ struct BodyScores
   // Real rolling.
   oracle::RollingStudyResult rolling;
   oracle::RollingStudyParameters rolling_parameters;
+  /// Over the first loop, line contact only (none: point contact, or no whole loop).
+  std::optional<contact::ContinuumLoopScores> continuum;
+  contact::ContinuumLoopSettings continuum_settings;
 };
 
 /// Builds (or reads) settings.body and scores it under settings.oracle.
 /// InputError for bad settings, a bad body, or a body the oracle does not
 /// cover (rolling: a mesh file, uv-sphere, hemisphere, rollers of 3+ circles).
 BodyScores score_body(const ScoreBodySettings& settings);
+/// settings.continuum with the rolling oracle's contact width.
+contact::ContinuumLoopSettings rolling_continuum_settings(const ScoreBodySettings& settings);
 
 /// The scoring half of score_body: every requested score of a trajectory of
 /// `body` (the rolling body of `mesh`), with settings' contact parameters,

@@ -126,8 +126,8 @@ struct Scene
 Scene make_scene(const FemSdsSettings& s, bool with_uniformity)
 {
   oracle::require_line_contact(s.body);
-  if (s.uniform_rate && s.load_rule == contact::LoadRule::dynamic)
-    throw InputError("--uniform-rate needs --load-rule static or uniform: the dynamic load is the free motion's, and no "
+  if (s.time_law == contact::TimeLaw::uniform_rate && s.load_rule == contact::LoadRule::dynamic)
+    throw InputError("--time-law uniform_rate needs --load-rule static or uniform: the dynamic load is the free motion's, and no "
                      "free motion rolls at a uniform rate");
   Scene scene;
   scene.models = models_of(s);
@@ -447,7 +447,7 @@ contact::ContinuumLoopSettings continuum_settings(const FemSdsSettings& s)
 {
   contact::ContinuumLoopSettings c;
   c.load_rule = s.load_rule;
-  c.time_law = s.uniform_rate ? contact::TimeLaw::uniform_rate : contact::TimeLaw::free_rolling;
+  c.time_law = s.time_law;
   c.width = s.contact_width;
   c.end_margin = s.crease_margin;
   c.normal_load_n = s.normal_load_n;

@@ -86,7 +86,9 @@ struct FemSdsSettings
   /// geometric: each pass adds its peak pressure, as the template's samples
   /// do; hertz: the pressure-time integral over the patch.
   oracle::ContactWidthModel contact_width = oracle::ContactWidthModel::rigid;
-  bool uniform_rate = false;       ///< sigma' constant over the loop (the limit of a fast roll)
+  /// free_rolling: the loop's own time law; uniform_rate: sigma' constant over
+  /// the same loop (the limit of a fast roll).
+  contact::TimeLaw time_law = contact::TimeLaw::free_rolling;
   int continuum_pieces = 64;       ///< Gauss pieces along each ruling
 };
 

@@ -4,6 +4,7 @@
 #include "oracle/rolling_study.h"
 #include <chrono>
 #include <cmath>
+#include <algorithm>
 #include <fmt/format.h>
 #include <limits>
 #include <map>
@@ -58,7 +59,7 @@ CellSettings decode(const std::vector<Choice>& grid, const Cell& cell, const Rob
 class Runs
 {
 public:
-  Runs(const RobustnessSettings& s) : settings_(s) {}
+  explicit Runs(const std::vector<NamedBody>& bodies) : bodies_(bodies) {}
   const oracle::RealRolling& at(int body, double energy_excess, long samples_per_loop)
   {
     const auto key = std::tuple{body, energy_excess, samples_per_loop};
@@ -70,13 +71,13 @@ public:
     oracle::RollingStudyParameters p;
     p.barrier_energy_excess = energy_excess;
     p.samples_per_loop = samples_per_loop;
-    oracle::RealRolling run = oracle::real_rolling(settings_.bodies[body].spec, p);
+    oracle::RealRolling run = oracle::real_rolling(bodies_[body].spec, p);
     std::lock_guard lock(mutex_);
     return runs_.emplace(key, std::move(run)).first->second; // std::map: references stay valid
   }
 
 private:
-  const RobustnessSettings& settings_;
+  const std::vector<NamedBody>& bodies_;
   std::mutex mutex_;
   std::map<std::tuple<int, double, long>, oracle::RealRolling> runs_;
 };
@@ -113,17 +114,26 @@ std::optional<double> ratio(double a, double b)
 /// Places a flip along the rolling energy between two numeric energies of
 /// the grid: log(ratio) interpolated linearly in log(E) at the grid's two
 /// ratios, then, if `bisect`, bisection in log(E) with the other choices held.
-void refine_energy_flip(Flip& flip, const std::vector<Choice>& grid, const std::vector<int>& body_index, int score,
-                        double ratio_from, double ratio_to, bool bisect, Runs& runs, const RobustnessSettings& s)
+/// The interpolation alone; false if either energy is the uniform rate.
+bool interpolate_energy_flip(Flip& flip, const std::vector<Choice>& grid, double ratio_from, double ratio_to)
 {
   const auto& values = grid[flip.choice].values;
   if (values[flip.from] == "uniform_rate" || values[flip.to] == "uniform_rate")
-    return;
-  double lo = std::stod(values[flip.from]), hi = std::stod(values[flip.to]);
+    return false;
+  const double lo = std::stod(values[flip.from]), hi = std::stod(values[flip.to]);
   const double a = std::log(ratio_from), b = std::log(ratio_to);
   flip.value = std::exp(std::log(lo) + (std::log(hi) - std::log(lo)) * a / (a - b));
-  if (!bisect || !std::isfinite(a) || !std::isfinite(b))
+  return true;
+}
+
+void refine_energy_flip(Flip& flip, const std::vector<Choice>& grid, const std::vector<int>& body_index, int score,
+                        double ratio_from, double ratio_to, bool bisect, Runs& runs, const RobustnessSettings& s)
+{
+  if (!interpolate_energy_flip(flip, grid, ratio_from, ratio_to) || !bisect || !std::isfinite(std::log(ratio_from))
+      || !std::isfinite(std::log(ratio_to)))
     return;
+  const auto& values = grid[flip.choice].values;
+  double lo = std::stod(values[flip.from]), hi = std::stod(values[flip.to]);
   CellSettings c = decode(grid, flip.cell, s);
   auto r_at = [&](double energy) {
     c.energy_excess = energy;
@@ -140,11 +150,11 @@ void refine_energy_flip(Flip& flip, const std::vector<Choice>& grid, const std::
   flip.value = std::sqrt(lo * hi);
 }
 
-std::vector<BodyConvergence> convergence(Runs& runs, const RobustnessSettings& s)
+std::vector<BodyConvergence> convergence(Runs& runs, const std::vector<NamedBody>& bodies, const RobustnessSettings& s)
 {
   std::vector<BodyConvergence> out;
   const auto names = score_names();
-  for (std::size_t b = 0; b < s.bodies.size(); ++b)
+  for (std::size_t b = 0; b < bodies.size(); ++b)
   {
     CellSettings c;
     c.scores.normal_load_n = s.normal_load_n;
@@ -152,7 +162,7 @@ std::vector<BodyConvergence> convergence(Runs& runs, const RobustnessSettings& s
     const std::vector<double> base = evaluate(runs, static_cast<int>(b), c, s.samples_per_loop);
     c.scores.pieces = 2 * s.pieces;
     const std::vector<double> fine = evaluate(runs, static_cast<int>(b), c, 2 * s.samples_per_loop);
-    BodyConvergence bc{s.bodies[b].name, {}, {}};
+    BodyConvergence bc{bodies[b].name, {}, {}};
     for (std::size_t k = 0; k < names.size(); ++k)
     {
       bc.scores.emplace_back(names[k].first, base[k]);
@@ -161,6 +171,116 @@ std::vector<BodyConvergence> convergence(Runs& runs, const RobustnessSettings& s
     out.push_back(bc);
   }
   return out;
+}
+
+/// The index in grid_cells(grid) of the cell with these values, by choice name.
+std::size_t cell_index(const std::vector<Choice>& grid, const std::vector<Cell>& cells,
+                       const std::vector<std::pair<std::string, std::string>>& values)
+{
+  Cell cell(grid.size(), 0);
+  for (const auto& [name, value] : values)
+  {
+    const auto& choices = grid[choice_index(grid, name)].values;
+    const auto it = std::find(choices.begin(), choices.end(), value);
+    if (it == choices.end())
+      throw InputError(fmt::format("robustness: the grid's choice '{}' has no value '{}'", name, value));
+    cell[choice_index(grid, name)] = static_cast<int>(it - choices.begin());
+  }
+  return std::lower_bound(cells.begin(), cells.end(), cell) - cells.begin();
+}
+
+/// One genome's `score` over every cell: each energy rolled once, without
+/// keeping the run; NaN where it has no whole loop.
+std::vector<double> genome_values(const geometry::BodySpec& spec, const std::vector<Cell>& cells, int score,
+                                  const RobustnessSettings& s)
+{
+  std::vector<double> values(cells.size(), nan);
+  std::map<double, std::vector<std::size_t>> by_energy;
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    by_energy[decode(s.grid, cells[i], s).energy_excess].push_back(i);
+  for (const auto& [energy, at] : by_energy)
+  {
+    oracle::RollingStudyParameters p;
+    p.barrier_energy_excess = energy;
+    p.samples_per_loop = s.family_samples_per_loop;
+    oracle::RealRolling run;
+    try
+    {
+      run = oracle::real_rolling(spec, p);
+    }
+    catch (const InputError&)
+    {
+      continue; // it cannot roll over its potential barrier
+    }
+    if (!run.trajectory.contact_held || !std::isfinite(run.first_loop_end_s))
+      continue; // a rim lifts before the loop closes
+    for (const std::size_t i : at)
+    {
+      const CellSettings c = decode(s.grid, cells[i], s);
+      if (!(c.uniform_rate && c.scores.load_rule == contact::LoadRule::dynamic))
+        values[i] = pick(scores_of(run, c.scores))[score];
+    }
+  }
+  return values;
+}
+
+/// The family's genomes over the grid, two at a time, and its best at the
+/// continuum FEM-SDS's reference cell.
+FamilyRanking rank_family(oracle::SearchGrid grid, const std::vector<Cell>& cells, const RobustnessSettings& s)
+{
+  FamilyRanking r;
+  r.grid = std::string(oracle::name_of(grid));
+  r.score = "accumulated_pressure_whole";
+  const auto names = score_names();
+  const int score = static_cast<int>(
+      std::find_if(names.begin(), names.end(), [&](const auto& n) { return n.first == r.score; }) - names.begin());
+  r.reference_cell = cell_index(s.grid, cells, {{"rolling_energy", "0.1"}, {"contact_width", "geometric"},
+                                                 {"load_rule", "dynamic"}, {"end_margin", "0.05"}});
+  for (const geometry::RollerGenome& genome : oracle::search_grid(grid))
+    r.genomes.push_back({genome, {}});
+  auto spec_of = [&](std::size_t g) {
+    geometry::BodySpec spec;
+    spec.body = "roller";
+    spec.family = geometry::RollerFamily::paper;
+    spec.genome = r.genomes[g].genome;
+    return spec;
+  };
+  auto score_range = [&](std::size_t from, std::size_t step) {
+    for (std::size_t g = from; g < r.genomes.size(); g += step)
+      r.genomes[g].values = genome_values(spec_of(g), cells, score, s);
+  };
+  auto second = std::async(std::launch::async, score_range, 1, 2);
+  score_range(0, 2);
+  second.get();
+  r.best = best_genomes(r.genomes, r.reference_cell, s.family_best);
+  spdlog::info("robustness: the {} grid's {} genomes scored over {} cells", r.grid, r.genomes.size(), cells.size());
+  return r;
+}
+
+/// Whether the family's best stay its best over the grid; flips along the
+/// rolling energy placed by interpolation.
+Comparison family_comparison(const FamilyRanking& family, const std::vector<Cell>& cells, const std::vector<Choice>& grid)
+{
+  std::string best;
+  for (const std::size_t g : family.best)
+    best += (best.empty() ? "" : " ") + genome_label(family.genomes[g].genome);
+  Comparison c{fmt::format("the {} grid's {} best", family.grid, family.best.size()),
+               family.score,
+               {fmt::format("the {} best: {}", family.best.size(), best), fmt::format("the rest of the {} grid", family.grid)},
+               {}};
+  auto ratio_at = [&](const Cell& cell) {
+    return best_against_rest(family, std::lower_bound(cells.begin(), cells.end(), cell) - cells.begin());
+  };
+  c.verdict = judge_comparison(grid, ratio_at);
+  const int energy = choice_index(grid, "rolling_energy");
+  for (Flip& flip : c.verdict.flips)
+    if (flip.choice == energy)
+    {
+      Cell next = flip.cell;
+      next[flip.choice] = flip.to;
+      interpolate_energy_flip(flip, grid, *ratio_at(flip.cell), *ratio_at(next));
+    }
+  return c;
 }
 
 nlohmann::json flip_json(const Flip& flip, const std::vector<Choice>& grid)
@@ -224,8 +344,21 @@ RobustnessResult run_robustness(const RobustnessSettings& s)
   result.grid = s.grid;
   for (const auto& [key, what] : score_names())
     result.scores.push_back(key);
-  Runs runs(s);
   const std::vector<Cell> cells = grid_cells(s.grid);
+  std::vector<NamedBody> bodies = s.bodies;
+  if (s.family)
+  {
+    result.family = rank_family(*s.family, cells, s);
+    if (!result.family->best.empty())
+    {
+      geometry::BodySpec best;
+      best.body = "roller";
+      best.family = geometry::RollerFamily::paper;
+      best.genome = result.family->genomes[result.family->best.front()].genome;
+      bodies.push_back({"quick-grid-best", best});
+    }
+  }
+  Runs runs(bodies);
   // Every body over the grid, two bodies at a time (each body's runs are its own).
   auto score_body = [&](std::size_t b) {
     std::vector<std::vector<double>> by_score(result.scores.size(), std::vector<double>(cells.size(), nan));
@@ -235,24 +368,25 @@ RobustnessResult run_robustness(const RobustnessSettings& s)
       for (std::size_t k = 0; k < v.size(); ++k)
         by_score[k][i] = v[k];
     }
-    spdlog::info("robustness: {} scored over {} cells", s.bodies[b].name, cells.size());
+    spdlog::info("robustness: {} scored over {} cells", bodies[b].name, cells.size());
     return by_score;
   };
-  result.values.resize(s.bodies.size());
-  for (std::size_t b = 0; b < s.bodies.size(); b += 2)
+  result.values.resize(bodies.size());
+  for (std::size_t b = 0; b < bodies.size(); b += 2)
   {
-    auto second = b + 1 < s.bodies.size() ? std::async(std::launch::async, score_body, b + 1)
+    auto second = b + 1 < bodies.size() ? std::async(std::launch::async, score_body, b + 1)
                                            : std::future<std::vector<std::vector<double>>>{};
     result.values[b] = score_body(b);
     if (second.valid())
       result.values[b + 1] = second.get();
   }
-  for (const NamedBody& body : s.bodies)
+  for (const NamedBody& body : bodies)
     result.bodies.push_back(body.name);
   const std::vector<std::array<std::string, 3>> pairs = {{"oloid vs cylinder", "oloid", "cylinder"},
                                                          {"oloid vs the preprint's body", "oloid", "paper-oloid"},
                                                          {"U optimum vs oloid", "u-optimum", "oloid"},
-                                                         {"FEM-SDS optimum vs oloid", "fem-sds-optimum", "oloid"}};
+                                                         {"FEM-SDS optimum vs oloid", "fem-sds-optimum", "oloid"},
+                                                         {"quick-grid best vs oloid", "quick-grid-best", "oloid"}};
   auto index_of = [&](const std::string& name) {
     for (std::size_t b = 0; b < result.bodies.size(); ++b)
       if (result.bodies[b] == name)
@@ -285,7 +419,9 @@ RobustnessResult run_robustness(const RobustnessSettings& s)
       result.comparisons.push_back(std::move(c));
     }
   }
-  result.convergence = convergence(runs, s);
+  if (result.family)
+    result.comparisons.push_back(family_comparison(*result.family, cells, s.grid));
+  result.convergence = convergence(runs, bodies, s);
   result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
@@ -332,9 +468,11 @@ nlohmann::json to_json(const RobustnessResult& r)
   nlohmann::json names = nlohmann::json::object();
   for (const auto& [k, what] : score_names())
     names[k] = what;
-  return {{"grid", grid},           {"bodies", r.bodies},           {"scores", names},
-          {"comparisons", comparisons}, {"values", values},         {"grid_order", order},
-          {"convergence", conv},    {"wall_s", r.wall_s}};
+  nlohmann::json j = {{"grid", grid},           {"bodies", r.bodies},           {"scores", names},
+                      {"comparisons", comparisons}, {"values", values},         {"grid_order", order},
+                      {"convergence", conv},    {"wall_s", r.wall_s}};
+  j["family"] = r.family ? to_json(*r.family, r.grid) : nlohmann::json(nullptr);
+  return j;
 }
 
 std::string markdown_report(const RobustnessResult& r)

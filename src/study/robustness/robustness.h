@@ -27,10 +27,20 @@
 // centre-line optima of the family (the U optimum (74.1, 0.757, 1.071) and
 // the FEM-SDS optimum (112.7, 1.000, 0.999)). Each is rolled once per energy
 // (oracle/rolling_study.h); every other choice re-scores the same loop.
+//
+// The family: every genome of the preprint's quick grid is scored over the
+// grid too, by the continuum FEM-SDS's definition (the accumulated pressure
+// over the whole surface); its five best at fem-sds's defaults (E = 0.1,
+// geometric width, dynamic load, 5 % margin) are judged against the rest
+// (family_ranking.h), and the best of them, "quick-grid-best", joins the
+// bodies against the oloid.
 #include "contact/continuum_loop_scores.h"
 #include "geometry/body.h"
+#include "oracle/search_grid.h"
 #include "study/robustness/comparison_verdict.h"
+#include "study/robustness/family_ranking.h"
 #include <array>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -61,6 +71,10 @@ struct RobustnessSettings
   /// bisection in log(E) with new rolling runs.
   std::vector<std::string> bisected = {"oloid vs cylinder"};
   int bisection_steps = 8;
+  /// The family whose best bodies are judged; none: no family.
+  std::optional<oracle::SearchGrid> family = oracle::SearchGrid::quick;
+  std::size_t family_best = 5;           ///< how many best bodies
+  long family_samples_per_loop = 4000;   ///< of each genome's rolling loop
 };
 
 struct Comparison
@@ -88,6 +102,7 @@ struct RobustnessResult
   std::vector<std::vector<std::vector<double>>> values;
   std::vector<Comparison> comparisons;
   std::vector<BodyConvergence> convergence;
+  std::optional<FamilyRanking> family;
   double wall_s = 0;
 };
 

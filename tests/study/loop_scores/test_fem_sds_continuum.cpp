@@ -79,7 +79,7 @@ TEST(FemSdsContinuum, OloidIsAboveTheCylinderAndRefusesAUniformRateUnderTheDynam
   FemSdsSettings s;
   s.samples_per_loop = 2000;
   s.body.body = "oloid";
-  s.uniform_rate = true;
+  s.time_law = contact::TimeLaw::uniform_rate;
   fem::SliceScaling table(study::loop_scores::slice_settings(s), s.table_nodes_per_decade);
   EXPECT_THROW(study::loop_scores::score_body_loop(MPI_COMM_WORLD, s, table), InputError);
   s.load_rule = contact::LoadRule::static_through_centre_of_mass;

@@ -1,11 +1,14 @@
 // Resolution-free loop scores against closed forms and an independent
-// computation, and the verdict rule on grids with known answers.
+// computation, the verdict rule on grids with known answers, and the family
+// ranking's ratio on a made-up family.
 #include "contact/continuum_loop_scores.h"
 #include "core/error.h"
 #include "oracle/rolling_study.h"
 #include "oracle/uniformity_score.h"
 #include "study/robustness/comparison_verdict.h"
+#include "study/robustness/family_ranking.h"
 #include <cmath>
+#include <limits>
 #include <gtest/gtest.h>
 #include <numbers>
 
@@ -151,3 +154,28 @@ TEST(ComparisonVerdict, RobustDependentAndUntestable)
   EXPECT_EQ(v.text, "cannot be tested");
 }
 
+
+TEST(FamilyRanking, TheBestStayTheBestExactlyWhileTheRatioIsBelowOne)
+{
+  // Four genomes over three cells; the two best at cell 0 are a and b.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  FamilyRanking r;
+  r.genomes = {{{90, 1.0, 1.0, 2}, {1.0, 1.0, 1.0}},   // a
+               {{90, 0.7, 1.0, 2}, {2.0, 2.0, nan}},   // b: not scored at cell 2
+               {{90, 1.3, 1.0, 2}, {3.0, 1.5, 4.0}},   // c: overtakes b at cell 1
+               {{90, 1.0, 0.8, 2}, {4.0, nan, 5.0}}};  // d: not scored at cell 1
+  r.best = best_genomes(r.genomes, 0, 2);
+  ASSERT_EQ(r.best, (std::vector<std::size_t>{0, 1}));
+  EXPECT_DOUBLE_EQ(*best_against_rest(r, 0), 2.0 / 3.0); // worst of the best / best of the rest
+  EXPECT_DOUBLE_EQ(*best_against_rest(r, 1), 2.0 / 1.5);
+  EXPECT_FALSE(best_against_rest(r, 2)); // one of the best has no score there
+  EXPECT_EQ(best_genomes(r.genomes, 1, 2), (std::vector<std::size_t>{0, 2}));
+  EXPECT_EQ(genome_label(r.genomes[1].genome), "(90, 0.7, 1)");
+  const std::vector<Choice> grid = {{"rolling_energy", {"0.1", "1", "3"}}};
+  const Verdict v = judge_comparison(grid, [&](const Cell& c) { return best_against_rest(r, c[0]); });
+  EXPECT_EQ(v.text, "depends on rolling_energy");
+  EXPECT_EQ(v.cells, 2);
+  const nlohmann::json j = to_json(r, grid);
+  EXPECT_EQ(j.at("best"), (nlohmann::json{"(90, 1, 1)", "(90, 0.7, 1)"}));
+  EXPECT_EQ(j.at("genomes").at(3).at("cells_scored"), 2);
+}
