@@ -10,6 +10,10 @@
 #   mesh's faces (as `rollcheck mesh` builds it) times subdivisions^2; the mesh
 #   score approaches U_inf from below as the faces are cut finer;
 # - the JSON states that cds ... fds are not computed (null);
+# - the modelling choices (load rule, contact width, end margin, time law) are
+#   inputs: the cylinder's continuum scores stay r / h under them, the oloid's
+#   U_inf moves with the load rule, and a uniform rate under the dynamic load
+#   (no free motion has one) is refused;
 # - a mesh file or a three-circle roller exits 2 with a clear message, nothing written.
 set -u
 source "$(dirname "$0")/lib.sh"
@@ -27,6 +31,24 @@ for name in cylinder cylinder_fast; do
   check_json "$name: continuum U = r/h = 0.5" '(.uniformity_score_continuum - 0.5 | fabs) <= 1e-6' "$tmp/$name.json"
   check_json "$name: contact held over one loop" '.contact_held == true and (.loops_completed - 1 | fabs) < 1e-6' "$tmp/$name.json"
 done
+
+# The modelling choices as named inputs: the cylinder's every continuum score
+# over the whole surface is r / h under any of them; the oloid's U_inf moves
+# with the load rule, and the choices are echoed under their names.
+run cylinder_static --body cylinder --mass-points 16384 --load-rule static --contact-width geometric --end-margin 0.1
+check_json "cylinder, static load, geometric width: every continuum score r/h = 0.5" \
+  '([.uniformity_score_continuum, .accumulated_pressure_continuum, .peak_pressure_continuum, .basquin_damage_continuum]
+    | all((. - 0.5 | fabs) <= 1e-6)) and (.peak_to_mean_pressure_continuum - 1 | fabs) <= 1e-6
+   and .load_rule == "static" and .contact_width == "geometric" and .end_margin == 0.1 and .time_law == "free"' \
+  "$tmp/cylinder_static.json"
+run oloid_dynamic --body oloid --points 60
+run oloid_static --body oloid --points 60 --load-rule static
+run oloid_uniform_rate --body oloid --points 60 --load-rule uniform --time-law uniform_rate
+jq -n --slurpfile d "$tmp/oloid_dynamic.json" --slurpfile s "$tmp/oloid_static.json" --slurpfile u "$tmp/oloid_uniform_rate.json" \
+  '$d[0].load_rule == "dynamic" and $d[0].rolling_energy == 0.1
+   and ($d[0].uniformity_score_continuum / $s[0].uniformity_score_continuum - 1 | fabs) > 0.01
+   and $u[0].time_law == "uniform_rate" and $u[0].uniformity_score_continuum > 0' > "$tmp/choices.txt"
+[[ $(cat "$tmp/choices.txt") == true ]] || { echo "FAIL: the load rule and time law do not reach U_inf"; fail=1; }
 
 run oloid2 --body oloid --points 100 --face-subdivisions 2
 run oloid4 --body oloid --points 100 --face-subdivisions 4
@@ -49,12 +71,14 @@ jq -n --slurpfile a "$tmp/oloid2.json" --slurpfile b "$tmp/oloid4.json" \
 [[ $(cat "$tmp/converge.txt") == true ]] || { echo "FAIL: oloid U should rise towards U_inf as faces are cut finer"; fail=1; }
 
 "$bin" oracle --help > "$tmp/help.txt"
-for option in --rolling-energy --loops --face-subdivisions --contact-width; do
+for option in --rolling-energy --loops --face-subdivisions --contact-width --load-rule --end-margin --time-law; do
   grep -A3 -- "$option" "$tmp/help.txt" | grep -q "default" || { echo "FAIL: --help lacks $option with its default"; fail=1; }
 done
 
 expect 2 "mesh.*named body" -- "$bin" oracle --oracle rolling --mesh "$source/meshes/reference/oloid_reference.obj" --json "$tmp/bad1.json"
 expect 2 "rolling.*3 circles" -- "$bin" oracle --oracle rolling --body roller --circles 3 --theta 120 --json "$tmp/bad2.json"
 expect 2 "loops" -- "$bin" oracle --oracle rolling --body oloid --loops 0 --json "$tmp/bad3.json"
-[[ ! -e $tmp/bad1.json && ! -e $tmp/bad2.json && ! -e $tmp/bad3.json ]] || { echo "FAIL: bad input wrote output"; fail=1; }
+expect 2 "uniform_rate" -- "$bin" oracle --oracle rolling --body oloid --time-law uniform_rate --json "$tmp/bad4.json"
+expect 2 "load-rule" -- "$bin" oracle --oracle rolling --body oloid --load-rule quasi --json "$tmp/bad5.json"
+[[ ! -e $tmp/bad1.json && ! -e $tmp/bad2.json && ! -e $tmp/bad3.json && ! -e $tmp/bad4.json && ! -e $tmp/bad5.json ]] || { echo "FAIL: bad input wrote output"; fail=1; }
 exit $fail
