@@ -41,6 +41,7 @@ def log_fit(xs, ys):
 
 def main():
     coarse_json, fine_json, version, page = sys.argv[1:5]
+    version = re.sub(r" \(commit [^)]*\)", "", version)  # the docs name no commits
     coarse, fine = rows_of(json.load(open(coarse_json))), rows_of(json.load(open(fine_json)))
     scored = [k for k, r in coarse.items() if r["scored"]]
     change = {k: fine[k]["fem_sds_continuum"] / coarse[k]["fem_sds_continuum"] - 1 for k in scored}
@@ -69,12 +70,14 @@ def main():
               "Readings (from the two runs' JSON):",
               "- **The template follows the face count**: over the {} scored genomes at 300 points, log FEM-SDS "
               "(template) against log faces has slope {:.2f} (correlation {:.2f}); log fem_sds_continuum against "
-              "log faces {:.2f} ({:.2f}).".format(len(genomes), *log_fit([coarse[k]["faces"] for k in genomes],
+              "log faces {:.2f} ({:.2f}), though no faces enter it: that slope is the genomes' geometry, which also "
+              "sets their face counts.".format(len(genomes), *log_fit([coarse[k]["faces"] for k in genomes],
                                                                         [coarse[k]["fem_sds"] for k in genomes]),
                                                  *log_fit([coarse[k]["faces"] for k in genomes],
                                                           [coarse[k]["fem_sds_continuum"] for k in genomes])),
               f"- **Resolution-free**: from 300 to 600 points per circle every scored body's continuum value "
-              f"changes by at most {100 * abs(change[worst]):.2g} % ({worst}); against half its own resolution "
+              f"changes by at most {100 * abs(change[worst]):.2g} % (no mesh enters it but the mass mesh); against "
+              f"half its own resolution "
               f"(every other sample of the loop, half the pieces along each ruling) by at most "
               f"{100 * max(abs(coarse[k]['fem_sds_continuum_change']) for k in scored):.2g} %.",
               f"- **The five best genomes** are {', '.join(best_coarse)} at 300 points and "
