@@ -445,14 +445,12 @@ LoopSdsSettings loop_settings(const FemSdsSettings& s)
 
 contact::ContinuumLoopSettings continuum_settings(const FemSdsSettings& s)
 {
-  contact::ContinuumLoopSettings c;
-  c.load_rule = s.load_rule;
-  c.time_law = s.time_law;
-  c.width = s.contact_width;
-  c.end_margin = s.crease_margin;
-  c.normal_load_n = s.normal_load_n;
-  c.effective_modulus_pa = models_of(s).effective_modulus_pa;
-  c.pieces = s.continuum_pieces;
-  return c;
+  return {.load_rule = s.load_rule,
+          .time_law = s.time_law,
+          .width = s.contact_width,
+          .end_margin = s.crease_margin, // the template's points are held there too
+          .normal_load_n = s.normal_load_n,
+          .effective_modulus_pa = models_of(s).effective_modulus_pa,
+          .pieces = s.continuum_pieces};
 }
 } // namespace rollcheck::study::loop_scores
