@@ -2,7 +2,15 @@
 #include "fem/scenes/hertz_solve.h"
 #include "fem/petsc_session.h"
 #include "fem/share_out.h"
+#include "contact/hertz.h"
 #include "core/error.h"
+#include "fem/contact_measures.h"
+#include "fem/load_control.h"
+#include "fem/mesh/hertz_mesh.h"
+#include "fem/nodal_fields.h"
+#include <Eigen/Dense>
+#include <array>
+#include <chrono>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -107,5 +115,99 @@ std::vector<SliceFem> solve_slices(MPI_Comm comm, std::span<const SliceLoad> sli
     unpack(&packed[i * packed_size], results[i]);
   }
   return results;
+}
+} // namespace rollcheck::fem
+
+namespace rollcheck::fem
+{
+namespace
+{
+/// |tau_xz| at the stationary point of the quadratic least-squares fit
+/// through the nodes (x, z, tau) within `radius` of (x0, z0); lengths over `scale`.
+std::array<double, 3> orthogonal_shear_extremum(const std::vector<std::array<double, 3>>& nodes, double x0, double z0,
+                                                double radius, double scale)
+{
+  std::vector<std::array<double, 3>> near;
+  for (const auto& n : nodes)
+    if (std::hypot(n[0] - x0, n[1] - z0) <= radius)
+      near.push_back(n);
+  if (near.size() < 12)
+    throw ComputationError(fmt::format("slice subsurface: only {} nodes within {:.3g} m of the orthogonal shear's "
+                                       "extremum; refine the mesh",
+                                       near.size(), radius));
+  Eigen::MatrixXd a(near.size(), 6);
+  Eigen::VectorXd v(near.size());
+  for (std::size_t i = 0; i < near.size(); ++i)
+  {
+    const double dx = (near[i][0] - x0) / scale, dz = (near[i][1] - z0) / scale;
+    a.row(i) << 1, dx, dz, dx * dx, dx * dz, dz * dz;
+    v(i) = near[i][2];
+  }
+  const Eigen::VectorXd c = a.colPivHouseholderQr().solve(v);
+  Eigen::Matrix2d hessian;
+  hessian << 2 * c(3), c(4), c(4), 2 * c(5);
+  const Eigen::Vector2d at = hessian.colPivHouseholderQr().solve(Eigen::Vector2d(-c(1), -c(2)));
+  const double value = c(0) + c(1) * at(0) + c(2) * at(1) + c(3) * at(0) * at(0) + c(4) * at(0) * at(1)
+                       + c(5) * at(1) * at(1);
+  return {std::abs(value), x0 + at(0) * scale, z0 + at(1) * scale};
+}
+} // namespace
+
+SliceSubsurface solve_slice_subsurface(const SliceLoad& load, const SliceSettings& settings, int refine)
+{
+  const auto start = std::chrono::steady_clock::now();
+  ensure_petsc();
+  HertzSettings setup;
+  setup.model = Model::plane_strain;
+  setup.radius_m = load.radius_m;
+  setup.youngs_modulus_pa = settings.youngs_modulus_pa;
+  setup.poisson_ratio = settings.poisson_ratio;
+  setup.force_n = load.load_n_per_m;
+  setup.length_m = 1.0; // per unit length
+  setup.penalty_c = settings.penalty_c;
+  setup.elastic_plane = settings.elastic_plane;
+  setup.refine = refine;
+  validate(setup);
+  const HertzReference reference = hertz_reference(setup);
+  const MeshGrading grading = mesh_grading(setup, reference);
+  const SceneMesh scene = build_scene_mesh(MPI_COMM_SELF, Model::plane_strain, load.radius_m, grading);
+  PenaltyContact problem(scene, Model::plane_strain, 1, reference.body_modulus_pa, settings.poisson_ratio,
+                         settings.penalty_c * reference.body_modulus_pa / grading.contact_size_m,
+                         settings.petsc_options);
+  const double b = reference.contact_size_m;
+  const LineApproach first = line_contact_approach(reference.load, load.radius_m, b, reference.effective_modulus_pa);
+  const LoadControlReport reached
+      = reach_force(problem, reference.load, first.approach_m, b * b / (2 * load.radius_m), first.exponent, 1e-6);
+
+  SliceSubsurface r;
+  r.refine = refine;
+  r.elements_across_b = b / grading.contact_size_m;
+  r.load_n_per_m = reached.force;
+  const contact::LineHertz at_reaction = contact::line_contact(
+      reached.force, load.radius_m, reference.effective_modulus_pa, settings.poisson_ratio);
+  r.hertz_half_width_m = at_reaction.half_width_m;
+  r.hertz_peak_pressure_pa = at_reaction.peak_pressure_pa;
+  const NodalFields fields = recover_nodal_fields(problem);
+  const std::vector<double> xq = fields.stress->function_space()->tabulate_dof_coordinates(false);
+  std::span<const double> sigma = fields.stress->x()->array(), tau = fields.max_shear->x()->array();
+  std::vector<AxisNode> axis;
+  std::vector<std::array<double, 3>> shear_nodes; // (x, depth, tau_xz)
+  for (std::size_t i = 0; i < tau.size(); ++i)
+  {
+    const double x = xq[3 * i], depth = xq[3 * i + 1];
+    if (x < 2 * grading.contact_size_m)
+      axis.push_back({depth, x, tau[i]});
+    shear_nodes.push_back({x, depth, sigma[9 * i + 2]}); // (x, z) component, fem/nodal_fields.h's order
+  }
+  const DepthMaximum shear = maximum_along_axis(axis, 1e-9 * load.radius_m);
+  r.max_shear_pa = shear.value;
+  r.max_shear_depth_m = shear.depth_m;
+  const auto [orthogonal, x, depth] = orthogonal_shear_extremum(shear_nodes, std::sqrt(3.0) / 2 * b, b / 2, 0.15 * b, b);
+  r.orthogonal_shear_pa = orthogonal;
+  r.orthogonal_shear_offset_m = x;
+  r.orthogonal_shear_depth_m = depth;
+  r.dofs = problem.num_dofs();
+  r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
 }
 } // namespace rollcheck::fem
