@@ -62,11 +62,11 @@ std::vector<SliceFem> solve_slices(MPI_Comm comm, std::span<const SliceLoad> sli
 /// One slice's recovered stress (fem/nodal_fields.h) where the subsurface
 /// extrema of line contact lie (contact/subsurface_line_contact.h), against
 /// the Hertz p0 and b of the load the slice carries (its reaction):
-///  - the largest principal shear on the axis and its depth (the axis fit of
-///    fem/contact_measures.h, as the Hertz scenes measure it);
-///  - the orthogonal shear |tau_xz| at its extremum near (0.87 b, 0.5 b): a
-///    least-squares quadratic in (x, z) through the nodes within 0.15 b of
-///    that point, taken at its stationary point.
+///  - the largest in-plane principal shear near (0, 0.786 b) and its depth;
+///  - the orthogonal shear |tau_xz| at its extremum near (0.87 b, 0.5 b);
+/// each at the stationary point of a least-squares cubic in (x, z) through
+/// the nodes within 0.15 b of that point (the shear's nodes mirrored about
+/// the axis).
 struct SliceSubsurface
 {
   int refine = 0;
@@ -79,8 +79,9 @@ struct SliceSubsurface
   double wall_s = 0;
 };
 
-/// The slice of `load` at contact-zone refinement `refine` (HertzSettings::refine),
+/// The slice of `load` at contact-zone refinement `refine` (HertzSettings::refine)
+/// with Lagrange elements of `degree` (1 or 2),
 /// solved on this process alone. ComputationError for a failed solve or a
 /// fit without enough nodes.
-SliceSubsurface solve_slice_subsurface(const SliceLoad& load, const SliceSettings& settings, int refine);
+SliceSubsurface solve_slice_subsurface(const SliceLoad& load, const SliceSettings& settings, int refine, int degree);
 } // namespace rollcheck::fem
