@@ -48,17 +48,19 @@ void for_each_loaded_element(const oracle::RealRolling& run, const LoopLifeSetti
   const double end = std::isfinite(run.first_loop_end_s) ? run.first_loop_end_s : run.scored_end_s;
   const auto& samples = run.trajectory.samples;
   const double e_star = s.effective_modulus_pa;
+  // Trapezoid weights in sigma: each step's part inside the loop, half to either end.
+  std::vector<double> weight(samples.size(), 0.0);
+  for (std::size_t k = 0; k + 1 < samples.size(); ++k)
+  {
+    const double t0 = samples[k].time_s, t1 = samples[k + 1].time_s;
+    const double inside = std::clamp((std::min(t1, end) - t0) / (t1 - t0), 0.0, 1.0);
+    const double half = std::abs(samples[k + 1].turning_angle_rad - samples[k].turning_angle_rad) * inside / 2;
+    weight[k] += half, weight[k + 1] += half;
+  }
   for (std::size_t k = 0; k < samples.size(); ++k)
   {
     const oracle::RollingSample& x = samples[k];
-    if (x.time_s > end)
-      break;
-    // Trapezoid weight in sigma: half of each neighbouring step inside the loop.
-    double dsigma = 0;
-    if (k > 0)
-      dsigma += std::abs(x.turning_angle_rad - samples[k - 1].turning_angle_rad) / 2;
-    if (k + 1 < samples.size() && samples[k + 1].time_s <= end)
-      dsigma += std::abs(samples[k + 1].turning_angle_rad - x.turning_angle_rad) / 2;
+    const double dsigma = weight[k];
     const auto [force, centre] = ruling_force(x, run, s);
     if (!(force > 0) || !(dsigma > 0))
       continue;
