@@ -1,4 +1,5 @@
 #include "cli/cli.h"
+#include "cli/text_output.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include <fstream>
@@ -30,6 +31,18 @@ void emit_json(const std::string& path, const nlohmann::json& summary)
     out << text << "\n";
     if (!out)
       throw InputError("cannot write JSON to '" + path + "'");
+  });
+}
+
+void write_text_output(const std::string& path, const std::string& text, const std::string& origin)
+{
+  if (path.empty() || process_rank() != 0)
+    return;
+  write_atomically(path, [&](const std::filesystem::path& tmp) {
+    std::ofstream out(tmp);
+    out << text;
+    if (!out)
+      throw ComputationError(origin + ": cannot write '" + path + "'");
   });
 }
 } // namespace rollcheck::cli

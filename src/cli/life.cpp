@@ -5,11 +5,9 @@
 // load and steel over the modelling choices, each with a verdict. Logs the
 // table; --json writes everything, --markdown the table.
 #include "cli/cli.h"
+#include "cli/text_output.h"
 #include "core/atomic_file.h"
-#include "core/error.h"
 #include "study/life/life_study.h"
-#include <fmt/format.h>
-#include <fstream>
 #include <spdlog/spdlog.h>
 
 namespace rollcheck::cli
@@ -28,13 +26,7 @@ void add_life_command(CLI::App& app)
           check_output_file(markdown_path, "option --markdown");
         const study::life::LifeResult result = study::life::run_life(settings);
         const std::string table = study::life::markdown_report(result);
-        if (!markdown_path.empty() && process_rank() == 0)
-          write_atomically(markdown_path, [&](const std::filesystem::path& tmp) {
-            std::ofstream out(tmp);
-            out << table;
-            if (!out)
-              throw ComputationError(fmt::format("option --markdown: cannot write '{}'", markdown_path));
-          });
+        write_text_output(markdown_path, table, "option --markdown");
         if (process_rank() == 0)
           spdlog::info("\n{}", table);
         return CommandResult{process_rank() == 0 ? study::life::to_json(result) : nlohmann::json(), 0};

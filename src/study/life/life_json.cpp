@@ -53,6 +53,7 @@ nlohmann::json to_json(const LifeResult& r)
                            {"life_ratio_min", tested ? json_number(c.verdict.ratio_min) : nlohmann::json(nullptr)},
                            {"life_ratio_max", tested ? json_number(c.verdict.ratio_max) : nlohmann::json(nullptr)},
                            {"cells", c.verdict.cells},
+                           {"infinite_life_cells", c.infinite_life_cells},
                            {"flips", flips}});
   }
   nlohmann::json exponents = nlohmann::json::array();
@@ -79,7 +80,7 @@ nlohmann::json to_json(const LifeResult& r)
       {
         nlohmann::json row = nlohmann::json::array();
         for (const double v : r.integrals[b][l][k])
-          row.push_back(json_number(v));
+          row.push_back(json_number_or_null(v));
         integrals[r.settings.bodies[b].name][fmt::format("{:.6g}", r.loads_n[l])][r.integral_keys[k]] = row;
       }
   nlohmann::json bodies = nlohmann::json::array(), loads = nlohmann::json::array(), exponent_loads = loads;
@@ -89,7 +90,11 @@ nlohmann::json to_json(const LifeResult& r)
     loads.push_back(json_number(l));
   for (const double l : r.settings.exponent_loads_n)
     exponent_loads.push_back(json_number(l));
+  nlohmann::json incomplete = nlohmann::json::array();
+  for (const auto& [body, energy] : r.incomplete_loops)
+    incomplete.push_back({{"body", body}, {"rolling_energy", energy}});
   return {{"subsurface", to_json(r.subsurface)},
+          {"incomplete_loops", incomplete},
           {"load_life_exponent", json_number(oloid_exponent)},
           {"load_life_exponent_derived", json_number(r.derived_exponent)},
           {"load_life_exponents", exponents},
@@ -120,6 +125,8 @@ std::string markdown_report(const LifeResult& r)
       r.subsurface.closed_max_shear_depth_over_b, fine.orthogonal_shear_over_p0, r.subsurface.closed_orthogonal_shear_over_p0);
   for (const ExponentCheck& e : r.exponents)
     out += fmt::format("load-life exponent ({}): {:.4f} measured, {:.4f} derived\n", e.body, e.exponent, r.derived_exponent);
+  for (const auto& [body, energy] : r.incomplete_loops)
+    out += fmt::format("not a rolling loop (a rim lifts before the loop closes): {} at E = {}\n", body, energy);
   out += "\n| comparison | load N | model | criterion | verdict | life ratio min | life ratio max |\n"
          "|---|---|---|---|---|---|---|\n";
   for (const LifeComparison& c : r.comparisons)

@@ -76,7 +76,7 @@ LoopLifeSettings loop_settings(const LifeSettings& s, const Cell& cell, double l
 /// L10(A) / L10(B) = (I_B / I_A)^(1 / e); none where both live for ever.
 std::optional<double> life_ratio(double integral_a, double integral_b, double weibull_slope)
 {
-  if (integral_a == 0 && integral_b == 0)
+  if (std::isnan(integral_a) || std::isnan(integral_b) || (integral_a == 0 && integral_b == 0))
     return std::nullopt;
   if (integral_a == 0)
     return std::numeric_limits<double>::infinity();
@@ -174,11 +174,21 @@ LifeResult run_life(const LifeSettings& s)
       r.integral_keys.push_back(m + "_" + c);
   r.integrals.assign(s.bodies.size(), std::vector(r.loads_n.size(), std::vector(4, std::vector<double>(cells.size()))));
   for (std::size_t b = 0; b < s.bodies.size(); ++b)
+    for (const auto& [energy, run] : runs[b])
+      if (!std::isfinite(run.first_loop_end_s))
+        r.incomplete_loops.emplace_back(s.bodies[b].name, energy);
+  for (std::size_t b = 0; b < s.bodies.size(); ++b)
     for (std::size_t l = 0; l < r.loads_n.size(); ++l)
     {
       double largest_dang_van = 0;
       for (std::size_t i = 0; i < cells.size(); ++i)
       {
+        if (!std::isfinite(runs[b].at(value_of(s.grid, cells[i], "rolling_energy")).first_loop_end_s))
+        {
+          for (auto& key : r.integrals[b][l])
+            key[i] = std::numeric_limits<double>::quiet_NaN(); // not a rolling loop
+          continue;
+        }
         const LoopIntegrals li = loop_integrals(runs[b].at(value_of(s.grid, cells[i], "rolling_energy")),
                                                 loop_settings(s, cells[i], r.loads_n[l]), s.constants, tables, ratio,
                                                 dang_van);
@@ -202,6 +212,8 @@ LifeResult run_life(const LifeSettings& s)
               const std::size_t i = std::lower_bound(cells.begin(), cells.end(), cell) - cells.begin();
               return life_ratio(r.integrals[a][l][k][i], r.integrals[b][l][k][i], s.constants.weibull_slope);
             });
+            for (std::size_t i = 0; i < cells.size(); ++i)
+              c.infinite_life_cells[0] += r.integrals[a][l][k][i] == 0, c.infinite_life_cells[1] += r.integrals[b][l][k][i] == 0;
             r.comparisons.push_back(c);
           }
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

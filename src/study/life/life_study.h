@@ -49,6 +49,7 @@ struct LifeComparison
   std::string model;     ///< lundberg_palmgren, ioannides_harris
   std::string criterion; ///< orthogonal_shear, largest_shear
   robustness::Verdict verdict; ///< of L10(A) / L10(B): > 1, A lives longer
+  std::array<int, 2> infinite_life_cells{}; ///< cells where A, B never reach the fatigue limit
 };
 
 struct ExponentCheck
@@ -76,6 +77,9 @@ struct LifeResult
   std::vector<LifeComparison> comparisons;
   std::vector<DangVanCheck> dang_van;
   double dang_van_peak_over_p0 = 0, dang_van_peak_depth_over_b = 0;
+  /// Bodies and energies whose run leaves the plane (a rim lifts) before
+  /// completing a loop: their cells are not defined (NaN integrals).
+  std::vector<std::pair<std::string, std::string>> incomplete_loops;
   /// integrals[body][load][key][cell], key: model_criterion.
   std::vector<std::vector<std::vector<std::vector<double>>>> integrals;
   std::vector<std::string> integral_keys;
