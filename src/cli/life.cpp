@@ -4,11 +4,8 @@
 // and the L10 life ratios of the bodies against the cylinder at the same
 // load and steel over the modelling choices, each with a verdict. Logs the
 // table; --json writes everything, --markdown the table.
-#include "cli/cli.h"
 #include "cli/text_output.h"
-#include "core/atomic_file.h"
 #include "study/life/life_study.h"
-#include <spdlog/spdlog.h>
 
 namespace rollcheck::cli
 {
@@ -22,14 +19,10 @@ void add_life_command(CLI::App& app)
       "subsurface stress, FEM-checked against the closed form: L10 life ratios of the bodies against the cylinder "
       "at 100 N, 5000 N and the cylinder's 1.5 GPa load over the modelling choices, a verdict each",
       [] {
-        if (!markdown_path.empty())
-          check_output_file(markdown_path, "option --markdown");
-        const study::life::LifeResult result = study::life::run_life(settings);
-        const std::string table = study::life::markdown_report(result);
-        write_text_output(markdown_path, table, "option --markdown");
-        if (process_rank() == 0)
-          spdlog::info("\n{}", table);
-        return CommandResult{process_rank() == 0 ? study::life::to_json(result) : nlohmann::json(), 0};
+        return run_with_markdown(markdown_path, [] {
+          const study::life::LifeResult result = study::life::run_life(settings);
+          return std::pair{study::life::to_json(result), study::life::markdown_report(result)};
+        });
       });
   sub->add_option("--samples-per-loop", settings.samples_per_loop, "Samples of each rolling loop (default: 4000)")
       ->check(CLI::Range(200L, 200000L));
