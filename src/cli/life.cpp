@@ -31,7 +31,7 @@ void add_life_command(CLI::App& app)
                   "Contact-zone refinements of the FEM slice's subsurface check, coarse to fine (default: 2 4 6)")
       ->check(CLI::Range(0, 10));
   sub->add_option("--degree", settings.subsurface.degree,
-                  "Lagrange degree of the FEM slice's displacement (default: 2; P1's stress peaks 0.5 % high, 1 % shallow)")
+                  "Lagrange degree of the FEM slice's displacement (default: 2; P1's shear stays biased under refinement: docs/methods/life.md)")
       ->check(CLI::Range(1, 2));
   sub->add_option("--markdown", markdown_path, "Also write the comparison table as Markdown to PATH (default: none)");
 }

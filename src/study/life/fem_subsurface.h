@@ -21,7 +21,7 @@ struct SubsurfaceSettings
   double radius_m = 1;              ///< the slice's R: the cylinder's (radius 1 m)
   double load_n_per_m = 2500;       ///< its q: the cylinder's at 5000 N (length 2 m)
   std::vector<int> refines = {2, 4, 6};
-  /// P2: P1's recovered stress peaks 0.5 % high and 1 % shallow at any refinement (docs/methods/life.md)
+  /// P2: P1's recovered shear stays biased under refinement (docs/methods/life.md)
   int degree = 2;
   fem::SliceSettings slice = [] {
     fem::SliceSettings s;

@@ -23,8 +23,8 @@
 // I ~ q^(c / 2) q^((1 - h) / 2) and L ~ F^(-p) with p = (c + 1 - h) / (2 e);
 // Lundberg-Palmgren's e = 9/8, c = 31/3, h = 7/3 give p = 4.
 //
-// Quadrature: f on 2000 depths, uniform in ln(zeta) over [1e-3, 10] (below,
-// f^c zeta^-h is below 1e-12 of the peak; beyond, f decays like 1 / zeta);
+// Quadrature: f on 2000 depths, uniform in ln(zeta) over [1e-3, 10] (at its
+// ends (f^c zeta^-h) is under 1e-5 and 1e-10 of its peak, for both shears);
 // H(t) on 400 equal steps of t in [0, max f], the trapezoid rule in ln(zeta),
 // interpolated as H^(1/c), which is nearly linear in t up to max f.
 #include "contact/subsurface_pass.h"
