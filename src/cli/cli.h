@@ -133,4 +133,5 @@ void add_audit_command(CLI::App& app);
 void add_validate_command(CLI::App& app);
 void add_whole_body_command(CLI::App& app);
 void add_robustness_command(CLI::App& app);
+void add_life_command(CLI::App& app);
 } // namespace rollcheck::cli

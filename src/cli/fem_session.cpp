@@ -82,6 +82,7 @@ void add_fem_commands(CLI::App& app)
   add_batch_command(app);
   add_validate_command(app);
   add_whole_body_command(app);
+  add_life_command(app);
 }
 
 void insert_petsc_options(std::vector<std::string> options)

@@ -1,7 +1,9 @@
 #include "cli/cli.h"
+#include "cli/text_output.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include <fstream>
+#include <spdlog/spdlog.h>
 #include <iostream>
 
 namespace rollcheck::cli
@@ -31,5 +33,30 @@ void emit_json(const std::string& path, const nlohmann::json& summary)
     if (!out)
       throw InputError("cannot write JSON to '" + path + "'");
   });
+}
+
+void write_text_output(const std::string& path, const std::string& text, const std::string& origin)
+{
+  if (path.empty() || process_rank() != 0)
+    return;
+  write_atomically(path, [&](const std::filesystem::path& tmp) {
+    std::ofstream out(tmp);
+    out << text;
+    if (!out)
+      throw ComputationError(origin + ": cannot write '" + path + "'");
+  });
+}
+
+CommandResult run_with_markdown(const std::string& markdown_path,
+                                const std::function<std::pair<nlohmann::json, std::string>()>& run)
+{
+  if (!markdown_path.empty())
+    check_output_file(markdown_path, "option --markdown");
+  auto [summary, table] = run();
+  write_text_output(markdown_path, table, "option --markdown");
+  if (process_rank() != 0)
+    return {nlohmann::json(), 0};
+  spdlog::info("\n{}", table);
+  return {std::move(summary), 0};
 }
 } // namespace rollcheck::cli

@@ -58,4 +58,30 @@ struct SliceFem
 /// Every rank gets every slice's result. ComputationError on every rank when
 /// a solve fails on any.
 std::vector<SliceFem> solve_slices(MPI_Comm comm, std::span<const SliceLoad> slices, const SliceSettings& settings);
+
+/// One slice's recovered stress (fem/nodal_fields.h) where the subsurface
+/// extrema of line contact lie (contact/subsurface_line_contact.h), against
+/// the Hertz p0 and b of the load the slice carries (its reaction):
+///  - the largest in-plane principal shear near (0, 0.786 b) and its depth;
+///  - the orthogonal shear |tau_xz| at its extremum near (0.87 b, 0.5 b);
+/// each at the stationary point of a least-squares cubic in (x, z) through
+/// the nodes within 0.15 b of that point (the shear's nodes mirrored about
+/// the axis).
+struct SliceSubsurface
+{
+  int refine = 0;
+  double elements_across_b = 0;         ///< b / h_c
+  double load_n_per_m = 0;              ///< reaction
+  double hertz_half_width_m = 0, hertz_peak_pressure_pa = 0; ///< at the reaction
+  double max_shear_pa = 0, max_shear_depth_m = 0;
+  double orthogonal_shear_pa = 0, orthogonal_shear_depth_m = 0, orthogonal_shear_offset_m = 0;
+  std::int64_t dofs = 0;
+  double wall_s = 0;
+};
+
+/// The slice of `load` at contact-zone refinement `refine` (HertzSettings::refine)
+/// with Lagrange elements of `degree` (1 or 2),
+/// solved on this process alone. ComputationError for a failed solve or a
+/// fit without enough nodes.
+SliceSubsurface solve_slice_subsurface(const SliceLoad& load, const SliceSettings& settings, int refine, int degree);
 } // namespace rollcheck::fem

@@ -1,0 +1,20 @@
+#pragma once
+// A text result beside a subcommand's JSON (a Markdown table), written
+// atomically by one rank.
+#include "cli/cli.h"
+#include <functional>
+#include <string>
+#include <utility>
+
+namespace rollcheck::cli
+{
+/// Writes `text` to `path` when it is non-empty, atomically, on rank 0;
+/// ComputationError naming `origin` if it cannot.
+void write_text_output(const std::string& path, const std::string& text, const std::string& origin);
+
+/// A study that also makes a Markdown table: checks `markdown_path` (option
+/// --markdown; none when empty) before `run`, then logs the table on rank 0,
+/// writes it there, and returns `run`'s JSON as the command's summary.
+CommandResult run_with_markdown(const std::string& markdown_path,
+                                const std::function<std::pair<nlohmann::json, std::string>()>& run);
+} // namespace rollcheck::cli

@@ -1,0 +1,138 @@
+// The life study's JSON and Markdown (study/life/life_study.h).
+#include "core/json_number.h"
+#include "study/life/life_study.h"
+#include <fmt/format.h>
+
+namespace rollcheck::study::life
+{
+namespace
+{
+nlohmann::json flip_json(const robustness::Flip& f, const std::vector<robustness::Choice>& grid)
+{
+  nlohmann::json settings = nlohmann::json::object();
+  for (std::size_t c = 0; c < grid.size(); ++c)
+    if (static_cast<int>(c) != f.choice)
+      settings[grid[c].name] = grid[c].values[f.cell[c]];
+  return {{"choice", grid[f.choice].name},
+          {"from", grid[f.choice].values[f.from]},
+          {"to", grid[f.choice].values[f.to]},
+          {"settings", settings}};
+}
+
+nlohmann::json constants_json(const LifeConstants& k)
+{
+  return {{"weibull_slope", json_number(k.weibull_slope)},
+          {"stress_exponent", json_number(k.stress_exponent)},
+          {"depth_exponent", json_number(k.depth_exponent)},
+          {"fatigue_limit_contact_pa", json_number(k.fatigue_limit_contact_pa)},
+          {"dang_van_alpha", json_number(k.dang_van_alpha)},
+          {"poisson_ratio", json_number(k.poisson_ratio)}};
+}
+
+std::string ratio_text(double x) { return std::isinf(x) ? "inf" : fmt::format("{:.3g}", x); }
+} // namespace
+
+nlohmann::json to_json(const LifeResult& r)
+{
+  nlohmann::json grid = nlohmann::json::object(), order = nlohmann::json::array();
+  for (const robustness::Choice& c : r.settings.grid)
+    grid[c.name] = c.values, order.push_back(c.name);
+  nlohmann::json comparisons = nlohmann::json::array();
+  for (const LifeComparison& c : r.comparisons)
+  {
+    nlohmann::json flips = nlohmann::json::array();
+    for (const robustness::Flip& f : c.verdict.flips)
+      flips.push_back(flip_json(f, r.settings.grid));
+    const bool tested = c.verdict.cells > 0;
+    comparisons.push_back({{"name", c.name},
+                           {"bodies", c.bodies},
+                           {"load_n", json_number(c.load_n)},
+                           {"model", c.model},
+                           {"criterion", c.criterion},
+                           {"verdict", c.verdict.text},
+                           {"life_ratio_min", tested ? json_number(c.verdict.ratio_min) : nlohmann::json(nullptr)},
+                           {"life_ratio_max", tested ? json_number(c.verdict.ratio_max) : nlohmann::json(nullptr)},
+                           {"cells", c.verdict.cells},
+                           {"infinite_life_cells", c.infinite_life_cells},
+                           {"flips", flips}});
+  }
+  nlohmann::json exponents = nlohmann::json::array();
+  double oloid_exponent = 0;
+  for (const ExponentCheck& e : r.exponents)
+  {
+    nlohmann::json integrals = nlohmann::json::array();
+    for (const double v : e.integrals)
+      integrals.push_back(json_number(v));
+    exponents.push_back({{"body", e.body},
+                         {"load_life_exponent", json_number(e.exponent)},
+                         {"integrals", integrals},
+                         {"direct_over_tabulated_minus_one", json_number(e.table_agreement)}});
+    if (e.body == "oloid")
+      oloid_exponent = e.exponent;
+  }
+  nlohmann::json dang_van = nlohmann::json::array();
+  for (const DangVanCheck& d : r.dang_van)
+    dang_van.push_back({{"body", d.body}, {"load_n", json_number(d.load_n)}, {"max_over_limit", json_number(d.max_over_limit)}});
+  nlohmann::json integrals = nlohmann::json::object();
+  for (std::size_t b = 0; b < r.settings.bodies.size(); ++b)
+    for (std::size_t l = 0; l < r.loads_n.size(); ++l)
+      for (std::size_t k = 0; k < r.integral_keys.size(); ++k)
+      {
+        nlohmann::json row = nlohmann::json::array();
+        for (const double v : r.integrals[b][l][k])
+          row.push_back(json_number_or_null(v));
+        integrals[r.settings.bodies[b].name][fmt::format("{:.6g}", r.loads_n[l])][r.integral_keys[k]] = row;
+      }
+  nlohmann::json bodies = nlohmann::json::array(), loads = nlohmann::json::array(), exponent_loads = loads;
+  for (const auto& b : r.settings.bodies)
+    bodies.push_back(b.name);
+  for (const double l : r.loads_n)
+    loads.push_back(json_number(l));
+  for (const double l : r.settings.exponent_loads_n)
+    exponent_loads.push_back(json_number(l));
+  nlohmann::json incomplete = nlohmann::json::array();
+  for (const auto& [body, energy] : r.incomplete_loops)
+    incomplete.push_back({{"body", body}, {"rolling_energy", energy}});
+  return {{"subsurface", to_json(r.subsurface)},
+          {"incomplete_loops", incomplete},
+          {"load_life_exponent", json_number(oloid_exponent)},
+          {"load_life_exponent_derived", json_number(r.derived_exponent)},
+          {"load_life_exponents", exponents},
+          {"exponent_loads_n", exponent_loads},
+          {"constants", constants_json(r.settings.constants)},
+          {"dang_van_peak_over_p0", json_number(r.dang_van_peak_over_p0)},
+          {"dang_van_peak_depth_over_b", json_number(r.dang_van_peak_depth_over_b)},
+          {"dang_van", dang_van},
+          {"bodies", bodies},
+          {"loads_n", loads},
+          {"grid", grid},
+          {"grid_order", order},
+          {"comparisons", comparisons},
+          {"integral_keys", r.integral_keys},
+          {"integrals", integrals},
+          {"samples_per_loop", r.settings.samples_per_loop},
+          {"pieces", r.settings.pieces},
+          {"wall_s", json_number(r.wall_s)}};
+}
+
+std::string markdown_report(const LifeResult& r)
+{
+  const SubsurfaceLevel& fine = r.subsurface.levels.back();
+  std::string out = fmt::format(
+      "FEM slice (finest level, {:.0f} elements across b): largest shear {:.4f} p0 at {:.4f} b (closed form {:.4f} at "
+      "{:.4f}); orthogonal shear {:.4f} p0 (closed form {:.4f})\n\n",
+      fine.fem.elements_across_b, fine.max_shear_over_p0, fine.max_shear_depth_over_b, r.subsurface.closed_max_shear_over_p0,
+      r.subsurface.closed_max_shear_depth_over_b, fine.orthogonal_shear_over_p0, r.subsurface.closed_orthogonal_shear_over_p0);
+  for (const ExponentCheck& e : r.exponents)
+    out += fmt::format("load-life exponent ({}): {:.4f} measured, {:.4f} derived\n", e.body, e.exponent, r.derived_exponent);
+  for (const auto& [body, energy] : r.incomplete_loops)
+    out += fmt::format("not a rolling loop (a rim lifts before the loop closes): {} at E = {}\n", body, energy);
+  out += "\n| comparison | load N | model | criterion | verdict | life ratio min | life ratio max |\n"
+         "|---|---|---|---|---|---|---|\n";
+  for (const LifeComparison& c : r.comparisons)
+    out += fmt::format("| {} | {:.4g} | {} | {} | {} | {} | {} |\n", c.name, c.load_n, c.model, c.criterion,
+                       c.verdict.text, c.verdict.cells ? ratio_text(c.verdict.ratio_min) : "-",
+                       c.verdict.cells ? ratio_text(c.verdict.ratio_max) : "-");
+  return out;
+}
+} // namespace rollcheck::study::life

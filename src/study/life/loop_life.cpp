@@ -1,0 +1,139 @@
+#include "study/life/loop_life.h"
+#include "core/error.h"
+#include "oracle/line_load.h"
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <numbers>
+
+namespace rollcheck::study::life
+{
+namespace
+{
+/// The normal force of a ruling and its centre of pressure (fraction from
+/// its start) under the rule; a force of 0 where the centre leaves the
+/// ruling (the body stands on a rim point).
+std::pair<double, double> ruling_force(const oracle::RollingSample& sample, const oracle::RealRolling& run,
+                                       const LoopLifeSettings& s)
+{
+  const Eigen::Vector3d along = sample.contact_end_m - sample.contact_start_m;
+  double force = s.normal_load_n, centre = 0.5;
+  if (s.load_rule == contact::LoadRule::static_through_centre_of_mass)
+    centre = (run.mass.centre_of_mass_m - sample.contact_start_m).dot(along) / along.squaredNorm();
+  else if (s.load_rule == contact::LoadRule::dynamic)
+  {
+    force = s.normal_load_n * sample.normal_force_n / (run.mass.mass_kg * 9.81);
+    centre = sample.centre_of_pressure;
+  }
+  return centre > 0 && centre < 1 && force > 0 ? std::pair{force, centre} : std::pair{0.0, centre};
+}
+
+void validate(const LoopLifeSettings& s)
+{
+  if (!(s.normal_load_n > 0) || !std::isfinite(s.normal_load_n))
+    throw InputError(fmt::format("life: the normal load (N) must be positive and finite, got {}", s.normal_load_n));
+  if (!(s.end_margin >= 0 && s.end_margin < 0.5))
+    throw InputError(fmt::format("life: the end margin must be in [0, 0.5), got {}", s.end_margin));
+  if (s.pieces < 1)
+    throw InputError(fmt::format("life: pieces along the ruling must be at least 1, got {}", s.pieces));
+}
+} // namespace
+
+void for_each_loaded_element(const oracle::RealRolling& run, const LoopLifeSettings& s,
+                             const std::function<void(const LoadedElement&)>& visit)
+{
+  validate(s);
+  if (run.trajectory.mode != oracle::ContactMode::line)
+    throw InputError("life: defined for line contact only");
+  const double end = std::isfinite(run.first_loop_end_s) ? run.first_loop_end_s : run.scored_end_s;
+  const auto& samples = run.trajectory.samples;
+  const double e_star = s.effective_modulus_pa;
+  // Trapezoid weights in sigma: each step's part inside the loop, half to either end.
+  std::vector<double> weight(samples.size(), 0.0);
+  for (std::size_t k = 0; k + 1 < samples.size(); ++k)
+  {
+    const double t0 = samples[k].time_s, t1 = samples[k + 1].time_s;
+    const double inside = std::clamp((std::min(t1, end) - t0) / (t1 - t0), 0.0, 1.0);
+    const double half = std::abs(samples[k + 1].turning_angle_rad - samples[k].turning_angle_rad) * inside / 2;
+    weight[k] += half, weight[k + 1] += half;
+  }
+  for (std::size_t k = 0; k < samples.size(); ++k)
+  {
+    const oracle::RollingSample& x = samples[k];
+    const double dsigma = weight[k];
+    const auto [force, centre] = ruling_force(x, run, s);
+    if (!(force > 0) || !(dsigma > 0))
+      continue;
+    const double length = (x.contact_end_m - x.contact_start_m).norm();
+    const bool uniform = s.load_rule == contact::LoadRule::uniform;
+    const double from = uniform || centre <= 2.0 / 3 ? 0 : 1 - 3 * (1 - centre);
+    const double to = uniform || centre >= 1.0 / 3 ? 1 : 3 * centre;
+    const double lo = std::min(from + s.end_margin, (from + to) / 2), hi = std::max(to - s.end_margin, (from + to) / 2);
+    auto radius = [&](double f) { return (1 - f) * x.start_radius_m + f * x.end_radius_m; };
+    auto load = [&](double f) { return uniform ? force / length : oracle::line_load(force, centre, length, f); };
+    const double h = (to - from) / s.pieces, offset = h / (2 * std::sqrt(3.0));
+    for (int piece = 0; piece < s.pieces; ++piece)
+      for (const double f : {from + (piece + 0.5) * h - offset, from + (piece + 0.5) * h + offset})
+      {
+        const double held = std::clamp(f, lo, hi), q = load(held), r = radius(held);
+        if (!(q > 0))
+          continue;
+        visit({dsigma * length * radius(f) * h / 2, std::sqrt(q * e_star / (std::numbers::pi * r)),
+               std::sqrt(4 * q * r / (std::numbers::pi * e_star))});
+      }
+  }
+}
+
+LoopIntegrals loop_integrals(const oracle::RealRolling& run, const LoopLifeSettings& settings,
+                             const LifeConstants& k, const std::array<const DepthIntegrals*, 2>& depth,
+                             const std::array<double, 2>& ratio, const DepthIntegrals& dang_van)
+{
+  LoopIntegrals out;
+  const double c = k.stress_exponent, h = k.depth_exponent;
+  std::array<double, 2> limit{}, lp_depth{};
+  for (int i = 0; i < 2; ++i)
+  {
+    limit[i] = ratio[i] * depth[i]->peak() * k.fatigue_limit_contact_pa; // tau_u
+    lp_depth[i] = depth[i]->integral(0, c);
+  }
+  for_each_loaded_element(run, settings, [&](const LoadedElement& e) {
+    const double scale = e.area_m2 * std::pow(e.half_width_m, 1 - h);
+    for (int i = 0; i < 2; ++i)
+    {
+      const double tau_scale = ratio[i] * e.peak_pressure_pa;
+      const double amplitude = std::pow(tau_scale, c) * scale;
+      out.lundberg_palmgren[i] += amplitude * lp_depth[i];
+      out.ioannides_harris[i] += amplitude * depth[i]->integral(limit[i] / tau_scale, c);
+    }
+    out.max_peak_pressure_pa = std::max(out.max_peak_pressure_pa, e.peak_pressure_pa);
+  });
+  out.max_dang_van_pa = dang_van.peak() * out.max_peak_pressure_pa;
+  return out;
+}
+
+double lundberg_palmgren_by_depth(const oracle::RealRolling& run, const LoopLifeSettings& settings,
+                                  const LifeConstants& k, const DepthIntegrals& depth, double z_lo, double z_hi,
+                                  int depths)
+{
+  if (!(z_lo > 0 && z_hi > z_lo) || depths < 2)
+    throw InputError(fmt::format("life: a depth grid needs 0 < z_lo < z_hi and two depths, got [{}, {}] m, {}", z_lo,
+                                 z_hi, depths));
+  const double step = std::log(z_hi / z_lo) / (depths - 1);
+  std::vector<double> weight(depths), z(depths);
+  for (int i = 0; i < depths; ++i)
+  {
+    z[i] = z_lo * std::exp(i * step);
+    // integral g dz = integral g z d ln(z), trapezoid rule.
+    weight[i] = (i == 0 || i == depths - 1 ? 0.5 : 1.0) * step * std::pow(z[i], 1 - k.depth_exponent);
+  }
+  double total = 0;
+  for_each_loaded_element(run, settings, [&](const LoadedElement& e) {
+    double sum = 0;
+    for (int i = 0; i < depths; ++i)
+      if (const double f = depth.profile(z[i] / e.half_width_m); f > 0)
+        sum += weight[i] * std::pow(f, k.stress_exponent);
+    total += e.area_m2 * std::pow(e.peak_pressure_pa, k.stress_exponent) * sum;
+  });
+  return total;
+}
+} // namespace rollcheck::study::life

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# `rollcheck life`: the JSON the life study promises (the FEM slice's
+# subsurface stress against the closed form, the load-life exponent against
+# the derived one, the comparison records with their verdicts), its Markdown
+# table, and bad input refused before computing.
+set -u
+source "$(dirname "$0")/lib.sh"
+bin=$1; source=$2; tmp=$3
+rm -rf "$tmp"; mkdir -p "$tmp"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
+# A coarse run: the keys, the checks and the verdicts' form, not converged ratios.
+"$bin" -q life --samples-per-loop 400 --pieces 4 --refines 2 4 --json "$tmp/l.json" --markdown "$tmp/l.md" \
+  || { echo "FAIL: life run"; fail=1; }
+check_json "the FEM slice's largest shear within 1 % of 0.300 p0 at 0.786 b" \
+  '(.subsurface.fem_max_shear_over_p0 / 0.300 - 1 | fabs) < 0.01 and (.subsurface.fem_max_shear_depth_over_b / 0.786 - 1 | fabs) < 0.01' \
+  "$tmp/l.json"
+check_json "the FEM slice's orthogonal shear within 1 % of 0.250 p0" \
+  '(.subsurface.fem_orthogonal_shear_over_p0 / 0.250 - 1 | fabs) < 0.01' "$tmp/l.json"
+check_json "the measured load-life exponent within 2 % of the derived" \
+  '.load_life_exponent_derived == 4 and (.load_life_exponent / .load_life_exponent_derived - 1 | fabs) < 0.02' \
+  "$tmp/l.json"
+check_json "three loads, the third the cylinder's 1.5 GPa load" \
+  '(.loads_n | length) == 3 and .loads_n[0] == 100 and .loads_n[1] == 5000 and .loads_n[2] > 1e8' "$tmp/l.json"
+check_json "every comparison record has its fields" \
+  '[.comparisons[] | has("name") and has("bodies") and has("life_ratio_min") and has("life_ratio_max") and has("verdict") and has("flips")] | all' \
+  "$tmp/l.json"
+check_json "the oloid is compared with the cylinder" \
+  '[.comparisons[] | select(.name == "oloid vs cylinder")] | length == 12' "$tmp/l.json"
+check_json "a verdict is robust or names its choices" \
+  '[.comparisons[].verdict | test("^(robust|depends on [a-z_, ]+|cannot be tested)$")] | all' "$tmp/l.json"
+grep -q '^| oloid vs cylinder | 100 |' "$tmp/l.md" || { echo "FAIL: no Markdown row"; fail=1; }
+"$bin" -q life --markdown /nonexistent/l.md > /dev/null 2> "$tmp/err.txt"; code=$?
+[[ $code -eq 2 ]] || { echo "FAIL: bad --markdown path gave exit $code"; fail=1; }
+grep -q -- '--markdown' "$tmp/err.txt" || { echo "FAIL: the message does not name --markdown"; fail=1; }
+refuses life '--samples-per-loop 10:samples-per-loop' '--refines 20:refines'
+exit $fail
