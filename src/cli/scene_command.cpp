@@ -44,12 +44,16 @@ std::size_t edit_distance(const std::string& a, const std::string& b)
 }
 
 /// The name in `known` closest to `name`, as " (did you mean 'X'?)" when it
-/// is at most two edits away; else "".
+/// is at most two edits away and those edits change less than half of the
+/// name (its dashes aside: `--nu` is not a typo of `--out`); else "".
 std::string suggestion(const std::vector<std::string>& known, const std::string& name)
 {
   const auto closest = std::ranges::min_element(known, {}, [&](const std::string& k) { return edit_distance(k, name); });
-  return closest != known.end() && edit_distance(*closest, name) <= 2 ? fmt::format(" (did you mean '{}'?)", *closest)
-                                                                       : "";
+  if (closest == known.end())
+    return "";
+  const std::size_t edits = edit_distance(*closest, name);
+  const std::size_t letters = name.size() - std::min(name.find_first_not_of('-'), name.size());
+  return edits <= 2 && 2 * edits < letters ? fmt::format(" (did you mean '{}'?)", *closest) : "";
 }
 
 /// The long option names ("--radius") of `app`.

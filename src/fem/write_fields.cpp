@@ -32,7 +32,8 @@ std::shared_ptr<dolfinx::fem::Function<double>> stress_in_mesh_axes(const dolfin
 }
 
 /// DOLFINx's one temporal collection per function, joined into one whose k-th
-/// grid holds the k-th attribute of every function (they share the steps).
+/// grid holds the k-th attribute of every function (they share the steps); a
+/// single step becomes the mesh grid's attributes.
 void join_collections(const std::filesystem::path& xdmf)
 {
   pugi::xml_document doc;
@@ -64,6 +65,14 @@ void join_collections(const std::filesystem::path& xdmf)
   collections.front().attribute("Name").set_value("fields");
   for (std::size_t k = 0; k < joined.size(); ++k)
     joined[k].attribute("Name").set_value(fmt::format("step {}", k + 1).c_str());
+  if (joined.size() == 1)
+  {
+    // A series of one step is one grid: the mesh's, with every field (meshio.read opens it).
+    pugi::xml_node mesh = domain.find_child_by_attribute("Grid", "GridType", "Uniform");
+    for (pugi::xml_node field : joined.front().children("Attribute"))
+      mesh.append_copy(field);
+    domain.remove_child(collections.front());
+  }
   if (!doc.save_file(xdmf.c_str(), "  "))
     throw ComputationError(fmt::format("cannot write '{}'", xdmf.string()));
 }

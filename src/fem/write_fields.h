@@ -8,7 +8,8 @@
 // "von_mises", "max_shear", "contact_pressure". DOLFINx writes one temporal
 // collection per function; close() joins them into one whose k-th grid holds
 // every field of step k, the layout readers of one collection expect
-// (meshio's TimeSeriesReader; ParaView reads either).
+// (meshio's TimeSeriesReader; ParaView reads either); a series of one step
+// becomes one grid, the mesh's, with every field (meshio.read opens it).
 //
 // Components follow the mesh's axes, so that ParaView's names mean what they
 // say: in 3D (x, y, z); in the axisymmetric and plane-strain models, whose

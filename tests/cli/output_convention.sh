@@ -41,6 +41,8 @@ expect 2 "unknown option '--raduis' \(did you mean '--radius'\?\)" -- "$bin" her
 expect 2 "unknown option '--bodyy' \(did you mean '--body'\?\)" -- "$bin" oracle --bodyy oloid
 expect 2 "unknown option '--zzzzzz'; .rollcheck mesh --help. lists" -- "$bin" mesh --zzzzzz
 expect 2 "unknown option '--quite' \(did you mean '--quiet'\?\)" -- "$bin" --quite mesh
+# Two edits that change most of a short name are no typo: no suggestion.
+expect 2 "unknown option '--nu'; " -- "$bin" hertz --nu 0.3
 
 # The PETSc footer only in the help of FEM subcommands.
 for sub in mesh oracle search optimize report audit robustness; do
