@@ -2,18 +2,20 @@
 and report.html (the same, PNGs embedded: one self-contained file), rendered
 from templates/report.md.j2 and templates/report.html.j2 (Jinja2).
 
-In order (docs/guide/report.md): 1. verdicts: the validation checks (--validation,
-the JSON `rollcheck validate` writes) and the status of every case; 2. the
-audit of the preprint's claims (--audit, the JSON of `rollcheck audit
---json`); 3. the plots, each with what it shows and what to conclude; 4. FEM
-against analytic SDS; appendix: the raw scalar results and parameters per
+In order (docs/guide/report.md): 1. findings: what rollcheck found about the
+preprint, the headline figure (findings.py, from --audit and --robustness, the
+JSON of `rollcheck robustness --json`) and each finding with its evidence plot;
+2. verdicts: the validation checks (--validation, the JSON `rollcheck validate`
+writes) and the status of every case; 3. the audit of the preprint's claims
+(--audit, the JSON of `rollcheck audit --json`); 4. the plots, each with what it
+shows and what to conclude; 5. FEM against analytic SDS; appendix: the raw scalar results and parameters per
 scene kind, the files the cases wrote. An optional input not given is a
 section saying how to get it; a key missing from an input is an error naming
 it (exit 1). `rollcheck report --from STORE` runs this in a temporary folder
 that replaces the report folder when it succeeds.
 
     /usr/bin/python3 postprocess/make_report.py --store STORE --out DIR [--rollcheck BINARY]
-        [--validation VALIDATION.json] [--audit AUDIT.json]
+        [--validation VALIDATION.json] [--audit AUDIT.json] [--robustness ROBUSTNESS.json]
 """
 import argparse
 import base64
@@ -27,12 +29,15 @@ import jinja2
 import markupsafe
 import numpy as np
 
+import findings
 import plot_cds_convergence
 import plot_contact_density
 import plot_fem_sds
 import plot_fem_speed_error
+import plot_headline
 import plot_pressure_profile
-from rollcheck_store import MissingKey, Skip, count, is_number, load_cases, require
+import plot_robustness
+from rollcheck_store import Figure, MissingKey, Skip, count, is_number, load_cases, require
 
 PLOTS = (plot_pressure_profile, plot_fem_speed_error, plot_cds_convergence, plot_contact_density)
 TEMPLATES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "templates")
@@ -158,9 +163,11 @@ def cases_table(cases):
 def figures(module, cases, out_dir):
     """A plot module's figures, or the stated reason it drew none."""
     try:
-        return {"title": module.TITLE, "figures": module.draw(cases, out_dir), "skip": None}
+        return {"title": module.TITLE, "module": module, "figures": module.draw(cases, out_dir), "skip": None,
+                "in_findings": False}
     except Skip as note:
-        return {"title": module.TITLE, "figures": [], "skip": str(note).rstrip(".") + "."}
+        return {"title": module.TITLE, "module": module, "figures": [], "skip": str(note).rstrip(".") + ".",
+                "in_findings": False}
 
 
 def raw_results(cases):
@@ -190,9 +197,35 @@ def raw_results(cases):
     return out
 
 
+def findings_section(args, plots, fem_sds):
+    """The findings: the opening paragraph, the headline figure and each finding with its evidence plot."""
+    audit_data = read_json(args.audit, "--audit") if args.audit else None
+    robustness = read_json(args.robustness, "--robustness") if args.robustness else None
+    rows, paragraph = findings.headline(audit_data, robustness)
+    drawn = {"fem_sds": fem_sds["figures"] or fem_sds["skip"]}
+    fem_sds["in_findings"] = bool(fem_sds["figures"])
+    for plot in plots:
+        if plot["module"] is plot_pressure_profile:
+            drawn["pressure_profile"] = plot["figures"] or plot["skip"]
+            plot["in_findings"] = bool(plot["figures"])
+    try:
+        drawn["headline"] = [plot_headline.draw(rows, args.out)]
+    except Skip as note:
+        drawn["headline"] = str(note)
+    if robustness:
+        plot_robustness.draw(robustness, os.path.join(args.out, "robustness.png"), ["oloid vs cylinder"])
+        drawn["robustness"] = [Figure("robustness.png", "The oloid against the cylinder over the modelling choices",
+                                      "Each score's oloid / cylinder ratio over the rolling energy: the band spans "
+                                      "every other choice, the line is the default choices.", "")]
+    return {"paragraph": paragraph, "headline": drawn["headline"],
+            "each": findings.items(audit_data, robustness, drawn)}
+
+
 def context(args, root, cases):
     """Everything the templates show, computed from the inputs."""
     ok = sum(c.ok for c in cases)
+    plots = [figures(m, cases, args.out) for m in PLOTS]
+    fem_sds = figures(plot_fem_sds, cases, args.out)
     return {
         "store": args.store, "layout": root.get("layout", "?"), "version": root.get("rollcheck_version", "?"),
         "created": root.get("created_utc", "?"),
@@ -200,8 +233,9 @@ def context(args, root, cases):
         "cases_ok": ok == len(cases), "cases": cases_table(cases),
         "validation": validation(args.validation) if args.validation else None,
         "audit": audit(args.audit) if args.audit else None,
-        "plots": [figures(m, cases, args.out) for m in PLOTS],
-        "fem_sds": figures(plot_fem_sds, cases, args.out),
+        "findings": findings_section(args, plots, fem_sds),
+        "plots": plots,
+        "fem_sds": fem_sds,
         "fem_sds_table": Table(*plot_fem_sds.table(cases)),
         "raw": raw_results(cases),
         "files": Table(["case", "file"], [[c.name, f] for c in cases for f in c.files]),
@@ -236,6 +270,7 @@ def main():
     parser.add_argument("--rollcheck", help="the rollcheck binary, for plots that rebuild a body's surface")
     parser.add_argument("--validation", help="the checks JSON written by `rollcheck validate` (default: none)")
     parser.add_argument("--audit", help="the JSON of `rollcheck audit --json PATH` (default: none)")
+    parser.add_argument("--robustness", help="the JSON of `rollcheck robustness --json PATH` (default: none)")
     args = parser.parse_args()
     if args.rollcheck:
         os.environ["ROLLCHECK_BINARY"] = args.rollcheck
@@ -246,7 +281,8 @@ def main():
     except (MissingKey, BadInput) as error:
         sys.exit(f"make_report.py: {error}")
     render(values, args.out)
-    print(f"report: {os.path.join(args.out, 'report.html')}")
+    # Names inside the report folder: --out is a temporary folder renamed into place afterwards.
+    print("report: report.html, report.md")
 
 
 if __name__ == "__main__":

@@ -16,6 +16,7 @@ naming it and the case.
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
+from matplotlib import ticker
 import numpy as np
 
 from rollcheck_store import Figure, Skip, count, label, require, run_standalone
@@ -64,6 +65,11 @@ def draw(cases, out_dir):
     ax.set_ylabel("CDS (contact distribution score)")
     ax.set_title(TITLE)
     ax.grid(True, which="both", alpha=0.3)
+    # Labels at 1, 2 and 5 of each decade: an axis spanning less than a decade still reads.
+    for axis in (ax.xaxis, ax.yaxis):
+        axis.set_major_locator(ticker.LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
+        axis.set_major_formatter(ticker.FuncFormatter(lambda value, _: f"{value:.3g}"))
+        axis.set_minor_formatter(ticker.NullFormatter())
     ax.legend(fontsize=7)
     fig.tight_layout()
     png = "cds_convergence.png"

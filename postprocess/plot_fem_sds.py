@@ -89,13 +89,17 @@ def conclusion(case, s, fem, point, line, n):
 def draw_scores(ax, rows):
     x = np.arange(len(rows))
     width = 0.8 / len(SCORES)
+    numbers = [s[key] for _, s in rows for key, _ in SCORES if s[key] is not None]
+    top, least = max(numbers, default=1.0), min(numbers, default=1.0)
+    # A log axis has no zero: every bar starts a decade below the least score, so none is cut by the axis.
+    floor = least / 10
     for k, (key, name) in enumerate(SCORES):
-        values = [s[key] if s[key] is not None else 0.0 for _, s in rows]
-        ax.bar(x + (k - 1) * width, values, width, label=name)
+        values = np.array([s[key] if s[key] is not None else floor for _, s in rows])
+        bars = ax.bar(x + (k - 1) * width, values - floor, width, bottom=floor, label=name)
+        ax.bar_label(bars, labels=[f"{s[key]:.3g}" if s[key] is not None else "-" for _, s in rows], fontsize=7)
     ax.set_xticks(x, [f"{c.name}\n({body(c)})" for c, _ in rows], fontsize=8)
     ax.set_yscale("log")
-    top = max((s[key] for _, s in rows for key, _ in SCORES if s[key] is not None), default=1.0)
-    ax.set_ylim(top=30 * top)  # room for the legend above the bars
+    ax.set_ylim(floor, 30 * top)  # room for the legend above the bars
     ax.set_ylabel("SDS")
     ax.set_title("stress distribution score per case", fontsize=10)
     ax.legend(fontsize=8, loc="upper left")
@@ -109,6 +113,9 @@ def draw_peaks(ax, pairs):
     values = np.concatenate([np.concatenate(p) for _, p in pairs])
     lo, hi = values[values > 0].min(), values.max()
     ax.loglog([lo, hi], [lo, hi], "k--", lw=1, label="equal")
+    # Margins on both axes: no marker sits on the frame.
+    ax.set_xlim(lo / 1.6, hi * 1.6)
+    ax.set_ylim(lo / 1.6, hi * 1.6)
     ax.set_xlabel("analytic peak pressure [Pa]")
     ax.set_ylabel("FEM peak pressure [Pa]")
     ax.set_title("peak pressure per solved orientation", fontsize=10)

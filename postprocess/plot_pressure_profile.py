@@ -61,9 +61,12 @@ def draw(cases, out_dir):
     top.plot(xs, np.sqrt(np.clip(1 - xs ** 2, 0, None)), "k-", lw=2, label="Hertz: sqrt(1 - (x/c)^2)")
     for case, curve in curves:
         keep = curve["x"] <= x_max
-        line, = top.plot(curve["x"][keep], curve["p"][keep], ".-", ms=3, lw=0.8,
+        # A 3D profile holds nodes at every angle about the axis: several pressures at nearly one radius,
+        # which a line would join in a zig-zag. Points only there.
+        style = "." if require(case.summary, "model", case.name) == "3d" else ".-"
+        line, = top.plot(curve["x"][keep], curve["p"][keep], style, ms=3, lw=0.8,
                          label=f"FEM {label(case, ('model', 'degree'))}, c = {curve['letter']}")
-        bottom.plot(curve["x"][keep], (curve["p"] - curve["hertz"])[keep], ".-", ms=3, lw=0.8,
+        bottom.plot(curve["x"][keep], (curve["p"] - curve["hertz"])[keep], style, ms=3, lw=0.8,
                     color=line.get_color())
     top.set_ylabel("p / p0 (Hertz)")
     top.set_title(TITLE)

@@ -36,11 +36,8 @@ def ratios(data, a, b, score):
     return out
 
 
-def main(argv):
-    if len(argv) != 3:
-        sys.exit(__doc__)
-    with open(argv[1]) as f:
-        data = json.load(f)
+def draw(data, png, names=None):
+    """Draws the comparisons of `data` (those named in `names`, else all) into `png`."""
     grid, order = data["grid"], data["grid_order"]
     energies = grid["rolling_energy"]
     all_cells = cells(grid, order)
@@ -48,7 +45,8 @@ def main(argv):
     default = {"contact_width": "hertz", "load_rule": "dynamic", "end_margin": "0.05"}
     pairs = []
     for c in data["comparisons"]:
-        if all(b in data["values"] for b in c["bodies"]) and (c["name"], tuple(c["bodies"])) not in pairs:
+        if (all(b in data["values"] for b in c["bodies"]) and (c["name"], tuple(c["bodies"])) not in pairs
+                and (names is None or c["name"] in names)):
             pairs.append((c["name"], tuple(c["bodies"])))
     fig, axes = plt.subplots(len(pairs), 1, figsize=(9, 3.2 * len(pairs)), squeeze=False)
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
@@ -76,7 +74,15 @@ def main(argv):
         ax.set_title(name + " (below 1: " + a + " more uniform)")
     axes[0, 0].legend(fontsize=7, ncol=2, loc="best")
     fig.tight_layout()
-    fig.savefig(argv[2], dpi=110)
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+
+
+def main(argv):
+    if len(argv) != 3:
+        sys.exit(__doc__)
+    with open(argv[1]) as f:
+        draw(json.load(f), argv[2])
 
 
 if __name__ == "__main__":

@@ -12,5 +12,8 @@ mkdir -p results
 # after the verdicts of the default cases.
 mkdir -p results/audit
 build/src/cli/rollcheck audit --json results/audit/audit.json --markdown results/audit/audit.md > /dev/null
-build/src/cli/rollcheck validate --out results --audit results/audit/audit.json --json results/validate.json "$@"
+# The headline comparisons over the modelling choices, whose ranges the report's findings show.
+build/src/cli/rollcheck robustness --json results/robustness.json > /dev/null
+build/src/cli/rollcheck validate --out results --audit results/audit/audit.json --robustness results/robustness.json \
+  --json results/validate.json "$@"
 echo "summary: $here/results/validate.json"

@@ -14,6 +14,7 @@ packages=(
   libopenblas0-pthread
   libnlopt-cxx-dev
   python3-matplotlib python3-h5py python3-numpy python3-jinja2 python3-meshio
+  chromium
 )
 
 missing=()

@@ -88,6 +88,19 @@ CLI::Option* add_json_option(CLI::App* sub, std::string& path);
 /// Writes `summary` to `path` when it is non-empty ("-" is stdout), atomically.
 void emit_json(const std::string& path, const nlohmann::json& summary);
 
+/// Prints a subcommand's result summary, a short table, on rank 0: to stdout,
+/// which holds results only (logs go to stderr); when `--json -` has stdout,
+/// the summary goes to the log instead, so that stdout stays JSON alone.
+void print_summary(const std::string& text);
+
+/// Whether this run's --json writes to stdout (add_command sets it).
+void set_json_on_stdout(bool on_stdout);
+
+/// InputError naming the first option in `args` (before any `--`) that neither
+/// the subcommand they name nor the executable has, with the closest known
+/// option when it is a typo away; nothing when every option is known.
+void check_options(const CLI::App& app, const std::vector<std::string>& args);
+
 /// How a command ends: the summary its --json option writes (null: nothing
 /// to write, as on a rank that holds no outcome) and the exit code.
 struct CommandResult

@@ -69,13 +69,11 @@ nlohmann::json run_crease(const io::Parameters& p)
                          100 * (l.half_contact_pressure_pa / study.half_contact_pressure_pa - 1),
                          l.contact_edge_m / study.half_width_m);
   }
-  // Tables go to the log (stderr), so that `--json -` stays JSON alone.
-  if (process_rank() == 0)
-    spdlog::info("\ncrease of {:.4g} deg under {:.4g} N/m (a = {:.4g} m, p(a/2) = {:.5g} Pa, apex growth per level "
+  print_summary(fmt::format("crease of {:.4g} deg under {:.4g} N/m (a = {:.4g} m, p(a/2) = {:.5g} Pa, apex growth per level "
                "{:.4g} Pa by theory):\n\n{}\nThe apex pressure is singular: it grows with every level and is not a "
-               "converged number; p(a/2) and the contact edge converge.\n\n",
+               "converged number; p(a/2) and the contact edge converge.\n",
                180 - 2 * setup.face_angle_rad * 180 / std::numbers::pi, setup.load_n_per_m, study.half_width_m,
-               study.half_contact_pressure_pa, study.apex_growth_per_level_pa, table);
+               study.half_contact_pressure_pa, study.apex_growth_per_level_pa, table));
   return {{"face_angle_deg", setup.face_angle_rad * 180 / std::numbers::pi},
           {"load_n_per_m", setup.load_n_per_m},
           {"effective_modulus_pa", study.effective_modulus_pa},

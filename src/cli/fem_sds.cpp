@@ -25,7 +25,7 @@ const SceneSchema<FemSdsSettings>& fem_sds_schema()
                                      "FEM solves), beside the preprint's point-Hertz SDS and line-contact Hertz; "
                                      "orientations solved directly check it",
                                      [](auto& s) {
-    s.include(body_schema(), &FemSdsSettings::body)
+    s.include(line_contact_body_schema(), &FemSdsSettings::body)
         .choice("oracle", "--oracle", &FemSdsSettings::oracle,
                 "Where the orientations come from: rolling (real rolling without slipping, the body on a ruling at "
                 "every instant) or rigid (the preprint's rigid-body oracle, whose orientations mostly stand on a rim "
@@ -117,8 +117,7 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
   const nlohmann::json j = to_json(result);
   if (process_rank() != 0)
     return j;
-  // Tables go to the log (stderr), so that `--json -` stays JSON alone.
-  spdlog::info("{}", study::loop_scores::report(result));
+  print_summary(study::loop_scores::report(result));
   if (const std::string& out = params.text("out"); !out.empty())
     io::draw_folder(out, params.text("python"), io::default_scripts_folder() / "plot_fem_orientations.py", {},
                     "plot.log", [&](const std::filesystem::path& folder) {

@@ -25,7 +25,7 @@ const SceneSchema<study::rims::FlatRimSettings>& flat_rim_schema()
                         "orientation (the ruling's largest line load at the sheet's apex), or a straight rim of 150-180 "
                         "deg across a flattened sheet (rim's one end)",
                         [](auto& s) {
-    s.include(body_schema(), [](S& settings) -> geometry::BodySpec& { return settings.body; });
+    s.include(line_contact_body_schema(), [](S& settings) -> geometry::BodySpec& { return settings.body; });
     s.real("normal_load_n", "--load", &S::normal_load_n, "N",
               "Force F pressing the body onto the counter-face through its centre of mass (rim --body's)",
               io::positive)
@@ -81,7 +81,7 @@ nlohmann::json run_flat_rim(const io::Parameters& p)
 {
   const study::rims::FlatRimSettings setup = flat_rim_schema().bind(p);
   const study::rims::FlatRimContact r = study::rims::flat_rim_contact(setup);
-  spdlog::info("{}", study::rims::report(setup, r));
+  print_summary(study::rims::report(setup, r));
   nlohmann::json j = to_json(r);
   j["counter_face"] = setup.steel_counter_face ? "steel" : "rigid";
   j["edge_radius_m"] = setup.edge_radius_m;

@@ -61,7 +61,8 @@ const SceneSchema<fem::HertzSettings>& hertz_schema()
               "PETSc options for the solver (prefix hertz_), e.g. '-hertz_ksp_type gmres'; on the command line "
               "they may also follow `--`")
         .text("xdmf", "--xdmf", &HertzSettings::xdmf_path,
-              "Write displacement, stress, von Mises, max shear and contact pressure to this self-contained .xdmf");
+              "Write displacement, stress, von Mises, max shear and contact pressure of every load step to this .xdmf, "
+              "their data to the .h5 beside it (ParaView)");
   });
 }
 
@@ -69,15 +70,21 @@ nlohmann::json run_hertz(const io::Parameters& params)
 {
   const fem::HertzResult result = fem::solve_hertz(MPI_COMM_WORLD, hertz_schema().bind(params));
   const std::string c = result.setup.model == fem::Model::plane_strain ? "b" : "a";
-  if (fem::world_rank() == 0)
-    spdlog::info("{} = {:.6e} m ({:+.3f} %), p0 = {:.6e} Pa ({:+.3f} %), F = {:.6g} N, {} dofs, {} Newton its, "
-                 "{:.2f} s",
-                 c, result.contact_size_m,
-                 100 * fem::relative_error(result.contact_size_m, result.hertz.contact_size_m),
-                 result.peak_pressure_pa,
-                 100 * fem::relative_error(result.peak_pressure_pa, result.hertz.peak_pressure_pa),
-                 result.load_reaction * (c == "b" ? result.setup.length_m : 1.0), result.dofs,
-                 result.newton_iterations, result.wall_s);
+  auto error = [](double fem, double theory) { return fmt::format("{:+.3f} %", 100 * fem::relative_error(fem, theory)); };
+  print_summary(fmt::format(
+      "| {} ({}, P{}) | FEM | Hertz | error |\n|---|---|---|---|\n"
+      "| contact size {} (Hertz-form fit) [m] | {:.6e} | {:.6e} | {} |\n"
+      "| p0 (Hertz-form fit) [Pa] | {:.6e} | {:.6e} | {} |\n"
+      "| largest nodal pressure [Pa] | {:.6e} | {:.6e} | {} |\n"
+      "| pressure profile RMS / p0 | {:.4f} | | |\n"
+      "| force [N] | {:.6g} | | |\n\n{} dofs, {} Newton iterations\n",
+      "hertz", fem::model_name(result.setup.model), result.setup.degree, c, result.contact_size_m,
+      result.hertz.contact_size_m, error(result.contact_size_m, result.hertz.contact_size_m), result.peak_pressure_pa,
+      result.hertz.peak_pressure_pa, error(result.peak_pressure_pa, result.hertz.peak_pressure_pa),
+      result.max_nodal_pressure_pa, result.hertz.peak_pressure_pa,
+      error(result.max_nodal_pressure_pa, result.hertz.peak_pressure_pa), result.profile_rms_error,
+      result.load_reaction * (c == "b" ? result.setup.length_m : 1.0), result.dofs, result.newton_iterations));
+  spdlog::info("hertz: {:.2f} s", result.wall_s);
   return fem::to_json(result);
 }
 

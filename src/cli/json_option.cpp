@@ -2,12 +2,32 @@
 #include "cli/text_output.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include <cstdio>
 #include <fstream>
-#include <spdlog/spdlog.h>
+#include <fmt/format.h>
 #include <iostream>
+#include <spdlog/spdlog.h>
 
 namespace rollcheck::cli
 {
+namespace
+{
+bool json_on_stdout = false;
+} // namespace
+
+void set_json_on_stdout(bool on_stdout) { json_on_stdout = on_stdout; }
+
+void print_summary(const std::string& text)
+{
+  if (process_rank() != 0)
+    return;
+  if (json_on_stdout)
+    spdlog::info("\n{}", text);
+  else
+    fmt::print("{}{}", text, text.ends_with('\n') ? "" : "\n");
+  std::fflush(stdout);
+}
+
 CLI::Option* add_json_option(CLI::App* sub, std::string& path)
 {
   return sub->add_option("--json", path, "Write a machine-readable summary to PATH ('-' for stdout); keys are snake_case with units");

@@ -71,6 +71,9 @@ int parse_failure(const CLI::App& app, const CLI::ParseError& e, const std::vect
   if (app.get_subcommands().empty())
     if (const int code = run_guarded([&] { cli::check_subcommand(app, cli::subcommand_in(args)); return 0; }); code != 0)
       return code;
+  if (e.get_exit_code() != 0)
+    if (const int code = run_guarded([&] { cli::check_options(app, args); return 0; }); code != 0)
+      return code;
   return app.exit(e) == 0 ? 0 : 2;
 }
 
@@ -112,9 +115,10 @@ int main(int argc, char** argv)
   app.require_subcommand(1);
   int verbosity = 0;
   bool quiet = false;
-  app.add_flag("-v,--verbose", verbosity, "More log output on stderr (-vv for trace)");
-  app.add_flag("-q,--quiet", quiet, "Only errors on stderr");
-  app.footer("PETSc options follow `--`: rollcheck hertz --model 3d -- -hertz_ksp_type cg");
+  app.add_flag("-v,--verbose", verbosity, "More log output on stderr (-vv for trace); anywhere on the line");
+  app.add_flag("-q,--quiet", quiet, "Only errors on stderr (results still go to stdout); anywhere on the line");
+  // Options a subcommand does not know pass to the executable: -q and -v after it.
+  app.fallthrough();
 
   cli::add_mesh_command(app);
   cli::add_oracle_command(app);
@@ -123,7 +127,14 @@ int main(int argc, char** argv)
   cli::add_report_command(app);
   cli::add_audit_command(app);
   cli::add_robustness_command(app);
+  const std::size_t fast_subcommands = app.get_subcommands([](CLI::App*) { return true; }).size();
   cli::add_fem_commands(app);
+  // PETSc reads options only in the FEM subcommands: theirs is the footer.
+  const std::string petsc_footer = "PETSc options follow `--`: rollcheck hertz --model 3d -- -hertz_ksp_type cg";
+  const std::vector<CLI::App*> subcommands = app.get_subcommands([](CLI::App*) { return true; });
+  for (std::size_t k = fast_subcommands; k < subcommands.size(); ++k)
+    subcommands[k]->footer(petsc_footer);
+  app.footer(petsc_footer);
 
   try
   {

@@ -8,7 +8,7 @@
 #include "geometry/mass_properties.h"
 #include "geometry/mesh_checks.h"
 #include "geometry/write_mesh.h"
-#include <spdlog/spdlog.h>
+#include <fmt/format.h>
 
 namespace rollcheck::cli
 {
@@ -65,8 +65,9 @@ nlohmann::json run_mesh(const io::Parameters& params)
       geometry::write_mesh(mesh, path);
     summary["out"] = scene.out;
   }
-  spdlog::info("{}: {} faces, area {:.9g} m^2, volume {:.9g} m^3, watertight {}, convex {}", label,
-               mesh.faces.rows(), mp.area_m2, mp.volume_m3, checks.watertight, checks.convex);
+  print_summary(fmt::format("| {} | faces | area [m^2] | volume [m^3] | watertight | convex |\n|---|---|---|---|---|---|\n"
+                            "| | {} | {:.9g} | {:.9g} | {} | {} |\n",
+                            label, mesh.faces.rows(), mp.area_m2, mp.volume_m3, checks.watertight, checks.convex));
   return summary;
 }
 } // namespace

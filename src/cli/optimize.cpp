@@ -138,7 +138,7 @@ nlohmann::json run_optimize(const io::Parameters& params)
                    "fem_sds_loops)",
                    loops.not_converged(), loops.scored);
   }
-  spdlog::info("{}", study::optimize::summary_line(result));
+  print_summary(study::optimize::summary_line(result));
   if (!out.empty())
     io::draw_folder(out, params.text("python"), io::default_scripts_folder() / "plot_optimize.py", {}, "plot.log",
                     [&](const std::filesystem::path& folder) {

@@ -3,10 +3,13 @@
 // and the paper-compat quirk table (`--quirk-table`, study::body_scores::quirk_table).
 #include "cli/cli.h"
 #include "cli/scenes.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
+#include "io/surface_vtu.h"
 #include "study/body_scores/paper_quirks.h"
 #include "study/body_scores/score_body.h"
 #include <fmt/format.h>
+#include <map>
 #include <spdlog/spdlog.h>
 
 namespace rollcheck::cli
@@ -19,7 +22,7 @@ const auto max_samples = static_cast<double>(study::body_scores::max_oracle_samp
 /// score_body's settings and the options that resolve into them (settings_of).
 struct OracleScene : study::body_scores::ScoreBodySettings
 {
-  std::string metric_list = "all", quirks;
+  std::string metric_list = "all", quirks, vtu_file;
   bool paper_compat = false, per_face = false, quirk_table = false;
   int runs = static_cast<int>(oracle::RigidBodySettings{}.initial_spins.size());
 };
@@ -38,6 +41,9 @@ void add_scene_parameters(Schema& s)
       .text("quirks", "--quirks", &OracleScene::quirks,
             "Set single paper-compat switches after --paper-compat: name=paper|corrected,... (docs/results/oracles.md#paper-compat-quirk-table)")
       .flag("per_face", "--per-face", &OracleScene::per_face, "Add the per-face arrays to the JSON")
+      .path("vtu_file", "--vtu", &OracleScene::vtu_file,
+            "Write the body with its per-face arrays (those of --per-face) as named cell data to this .vtu "
+            "(ParaView, meshio); the preprint's oracles")
       .flag("quirk_table", "--quirk-table", &OracleScene::quirk_table,
             "Print the table of each paper-compat switch's effect, alone, on the rigid-body scores, with the band")
       .integer("convergence_every", "--convergence-every", &OracleScene::convergence_every, "",
@@ -180,21 +186,84 @@ study::body_scores::ScoreBodySettings settings_of(const OracleScene& scene)
   return s;
 }
 
+/// The preprint's scores all apply one template (oracle/distribution_score.h)
+/// whose every face term is weighted by (a_f / A)^2 ~ N^-2
+/// (oracle/uniformity_score.h): each falls as the face count N to this power
+/// at a fixed body, so two bodies compare only at matched face counts. The
+/// audit measures -2.01 (docs/results/audit.md); real rolling's U does not fall.
+constexpr double template_face_count_exponent = -2.0;
+
+/// The resolution note of the preprint's scores, for the JSON.
+nlohmann::json resolution_json(const study::body_scores::BodyScores& scores)
+{
+  return {{"n_faces", scores.n_faces},
+          {"face_count_exponent", template_face_count_exponent},
+          {"depends_on_resolution", true},
+          {"note", "cds, sds, tds, wds_vol, wds_depth and fds fall as n_faces^face_count_exponent at a fixed body: "
+                   "compare bodies at matched face counts, or by the resolution-free U (--oracle rolling)"}};
+}
+
+/// The summary table: each score with how it depends on the mesh.
+std::string summary_table(const study::body_scores::BodyScores& scores)
+{
+  if (scores.oracle == Oracle::rolling)
+  {
+    const oracle::RollingStudyResult& r = scores.rolling;
+    return fmt::format("| {} (real rolling) | value | resolution |\n|---|---|---|\n"
+                       "| U | {:.6g} | rises to U_inf as the {} scoring faces are refined |\n"
+                       "| U_inf | {:.6g} | none (continuum) |\n| coverage | {:.4g} | |\n",
+                       scores.body, r.uniformity, r.faces, r.continuum_uniformity, r.coverage);
+  }
+  const contact::ScoreVector& v = scores.scores;
+  std::string table = fmt::format("| {} ({} oracle, {} samples) | value | resolution |\n|---|---|---|\n",
+                                  scores.body, scores.oracle == Oracle::rigid ? "rigid-body" : "approximate", v.n_samples);
+  const std::pair<const char*, const std::optional<double>*> rows[] = {
+      {"CDS", &v.cds}, {"SDS", &v.sds}, {"TDS", &v.tds}, {"WDS_vol", &v.wds_vol}, {"WDS_depth", &v.wds_depth}, {"FDS", &v.fds}};
+  for (const auto& [name, value] : rows)
+    if (value->has_value())
+      table += fmt::format("| {} | {:.6g} | x N^{:g}, N = {} faces: compare at matched face counts |\n", name,
+                           **value, template_face_count_exponent, scores.n_faces);
+  return table;
+}
+
+/// The per-face arrays of the run as a VTU's cell data, under the names of
+/// the JSON's "per_face" (study::body_scores::to_json; tests/cli/oracle_vtu.sh
+/// holds the two to the same names and values).
+void write_face_fields(const OracleScene& scene, const study::body_scores::BodyScores& scores)
+{
+  std::map<std::string, Eigen::VectorXd> fields = scores.scores.per_face;
+  fields["face_areas_m2"] = scores.face_areas_m2;
+  fields["effective_radius_m"] = scores.curvature.effective_radius_m;
+  fields["mean_curvature_per_m"] = scores.curvature.mean;
+  fields["gaussian_curvature_per_m2"] = scores.curvature.gaussian;
+  fields["peak_pressure_pa"] = scores.pressure.peak_pressure_pa;
+  std::erase_if(fields, [](const auto& field) { return field.second.size() == 0; }); // a metric not asked for
+  io::write_surface_vtu(scene.vtu_file, geometry::make_body(scene.body), fields);
+}
+
 nlohmann::json run_oracle(const io::Parameters& params)
 {
   const OracleScene scene = oracle_schema().bind(params);
-  if (scene.oracle == Oracle::rolling && (scene.quirk_table || scene.paper_compat || scene.per_face))
-    throw InputError("options --quirk-table, --paper-compat and --per-face belong to the preprint's oracles, not to "
-                     "--oracle rolling");
+  if (scene.oracle == Oracle::rolling && (scene.quirk_table || scene.paper_compat || scene.per_face || !scene.vtu_file.empty()))
+    throw InputError("options --quirk-table, --paper-compat, --per-face and --vtu belong to the preprint's oracles, not "
+                     "to --oracle rolling");
+  if (!scene.vtu_file.empty())
+    check_output_file(scene.vtu_file, "option --vtu");
   if (scene.quirk_table)
   {
     const study::body_scores::QuirkTable table = study::body_scores::quirk_table(settings_of(scene));
-    fmt::print("{}", study::body_scores::to_markdown(table));
+    print_summary(study::body_scores::to_markdown(table));
     return to_json(table);
   }
   const study::body_scores::BodyScores scores = study::body_scores::score_body(settings_of(scene));
-  spdlog::info("{}", study::body_scores::summary_line(scores));
-  return to_json(scores, scene.per_face);
+  spdlog::debug("{}", study::body_scores::summary_line(scores));
+  print_summary(summary_table(scores));
+  if (!scene.vtu_file.empty())
+    write_face_fields(scene, scores);
+  nlohmann::json j = to_json(scores, scene.per_face);
+  if (scene.oracle != Oracle::rolling)
+    j["resolution"] = resolution_json(scores);
+  return j;
 }
 } // namespace
 

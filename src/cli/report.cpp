@@ -8,7 +8,7 @@ namespace rollcheck::cli
 {
 void add_report_command(CLI::App& app)
 {
-  static std::string store, folder, validation, audit;
+  static std::string store, folder, validation, audit, robustness;
   static std::string scripts = io::default_scripts_folder().string();
   static std::string python = "/usr/bin/python3";
   CLI::App* sub = add_command(
@@ -16,8 +16,8 @@ void add_report_command(CLI::App& app)
         const std::filesystem::path target = folder.empty()
                                                  ? std::filesystem::absolute(store).parent_path() / "report"
                                                  : std::filesystem::path(folder);
-        const io::ReportFiles report = io::write_report(store, target, scripts, python, validation, audit);
-        fmt::print("report: {}\nmarkdown: {}\n", report.html.string(), report.markdown.string());
+        const io::ReportFiles report = io::write_report(store, target, scripts, python, validation, audit, robustness);
+        print_summary(fmt::format("report: {}\nmarkdown: {}\n", report.html.string(), report.markdown.string()));
         return CommandResult{{{"html", report.html.string()}, {"markdown", report.markdown.string()}}};
       });
   sub->add_option("--from", store, "Results store written by `rollcheck batch` (DIR/results.h5)")->required();
@@ -26,6 +26,9 @@ void add_report_command(CLI::App& app)
   sub->add_option("--validation", validation,
                   "Checks JSON written by `rollcheck validate` (results/validation.json), shown first (default: none)");
   sub->add_option("--audit", audit, "JSON of `rollcheck audit --json PATH`, shown as the claim table (default: none)");
+  sub->add_option("--robustness", robustness,
+                  "JSON of `rollcheck robustness --json PATH`: the headline's ranges over the modelling choices "
+                  "(default: none)");
   sub->add_option("--python", python, "Python with matplotlib and h5py (default: Debian's /usr/bin/python3)");
 }
 } // namespace rollcheck::cli

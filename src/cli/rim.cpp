@@ -38,7 +38,7 @@ auto end(Member member)
 /// With --body: the body, its loop, the orientations solved directly and F.
 void add_loop_options(RimSchema& s)
 {
-  s.include(body_schema(), [](RimCommand& c) -> geometry::BodySpec& { return c.loop.body; });
+  s.include(line_contact_body_schema(), [](RimCommand& c) -> geometry::BodySpec& { return c.loop.body; });
   s.integer("orientations", "--orientations", [](RimCommand& c) -> std::size_t& { return c.loop.orientations; }, "",
             "With --body: orientations of the loop solved directly (slices and an end model at each loaded rim end), "
             "one per equal stratum of the loop",
@@ -148,8 +148,8 @@ void add_end_model_options(RimSchema& s)
       .real("penalty_c", "--penalty-c", end(&RimEndSettings::penalty_c), "",
             "Penalty kappa = c E / h(x), h the local element size", io::positive)
       .text("xdmf", "--xdmf", end(&RimEndSettings::xdmf_path),
-            "Write the last level's displacement, stress and contact pressure to this self-contained .xdmf "
-            "(ParaView)");
+            "Write the last level's displacement, stress and contact pressure to this .xdmf, their data to the .h5 "
+            "beside it (ParaView)");
 }
 
 const SceneSchema<RimCommand>& rim_schema()
@@ -165,23 +165,20 @@ const SceneSchema<RimCommand>& rim_schema()
   });
 }
 
-// Tables go to the log (stderr), so that `--json -` stays JSON alone.
 nlohmann::json run_rim(const io::Parameters& p)
 {
   RimCommand command = rim_schema().bind(p);
   if (command.loop.body.body.empty())
   {
     const fem::RimEndStudy study = fem::solve_rim_end(MPI_COMM_WORLD, command.end);
-    if (process_rank() == 0)
-      spdlog::info("{}", study::rims::report(study));
+    print_summary(study::rims::report(study));
     return study::rims::to_json(study);
   }
   command.loop.youngs_modulus_pa = command.end.youngs_modulus_pa;
   command.loop.poisson_ratio = command.end.poisson_ratio;
   const study::rims::RimLoopResult r = study::rims::run_rim_loop(MPI_COMM_WORLD, command);
   const nlohmann::json j = to_json(r);
-  if (process_rank() == 0)
-    spdlog::info("{}", study::rims::report(r));
+  print_summary(study::rims::report(r));
   return j;
 }
 } // namespace

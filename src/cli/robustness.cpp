@@ -33,7 +33,7 @@ void add_robustness_command(CLI::App& app)
             if (!out)
               throw ComputationError(fmt::format("option --markdown: cannot write '{}'", markdown_path));
           });
-        spdlog::info("\n{}", table);
+        print_summary(table);
         return CommandResult{study::robustness::to_json(result), 0};
       });
   sub->add_option("--samples-per-loop", settings.samples_per_loop,

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include <algorithm>
 #include <fmt/format.h>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <spdlog/spdlog.h>
@@ -42,6 +43,28 @@ std::size_t edit_distance(const std::string& a, const std::string& b)
   return row[b.size()];
 }
 
+/// The name in `known` closest to `name`, as " (did you mean 'X'?)" when it
+/// is at most two edits away and those edits change less than half of the
+/// name (its dashes aside: `--nu` is not a typo of `--out`); else "".
+std::string suggestion(const std::vector<std::string>& known, const std::string& name)
+{
+  const auto closest = std::ranges::min_element(known, {}, [&](const std::string& k) { return edit_distance(k, name); });
+  if (closest == known.end())
+    return "";
+  const std::size_t edits = edit_distance(*closest, name);
+  const std::size_t letters = name.size() - std::min(name.find_first_not_of('-'), name.size());
+  return edits <= 2 && 2 * edits < letters ? fmt::format(" (did you mean '{}'?)", *closest) : "";
+}
+
+/// The long option names ("--radius") of `app`.
+std::vector<std::string> long_options(const CLI::App& app)
+{
+  std::vector<std::string> names;
+  for (const CLI::Option* option : app.get_options())
+    for (const std::string& name : option->get_lnames())
+      names.push_back("--" + name);
+  return names;
+}
 } // namespace
 
 void on_run(CLI::App* sub, std::function<int()> runner) { runners()[sub] = std::move(runner); }
@@ -62,11 +85,31 @@ void check_subcommand(const CLI::App& app, const std::string& name)
     known.push_back(sub->get_name());
   if (name.empty() || std::ranges::find(known, name) != known.end())
     return;
-  const auto closest = std::ranges::min_element(known, {}, [&](const std::string& k) { return edit_distance(k, name); });
-  const std::string hint = closest != known.end() && edit_distance(*closest, name) <= 2
-                               ? fmt::format(" (did you mean '{}'?)", *closest)
-                               : "";
-  throw InputError(fmt::format("unknown subcommand '{}'{}; known: {}", name, hint, fmt::join(known, ", ")));
+  throw InputError(
+      fmt::format("unknown subcommand '{}'{}; known: {}", name, suggestion(known, name), fmt::join(known, ", ")));
+}
+
+void check_options(const CLI::App& app, const std::vector<std::string>& args)
+{
+  const std::string name = subcommand_in(args);
+  std::vector<std::string> known = long_options(app);
+  std::string command = "rollcheck";
+  for (const CLI::App* sub : app.get_subcommands([&](const CLI::App* s) { return s->get_name() == name; }))
+  {
+    std::ranges::copy(long_options(*sub), std::back_inserter(known));
+    command += " " + name;
+  }
+  for (const std::string& arg : args)
+  {
+    if (arg == "--")
+      return;
+    if (!arg.starts_with("--"))
+      continue;
+    const std::string option = arg.substr(0, arg.find('='));
+    if (std::ranges::find(known, option) == known.end())
+      throw InputError(fmt::format("{}: unknown option '{}'{}; `{} --help` lists the options", command, option,
+                                   suggestion(known, option), command));
+  }
 }
 
 CLI::App* add_command(CLI::App& app, const std::string& name, const std::string& description,
@@ -77,6 +120,7 @@ CLI::App* add_command(CLI::App& app, const std::string& name, const std::string&
   auto json_path = std::make_shared<std::string>();
   add_json_option(sub, *json_path);
   on_run(sub, [json_path, run = std::move(run)] {
+    set_json_on_stdout(*json_path == "-");
     // Refused before any computation, not after it.
     if (!json_path->empty() && *json_path != "-")
       check_output_file(*json_path, "option --json");

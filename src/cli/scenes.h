@@ -77,6 +77,10 @@ inline constexpr io::Bounds body_points_range{3, 100000};
 /// `schema.include(body_schema(), &Settings::body)`.
 const io::BoundSchema<geometry::BodySpec>& body_schema();
 
+/// body_schema for the scenes that follow a contact ruling (fem-sds, rim,
+/// flat-rim, whole-body): only the bodies they take, the hulls of two circles.
+const io::BoundSchema<geometry::BodySpec>& line_contact_body_schema();
+
 /// The penalty of the FEM contact, one spelling in every scene that has
 /// it: penalty_c (--penalty-c), kappa = c E / h_c. A group of one parameter,
 /// bound to the scene's member: `schema.include(penalty_schema(), &Settings::penalty_c)`.

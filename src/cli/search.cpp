@@ -143,8 +143,7 @@ nlohmann::json run_search(const io::Parameters& params)
   ProgressBar bar;
   o.progress = [&](const oracle::SearchProgress& progress) { bar(progress); };
   const oracle::SearchResult result = oracle::parametric_search(o);
-  // The table goes to the log (stderr), as every scene's, so that `--json -` prints JSON alone.
-  fmt::print(stderr, "{}", study::body_scores::ranked_table(result, static_cast<std::size_t>(scene.table_rows)));
+  print_summary(study::body_scores::ranked_table(result, static_cast<std::size_t>(scene.table_rows)));
   if (!scene.hdf5.empty())
   {
     io::write_search_hdf5(result, scene.hdf5);

@@ -26,7 +26,7 @@ nlohmann::json run_family_scores(oracle::SearchGrid grid, int points, double rad
   const nlohmann::json j = to_json(result);
   if (process_rank() != 0)
     return j;
-  spdlog::info("{}", study::loop_scores::report(result, settings));
+  print_summary(study::loop_scores::report(result, settings));
   if (!out.empty())
     io::draw_folder(out, python, io::default_scripts_folder() / "plot_fem_family.py", {}, "plot.log",
                     [&](const std::filesystem::path& folder) {

@@ -16,7 +16,7 @@ namespace rollcheck::cli
 {
 void add_validate_command(CLI::App& app)
 {
-  static std::string audit_json;
+  static std::string audit_json, robustness_json;
   static io::BatchSettings options = [] {
     io::BatchSettings o;
     o.cases = {(data_folder() / "cases" / "default").string()};
@@ -39,15 +39,15 @@ void add_validate_command(CLI::App& app)
         summary["validation"] = validation;
         const std::filesystem::path validation_file = options.out / "validation.json";
         write_atomically(validation_file, [&](const std::filesystem::path& tmp) { std::ofstream(tmp) << validation.dump(2); });
-        fmt::print("\n{}\n{} checks passed, {} failed\n", io::verdict_table(verdicts), validation["passed"].get<int>(),
-                   validation["failed"].get<int>());
+        print_summary(fmt::format("\n{}\n{} checks passed, {} failed\n", io::verdict_table(verdicts),
+                                  validation["passed"].get<int>(), validation["failed"].get<int>()));
         if (!batch.interrupted)
         {
           const io::ReportFiles report = io::write_report(batch.store, options.out / "report",
                                                           io::default_scripts_folder(), "/usr/bin/python3",
-                                                          validation_file, audit_json);
+                                                          validation_file, audit_json, robustness_json);
           summary["report"] = {{"html", report.html.string()}, {"markdown", report.markdown.string()}};
-          fmt::print("report: {}\nmarkdown: {}\n", report.html.string(), report.markdown.string());
+          print_summary(fmt::format("report: {}\nmarkdown: {}\n", report.html.string(), report.markdown.string()));
         }
         const int failed_checks = validation["failed"].get<int>();
         return CommandResult{summary, batch.exit_code() != 0 ? batch.exit_code() : failed_checks > 0 ? 1 : 0};
@@ -56,6 +56,9 @@ void add_validate_command(CLI::App& app)
   sub->add_option("--out", options.out, "Results folder, results.h5, validation.json and report/ (default: results/ in the working folder)");
   sub->add_option("-j,--jobs", options.jobs, "Worker processes per MPI rank (default: 2)")
       ->check(CLI::Range(0, 1024));
+  sub->add_option("--robustness", robustness_json,
+                  "JSON of `rollcheck robustness --json PATH`, the headline's ranges in the report (default: none)")
+      ->check(CLI::ExistingFile);
   sub->add_option("--audit", audit_json,
                   "JSON of `rollcheck audit --json PATH`, shown in the report after the verdicts (default: none)")
       ->check(CLI::ExistingFile);

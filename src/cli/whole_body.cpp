@@ -105,7 +105,7 @@ const SceneSchema<WholeBodyCheckSettings>& whole_body_schema()
                                              "value within --tolerance, a sharp obtuse end singular: no value to "
                                              "compare) or FAIL",
                                              [](WholeBodySchema& s) {
-    s.include(body_schema(), &WholeBodyCheckSettings::body)
+    s.include(line_contact_body_schema(), &WholeBodyCheckSettings::body)
         .real("direction_deg", "--direction", &WholeBodyCheckSettings::direction_deg, "deg",
               "The orientation: the ground's normal (body frame) nearest to (cos a, sin a, 0) on the body's contact "
               "curve; the cylinder's axis is the body's z, so every a is a generator",
@@ -140,17 +140,14 @@ nlohmann::json run_whole_body(const io::Parameters& p)
 {
   namespace wing = study::whole_body;
   const wing::WholeBodyCheckSettings settings = whole_body_schema().bind(p);
-  // Tables go to the log (stderr), so that `--json -` stays JSON alone.
   if (settings.scan_step_deg > 0)
   {
     const auto scan = wing::scan_whole_body_orientations(settings, settings.scan_step_deg);
-    if (fem::world_rank() == 0)
-      spdlog::info("{}", wing::scan_report(settings, scan));
+    print_summary(wing::scan_report(settings, scan));
     return wing::scan_json(settings, scan);
   }
   const wing::WholeBodyCheck check = wing::run_whole_body_check(MPI_COMM_WORLD, settings);
-  if (fem::world_rank() == 0)
-    spdlog::info("{}", wing::report(check));
+  print_summary(wing::report(check));
   return to_json(check);
 }
 } // namespace

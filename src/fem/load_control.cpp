@@ -17,14 +17,16 @@ LineApproach line_contact_approach(double load_n_per_m, double radius_m, double 
 
 LoadControlReport reach_force(PenaltyContact& problem, double target, double first_approach_m,
                               double first_shift_m, double exponent, double rtol, spdlog::level::level_enum progress,
-                              const std::function<double()>& measured_force)
+                              const std::function<double()>& measured_force,
+                              const std::function<void(double)>& on_step)
 {
   problem.start_translated(first_shift_m, first_approach_m);
-  return continue_to_force(problem, target, exponent, rtol, progress, measured_force);
+  return continue_to_force(problem, target, exponent, rtol, progress, measured_force, on_step);
 }
 
 LoadControlReport continue_to_force(PenaltyContact& problem, double target, double exponent, double rtol,
-                                    spdlog::level::level_enum progress, const std::function<double()>& measured_force)
+                                    spdlog::level::level_enum progress, const std::function<double()>& measured_force,
+                                    const std::function<void(double)>& on_step)
 {
   constexpr int max_steps = 20;
   LoadControlReport report;
@@ -47,6 +49,8 @@ LoadControlReport continue_to_force(PenaltyContact& problem, double target, doub
                 report.approach_m, report.force, target, newton.newton_iterations);
     if (!(report.force > 0))
       throw ComputationError(fmt::format("load control: no contact force at approach {:.6e} m", report.approach_m));
+    if (on_step)
+      on_step(report.force);
     if (std::abs(report.force - target) <= rtol * target)
       return report;
     if (step > 1 && report.approach_m != previous_approach && report.force != previous_force)

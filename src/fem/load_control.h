@@ -40,15 +40,18 @@ LineApproach line_contact_approach(double load_n_per_m, double radius_m, double 
 /// logged at `progress` (info for a long solve's progress on rank 0). The
 /// force is the reaction at the top face, or what `measured_force` returns
 /// (a part of the body's load, e.g. the line load at a section).
+/// `on_step` is called after each solve with its force (a field time series).
 LoadControlReport reach_force(PenaltyContact& problem, double target_force, double first_approach_m,
                               double first_shift_m, double exponent, double rtol,
                               spdlog::level::level_enum progress = spdlog::level::debug,
-                              const std::function<double()>& measured_force = {});
+                              const std::function<double()>& measured_force = {},
+                              const std::function<void(double)>& on_step = {});
 
 /// The same from the problem's current state and approach (e.g. a finer
 /// level started from the coarser level's solution,
 /// PenaltyContact::start_interpolated).
 LoadControlReport continue_to_force(PenaltyContact& problem, double target_force, double exponent, double rtol,
                                     spdlog::level::level_enum progress = spdlog::level::debug,
-                                    const std::function<double()>& measured_force = {});
+                                    const std::function<double()>& measured_force = {},
+                                    const std::function<void(double)>& on_step = {});
 } // namespace rollcheck::fem

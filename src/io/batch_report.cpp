@@ -49,10 +49,12 @@ void draw_folder(const fs::path& folder, const fs::path& python, const fs::path&
 }
 
 ReportFiles write_report(const fs::path& store, const fs::path& folder, const fs::path& scripts,
-                         const fs::path& python, const fs::path& validation, const fs::path& audit)
+                         const fs::path& python, const fs::path& validation, const fs::path& audit,
+                         const fs::path& robustness)
 {
   std::vector<std::string> args = {"--store", fs::absolute(store).string(), "--rollcheck", own_executable().string()};
-  for (const auto& [option, path] : {std::pair{"--validation", validation}, std::pair{"--audit", audit}})
+  for (const auto& [option, path] :
+       {std::pair{"--validation", validation}, std::pair{"--audit", audit}, std::pair{"--robustness", robustness}})
     if (!path.empty())
     {
       if (!fs::is_regular_file(path))

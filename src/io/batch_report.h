@@ -40,8 +40,10 @@ void draw_folder(const std::filesystem::path& folder, const std::filesystem::pat
 /// or interpreter; ComputationError (with the script's last output) if the
 /// script fails.
 /// `validation` (the checks JSON of `rollcheck validate`) and `audit` (the JSON
-/// of `rollcheck audit`) are shown first when given.
+/// of `rollcheck audit`) are shown first when given; `robustness` (the JSON of
+/// `rollcheck robustness`) gives the headline's ranges over the modelling choices.
 ReportFiles write_report(const std::filesystem::path& store, const std::filesystem::path& folder,
                          const std::filesystem::path& scripts, const std::filesystem::path& python,
-                         const std::filesystem::path& validation = {}, const std::filesystem::path& audit = {});
+                         const std::filesystem::path& validation = {}, const std::filesystem::path& audit = {},
+                         const std::filesystem::path& robustness = {});
 } // namespace rollcheck::io

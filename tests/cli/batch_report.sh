@@ -21,7 +21,7 @@ md=$tmp/out/report/report.md
 check '[[ -s $md && -s $tmp/out/report/report.html ]]' "report files"
 check 'grep -q "^| oloid | mesh | ok |" "$md"' "cases table"
 check 'grep -q "^### Scene .mesh.: 2 cases$" "$md"' "results table"
-check '[[ $(grep -c "not drawn" "$md") -eq 5 ]]' "the five plots are not all named as not drawn"
+check '[[ $(grep -c "This plot is not drawn" "$md") -eq 5 ]]' "the five plots are not all named as not drawn"
 check 'grep -q "</html>" "$tmp/out/report/report.html"' "html"
 "$bin" report --from "$tmp/out/results.h5" > /dev/null 2>&1
 check '! ls -A "$tmp/out" | grep -q "^\.report"' "a re-run left temporary report folders"

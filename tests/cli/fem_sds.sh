@@ -77,8 +77,8 @@ expect_input_error "samples_per_loop" fem-sds --body cylinder --samples 1
 expect_input_error "tolerance" fem-sds --body cylinder --tolerance 0
 expect_input_error "end_margin" fem-sds --body cylinder --end-margin 0.3
 expect_input_error "normal_load_n" fem-sds --body cylinder --load nan
-expect_input_error "mesh_file" fem-sds --mesh "$tmp/none.obj"
-expect_input_error "sphere" fem-sds --body sphere
+expect_input_error "unknown option '--mesh'" fem-sds --mesh "$tmp/none.obj"
+expect_input_error "sphere not in" fem-sds --body sphere
 expect_input_error "slab_orientations" fem-sds --body cylinder --slab-check -1
 expect_input_error "load-rule" fem-sds --body cylinder --load-rule quasi
 expect_input_error "uniform_rate" fem-sds --body cylinder --time-law uniform_rate

@@ -30,10 +30,10 @@ expect 2 "interior-angle" -- "$bin" flat-rim --interior-angle 120 --json "$tmp/s
 expect 2 "edge-radius" -- "$bin" flat-rim --edge-radius -1 --json "$tmp/negative.json"
 expect 2 "end-angle" -- "$bin" flat-rim --end-angle 140 --json "$tmp/steep_end.json"
 expect 2 "no-such-folder" -- "$bin" flat-rim --json "$tmp/no-such-folder/out.json"
-expect 2 "body 'sphere' is not the hull of two circles" -- "$bin" flat-rim --body sphere --json "$tmp/sphere.json"
+expect 2 "sphere not in" -- "$bin" flat-rim --body sphere --json "$tmp/sphere.json"
 expect 2 "square" -- "$bin" flat-rim --body cylinder --json "$tmp/cylinder.json"
 expect 2 "whole-ruling" -- "$bin" flat-rim --interior-angle 170 --whole-ruling --json "$tmp/whole_straight.json"
-expect 2 "mesh_file" -- "$bin" flat-rim --mesh "$here/meshes/reference/oloid_reference.obj" --json "$tmp/mesh.json"
+expect 2 "unknown option '--mesh'" -- "$bin" flat-rim --mesh "$here/meshes/reference/oloid_reference.obj" --json "$tmp/mesh.json"
 check '[[ ! -e $tmp/steep.json && ! -e $tmp/negative.json && ! -e $tmp/steep_end.json && ! -e $tmp/sphere.json
          && ! -e $tmp/cylinder.json && ! -e $tmp/mesh.json && ! -e $tmp/whole_straight.json ]]' \
   "a refused run left no output"

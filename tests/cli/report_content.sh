@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The content of the report (postprocess/make_report.py, docs/guide/report.md) of a
 # small store (a mesh case and the axisymmetric Hertz case): the verdicts come
-# first, a failed validation check is marked failed, the numbers in a caption
+# first after the findings, a failed validation check is marked failed, the numbers in a caption
 # are the store's, a single refine level is said not to be a curve, a missing
 # optional input says how to get it, and a key missing from a plot's input or
 # from the validation file is an error naming it. Needs python3-jinja2.
@@ -27,17 +27,18 @@ report() { "$python" "$source/postprocess/make_report.py" --store "$1" --out "$2
 report "$store" "$tmp/r" --validation "$tmp/validation.json" > "$tmp/r.out" 2>&1
 check '[[ $? -eq 0 ]]' "report with --validation: exit code ($(tail -3 "$tmp/r.out"))"
 md=$tmp/r/report.md; html=$tmp/r/report.html
-check '[[ $(grep -m1 "^## " "$md") == "## 1. Verdicts" ]]' "Markdown: the verdicts are not the first section"
+check '[[ $(grep "^## " "$md" | head -2 | tr "\n" /) == "## 1. Findings/## 2. Verdicts/" ]]' \
+  "Markdown: the findings and the verdicts are not the first two sections"
 line() { grep -n -m1 -e "$1" "$2" | cut -d: -f1; }
-check '(( $(line "^| result | case |" "$md") < $(line "^## 2\." "$md") ))' \
-  "Markdown: the check table is not in section 1"
+check '(( $(line "^| result | case |" "$md") < $(line "^## 3\." "$md") ))' \
+  "Markdown: the check table is not in section 2"
 check 'grep -q "^\*\*2 checks: 1 passed, 1 failed\.\*\*" "$md"' "Markdown: check counts"
 check '(( $(line "^| FAIL | hertz_axi | hertz | /p0_error |" "$md") < $(line "^| PASS | oloid |" "$md") ))' \
   "Markdown: the failed check is not marked FAIL and listed first"
 pos() { grep -b -o -m1 -e "$1" "$2" | head -1 | cut -d: -f1; }
 check '(( $(pos "<table class=\"checks\">" "$html") < $(pos "<section id=\"audit\">" "$html") ))' \
   "HTML: the check table is not before the audit"
-check '(( $(pos "<table class=\"checks\">" "$html") < $(pos "<figure" "$html") ))' \
+check '(( $(pos "<table class=\"checks\">" "$html") < $(pos "<section id=\"plots\">" "$html") ))' \
   "HTML: the check table is not before the plots"
 check 'grep -q "<tr class=\"fail\"><td>FAIL</td><td>hertz_axi</td>" "$html"' \
   "HTML: the failed check is not marked fail"

@@ -22,7 +22,7 @@ check_json "the square ends converge below the interior (a free end is softer), 
 check_json "end-aware FEM-SDS is a number with its status, beside the interior's" \
   '(.loop_scores.end_aware[0].fem_sds.value | type) == "number" and (.loop_scores.fem_sds_rulings.value | type) == "number"
    and (.end_aware_status | type) == "string"' "$tmp/cylinder.json"
-refuses rim "--body sphere:is not the hull of two circles" "--body cylinder --end-table-step 0:end_table_step_deg" \
+refuses rim "--body sphere:sphere not in" "--body cylinder --end-table-step 0:end_table_step_deg" \
   "--body cylinder --end-table-radius-step 0.5:end_table_radius_step" \
   "--body cylinder --end-table-acute-step -5:end_table_acute_step_deg" \
   "--body cylinder --block-depth 4:depth_over_edge_radius" "--body cylinder --orientations 0:orientations"

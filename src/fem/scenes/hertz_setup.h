@@ -42,7 +42,7 @@ struct HertzSettings
   std::string petsc_options;
   /// Progress lines (meshing, size, load control) at info level; else at debug (-v).
   bool log_progress = true;
-  /// If set, the fields are written there: one self-contained XDMF file.
+  /// If set, the fields of every load step are written there (fem/write_fields.h), the data in a .h5 beside it.
   std::filesystem::path xdmf_path;
 
   static constexpr double default_penalty_c = 100.0;

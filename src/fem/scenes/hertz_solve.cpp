@@ -11,6 +11,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
+#include <optional>
 #include <set>
 #include <spdlog/spdlog.h>
 #include <sys/resource.h>
@@ -88,7 +89,9 @@ SceneMesh mesh_hertz_scene(MPI_Comm comm, HertzResult& result, spdlog::level::le
 /// the first active set is the Hertz contact; a line contact starts from the
 /// classical approach of a cylinder's centre (line_contact_approach). Both
 /// only start the load control, which corrects them.
-void reach_hertz_load(PenaltyContact& problem, HertzResult& result, spdlog::level::level_enum progress, int rank)
+/// `series` (if any) receives the fields of every load step.
+void reach_hertz_load(PenaltyContact& problem, HertzResult& result, spdlog::level::level_enum progress, int rank,
+                      FieldSeries* series)
 {
   const HertzSettings& setup = result.setup;
   const HertzReference& ref = result.hertz;
@@ -101,8 +104,11 @@ void reach_hertz_load(PenaltyContact& problem, HertzResult& result, spdlog::leve
   if (rank == 0)
     spdlog::log(progress, "hertz {} P{}: load control to {:.6g} {} (Newton iterations with -v)", model_name(setup.model),
                 setup.degree, ref.load, line ? "N/m" : "N");
+  int step = 0;
+  const auto write_step = [&](double) { series->write(recover_nodal_fields(problem), ++step); };
   const LoadControlReport load = reach_force(problem, ref.load, first_approach, edge_height, exponent,
-                                             setup.force_rtol, rank == 0 ? progress : spdlog::level::debug);
+                                             setup.force_rtol, rank == 0 ? progress : spdlog::level::debug, {},
+                                             series ? std::function<void(double)>(write_step) : nullptr);
   result.load_steps = load.load_steps;
   result.newton_iterations = load.newton.newton_iterations;
   result.krylov_iterations = load.newton.krylov_iterations;
@@ -256,7 +262,10 @@ HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
     spdlog::log(progress, "hertz {} P{}: {} cells, {} dofs, h_c = {:.4g} m ({:.3g} per {}), kappa = {:.4g} Pa/m",
                 model_name(setup.model), setup.degree, result.cells, result.dofs, result.grading.contact_size_m,
                 result.elements_across_contact, setup.model == Model::plane_strain ? "b" : "a", kappa);
-  reach_hertz_load(problem, result, progress, rank);
+  std::optional<FieldSeries> series;
+  if (!setup.xdmf_path.empty())
+    series.emplace(comm, setup.xdmf_path);
+  reach_hertz_load(problem, result, progress, rank, series ? &*series : nullptr);
 
   // Post-processing against Hertz, then the fields.
   const auto post_start = Clock::now();
@@ -265,8 +274,8 @@ HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
   measure_contact(gathered.surface, result);
   measure_axis_maxima(gathered.axis, result);
   estimate_errors(result, rank);
-  if (!setup.xdmf_path.empty())
-    write_fields(setup.xdmf_path, fields);
+  if (series)
+    series->close();
   result.postprocess_s = seconds_since(post_start);
 
   record_peak_memory(comm, result);
