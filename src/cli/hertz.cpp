@@ -70,13 +70,15 @@ nlohmann::json run_hertz(const io::Parameters& params)
   const fem::HertzResult result = fem::solve_hertz(MPI_COMM_WORLD, hertz_schema().bind(params));
   const std::string c = result.setup.model == fem::Model::plane_strain ? "b" : "a";
   if (fem::world_rank() == 0)
-    spdlog::info("{} = {:.6e} m ({:+.3f} %), p0 = {:.6e} Pa ({:+.3f} %), F = {:.6g} N, {} dofs, {} Newton its, "
-                 "{:.2f} s",
+    spdlog::info("{} = {:.6e} m ({:+.3f} %), p0 (Hertz-form fit) = {:.6e} Pa ({:+.3f} %), largest nodal p = "
+                 "{:.6e} Pa ({:+.3f} %), profile RMS {:.3f} %, F = {:.6g} N, {} dofs, {} Newton its, {:.2f} s",
                  c, result.contact_size_m,
                  100 * fem::relative_error(result.contact_size_m, result.hertz.contact_size_m),
                  result.peak_pressure_pa,
                  100 * fem::relative_error(result.peak_pressure_pa, result.hertz.peak_pressure_pa),
-                 result.load_reaction * (c == "b" ? result.setup.length_m : 1.0), result.dofs,
+                 result.max_nodal_pressure_pa,
+                 100 * fem::relative_error(result.max_nodal_pressure_pa, result.hertz.peak_pressure_pa),
+                 100 * result.profile_rms_error, result.load_reaction * (c == "b" ? result.setup.length_m : 1.0), result.dofs,
                  result.newton_iterations, result.wall_s);
   return fem::to_json(result);
 }
@@ -99,6 +101,7 @@ nlohmann::json run_hertz_study(const StudyChoice& choice, const io::Parameters& 
     models.push_back(fem::parse_model(name, "option --study-models"));
   const fem::HertzStudy study = fem::run_study(MPI_COMM_WORLD, choice.name,
                                                choice.name == "convergence" ? fem::convergence_study(base, models)
+                                               : choice.name == "pointwise" ? fem::pointwise_study(base)
                                                                             : fem::penalty_study(base, models));
   const std::filesystem::path out = choice.out;
   const std::filesystem::path csv = out / ("hertz_" + choice.name + ".csv");
@@ -133,8 +136,9 @@ void add_hertz_command(CLI::App& app)
   });
   sub->add_option("--study", study.name,
                   "Run a study instead of one case: convergence (refine levels of every model and degree) or "
-                  "penalty (penalty_c from 0.1 to 1000); writes a CSV and a PNG to --out")
-      ->check(CLI::IsMember({"convergence", "penalty"}));
+                  "penalty (penalty_c from 0.1 to 1000) or pointwise (3D cost against the largest nodal pressure's "
+                  "and the profile's errors; --study-models does not apply); writes a CSV and a PNG to --out")
+      ->check(CLI::IsMember({"convergence", "penalty", "pointwise"}));
   sub->add_option("--out", study.out, "Folder for the study's CSV and PNG (default: results/hertz)");
   sub->add_option("--study-models", study.models, "Models the study covers (default: axi plane-strain 3d)")
       ->check(CLI::IsMember({"axi", "plane-strain", "3d"}));

@@ -34,6 +34,25 @@ std::vector<HertzSettings> convergence_study(const HertzSettings& base, const st
   return setups;
 }
 
+std::vector<HertzSettings> pointwise_study(const HertzSettings& base)
+{
+  auto setup = [&](Model model, int degree, int refine) {
+    HertzSettings s = base;
+    s.model = model;
+    s.degree = degree;
+    s.refine = refine;
+    s.contact_element_size_m = 0;
+    s.xdmf_path.clear();
+    return s;
+  };
+  std::vector<HertzSettings> setups{setup(Model::axisymmetric, 1, -1)};
+  for (int refine = 0; refine <= 3; ++refine)
+    setups.push_back(setup(Model::solid, 1, refine));
+  for (int refine = 0; refine <= 1; ++refine)
+    setups.push_back(setup(Model::solid, 2, refine));
+  return setups;
+}
+
 std::vector<HertzSettings> penalty_study(const HertzSettings& base, const std::vector<Model>& models)
 {
   std::vector<HertzSettings> setups;
