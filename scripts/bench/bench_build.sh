@@ -8,9 +8,10 @@
 #   bash scripts/bench/bench_build.sh [JOBS [TARGET...]]
 #   OBJECTS=REGEX bash scripts/bench/bench_build.sh [JOBS]
 # JOBS defaults to 2 (the CI machine's cores); TARGETs default to everything.
-# OBJECTS builds only the object files whose path matches REGEX (and the
-# precompiled headers they use), e.g. 'rollcheck_fem.dir/scenes/': a part
-# of the build, without the libraries it links.
+# OBJECTS builds the object files whose path matches REGEX, e.g.
+# 'rollcheck_fem.dir/scenes/', with what they need first: the precompiled
+# headers they use and, through CMake's order-only dependencies, the
+# libraries their target links (a part of the build, not one folder alone).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
 jobs=${1:-2}
