@@ -34,7 +34,8 @@ import json, math, sys
 j = json.load(open(sys.argv[1]))
 keys = ["a_m", "a_hertz_m", "p0_pa", "p0_hertz_pa", "force_n", "dofs", "newton_its", "wall_s", "krylov_its",
         "cells", "mesh_s", "assembly_s", "solve_s", "peak_memory_mb", "approach_m", "approach_hertz_m",
-        "max_shear_pa", "max_shear_depth_m", "max_von_mises_pa", "max_von_mises_depth_m", "profile", "flags"]
+        "max_shear_pa", "max_shear_depth_m", "max_von_mises_pa", "max_von_mises_depth_m", "profile", "flags",
+        "p0_source", "p_max_nodal_pa", "p_max_nodal_error", "profile_rms_error"]
 missing = [k for k in keys if k not in j]
 assert not missing, f"missing keys {missing}"
 for k, v in j.items():
@@ -42,6 +43,14 @@ for k, v in j.items():
 assert j["model"] == "axi" and j["refine"] == 2
 assert abs(j["force_n"] - 100) < 1e-2, j["force_n"]
 assert len(j["profile"]["r_m"]) == len(j["profile"]["p_pa"]) > 10
+# The pointwise measures beside the fit, recomputed from the profile: its RMS
+# against Hertz's profile, and its largest pressure (at the axis, inside the profile).
+p0 = j["p0_hertz_pa"]
+rows = list(zip(j["profile"]["p_pa"], j["profile"]["p_hertz_pa"]))
+rms = math.sqrt(sum(((p - h) / p0) ** 2 for p, h in rows) / len(rows))
+assert abs(rms - j["profile_rms_error"]) < 1e-12, (rms, j["profile_rms_error"])
+assert max(p for p, _ in rows) == j["p_max_nodal_pa"], j["p_max_nodal_pa"]
+assert abs(j["p_max_nodal_error"] - (j["p_max_nodal_pa"] / p0 - 1)) < 1e-12
 PY
 
 # PETSc options after `--` reach the solver: CG with Jacobi instead of the 2D

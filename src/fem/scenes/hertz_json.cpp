@@ -52,7 +52,11 @@ void add_contact(nlohmann::json& j, const HertzResult& r)
   }
   compared(j, c, "_m", r.contact_size_m, r.hertz.contact_size_m);
   j[c + "_edge_m"] = r.contact_edge_m;
+  // The fitted p0 and the pointwise one side by side: the fit averages the
+  // nodes' scatter, the largest nodal pressure and the profile's RMS show it.
   compared(j, "p0", "_pa", r.peak_pressure_pa, r.hertz.peak_pressure_pa);
+  j["p0_source"] = "least-squares fit of p^2 = p0^2 (1 - s^2 / c^2) to the nodes with at least half the largest "
+                   "nodal pressure";
   j["p_max_nodal_pa"] = r.max_nodal_pressure_pa;
   j["p_max_nodal_error"] = relative_error(r.max_nodal_pressure_pa, r.hertz.peak_pressure_pa);
   j["approach_m"] = r.approach_m;

@@ -10,6 +10,19 @@ namespace rollcheck::fem
 namespace
 {
 int resolved_refine(const HertzSettings& s) { return s.refine >= 0 ? s.refine : default_refine(s.model, s.degree); }
+
+/// The base setup (body, load, solver options) with a study's model, degree
+/// and mesh level, writing no fields.
+HertzSettings study_setup(const HertzSettings& base, Model model, int degree, int refine)
+{
+  HertzSettings s = base;
+  s.model = model;
+  s.degree = degree;
+  s.refine = refine;
+  s.contact_element_size_m = 0;
+  s.xdmf_path.clear();
+  return s;
+}
 } // namespace
 
 std::vector<HertzSettings> convergence_study(const HertzSettings& base, const std::vector<Model>& models)
@@ -21,16 +34,18 @@ std::vector<HertzSettings> convergence_study(const HertzSettings& base, const st
       const bool solid = model == Model::solid;
       const int finest = solid ? (degree == 1 ? 2 : 0) : (degree == 1 ? 6 : 4);
       for (int refine = 0; refine <= finest; ++refine)
-      {
-        HertzSettings s = base;
-        s.model = model;
-        s.degree = degree;
-        s.refine = refine;
-        s.contact_element_size_m = 0;
-        s.xdmf_path.clear();
-        setups.push_back(s);
-      }
+        setups.push_back(study_setup(base, model, degree, refine));
     }
+  return setups;
+}
+
+std::vector<HertzSettings> pointwise_study(const HertzSettings& base)
+{
+  std::vector<HertzSettings> setups{study_setup(base, Model::axisymmetric, 1, -1)};
+  for (int refine = 0; refine <= 3; ++refine)
+    setups.push_back(study_setup(base, Model::solid, 1, refine));
+  for (int refine = 0; refine <= 1; ++refine)
+    setups.push_back(study_setup(base, Model::solid, 2, refine));
   return setups;
 }
 
@@ -40,13 +55,8 @@ std::vector<HertzSettings> penalty_study(const HertzSettings& base, const std::v
   for (Model model : models)
     for (double c : {0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0})
     {
-      HertzSettings s = base;
-      s.model = model;
-      s.degree = 1;
-      s.refine = -1;
-      s.contact_element_size_m = 0;
+      HertzSettings s = study_setup(base, model, 1, -1);
       s.penalty_c = c;
-      s.xdmf_path.clear();
       setups.push_back(s);
     }
   return setups;

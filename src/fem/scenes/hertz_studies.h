@@ -3,7 +3,8 @@
 // - convergence: each model and degree over its refine levels, for the
 //   speed-against-error plot and the choice of default_refine();
 // - penalty: penalty_c from 0.1 to 1000 on each model's default mesh, for
-//   the choice of HertzSettings::default_penalty_c.
+//   the choice of HertzSettings::default_penalty_c;
+// - pointwise: the 3D model's cost against its pointwise errors.
 // A study is a list of setups derived from a base setup (its body, load and
 // solver options), run one after the other into a table of errors and costs.
 #include "fem/scenes/hertz_setup.h"
@@ -20,6 +21,11 @@ namespace rollcheck::fem
 /// 0..6, 2D P2 0..4, 3D P1 0..2, 3D P2 0.
 std::vector<HertzSettings> convergence_study(const HertzSettings& base, const std::vector<Model>& models);
 
+/// Cost against pointwise error (the largest nodal pressure and the
+/// profile's RMS, besides the fitted a and p0): the axisymmetric P1 default
+/// as the reference, then 3D P1 refine 0..3 and 3D P2 refine 0..1.
+std::vector<HertzSettings> pointwise_study(const HertzSettings& base);
+
 /// penalty_c in {0.1, 0.3, 1, 3, 10, 30, 100, 300, 1000}, P1, default mesh.
 std::vector<HertzSettings> penalty_study(const HertzSettings& base, const std::vector<Model>& models);
 
@@ -34,7 +40,7 @@ struct HertzStudyRun
 
 struct HertzStudy
 {
-  std::string name; ///< "convergence" or "penalty"
+  std::string name; ///< "convergence", "penalty" or "pointwise"
   std::vector<HertzStudyRun> runs;
 };
 

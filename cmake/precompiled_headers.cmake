@@ -1,0 +1,85 @@
+# Precompiled headers (ROLLCHECK_PCH, off by default until a clean build
+# measures them: scripts/bench/bench_build.sh): the third-party headers
+# that most translation units parse (the standard library, fmt, spdlog,
+# nlohmann/json, Eigen; in the FEM libraries DOLFINx, PETSc and MPI; in the
+# tests GoogleTest) are parsed once per library instead of once per file.
+# Each library with several files gets its own; the tests, one file each,
+# share one of two (those that link the fem layer and those that do not),
+# built by a stub target with the tests' flags. scripts/bench/bench_build.sh
+# measures a clean build with and without.
+#
+# ccache caches compilations that use a precompiled header only with
+# sloppiness pch_defines and time_macros; the compiler launcher sets them.
+option(ROLLCHECK_PCH "Precompile the common third-party headers" OFF)
+
+set(rollcheck_pch_light
+    <algorithm> <array> <chrono> <cmath> <filesystem> <fstream> <functional> <limits> <map> <memory> <numbers>
+    <optional> <span> <string> <vector> <fmt/format.h> <spdlog/spdlog.h> <nlohmann/json.hpp>)
+set(rollcheck_pch_eigen <Eigen/Core> <Eigen/Geometry>)
+set(rollcheck_pch_fem
+    <mpi.h> <petscksp.h> <dolfinx/common/IndexMap.h> <dolfinx/fem/Constant.h> <dolfinx/fem/DirichletBC.h>
+    <dolfinx/fem/Form.h> <dolfinx/fem/Function.h> <dolfinx/fem/FunctionSpace.h> <dolfinx/fem/assembler.h>
+    <dolfinx/fem/utils.h> <dolfinx/la/Vector.h> <dolfinx/mesh/Mesh.h> <dolfinx/mesh/MeshTags.h>
+    <dolfinx/mesh/utils.h>)
+
+# The launcher with the sloppiness ccache needs to cache compilations with a PCH.
+function(rollcheck_pch_launcher ccache)
+  if(ROLLCHECK_PCH AND ccache)
+    set(launcher ${CMAKE_COMMAND} -E env CCACHE_SLOPPINESS=pch_defines,time_macros ${ccache})
+    set(CMAKE_C_COMPILER_LAUNCHER ${launcher} PARENT_SCOPE)
+    set(CMAKE_CXX_COMPILER_LAUNCHER ${launcher} PARENT_SCOPE)
+  endif()
+endfunction()
+
+# TARGET's C++ files precompile the header groups named after it (light,
+# eigen, fem); C files (the generated forms) are left alone.
+function(rollcheck_precompile target)
+  if(NOT ROLLCHECK_PCH)
+    return()
+  endif()
+  set(headers)
+  foreach(group ${ARGN})
+    list(APPEND headers ${rollcheck_pch_${group}})
+  endforeach()
+  list(TRANSFORM headers REPLACE "^<(.+)>$" "$<$<COMPILE_LANGUAGE:CXX>:<\\1$<ANGLE-R>>")
+  target_precompile_headers(${target} PRIVATE ${headers})
+endfunction()
+
+# The tests' two shared headers: stub targets compiled with the tests' flags
+# (tests/CMakeLists.txt), from which each test reuses one.
+function(rollcheck_test_pch_stubs)
+  if(NOT ROLLCHECK_PCH)
+    return()
+  endif()
+  set(stub ${CMAKE_BINARY_DIR}/rollcheck_pch_stub.cpp)
+  file(WRITE ${stub} "// Stub: the tests' precompiled header is built with this file.\n")
+  foreach(kind light fem)
+    add_library(rollcheck_test_pch_${kind} OBJECT ${stub})
+    target_compile_options(rollcheck_test_pch_${kind} PRIVATE ${ARGN})
+    if(kind STREQUAL fem)
+      target_link_libraries(rollcheck_test_pch_${kind} PRIVATE rollcheck_fem GTest::gtest)
+      rollcheck_precompile(rollcheck_test_pch_${kind} light eigen fem)
+    else()
+      target_link_libraries(rollcheck_test_pch_${kind} PRIVATE rollcheck_geometry GTest::gtest)
+      rollcheck_precompile(rollcheck_test_pch_${kind} light eigen)
+    endif()
+    target_precompile_headers(rollcheck_test_pch_${kind} PRIVATE <gtest/gtest.h>)
+  endforeach()
+endfunction()
+
+# TEST reuses the stub's header of its kind: fem if it links a FEM library.
+function(rollcheck_test_pch test)
+  if(NOT ROLLCHECK_PCH)
+    return()
+  endif()
+  set(kind light)
+  foreach(layer ${ARGN})
+    if(layer MATCHES "^rollcheck_(fem|study_loop_scores|study_rims|study_whole_body)$")
+      set(kind fem)
+    endif()
+  endforeach()
+  if(NOT ARGN OR ARGN STREQUAL "rollcheck_core")
+    return() # without Eigen's include path the header could not be parsed again
+  endif()
+  target_precompile_headers(${test} REUSE_FROM rollcheck_test_pch_${kind})
+endfunction()
