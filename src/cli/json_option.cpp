@@ -1,8 +1,5 @@
 #include "cli/cli.h"
 #include "core/atomic_file.h"
-#include "core/error.h"
-#include <fstream>
-#include <iostream>
 
 namespace rollcheck::cli
 {
@@ -21,15 +18,8 @@ void emit_json(const std::string& path, const nlohmann::json& summary)
   // NaN has no JSON form; nlohmann writes it as null, which would hide a bug.
   const std::string text = summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
   if (path == "-")
-  {
-    std::cout << text << "\n";
-    return;
-  }
-  write_atomically(path, [&](const std::filesystem::path& tmp) {
-    std::ofstream out(tmp);
-    out << text << "\n";
-    if (!out)
-      throw InputError("cannot write JSON to '" + path + "'");
-  });
+    write_stdout(text + "\n", "the JSON summary (--json -)");
+  else
+    write_file_atomically(path, text + "\n");
 }
 } // namespace rollcheck::cli

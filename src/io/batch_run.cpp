@@ -3,7 +3,9 @@
 // batch_coordinator.cpp, the other ranks' and the case processes in
 // batch_jobs.cpp, the messages between ranks in batch_messages.cpp.
 #include "io/batch_run.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/output_manifest.h"
 #include "io/batch_coordinator.h"
 #include "io/batch_jobs.h"
 #include "io/batch_messages.h"
@@ -90,6 +92,8 @@ BatchResult run_batch(const BatchSettings& options, const FindSchema& find_schem
   const auto start = std::chrono::steady_clock::now();
   const batch::StopSignals signals;
   const int rank = batch::world_rank(), ranks = batch::world_size();
+  if (options.out.empty()) // every rank alike, before anything collective
+    throw InputError("batch --out: the folder is an empty path");
   const fs::path out = fs::absolute(options.out).lexically_normal();
   if (options.jobs < 0)
     throw InputError(fmt::format("batch -j {}: the number of workers must be at least 1 (0: one per CPU)",
@@ -108,13 +112,20 @@ BatchResult run_batch(const BatchSettings& options, const FindSchema& find_schem
   {
     try
     {
-      if (fs::exists(out) && !fs::is_directory(out))
-        throw InputError(fmt::format("batch --out '{}': exists and is not a folder", out.string()));
       // The cases are read and checked before the folder is touched: a batch
       // refused for bad input leaves nothing behind, no folder, no lock.
       plan = batch::make_plan(options, out, find_schema);
+      std::vector<std::string> hashes;
+      for (const batch::Job& job : plan.jobs)
+        hashes.push_back(job.hash);
+      const std::vector<std::string> outputs = batch_outputs(hashes);
+      const std::string origin = fmt::format("batch --out '{}'", out.string());
+      check_output_location(options.out, origin);
+      check_output_entries(out, outputs, origin);
       fs::create_directories(out / "cases");
       lock.emplace(out);
+      check_output_entries(out, outputs, origin); // again, now that no other batch writes here
+      claim_outputs(out, outputs);
       remove_stale_work(out);
     }
     catch (const std::filesystem::filesystem_error& e)
@@ -158,7 +169,7 @@ BatchResult run_batch(const BatchSettings& options, const FindSchema& find_schem
   result.outcomes = std::move(plan.outcomes);
   result.interrupted = batch::stop_signal() != 0;
   result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.store = out / "results.h5";
+  result.store = out / results_store_file;
   const std::vector<StoreEntry> entries = batch::store_entries(result.outcomes, out);
   write_results_store(result.store, entries,
                       {{"created_utc", utc_now()},
@@ -166,6 +177,7 @@ BatchResult run_batch(const BatchSettings& options, const FindSchema& find_schem
                        {"n_ok", result.count(CaseStatus::ok) + result.count(CaseStatus::skipped)},
                        {"n_failed", result.count(CaseStatus::failed)},
                        {"n_not_run", result.count(CaseStatus::interrupted) + result.count(CaseStatus::not_run)},
+                       {"interrupted", result.interrupted},
                        {"batch_wall_s", result.wall_s}});
   return result;
 }
