@@ -19,19 +19,30 @@ namespace
 {
 constexpr const char* validation_name = "validation.json";
 
+/// A validation.json of a rollcheck before manifests: its three keys.
+bool written_by_validate(const std::filesystem::path& path)
+{
+  std::ifstream in(path);
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  return j.is_object() && j.size() == 3 && j.contains("checks") && j.contains("passed") && j.contains("failed");
+}
+
 /// What validate writes besides the batch's own, checked before any case
 /// runs: validation.json (replaced only if rollcheck wrote it), report/ (a
 /// folder output) and the audit JSON the report reads.
 void check_validate_outputs(const std::filesystem::path& out, const std::string& audit_json)
 {
+  if (!audit_json.empty())
+  {
+    std::ifstream in(audit_json);
+    if (!nlohmann::json::parse(in, nullptr, false).is_object())
+      throw InputError(fmt::format("validate --audit '{}': not the JSON of `rollcheck audit --json`", audit_json));
+  }
   check_output_location(out, "validate --out");
-  check_output_entries(out, {validation_name}, "validate --out");
-  check_output_folder(out / "report", "validate --out");
-  if (audit_json.empty())
-    return;
-  std::ifstream in(audit_json);
-  if (!nlohmann::json::parse(in, nullptr, false).is_object())
-    throw InputError(fmt::format("validate --audit '{}': not the JSON of `rollcheck audit --json`", audit_json));
+  if (!written_by_validate(out / validation_name))
+    check_output_entries(out, {validation_name}, "validate --out");
+  if (std::filesystem::is_directory(out))
+    check_output_folder(out / "report", "validate --out");
 }
 } // namespace
 
