@@ -121,10 +121,14 @@ BatchResult run_batch(const BatchSettings& options, const FindSchema& find_schem
       const std::vector<std::string> outputs = batch_outputs(hashes);
       const std::string origin = fmt::format("batch --out '{}'", out.string());
       check_output_location(options.out, origin);
-      // A store of a rollcheck before manifests is recognised by its layout.
+      // What a rollcheck before manifests wrote is recognised by its content:
+      // the store by its layout, a case's folder by the record of its hash.
       std::vector<std::string> unknown = outputs;
       if (is_results_store(out / results_store_file))
         std::erase(unknown, results_store_file);
+      for (const std::string& hash : hashes)
+        if (read_case_record(out, hash))
+          std::erase(unknown, (fs::path("cases") / hash).generic_string());
       check_output_entries(out, unknown, origin);
       fs::create_directories(out / "cases");
       lock.emplace(out);
