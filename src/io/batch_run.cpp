@@ -116,8 +116,9 @@ BatchResult run_batch(const BatchSettings& options, const FindSchema& find_schem
       // refused for bad input leaves nothing behind, no folder, no lock.
       plan = batch::make_plan(options, out, find_schema);
       std::vector<std::string> hashes;
-      for (const batch::Job& job : plan.jobs)
-        hashes.push_back(job.hash);
+      for (const CaseOutcome& o : plan.outcomes) // skipped cases too: their folders are the store's
+        if (!o.hash.empty() && std::find(hashes.begin(), hashes.end(), o.hash) == hashes.end())
+          hashes.push_back(o.hash);
       const std::vector<std::string> outputs = batch_outputs(hashes);
       const std::string origin = fmt::format("batch --out '{}'", out.string());
       check_output_location(options.out, origin);
