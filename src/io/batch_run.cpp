@@ -42,6 +42,33 @@ int default_workers()
   MPI_Comm_free(&node);
   return std::max(1, bound < node_cpus ? bound : node_cpus / ranks_on_node);
 }
+/// Rank 0, before any case runs: what the batch writes in `out` is checked
+/// against the manifest rule (core/output_manifest.h), then the folder is
+/// created, locked (into `lock`) and the outputs listed; a killed batch's
+/// work is removed.
+void prepare_output(const fs::path& out, const batch::Plan& plan, std::optional<OutputLock>& lock)
+{
+  std::vector<std::string> hashes;
+  for (const CaseOutcome& o : plan.outcomes) // skipped cases too: their folders are the store's
+    if (!o.hash.empty() && std::find(hashes.begin(), hashes.end(), o.hash) == hashes.end())
+      hashes.push_back(o.hash);
+  const std::vector<std::string> outputs = batch_outputs(hashes);
+  // What a rollcheck before manifests wrote is recognised by its content:
+  // the store by its layout, a case's folder by the record of its hash.
+  std::vector<std::string> unknown = outputs;
+  if (is_results_store(out / results_store_file))
+    std::erase(unknown, results_store_file);
+  for (const std::string& hash : hashes)
+    if (read_case_record(out, hash))
+      std::erase(unknown, (fs::path("cases") / hash).generic_string());
+  const std::string origin = fmt::format("batch --out '{}'", out.string());
+  check_output_entries(out, unknown, origin);
+  fs::create_directories(out / "cases");
+  lock.emplace(out);
+  check_output_entries(out, unknown, origin); // again, now that no other batch writes here
+  claim_outputs(out, outputs);
+  remove_stale_work(out);
+}
 } // namespace
 
 std::string status_name(CaseStatus status)
@@ -115,27 +142,8 @@ BatchResult run_batch(const BatchSettings& options, const FindSchema& find_schem
       // The cases are read and checked before the folder is touched: a batch
       // refused for bad input leaves nothing behind, no folder, no lock.
       plan = batch::make_plan(options, out, find_schema);
-      std::vector<std::string> hashes;
-      for (const CaseOutcome& o : plan.outcomes) // skipped cases too: their folders are the store's
-        if (!o.hash.empty() && std::find(hashes.begin(), hashes.end(), o.hash) == hashes.end())
-          hashes.push_back(o.hash);
-      const std::vector<std::string> outputs = batch_outputs(hashes);
-      const std::string origin = fmt::format("batch --out '{}'", out.string());
-      check_output_location(options.out, origin);
-      // What a rollcheck before manifests wrote is recognised by its content:
-      // the store by its layout, a case's folder by the record of its hash.
-      std::vector<std::string> unknown = outputs;
-      if (is_results_store(out / results_store_file))
-        std::erase(unknown, results_store_file);
-      for (const std::string& hash : hashes)
-        if (read_case_record(out, hash))
-          std::erase(unknown, (fs::path("cases") / hash).generic_string());
-      check_output_entries(out, unknown, origin);
-      fs::create_directories(out / "cases");
-      lock.emplace(out);
-      check_output_entries(out, unknown, origin); // again, now that no other batch writes here
-      claim_outputs(out, outputs);
-      remove_stale_work(out);
+      check_output_location(options.out, fmt::format("batch --out '{}'", out.string()));
+      prepare_output(out, plan, lock);
     }
     catch (const std::filesystem::filesystem_error& e)
     {
