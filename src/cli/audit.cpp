@@ -12,8 +12,6 @@
 #include "audit/runner.h"
 #include <filesystem>
 #include <fmt/format.h>
-#include <fstream>
-#include <iostream>
 
 namespace rollcheck::cli
 {
@@ -32,16 +30,6 @@ fs::path reference_meshes(const std::string& folder)
                                    "meshes/reference)",
                                    meshes.string(), name));
   return meshes;
-}
-
-void write_markdown(const std::string& path, const std::string& markdown)
-{
-  write_atomically(path, [&](const fs::path& tmp) {
-    std::ofstream out(tmp);
-    out << markdown;
-    if (!out)
-      throw InputError("option --markdown: cannot write '" + path + "'");
-  });
 }
 } // namespace
 
@@ -65,12 +53,16 @@ void add_audit_command(CLI::App& app)
     if (json_path == "-" && markdown_path == "-")
       throw InputError("options --json and --markdown: only one of them can be '-' (stdout)");
     settings.reference_meshes = reference_meshes(meshes);
+    // Refused before the commands run, not after them.
+    for (const auto& [path, option] : {std::pair{json_path, "option --json"}, std::pair{markdown_path, "option --markdown"}})
+      if (!path.empty() && path != "-")
+        check_output_file(path, option);
     const audit::AuditTable table = audit::run_audit(settings, process::own_executable());
     const std::string markdown = audit::to_markdown(table);
     if (!markdown_path.empty() && markdown_path != "-")
-      write_markdown(markdown_path, markdown);
+      write_file_atomically(markdown_path, markdown);
     if (markdown_path == "-" || json_path != "-")
-      std::cout << markdown;
+      write_stdout(markdown, "the claim table");
     emit_json(json_path, to_json(table));
     return 0;
   });

@@ -126,6 +126,29 @@ using SceneRun = std::function<nlohmann::json(const io::Parameters&)>;
 CLI::App* add_scene_command(CLI::App& app, const std::string& name, const std::string& description,
                             const io::Schema& schema, SceneRun run, SceneRun command = {});
 
+/// How an output parameter of a scene is written: a file (its folder must
+/// exist) or a folder output (--out: created; new, empty or rollcheck's,
+/// core/output_manifest.h).
+enum class OutputKind
+{
+  file,
+  folder
+};
+struct SceneOutput
+{
+  std::string key; ///< the parameter holding the path ("" in it: no output)
+  OutputKind kind;
+};
+
+/// Declares the output parameters of the scene of `schema`: they are checked
+/// (core/atomic_file.h) before the scene computes anything, whether it runs
+/// from its options or from a case file.
+void declare_outputs(const io::Schema& schema, std::vector<SceneOutput> outputs);
+
+/// InputError naming the option and the path for a declared output of
+/// `params` that cannot be written; called before the scene runs.
+void check_scene_outputs(const io::Schema& schema, const io::Parameters& params);
+
 /// Runs a batch of case files against the registered scenes (the batch and
 /// validate subcommands); the coordinator prints its table.
 io::BatchResult run_scene_batch(const io::BatchSettings& options);

@@ -7,7 +7,7 @@
 #include "cli/scenes.h"
 #include "io/batch_report.h"
 #include "study/loop_scores/fem_sds.h"
-#include <fstream>
+#include "core/atomic_file.h"
 #include <mpi.h>
 #include <spdlog/spdlog.h>
 
@@ -121,12 +121,16 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
   if (const std::string& out = params.text("out"); !out.empty())
     io::draw_folder(out, params.text("python"), io::default_scripts_folder() / "plot_fem_orientations.py", {},
                     "plot.log", [&](const std::filesystem::path& folder) {
-                      std::ofstream(folder / "fem_sds.json") << j.dump(1) << "\n";
-                      std::ofstream(folder / "table.md") << study::loop_scores::markdown_table(result);
+                      write_file_atomically(folder / "fem_sds.json", j.dump(1) + "\n");
+                      write_file_atomically(folder / "table.md", study::loop_scores::markdown_table(result));
                     });
   return j;
 }
 } // namespace
 
-void add_fem_sds_command(CLI::App& app) { add_scene_command(app, fem_sds_schema(), run_fem_sds); }
+void add_fem_sds_command(CLI::App& app)
+{
+  add_scene_command(app, fem_sds_schema(), run_fem_sds);
+  declare_outputs(fem_sds_schema().schema(), {{"out", OutputKind::folder}});
+}
 } // namespace rollcheck::cli

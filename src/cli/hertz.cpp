@@ -101,28 +101,30 @@ struct StudyChoice
 nlohmann::json run_hertz_study(const StudyChoice& choice, const io::Parameters& params)
 {
   const fem::HertzSettings base = hertz_schema().bind(params);
+  const std::filesystem::path out = choice.out;
+  const std::filesystem::path csv = out / ("hertz_" + choice.name + ".csv");
+  const std::filesystem::path png = out / ("hertz_" + choice.name + ".png");
+  const std::filesystem::path plot_log = out / ("hertz_" + choice.name + "_plot.log");
+  // --out is a shared folder (every study's files): the study replaces only
+  // its own, and only if rollcheck wrote them (core/output_manifest.h).
+  const std::vector<std::string> written = {csv.filename().string(), png.filename().string(), plot_log.filename().string()};
+  check_output_location(out, "option --out");
+  check_output_entries(out, written, "option --out");
   std::vector<fem::Model> models;
   for (const std::string& name : choice.models)
     models.push_back(fem::parse_model(name, "option --study-models"));
   const fem::HertzStudy study = fem::run_study(MPI_COMM_WORLD, choice.name,
                                                choice.name == "convergence" ? fem::convergence_study(base, models)
                                                                             : fem::penalty_study(base, models));
-  const std::filesystem::path out = choice.out;
-  const std::filesystem::path csv = out / ("hertz_" + choice.name + ".csv");
-  const std::filesystem::path png = out / ("hertz_" + choice.name + ".png");
   if (fem::world_rank() == 0)
   {
-    std::filesystem::create_directories(out);
-    write_atomically(csv, [&](const std::filesystem::path& tmp) {
-      std::ofstream file(tmp);
-      file << fem::to_csv(study);
-      if (!file)
-        throw InputError(fmt::format("option --out: cannot write '{}'", csv.string()));
-    });
+    std::filesystem::create_directory(out);
+    claim_outputs(out, written);
+    write_file_atomically(csv, fem::to_csv(study));
     // The script runs in `out`: it gets absolute paths.
     io::run_script("/usr/bin/python3", io::default_scripts_folder() / "hertz_study_plot.py",
                    {std::filesystem::absolute(csv).string(), std::filesystem::absolute(png).string()}, out,
-                   std::filesystem::absolute(out / ("hertz_" + choice.name + "_plot.log")));
+                   std::filesystem::absolute(plot_log));
     spdlog::info("study {}: {} and {}", choice.name, csv.string(), png.string());
   }
   nlohmann::json summary = fem::to_json(study);
@@ -138,6 +140,7 @@ void add_hertz_command(CLI::App& app)
   CLI::App* sub = add_scene_command(app, hertz_schema(), run_hertz, [](const io::Parameters& params) {
     return study.name.empty() ? run_hertz(params) : run_hertz_study(study, params);
   });
+  declare_outputs(hertz_schema().schema(), {{"xdmf", OutputKind::file}});
   sub->add_option("--study", study.name,
                   "Run a study instead of one case: convergence (refine levels of every model and degree) or "
                   "penalty (penalty_c from 0.1 to 1000); writes a CSV and a PNG to --out")

@@ -43,28 +43,16 @@ void emit_json(const std::string& path, const nlohmann::json& summary)
   // NaN has no JSON form; nlohmann writes it as null, which would hide a bug.
   const std::string text = summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
   if (path == "-")
-  {
-    std::cout << text << "\n";
-    return;
-  }
-  write_atomically(path, [&](const std::filesystem::path& tmp) {
-    std::ofstream out(tmp);
-    out << text << "\n";
-    if (!out)
-      throw InputError("cannot write JSON to '" + path + "'");
-  });
+    write_stdout(text + "\n", "the JSON summary (--json -)");
+  else
+    write_file_atomically(path, text + "\n");
 }
 
-void write_text_output(const std::string& path, const std::string& text, const std::string& origin)
+void write_text_output(const std::string& path, const std::string& text)
 {
   if (path.empty() || process_rank() != 0)
     return;
-  write_atomically(path, [&](const std::filesystem::path& tmp) {
-    std::ofstream out(tmp);
-    out << text;
-    if (!out)
-      throw ComputationError(origin + ": cannot write '" + path + "'");
-  });
+  write_file_atomically(path, text);
 }
 
 CommandResult run_with_markdown(const std::string& markdown_path,
@@ -73,7 +61,7 @@ CommandResult run_with_markdown(const std::string& markdown_path,
   if (!markdown_path.empty())
     check_output_file(markdown_path, "option --markdown");
   auto [summary, table] = run();
-  write_text_output(markdown_path, table, "option --markdown");
+  write_text_output(markdown_path, table);
   if (process_rank() != 0)
     return {nlohmann::json(), 0};
   spdlog::info("\n{}", table);

@@ -72,5 +72,9 @@ nlohmann::json run_mesh(const io::Parameters& params)
 }
 } // namespace
 
-void add_mesh_command(CLI::App& app) { add_scene_command(app, mesh_schema(), run_mesh); }
+void add_mesh_command(CLI::App& app)
+{
+  add_scene_command(app, mesh_schema(), run_mesh);
+  declare_outputs(mesh_schema().schema(), {{"out", OutputKind::file}});
+}
 } // namespace rollcheck::cli

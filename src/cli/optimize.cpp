@@ -8,10 +8,10 @@
 #include "cli/cli.h"
 #include "cli/optimize_runs.h"
 #include "cli/scenes.h"
+#include "core/atomic_file.h"
 #include "geometry/write_mesh.h"
 #include "io/batch_report.h"
 #include "study/optimize/optimize_family.h"
-#include <fstream>
 #include <memory>
 #include <spdlog/spdlog.h>
 
@@ -142,7 +142,7 @@ nlohmann::json run_optimize(const io::Parameters& params)
   if (!out.empty())
     io::draw_folder(out, params.text("python"), io::default_scripts_folder() / "plot_optimize.py", {}, "plot.log",
                     [&](const std::filesystem::path& folder) {
-                      std::ofstream(folder / "optimize.json") << j.dump(1) << "\n";
+                      write_file_atomically(folder / "optimize.json", j.dump(1) + "\n");
                       runs->save(folder / evaluations_file);
                       // Both bodies as they were scored, for the plot's side-by-side view.
                       const geometry::BodySpec start =
@@ -156,5 +156,9 @@ nlohmann::json run_optimize(const io::Parameters& params)
 }
 } // namespace
 
-void add_optimize_command(CLI::App& app) { add_scene_command(app, optimize_schema(), run_optimize); }
+void add_optimize_command(CLI::App& app)
+{
+  add_scene_command(app, optimize_schema(), run_optimize);
+  declare_outputs(optimize_schema().schema(), {{"out", OutputKind::folder}});
+}
 } // namespace rollcheck::cli

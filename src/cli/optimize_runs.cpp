@@ -40,6 +40,9 @@ std::shared_ptr<io::EvaluationCache> keep_runs(const std::filesystem::path& out,
   const bool saves = process_rank() == 0;
   if (saves && !std::filesystem::exists(out / output_marker))
     write_folder_atomically(out, "option --out", [](const std::filesystem::path&) {});
+  // Saved during the search, before the folder's final write lists it.
+  if (saves)
+    claim_outputs(out, {evaluations_file});
   auto cache = std::make_shared<io::EvaluationCache>(out / evaluations_file, run_settings_hash(params));
   if (cache->size() > 0)
     spdlog::info("optimize: {} finished runs of the same settings in {}", cache->size(),

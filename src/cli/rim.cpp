@@ -183,5 +183,9 @@ nlohmann::json run_rim(const io::Parameters& p)
 }
 } // namespace
 
-void add_rim_command(CLI::App& app) { add_scene_command(app, rim_schema(), run_rim); }
+void add_rim_command(CLI::App& app)
+{
+  add_scene_command(app, rim_schema(), run_rim);
+  declare_outputs(rim_schema().schema(), {{"xdmf", OutputKind::file}});
+}
 } // namespace rollcheck::cli

@@ -139,8 +139,10 @@ CLI::App* add_scene_command(CLI::App& app, const std::string& name, const std::s
   // The scene's options need the subcommand, which add_command creates; they
   // exist before any runner is called.
   auto options = std::make_shared<std::unique_ptr<io::SchemaOptions>>();
-  CLI::App* sub = add_command(app, name, description, [options, run = command ? command : run] {
-    return CommandResult{run((*options)->apply())};
+  CLI::App* sub = add_command(app, name, description, [options, &schema, run = command ? command : run] {
+    const io::Parameters params = (*options)->apply();
+    check_scene_outputs(schema, params);
+    return CommandResult{run(params)};
   });
   *options = std::make_unique<io::SchemaOptions>(sub, schema);
   return sub;

@@ -153,5 +153,9 @@ nlohmann::json run_search(const io::Parameters& params)
 }
 } // namespace
 
-void add_search_command(CLI::App& app) { add_scene_command(app, search_schema(), run_search); }
+void add_search_command(CLI::App& app)
+{
+  add_scene_command(app, search_schema(), run_search);
+  declare_outputs(search_schema().schema(), {{"hdf5", OutputKind::file}, {"out", OutputKind::folder}});
+}
 } // namespace rollcheck::cli

@@ -7,7 +7,6 @@
 #include "core/atomic_file.h"
 #include "io/batch_report.h"
 #include "study/loop_scores/fem_sds_family.h"
-#include <fstream>
 #include <mpi.h>
 #include <spdlog/spdlog.h>
 
@@ -16,8 +15,6 @@ namespace rollcheck::cli
 nlohmann::json run_family_scores(oracle::SearchGrid grid, int points, double radius_m, const std::string& out,
                                  const std::string& python)
 {
-  if (!out.empty())
-    check_output_folder(out, "option --out");
   study::loop_scores::FamilySettings settings;
   settings.grid = grid;
   settings.points = points;
@@ -30,8 +27,8 @@ nlohmann::json run_family_scores(oracle::SearchGrid grid, int points, double rad
   if (!out.empty())
     io::draw_folder(out, python, io::default_scripts_folder() / "plot_fem_family.py", {}, "plot.log",
                     [&](const std::filesystem::path& folder) {
-                      std::ofstream(folder / "family.json") << j.dump(1) << "\n";
-                      std::ofstream(folder / "table.md") << study::loop_scores::markdown_table(result);
+                      write_file_atomically(folder / "family.json", j.dump(1) + "\n");
+                      write_file_atomically(folder / "table.md", study::loop_scores::markdown_table(result));
                     });
   return j;
 }

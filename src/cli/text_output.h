@@ -8,9 +8,9 @@
 
 namespace rollcheck::cli
 {
-/// Writes `text` to `path` when it is non-empty, atomically, on rank 0;
-/// ComputationError naming `origin` if it cannot.
-void write_text_output(const std::string& path, const std::string& text, const std::string& origin);
+/// Writes `text` to `path` when it is non-empty, atomically, on rank 0
+/// (core/atomic_file.h: a failed write names the file and keeps the old one).
+void write_text_output(const std::string& path, const std::string& text);
 
 /// A study that also makes a Markdown table: checks `markdown_path` (option
 /// --markdown; none when empty) before `run`, then logs the table on rank 0,

@@ -8,12 +8,44 @@
 #include "core/data_folder.h"
 #include "io/batch_report.h"
 #include "io/batch_validation.h"
-#include <fstream>
+#include "core/error.h"
 #include "rollcheck_version.h"
+#include <fstream>
 #include <fmt/format.h>
 
 namespace rollcheck::cli
 {
+namespace
+{
+constexpr const char* validation_name = "validation.json";
+
+/// A validation.json of a rollcheck before manifests: its three keys.
+bool written_by_validate(const std::filesystem::path& path)
+{
+  std::ifstream in(path);
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  return j.is_object() && j.size() == 3 && j.contains("checks") && j.contains("passed") && j.contains("failed");
+}
+
+/// What validate writes besides the batch's own, checked before any case
+/// runs: validation.json (replaced only if rollcheck wrote it), report/ (a
+/// folder output) and the audit JSON the report reads.
+void check_validate_outputs(const std::filesystem::path& out, const std::string& audit_json)
+{
+  if (!audit_json.empty())
+  {
+    std::ifstream in(audit_json);
+    if (!nlohmann::json::parse(in, nullptr, false).is_object())
+      throw InputError(fmt::format("validate --audit '{}': not the JSON of `rollcheck audit --json`", audit_json));
+  }
+  check_output_location(out, "validate --out");
+  if (!written_by_validate(out / validation_name))
+    check_output_entries(out, {validation_name}, "validate --out");
+  if (std::filesystem::is_directory(out))
+    check_output_folder(out / "report", "validate --out");
+}
+} // namespace
+
 void add_validate_command(CLI::App& app)
 {
   static std::string audit_json, robustness_json;
@@ -29,6 +61,7 @@ void add_validate_command(CLI::App& app)
   }();
   CLI::App* sub = add_command(
       app, "validate", "The main job: run the default cases (cases/default) as a batch and write the report", [] {
+        check_validate_outputs(options.out, audit_json);
         const io::BatchResult batch = run_scene_batch(options);
         if (!batch.coordinator)
           return CommandResult{};
@@ -37,8 +70,9 @@ void add_validate_command(CLI::App& app)
         const std::vector<io::CaseVerdict> verdicts = io::check_batch(batch, options.out);
         const nlohmann::json validation = io::to_json(verdicts);
         summary["validation"] = validation;
-        const std::filesystem::path validation_file = options.out / "validation.json";
-        write_atomically(validation_file, [&](const std::filesystem::path& tmp) { std::ofstream(tmp) << validation.dump(2); });
+        const std::filesystem::path validation_file = options.out / validation_name;
+        claim_outputs(options.out, {validation_name});
+        write_file_atomically(validation_file, validation.dump(2) + "\n");
         print_summary(fmt::format("\n{}\n{} checks passed, {} failed\n", io::verdict_table(verdicts),
                                   validation["passed"].get<int>(), validation["failed"].get<int>()));
         if (!batch.interrupted)

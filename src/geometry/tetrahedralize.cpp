@@ -1,6 +1,7 @@
 #include "geometry/tetrahedralize.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "geometry/write_mesh.h"
 #include <cmath>
 #include <fmt/format.h>
 #include <gmsh.h>
@@ -45,7 +46,10 @@ VolumeMeshInfo write_tetrahedral_mesh(const SurfaceMesh& surface, double mesh_si
     info.tetrahedra = tets.size();
     if (info.tetrahedra == 0)
       throw ComputationError("gmsh produced no tetrahedra");
-    write_atomically(path, [&](const std::filesystem::path& tmp) { gmsh::write(tmp.string()); });
+    write_atomically(path, [&](const std::filesystem::path& tmp) {
+      gmsh::write(tmp.string());
+      check_gmsh_file_complete(tmp, path);
+    });
   }
   catch (const std::exception&)
   {

@@ -3,6 +3,7 @@
 #include "io/case_hash.h"
 #include <algorithm>
 #include <fmt/format.h>
+#include <fstream>
 #include <glob.h>
 #include <set>
 
@@ -33,21 +34,31 @@ std::vector<fs::path> glob_matches(const std::string& pattern)
   return paths;
 }
 
-/// Relative paths that name existing files, made absolute (see resolve_batch_cases).
-void anchor_input_paths(const Schema& schema, nlohmann::json& parameters, std::vector<std::string>& overrides)
+/// Relative paths that name existing files, made absolute (see
+/// resolve_batch_cases); each such file with the SHA-256 of its content.
+nlohmann::json anchor_input_paths(const Schema& schema, nlohmann::json& parameters, std::vector<std::string>& overrides)
 {
+  nlohmann::json inputs = nlohmann::json::object();
   for (const Parameter& p : schema.parameters)
   {
     if (!std::holds_alternative<std::string>(p.default_value) || !p.choices.empty())
       continue;
     const std::string value = parameters.at(p.key).get<std::string>();
     std::error_code ec;
-    if (value.empty() || fs::path(value).is_absolute() || !fs::is_regular_file(value, ec))
+    if (value.empty() || !fs::is_regular_file(value, ec))
       continue;
+    std::ifstream in(value, std::ios::binary);
+    const std::string content{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (in.bad())
+      throw InputError(fmt::format("{} '{}': cannot be read", p.key, value));
     const std::string absolute = fs::absolute(value).lexically_normal().string();
+    inputs[p.key] = {{"file", absolute}, {"sha256", sha256_hex(content)}};
+    if (fs::path(value).is_absolute())
+      continue;
     parameters[p.key] = absolute;
     overrides.push_back(fmt::format("{}={}", p.key, absolute));
   }
+  return inputs;
 }
 
 BatchCase resolve_one(const fs::path& file, const FindSchema& find_schema)
@@ -62,14 +73,14 @@ BatchCase resolve_one(const fs::path& file, const FindSchema& find_schema)
     const Schema& schema = find_schema(case_file.kind, origin);
     c.kind = case_file.kind;
     c.parameters = resolve_case(case_file, schema, {}, origin).to_json();
-    anchor_input_paths(schema, c.parameters, c.overrides);
+    c.inputs = anchor_input_paths(schema, c.parameters, c.overrides);
     if (const auto ranks = c.parameters.find("mpi_ranks"); ranks != c.parameters.end() && ranks->is_number_integer())
     {
       c.mpi_ranks = ranks->get<int>();
       if (c.mpi_ranks < 1)
         throw InputError(fmt::format("{}: 'mpi_ranks' must be at least 1, got {}", origin, c.mpi_ranks));
     }
-    c.hash = case_hash(c.parameters);
+    c.hash = case_hash({{"parameters", c.parameters}, {"inputs", c.inputs}});
   }
   catch (const std::exception& e)
   {

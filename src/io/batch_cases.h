@@ -22,7 +22,8 @@ struct BatchCase
   std::string kind;                   ///< the scene
   nlohmann::json parameters;          ///< resolved: every default filled in
   std::vector<std::string> overrides; ///< `--set key=value` for the case's process
-  std::string hash;                   ///< case_hash(parameters)
+  nlohmann::json inputs;              ///< {key: {file, sha256}} of each parameter naming an existing file
+  std::string hash;                   ///< case_hash of the parameters and the inputs' content
   int mpi_ranks = 1;                  ///< processes the case asks for (its `mpi_ranks` key, if the scene has one)
   std::string error;                  ///< why the case cannot run; empty if it can
 };
@@ -36,9 +37,11 @@ std::vector<std::filesystem::path> expand_case_arguments(const std::vector<std::
 /// Reads and resolves each case file. A file that cannot be read or resolved
 /// is kept with its message in `error`: the batch reports it as failed and
 /// runs the others. A string parameter (without fixed choices) that names an
-/// existing file relative to the current folder is made absolute, since the
-/// case runs in a folder of its own; an output path that does not exist yet
-/// stays relative and so lands in the case's folder.
+/// existing file is an input: its content is hashed with the parameters (a
+/// changed mesh file is a new case), and a path relative to the current
+/// folder is made absolute, since the case runs in a folder of its own; an
+/// output path that does not exist yet stays relative and so lands in the
+/// case's folder.
 std::vector<BatchCase> resolve_batch_cases(const std::vector<std::filesystem::path>& files,
                                            const FindSchema& find_schema);
 } // namespace rollcheck::io

@@ -34,8 +34,8 @@ Plan make_plan(const BatchSettings& options, const fs::path& out, const FindSche
     {
       auto& sharing = plan.cases_of_hash[c.hash];
       if (sharing.empty())
-        plan.jobs.push_back({plan.jobs.size(), c.name, c.kind, c.file.string(), c.hash, c.parameters, c.overrides,
-                             c.mpi_ranks});
+        plan.jobs.push_back({plan.jobs.size(), c.name, c.kind, c.file.string(), c.hash, c.parameters, c.inputs,
+                             c.overrides, c.mpi_ranks});
       sharing.push_back(i);
     }
     plan.outcomes.push_back(outcome);
@@ -48,9 +48,12 @@ std::vector<StoreEntry> store_entries(const std::vector<CaseOutcome>& outcomes, 
   std::vector<StoreEntry> entries;
   for (const CaseOutcome& o : outcomes)
   {
-    if (o.status == CaseStatus::interrupted || o.status == CaseStatus::not_run)
-      continue;
+    // A case the interrupt stopped keeps the result an earlier batch left
+    // for its hash (`--force` replaces it only when the new one is done).
     std::optional<nlohmann::json> record = o.hash.empty() ? std::nullopt : read_case_record(out, o.hash);
+    const bool stopped = o.status == CaseStatus::interrupted || o.status == CaseStatus::not_run;
+    if (stopped && !record)
+      continue;
     if (!record)
       record = nlohmann::json{{"status", "failed"}, {"message", o.message}, {"case_file", o.file}, {"kind", o.kind}};
     (*record)["case_file"] = o.file; // the file of this name; a shared result may have come from another
@@ -107,7 +110,7 @@ void coordinate(Plan& plan, const std::vector<int>& slots, const BatchSettings& 
         break;
       pending.pop_front();
       busy[r] += job.mpi_ranks;
-      progress.started(ranks > 1 ? fmt::format("{} (rank {})", job.name, r) : job.name);
+      progress.started(job.name); // the name finished() erases
       if (r > 0)
       {
         send_text(r, tag_assign, job_json(job).dump());

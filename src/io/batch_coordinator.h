@@ -34,6 +34,8 @@ void coordinate(Plan& plan, const std::vector<int>& slots, const BatchSettings& 
                 const std::filesystem::path& out, BatchProgress& progress);
 
 /// The store's entries: every case with a record on disk (or, for a case
-/// that could not be resolved, its message), in the batch's order.
+/// that could not be resolved, its message), in the batch's order. A case an
+/// interrupt stopped is in it with its earlier record, if one exists, so that
+/// an interrupted `--force` never leaves a store of the finished cases alone.
 std::vector<StoreEntry> store_entries(const std::vector<CaseOutcome>& outcomes, const std::filesystem::path& out);
 } // namespace rollcheck::io::batch

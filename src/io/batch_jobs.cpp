@@ -82,7 +82,8 @@ CaseOutcome finish_job(RunningJob& running, const ExitStatus& status, const fs::
                            {"hash", job.hash},             {"rollcheck_version", ROLLCHECK_VERSION},
                            {"mpi_ranks", job.mpi_ranks},   {"wall_s", outcome.wall_s},
                            {"finished_utc", utc_now()},    {"rank", world_rank()},
-                           {"exit", status.describe()},    {"parameters", job.parameters}};
+                           {"exit", status.describe()},    {"parameters", job.parameters},
+                           {"inputs", job.inputs}};
   char host[256] = {};
   gethostname(host, sizeof host - 1);
   record["host"] = host;
@@ -117,14 +118,15 @@ CaseOutcome finish_job(RunningJob& running, const ExitStatus& status, const fs::
 
 nlohmann::json job_json(const Job& j)
 {
-  return {{"index", j.index}, {"name", j.name},       {"kind", j.kind},           {"file", j.file},
-          {"hash", j.hash},   {"parameters", j.parameters}, {"overrides", j.overrides}, {"mpi_ranks", j.mpi_ranks}};
+  return {{"index", j.index},         {"name", j.name},     {"kind", j.kind},
+          {"file", j.file},           {"hash", j.hash},     {"parameters", j.parameters},
+          {"inputs", j.inputs},       {"overrides", j.overrides}, {"mpi_ranks", j.mpi_ranks}};
 }
 
 Job job_from_json(const nlohmann::json& j)
 {
   return {j.at("index"), j.at("name"), j.at("kind"), j.at("file"), j.at("hash"), j.at("parameters"),
-          j.at("overrides"), j.at("mpi_ranks")};
+          j.at("inputs"), j.at("overrides"), j.at("mpi_ranks")};
 }
 
 RunningJob start_job(const Job& job, const fs::path& out)

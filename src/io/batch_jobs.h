@@ -22,6 +22,7 @@ struct Job
   std::size_t index;
   std::string name, kind, file, hash;
   nlohmann::json parameters;
+  nlohmann::json inputs; ///< the input files and their SHA-256 (BatchCase::inputs)
   std::vector<std::string> overrides;
   int mpi_ranks;
 };

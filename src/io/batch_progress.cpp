@@ -30,13 +30,14 @@ std::string clock_text(double seconds)
 }
 
 BatchProgress::BatchProgress(std::size_t to_run, std::FILE* stream)
-    : stream_(stream), interactive_(isatty(fileno(stream))), to_run_(to_run), start_(std::chrono::steady_clock::now())
+    : stream_(stream), interactive_(isatty(fileno(stream))), to_run_(to_run), start_(std::chrono::steady_clock::now()),
+      printed_(start_)
 {
 }
 
 void BatchProgress::started(const std::string& name)
 {
-  running_.insert(name);
+  running_[name] = std::chrono::steady_clock::now();
   draw();
 }
 
@@ -58,13 +59,27 @@ void BatchProgress::note(const std::string& line)
   clear();
   fmt::print(stream_, "{}\n", line);
   std::fflush(stream_);
+  printed_ = std::chrono::steady_clock::now();
   draw();
 }
 
 void BatchProgress::refresh()
 {
-  if (interactive_ && std::chrono::steady_clock::now() - drawn_ > std::chrono::milliseconds(250))
+  const auto now = std::chrono::steady_clock::now();
+  if (interactive_ && now - drawn_ > std::chrono::milliseconds(250))
     draw();
+  if (!interactive_ && !running_.empty() && now - printed_ >= progress_interval)
+    note(fmt::format("[{}/{}] running     {}; {} elapsed", done_, to_run_, running_cases(now),
+                     clock_text(std::chrono::duration<double>(now - start_).count())));
+}
+
+std::string BatchProgress::running_cases(std::chrono::steady_clock::time_point now) const
+{
+  std::string text;
+  for (const auto& [name, started] : running_)
+    text += fmt::format("{}{} ({})", text.empty() ? "" : ", ", name,
+                        clock_text(std::chrono::duration<double>(now - started).count()));
+  return text.empty() ? "-" : text;
 }
 
 void BatchProgress::close()
@@ -89,13 +104,10 @@ void BatchProgress::draw()
   const std::string eta = done_ == 0 ? "--" : clock_text(elapsed / done_ * (to_run_ - done_));
   constexpr int bar_width = 24;
   const int filled = static_cast<int>(bar_width * done_ / to_run_);
-  std::string running;
-  for (const std::string& name : running_)
-    running += (running.empty() ? "" : ", ") + name;
   std::string line = fmt::format("[{}{}] {}/{}{}  {} elapsed, ETA {}  running: {}", std::string(filled, '#'),
                                  std::string(bar_width - filled, '.'), done_, to_run_,
                                  failed_ ? fmt::format(" ({} failed)", failed_) : "", clock_text(elapsed), eta,
-                                 running.empty() ? "-" : running);
+                                 running_cases(drawn_));
   const std::size_t width = static_cast<std::size_t>(terminal_width(stream_) - 1);
   if (line.size() > width)
     line = line.substr(0, width - 3) + "...";

@@ -1,6 +1,7 @@
 #include "io/batch_record.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/output_manifest.h"
 #include <chrono>
 #include <cstring>
 #include <fcntl.h>
@@ -65,12 +66,7 @@ nlohmann::json commit_case_work(const fs::path& out, const std::string& hash, nl
       fs::remove(path);
   }
   record["files"] = files;
-  write_atomically(work / record_file, [&](const fs::path& tmp) {
-    std::ofstream file(tmp);
-    file << record.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
-    if (!file)
-      throw ComputationError(fmt::format("batch: cannot write '{}'", (work / record_file).string()));
-  });
+  write_file_atomically(work / record_file, record.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
   // A rename cannot replace a non-empty folder: the old result steps aside
   // first. Killed in between, the next batch finds no result and recomputes.
   const fs::path target = case_folder(out, hash), old = replaced_folder(out, hash);
@@ -90,21 +86,25 @@ void discard_case_work(const fs::path& out, const std::string& hash)
 
 void remove_stale_work(const fs::path& out)
 {
-  const fs::path cases = out / "cases";
+  const std::optional<OutputManifest> manifest = read_output_manifest(out);
+  if (!manifest)
+    return;
   std::vector<fs::path> stale;
-  if (fs::is_directory(cases))
-    for (const fs::directory_entry& entry : fs::directory_iterator(cases))
-    {
-      const std::string ext = entry.path().extension().string();
-      if (ext == ".part" || ext == ".old" || entry.path().filename().string().starts_with("."))
-        stale.push_back(entry.path());
-    }
-  // Temporary files of write_atomically start with a dot and hold ".tmp".
-  for (const fs::directory_entry& entry : fs::directory_iterator(out))
-    if (const std::string name = entry.path().filename().string(); name.starts_with(".") && name.find(".tmp") != std::string::npos)
-      stale.push_back(entry.path());
+  for (const fs::path folder : {fs::path(), fs::path("cases")})
+    if (fs::is_directory(out / folder))
+      for (const fs::directory_entry& entry : fs::directory_iterator(out / folder))
+        if (const fs::path inside = folder / entry.path().filename(); is_stale_work(*manifest, inside))
+          stale.push_back(entry.path());
   for (const fs::path& path : stale)
     fs::remove_all(path);
+}
+
+std::vector<std::string> batch_outputs(const std::vector<std::string>& hashes)
+{
+  std::vector<std::string> entries{results_store_file};
+  for (const std::string& hash : hashes)
+    entries.push_back((fs::path("cases") / hash).generic_string());
+  return entries;
 }
 
 OutputLock::OutputLock(const fs::path& out)

@@ -9,6 +9,11 @@
 //                            by one rename when the case ends, and is deleted
 //                            by the next batch if this one was killed
 //   DIR/.lock                held (flock) while a batch writes to DIR
+//   DIR/results.h5           the results store of the last batch
+//   DIR/.rollcheck-output    the manifest (core/output_manifest.h): results.h5
+//                            and cases/<hash> of every case a batch ran; a
+//                            batch removes or replaces nothing else, so the
+//                            folder may hold the user's files
 //
 // A record (result.json) is a JSON object: status ("ok" or "failed"), message
 // (failed), case_file, kind, hash, rollcheck_version, mpi_ranks, wall_s,
@@ -18,6 +23,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rollcheck::io
 {
@@ -38,9 +44,20 @@ nlohmann::json commit_case_work(const std::filesystem::path& out, const std::str
 
 void discard_case_work(const std::filesystem::path& out, const std::string& hash);
 
-/// Deletes what a killed batch left: work folders, half-replaced results and
-/// temporary files of the store.
+/// The results store's name in DIR.
+inline constexpr const char* results_store_file = "results.h5";
+
+/// Deletes what a killed batch left, as the manifest of `out` tells it
+/// (core/output_manifest.h is_stale_work): work folders and half-replaced
+/// results of listed cases, temporary files of the store.
 void remove_stale_work(const std::filesystem::path& out);
+
+/// What a batch of these case hashes writes in DIR: results.h5 and
+/// cases/<hash> each. Checked against the manifest before anything is
+/// computed (check_output_entries) and listed in it before anything is
+/// written (claim_outputs), so that the work of a batch killed at any moment
+/// is recognised as rollcheck's and nothing else is ever touched.
+std::vector<std::string> batch_outputs(const std::vector<std::string>& hashes);
 
 /// An exclusive lock on DIR for the lifetime of the object; InputError if
 /// another batch holds it.

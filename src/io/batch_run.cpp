@@ -3,7 +3,9 @@
 // batch_coordinator.cpp, the other ranks' and the case processes in
 // batch_jobs.cpp, the messages between ranks in batch_messages.cpp.
 #include "io/batch_run.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/output_manifest.h"
 #include "io/batch_coordinator.h"
 #include "io/batch_jobs.h"
 #include "io/batch_messages.h"
@@ -39,6 +41,33 @@ int default_workers()
   MPI_Comm_size(node, &ranks_on_node);
   MPI_Comm_free(&node);
   return std::max(1, bound < node_cpus ? bound : node_cpus / ranks_on_node);
+}
+/// Rank 0, before any case runs: what the batch writes in `out` is checked
+/// against the manifest rule (core/output_manifest.h), then the folder is
+/// created, locked (into `lock`) and the outputs listed; a killed batch's
+/// work is removed.
+void prepare_output(const fs::path& out, const batch::Plan& plan, std::optional<OutputLock>& lock)
+{
+  std::vector<std::string> hashes;
+  for (const CaseOutcome& o : plan.outcomes) // skipped cases too: their folders are the store's
+    if (!o.hash.empty() && std::find(hashes.begin(), hashes.end(), o.hash) == hashes.end())
+      hashes.push_back(o.hash);
+  const std::vector<std::string> outputs = batch_outputs(hashes);
+  // What a rollcheck before manifests wrote is recognised by its content:
+  // the store by its layout, a case's folder by the record of its hash.
+  std::vector<std::string> unknown = outputs;
+  if (is_results_store(out / results_store_file))
+    std::erase(unknown, results_store_file);
+  for (const std::string& hash : hashes)
+    if (read_case_record(out, hash))
+      std::erase(unknown, (fs::path("cases") / hash).generic_string());
+  const std::string origin = fmt::format("batch --out '{}'", out.string());
+  check_output_entries(out, unknown, origin);
+  fs::create_directories(out / "cases");
+  lock.emplace(out);
+  check_output_entries(out, unknown, origin); // again, now that no other batch writes here
+  claim_outputs(out, outputs);
+  remove_stale_work(out);
 }
 } // namespace
 
@@ -90,6 +119,8 @@ BatchResult run_batch(const BatchSettings& options, const FindSchema& find_schem
   const auto start = std::chrono::steady_clock::now();
   const batch::StopSignals signals;
   const int rank = batch::world_rank(), ranks = batch::world_size();
+  if (options.out.empty()) // every rank alike, before anything collective
+    throw InputError("batch --out: the folder is an empty path");
   const fs::path out = fs::absolute(options.out).lexically_normal();
   if (options.jobs < 0)
     throw InputError(fmt::format("batch -j {}: the number of workers must be at least 1 (0: one per CPU)",
@@ -108,14 +139,11 @@ BatchResult run_batch(const BatchSettings& options, const FindSchema& find_schem
   {
     try
     {
-      if (fs::exists(out) && !fs::is_directory(out))
-        throw InputError(fmt::format("batch --out '{}': exists and is not a folder", out.string()));
       // The cases are read and checked before the folder is touched: a batch
       // refused for bad input leaves nothing behind, no folder, no lock.
       plan = batch::make_plan(options, out, find_schema);
-      fs::create_directories(out / "cases");
-      lock.emplace(out);
-      remove_stale_work(out);
+      check_output_location(options.out, fmt::format("batch --out '{}'", out.string()));
+      prepare_output(out, plan, lock);
     }
     catch (const std::filesystem::filesystem_error& e)
     {
@@ -158,7 +186,7 @@ BatchResult run_batch(const BatchSettings& options, const FindSchema& find_schem
   result.outcomes = std::move(plan.outcomes);
   result.interrupted = batch::stop_signal() != 0;
   result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.store = out / "results.h5";
+  result.store = out / results_store_file;
   const std::vector<StoreEntry> entries = batch::store_entries(result.outcomes, out);
   write_results_store(result.store, entries,
                       {{"created_utc", utc_now()},
@@ -166,6 +194,7 @@ BatchResult run_batch(const BatchSettings& options, const FindSchema& find_schem
                        {"n_ok", result.count(CaseStatus::ok) + result.count(CaseStatus::skipped)},
                        {"n_failed", result.count(CaseStatus::failed)},
                        {"n_not_run", result.count(CaseStatus::interrupted) + result.count(CaseStatus::not_run)},
+                       {"interrupted", result.interrupted},
                        {"batch_wall_s", result.wall_s}});
   return result;
 }

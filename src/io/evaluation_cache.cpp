@@ -61,11 +61,6 @@ void EvaluationCache::save(const std::filesystem::path& file) const
   for (const auto& [run, value] : values_)
     runs.push_back({{"x", run.first}, {"replicate", run.second}, {"value", json_number(value)}});
   const nlohmann::json j = {{"layout", layout}, {"settings_hash", settings_hash_}, {"runs", runs}};
-  write_atomically(file, [&](const std::filesystem::path& tmp) {
-    std::ofstream out(tmp);
-    out << j.dump() << "\n";
-    if (!out)
-      throw ComputationError(fmt::format("evaluation cache: cannot write '{}'", file.string()));
-  });
+  write_file_atomically(file, j.dump() + "\n");
 }
 } // namespace rollcheck::io

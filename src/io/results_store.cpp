@@ -328,4 +328,29 @@ void write_results_store(const std::filesystem::path& path, const std::vector<St
     check(H5Fflush(file, H5F_SCOPE_GLOBAL), fmt::format("flush '{}'", tmp.string()));
   });
 }
+
+bool is_results_store(const std::filesystem::path& path)
+{
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec) || H5Fis_hdf5(path.c_str()) <= 0)
+    return false;
+  try
+  {
+    const Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open " + path.string());
+    if (H5Aexists(file, "layout") <= 0)
+      return false;
+    const Handle attribute(H5Aopen(file, "layout", H5P_DEFAULT), H5Aclose, "open the layout attribute");
+    const Handle type = string_type();
+    char* text = nullptr;
+    check(H5Aread(attribute, type, &text), "read the layout attribute");
+    const bool ours = text && std::string_view(text).starts_with("rollcheck-results-");
+    H5free_memory(text);
+    return ours;
+  }
+  catch (const ComputationError&)
+  {
+    return false;
+  }
+}
 } // namespace rollcheck::io

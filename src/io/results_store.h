@@ -49,4 +49,9 @@ struct StoreEntry
 /// ComputationError if HDF5 fails.
 void write_results_store(const std::filesystem::path& path, const std::vector<StoreEntry>& entries,
                          const nlohmann::json& attributes);
+
+/// Whether `path` is an HDF5 file whose root attribute `layout` names this
+/// store ("rollcheck-results-..."): a store written by rollcheck, also one
+/// from before output folders had a manifest (core/output_manifest.h).
+bool is_results_store(const std::filesystem::path& path);
 } // namespace rollcheck::io

@@ -2,6 +2,8 @@
 // the resolution of each case file against its scene's schema.
 #include "core/error.h"
 #include "io/batch_cases.h"
+#include "io/case_hash.h"
+#include <fmt/format.h>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -134,4 +136,20 @@ TEST(BatchCases, ExistingRelativeInputPathsBecomeAbsoluteOutputsStayRelative)
   EXPECT_EQ(cases[0].parameters.at("mesh_file"), (dir / "body.obj").string());
   EXPECT_EQ(cases[0].overrides, std::vector<std::string>{"mesh_file=" + (dir / "body.obj").string()});
   EXPECT_EQ(cases[0].parameters.at("out"), "fields.xdmf");
+}
+
+TEST(BatchCases, TheHashCoversTheContentOfEveryInputFile)
+{
+  // Issue 58 (3): a case whose mesh file was replaced kept its old result.
+  const fs::path dir = fresh_folder("input_content");
+  write(dir / "body.obj", "v 0 0 0\n");
+  write(dir / "case.toml", fmt::format("[scene]\nkind = \"demo\"\nmesh_file = \"{}\"\n", (dir / "body.obj").string()));
+  const io::BatchCase before = io::resolve_batch_cases({dir / "case.toml"}, find_demo).at(0);
+  ASSERT_TRUE(before.error.empty()) << before.error;
+  EXPECT_EQ(before.inputs.at("mesh_file").at("sha256"), io::sha256_hex("v 0 0 0\n"));
+  EXPECT_EQ(io::resolve_batch_cases({dir / "case.toml"}, find_demo).at(0).hash, before.hash);
+  write(dir / "body.obj", "v 0 0 1\n"); // the same path and parameters, another mesh
+  const io::BatchCase after = io::resolve_batch_cases({dir / "case.toml"}, find_demo).at(0);
+  EXPECT_EQ(after.parameters, before.parameters);
+  EXPECT_NE(after.hash, before.hash);
 }

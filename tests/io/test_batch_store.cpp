@@ -157,6 +157,21 @@ TEST(ResultsStore, AFailedWriteLeavesThePreviousStoreAndNoTemporaryFile)
   EXPECT_FALSE(fs::exists(dir / "missing"));
 }
 
+TEST(ResultsStore, IsRecognisedByItsLayoutAlone)
+{
+  // A batch adopts a results.h5 only if rollcheck wrote it (batch_run.cpp).
+  const fs::path dir = fresh_folder("recognised");
+  io::write_results_store(dir / "results.h5", {{"a", sample_record()}}, nlohmann::json::object());
+  EXPECT_TRUE(io::is_results_store(dir / "results.h5"));
+  std::ofstream(dir / "text.h5") << "the user's notes";
+  EXPECT_FALSE(io::is_results_store(dir / "text.h5"));
+  const hid_t other = H5Fcreate((dir / "other.h5").c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  ASSERT_GE(other, 0);
+  H5Fclose(other);
+  EXPECT_FALSE(io::is_results_store(dir / "other.h5"));
+  EXPECT_FALSE(io::is_results_store(dir / "missing.h5"));
+}
+
 TEST(ResultsStore, ReportDrawsTheReferenceCodesOwnConvergenceAndPerFaceContacts)
 {
   // The published code's outputs (tests/data/reference) as two oracle-like
