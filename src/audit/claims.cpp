@@ -21,6 +21,15 @@ std::vector<ClaimCell> cells_in(const std::vector<std::string>& modes, const Per
 
 ClaimCell not_built(const std::string& mode) { return {mode, {}, {}}; }
 
+TruthSource truth_in(std::string mode, std::string note) { return {std::move(mode), {}, {}, {}, std::move(note)}; }
+
+TruthSource truth_over_choices(const ClaimCommands& c, std::vector<Ranking> rankings, std::string note)
+{
+  return {{}, c.robustness, rules::rankings_over_choices(std::move(rankings)), {}, std::move(note)};
+}
+
+TruthSource truth_untestable(std::string reason) { return {{}, {}, {}, std::move(reason)}; }
+
 std::vector<ClaimCell> joined(std::initializer_list<std::vector<ClaimCell>> lists)
 {
   std::vector<ClaimCell> cells;
