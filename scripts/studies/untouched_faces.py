@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Where the faces the preprint's oracle never touches lie on its body.
 
-Reads a surface mesh (OBJ) and the JSON of `rollcheck oracle --mesh MESH
+Reads a triangle surface mesh (meshio) and the JSON of `rollcheck oracle --mesh MESH
 --paper-compat --per-face --json PATH` on it, and prints the untouched faces'
 count and area, the range of each coordinate over their vertices, and the
 count and area of the mesh's faces in the plane x = X that holds them all, when
@@ -12,25 +12,15 @@ Usage: scripts/studies/untouched_faces.py MESH.obj ORACLE.json
 import json
 import sys
 
+import meshio
 import numpy as np
-
-
-def read_obj(path):
-    vertices, faces = [], []
-    with open(path, encoding="utf-8") as f:
-        for line in f:
-            words = line.split()
-            if words and words[0] == "v":
-                vertices.append([float(x) for x in words[1:4]])
-            elif words and words[0] == "f":
-                faces.append([int(w.split("/")[0]) - 1 for w in words[1:4]])
-    return np.array(vertices), np.array(faces)
 
 
 def main(argv):
     if len(argv) != 3:
         sys.exit(f"usage: {argv[0]} MESH.obj ORACLE.json")
-    vertices, faces = read_obj(argv[1])
+    mesh = meshio.read(argv[1])
+    vertices, faces = mesh.points, mesh.get_cells_type("triangle")
     with open(argv[2], encoding="utf-8") as f:
         per_face = json.load(f)["per_face"]
     counts, areas = np.array(per_face["contact_counts"]), np.array(per_face["face_areas_m2"])

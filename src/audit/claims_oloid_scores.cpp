@@ -13,7 +13,7 @@ std::vector<Claim> oloid_score_claims(const ClaimCommands& c)
       {"oloid_cds", "Oloid CDS (rigid-body oracle, 600 samples)", "8.2e-7",
        at_claim_tolerance("holds when the oloid's CDS is within {tolerance} of 8.2e-7. Real rolling: U is a different "
                           "score than CDS, so the comparison is of discrimination, not values: holds when the oloid's "
-                          "U is below the cylinder's."),
+                          "U_inf is below the cylinder's."),
        "Matched resolution does not apply to an absolute value: CDS falls with the face count (see the N claim).",
        joined({cells_in(oloid_modes, c.oloid, rules::value_within("/cds", 8.2e-7, claim_tolerance)),
                {{mode::rolling, c.rolling_pair, rules::oloid_more_uniform()}}}),

@@ -32,7 +32,7 @@ std::vector<Claim> ratio_claims(const ClaimCommands& c)
       {"cds_ratio", "CDS cylinder / oloid", times(58),
        at_claim_tolerance("holds when cylinder cds / oloid cds is within {tolerance} of 58. Real rolling: U is a "
                           "different score than CDS, so the comparison is of discrimination, not values: holds when "
-                          "cylinder U / oloid U exceeds 1 (the oloid the more uniform), whatever its size."),
+                          "cylinder U_inf / oloid U_inf exceeds 1 (the oloid the more uniform), whatever its size."),
        "",
        joined({ratio_cells(c, {{"/cds", 58}}),
                {{mode::rolling, c.rolling_pair, rules::uniformity_ratio_above_one()}}}),

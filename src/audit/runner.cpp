@@ -100,7 +100,14 @@ std::vector<CommandOutput> run_commands(const std::vector<CommandArgs>& commands
   auto worker = [&] {
     for (std::size_t i = next++; i < commands.size(); i = next++)
     {
-      errors[i] = run_one(commands[i], rollcheck, scratch.path / (command_id(i) + ".json"), outputs[i]);
+      try
+      {
+        errors[i] = run_one(commands[i], rollcheck, scratch.path / (command_id(i) + ".json"), outputs[i]);
+      }
+      catch (const std::exception& e) // a child that cannot start: reported with the others, not thrown from a thread
+      {
+        errors[i] = e.what();
+      }
       std::lock_guard lock(log_mutex);
       spdlog::info("audit [{}/{}] {}", ++done, commands.size(), command_line(commands[i]));
     }
