@@ -14,5 +14,5 @@ out=${2:-$here/results/audit}
 mkdir -p "$out"
 "$bin" audit --json "$out/audit.json" --markdown "$out/audit.md" "${@:3}"
 /usr/bin/python3 "$here/scripts/studies/readme_findings.py" "$out/audit.json" "$here/README.md"
-/usr/bin/python3 "$here/scripts/studies/audit_page.py" "$out/audit.json" "$out/audit.md" "$here" "$("$bin" --version | head -n 1)" \
+/usr/bin/python3 "$here/scripts/studies/audit_page.py" "$out/audit.json" "$out/audit.md" "$here" "$("$bin" --version | head -n 1 | cut -d " " -f 1-2)" \
   "$here/docs/results/audit.md"
