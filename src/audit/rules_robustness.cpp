@@ -7,7 +7,9 @@
 #include "audit/cell_values.h"
 #include "audit/rules.h"
 #include "core/error.h"
+#include <algorithm>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <map>
 
 namespace rollcheck::audit::rules
@@ -29,6 +31,18 @@ std::string comparison_pointer(const CommandOutput& robustness, const Ranking& r
       fmt::format("`{}` has no comparison '{}' at score '{}'", robustness.command(), r.comparison, r.score));
 }
 
+/// "a, b, c" as its items.
+std::vector<std::string> split_list(const std::string& list)
+{
+  std::vector<std::string> items;
+  for (std::size_t start = 0, comma; start < list.size(); start = comma + 2)
+  {
+    comma = std::min(list.find(", ", start), list.size());
+    items.push_back(list.substr(start, comma - start));
+  }
+  return items;
+}
+
 /// How many of the other choices of `flip` differ from their defaults.
 int distance_from_defaults(const nlohmann::json& flip)
 {
@@ -41,18 +55,23 @@ int distance_from_defaults(const nlohmann::json& flip)
   return distance;
 }
 
-/// The flip nearest the default choices: "rolling_energy 0.361 (contact_width
-/// hertz, end_margin 0.05, load_rule dynamic)" or "load_rule static -> dynamic (...)".
+/// Whether the flip is placed at a value (a rolling energy), not between two named choices.
+bool placed(const nlohmann::json& flip) { return flip.contains("value") && flip.at("value").is_number(); }
+
+/// The flip nearest the default choices, one placed at a value first among
+/// equals: "rolling_energy 0.361 (contact_width hertz, end_margin 0.05,
+/// load_rule dynamic)" or "load_rule static -> dynamic (...)".
 std::string nearest_flip(const nlohmann::json& flips)
 {
   const nlohmann::json* nearest = nullptr;
+  auto rank = [](const nlohmann::json& f) { return 2 * distance_from_defaults(f) + !placed(f); };
   for (const nlohmann::json& flip : flips)
-    if (!nearest || distance_from_defaults(flip) < distance_from_defaults(*nearest))
+    if (!nearest || rank(flip) < rank(*nearest))
       nearest = &flip;
   if (!nearest)
     return "";
   const nlohmann::json& f = *nearest;
-  std::string where = f.contains("value") && f.at("value").is_number()
+  std::string where = placed(f)
                           ? fmt::format("{} {:.3g}", f.at("choice").get<std::string>(), f.at("value").get<double>())
                           : fmt::format("{} {} -> {}", f.at("choice").get<std::string>(),
                                         f.at("from").get<std::string>(), f.at("to").get<std::string>());
@@ -69,7 +88,7 @@ Rule rankings_over_choices(std::vector<Ranking> rankings)
     CommandOutput& robustness = *out[0];
     CellResult cell{"", true};
     bool refuted = false; // one ranking robust against the claim refutes it
-    std::string depends;
+    std::vector<std::string> depends; // the choices any ranking flips on, each once
     for (const Ranking& r : rankings)
     {
       const std::string c = comparison_pointer(robustness, r);
@@ -87,7 +106,9 @@ Rule rankings_over_choices(std::vector<Ranking> rankings)
       else if (verdict.rfind("depends on ", 0) == 0)
       {
         cell.holds = false;
-        append_listed(depends, verdict.substr(std::string("depends on ").size()), "; ");
+        for (const std::string& choice : split_list(verdict.substr(std::string("depends on ").size())))
+          if (std::find(depends.begin(), depends.end(), choice) == depends.end())
+            depends.push_back(choice);
         text += fmt::format(", {}, flips at {}", verdict, nearest_flip(robustness.at(c + "/flips")));
       }
       else
@@ -97,7 +118,7 @@ Rule rankings_over_choices(std::vector<Ranking> rankings)
     }
     cell.holds = cell.holds && !refuted;
     if (!refuted && !depends.empty())
-      cell.undecided = "depends on " + depends;
+      cell.undecided = fmt::format("depends on {}", fmt::join(depends, ", "));
     return cell;
   };
 }

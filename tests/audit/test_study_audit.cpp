@@ -434,6 +434,21 @@ TEST(Audit, RankingsOverTheChoicesHoldFailOrDepend)
                                "dynamic)"),
             std::string::npos)
       << depends.value;
+  // Two dependent rankings name each choice once; a flip placed at an energy comes before one between load rules.
+  CommandOutput two(command_line({"robustness", "2"}),
+                    json{{"comparisons",
+                          {comparison("a vs b", "x", "depends on rolling_energy, load_rule", 0.5, 2.0,
+                                      {{{"choice", "load_rule"}, {"from", "dynamic"}, {"to", "uniform"},
+                                        {"settings", {{"contact_width", "hertz"}, {"end_margin", "0.05"},
+                                                      {"rolling_energy", "0.1"}}}},
+                                       flip("dynamic", 0.361)}),
+                           comparison("a vs b", "y", "depends on load_rule, end_margin", 0.5, 2.0,
+                                      {flip("static", 1)})}}});
+  const CellResult both = rules::rankings_over_choices({{"a vs b", "x", true}, {"a vs b", "y", true}})({&two});
+  EXPECT_EQ(both.undecided, "depends on rolling_energy, load_rule, end_margin");
+  EXPECT_NE(both.value.find("x a / b 0.5 ... 2, depends on rolling_energy, load_rule, flips at rolling_energy 0.361"),
+            std::string::npos)
+      << both.value;
   // One ranking robust against the claim refutes it, whatever the others.
   const CellResult refuted = rules::rankings_over_choices({{"a vs b", "d", true}, {"a vs b", "p", true}})({&robustness});
   EXPECT_FALSE(refuted.holds);
