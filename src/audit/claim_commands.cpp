@@ -87,6 +87,7 @@ void add_tables_and_searches(ClaimCommands& c, const CommandArgs& paper_oloid, c
               {mode::matched, {with(search, {"--paper-compat", "--matched-resolution"})}},
               {mode::corrected, {search}}};
   c.revalidation = {with(search, {"--paper-compat"}), paper_oloid};
+  c.paper_coverage = {with(paper_oloid, {"--per-face"})};
 
   // `rollcheck optimize` from the family's (90, 1, 1).
   const CommandArgs approx = {"optimize", "--score", "cds", "--oracle", "approx", "--points", "300"};
@@ -113,7 +114,12 @@ void add_rolling_and_contact(ClaimCommands& c)
   // Real rolling (defaults: 1.1 dV, one loop, Hertz width, faces cut 8 x 8).
   c.rolling_pair = {{"oracle", "--oracle", "rolling", "--body", "oloid"},
                     {"oracle", "--oracle", "rolling", "--body", "cylinder"}};
-  c.rolling_coverage = {{"oracle", "--oracle", "rolling", "--body", "oloid", "--contact-width", "rigid"}};
+  c.rolling_coverage = {{"oracle", "--oracle", "rolling", "--body", "oloid", "--contact-width", "rigid"},
+                        {"oracle", "--oracle", "rolling", "--body", "oloid", "--face-subdivisions", "1"},
+                        c.rolling_pair[0],
+                        {"oracle", "--oracle", "rolling", "--body", "oloid", "--face-subdivisions", "16"}};
+  // Its defaults: the grid of choices of issue 57, resolution-free scores (22 s on the idle 2-core machine).
+  c.robustness = {{"robustness"}};
 
   c.hertz = {{"hertz", "--model", "axi"}, {"hertz", "--model", "plane-strain"}};
   // FEM-SDS over one loop of real rolling, the preprint's body against the

@@ -41,7 +41,11 @@ struct ClaimCommands
 
   // Real rolling.
   std::vector<CommandArgs> rolling_pair;     ///< U of the oloid, the cylinder
-  std::vector<CommandArgs> rolling_coverage; ///< the oloid with the geometric contact width
+  std::vector<CommandArgs> rolling_coverage; ///< the oloid with the geometric contact width, then the Hertz width at 1, 8, 16 face subdivisions
+  std::vector<CommandArgs> paper_coverage;   ///< the paper-compatible oloid with its per-face arrays
+
+  // The modelling choices.
+  std::vector<CommandArgs> robustness; ///< every comparison of bodies over the grid of choices
 
   // Contact mechanics.
   std::vector<CommandArgs> hertz;            ///< FEM against Hertz: axisymmetric sphere, plane-strain cylinder

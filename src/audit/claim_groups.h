@@ -26,6 +26,19 @@ inline const std::vector<std::string> oracle_modes = {mode::paper, mode::matched
 /// only the cylinder anew).
 inline const std::vector<std::string> oloid_modes = {mode::paper, mode::true_oloid, mode::corrected};
 
+/// Why a value of the preprint's per-face scores has no `true` verdict.
+inline const std::string per_face_value_reason =
+    "a value of the preprint's per-face template on its meshes, which moves with the face count (about N^-2, row "
+    "face_scaling): no resolution-free score has this number; the bodies' comparisons are judged in rows cds_ratio, "
+    "sds_ratio, all_metrics and continuous_optimum";
+
+/// The claim's `true` verdict from its cell of `mode`, the best physics the table has for it.
+TruthSource truth_in(std::string mode, std::string note = {});
+/// The claim's `true` verdict from rankings of bodies over the modelling choices (`rollcheck robustness`).
+TruthSource truth_over_choices(const ClaimCommands& c, std::vector<Ranking> rankings, std::string note = {});
+/// A claim with no `true` verdict, for `reason`.
+TruthSource truth_untestable(std::string reason);
+
 /// Why no command can show O(1/T) convergence under real rolling.
 inline const std::string rolling_convergence_reason =
     "real rolling prints no CDS and no convergence snapshots (`rollcheck oracle --oracle rolling` JSON has neither); "

@@ -21,6 +21,15 @@ std::vector<ClaimCell> cells_in(const std::vector<std::string>& modes, const Per
 
 ClaimCell not_built(const std::string& mode) { return {mode, {}, {}}; }
 
+TruthSource truth_in(std::string mode, std::string note) { return {std::move(mode), {}, {}, {}, std::move(note)}; }
+
+TruthSource truth_over_choices(const ClaimCommands& c, std::vector<Ranking> rankings, std::string note)
+{
+  return {{}, c.robustness, rules::rankings_over_choices(std::move(rankings)), {}, std::move(note)};
+}
+
+TruthSource truth_untestable(std::string reason) { return {{}, {}, {}, std::move(reason)}; }
+
 std::vector<ClaimCell> joined(std::initializer_list<std::vector<ClaimCell>> lists)
 {
   std::vector<ClaimCell> cells;
@@ -37,10 +46,20 @@ std::vector<std::string> audit_verdict_rules()
           "holds: the paper-compatible recomputation and every other applicable one satisfy the rule.",
           "holds only in paper-compatible mode: the paper-compatible recomputation satisfies it, another does not.",
           "does not hold: the paper-compatible recomputation (the preprint's own method and meshes) fails it.",
-          "real rolling: U is not CDS, so its cell holds when U discriminates the bodies the way the claim does "
-          "(the oloid's U below the cylinder's); the numbers are not compared with the paper's.",
-          "cannot be tested: no applicable recomputation can decide the claim (each such cell says why).",
-          "n/a: the mode does not change this claim; not built yet: the code for that mode has no command yet."};
+          "real rolling: U is not CDS, so its cell holds when U_inf discriminates the bodies the way the claim does "
+          "(the oloid's U_inf below the cylinder's); the numbers are not compared with the paper's.",
+          "cannot be tested: no applicable recomputation can decide the claim (each such cell says why); a cell "
+          "whose difference lies inside the score's noise says so and is left out (within noise, cannot be decided "
+          "at this resolution).",
+          "n/a: the mode does not change this claim; not built yet: the code for that mode has no command yet.",
+          "reproduced (per claim): the preprint's method and meshes give its number: the paper-compatible cell "
+          "holds (reproduced), fails (not reproduced), or is undecided or absent (cannot be tested, with the "
+          "reason).",
+          "true (per claim): the claim under the best physics the table has, over the modelling choices: a claim "
+          "that ranks bodies is judged by `rollcheck robustness` at resolution-free scores (holds: robust the "
+          "claim's way; does not hold: robust the other way; depends on CHOICE: the ranking flips, at the flip "
+          "named); any other by its best-physics cell (contact mechanics, real rolling or corrected physics) or "
+          "cannot be tested, with the reason."};
 }
 
 std::vector<Claim> audit_claims(const std::filesystem::path& reference_meshes, bool quick)

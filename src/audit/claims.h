@@ -27,6 +27,19 @@ struct ClaimCell
   std::string untestable = {};
 };
 
+/// Where a claim's `true` verdict comes from: the cell of `mode` (the best
+/// physics the table has for it), its own `commands` and `rule` (a ranking of
+/// bodies over the modelling choices, rules::rankings_over_choices), or
+/// nowhere, for the `untestable` reason. `note` is added to its reason.
+struct TruthSource
+{
+  std::string mode = {};
+  std::vector<CommandArgs> commands = {};
+  Rule rule = {};
+  std::string untestable = {};
+  std::string note = {};
+};
+
 struct Claim
 {
   std::string id;          ///< a short name, for messages: "oloid_cds", ...
@@ -35,6 +48,10 @@ struct Claim
   std::string rule;        ///< the rule that decides each cell, in words
   std::string note;
   std::vector<ClaimCell> cells; ///< a mode without a cell does not apply (n/a)
+  TruthSource truth = {};
+  /// Added to the `reproduced` reason; without a paper-compatible cell, the
+  /// reason the preprint's method cannot be rerun.
+  std::string reproduced_note = {};
 };
 
 /// How the cells of a claim make its verdict, in words.

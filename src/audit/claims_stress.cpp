@@ -21,14 +21,18 @@ std::vector<Claim> stress_claims(const ClaimCommands& c)
        "Hertz, and the SDS's point Hertz lies far above both (row sds_point_hertz). The ruling's ends at the rims are "
        "not in this check.",
        {{mode::corrected, c.hertz, rules::fem_agrees_with_hertz(fem_tolerance)},
-        {mode::contact, c.fem_sds_body, rules::fem_agrees_with_line_hertz(fem_tolerance)}}},
+        {mode::contact, c.fem_sds_body, rules::fem_agrees_with_line_hertz(fem_tolerance)}},
+       truth_in(mode::contact),
+       "the preprint's Dirichlet FEM is not published (it reports no agreement)"},
       {"sds_point_hertz", "The SDS's point-Hertz pressures are the contact pressures of the rolling bodies",
        "point Hertz, R_eff = 1/√(κ1κ2)",
        at_claim_tolerance("holds when, at each FEM-solved orientation of real rolling, the point-Hertz peak pressure "
                           "the SDS uses is within {tolerance} of the FEM contact peak."),
        "The rolling bodies touch the plane along a ruling (line contact); the FEM slices agree with line-contact Hertz "
        "(value: worst FEM vs line Hertz).",
-       {{mode::corrected, c.fem_orientations, rules::point_hertz_is_contact_pressure(claim_tolerance)}}},
+       {{mode::corrected, c.fem_orientations, rules::point_hertz_is_contact_pressure(claim_tolerance)}},
+       truth_in(mode::corrected),
+       "an assumption of the preprint's SDS, not a number its method computes"},
       {"fixed_loci",
        "The oloid eliminates stress concentrated at fixed loci of the body, the cylinder's geometric failure mode",
        "the cylinder \"concentrates fatigue damage at fixed loci, the geometric failure mode that the oloid "
@@ -39,7 +43,9 @@ std::vector<Claim> stress_claims(const ClaimCommands& c)
        "A sharp obtuse edge there is singular against the rigid plane (Williams's wedge), which a 3D FEM of each end "
        "confirms (`rollcheck rim`, docs/methods/rims.md); against a block of the same steel every sharp edge above 77.45 deg "
        "is, the cylinder's square ends too. Rounded edges are finite: README, \"The rims\".",
-       {{mode::contact, c.rims, rules::rims_free_of_concentration()}}},
+       {{mode::contact, c.rims, rules::rims_free_of_concentration()}},
+       truth_in(mode::contact),
+       "a statement the preprint makes without a computation of the rims"},
   };
 }
 } // namespace rollcheck::audit::claims

@@ -21,6 +21,11 @@ const nlohmann::json& CommandOutput::at(const std::string& pointer) const
   return json_.at(p);
 }
 
+bool CommandOutput::has(const std::string& pointer) const
+{
+  return json_.contains(nlohmann::json::json_pointer(pointer));
+}
+
 double CommandOutput::number(const std::string& pointer)
 {
   const nlohmann::json& v = at(pointer);

@@ -28,6 +28,8 @@ public:
   /// The JSON value at `pointer` (labels, flags, arrays), not recorded;
   /// ComputationError naming the pointer and the command when it is missing.
   const nlohmann::json& at(const std::string& pointer) const;
+  /// Whether the output has a value at `pointer`.
+  bool has(const std::string& pointer) const;
 
   const std::string& command() const { return command_; }
   const std::map<std::string, double>& reads() const { return reads_; }

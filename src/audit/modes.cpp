@@ -15,10 +15,10 @@ std::vector<std::pair<std::string, std::string>> audit_modes()
       {mode::corrected, "every paper-compat quirk switch corrected (no `--paper-compat`; docs/results/oracles.md#paper-compat-quirk-table); for the "
                         "FEM item, the penalty-contact FEM against analytic Hertz"},
       {mode::rolling, "rolling without slipping under gravity from the stable ruling with 1.1x the barrier energy, "
-                      "exact support sets, Hertz contact width, scored with the normalised uniformity score U on the "
-                      "mesh with faces cut 8 x 8 (`rollcheck oracle --oracle rolling`, issue 7); U is a different "
-                      "score than CDS, so this column compares discrimination (which body is more uniform), not "
-                      "values"},
+                      "exact support sets, Hertz contact width, scored with U_inf, the normalised uniformity score "
+                      "on the exact surface (`uniformity_score_continuum` of `rollcheck oracle --oracle rolling`; the "
+                      "coverage on the mesh with faces cut 8 x 8); U is a different score than CDS, so this column "
+                      "compares discrimination (which body is more uniform), not values"},
       {mode::contact, "one loop of real rolling (16384 samples), every sample's contact ruling loaded by F through the "
                       "centre of mass and scored with the plane-strain penalty FEM through its exact scaling "
                       "(`rollcheck fem-sds`, issue 13), each score converged (FEM table K to 2K and samples halved, "

@@ -3,7 +3,8 @@
 // from the JSON outputs of the commands the cell cites (command_output.h).
 // Implemented by kind of command read: rules_values.cpp (numbers against the
 // paper's, any command), rules_oracle.cpp (the oracle and mesh outputs),
-// rules_search.cpp (search and optimize), rules_contact.cpp (FEM, Hertz, rims).
+// rules_search.cpp (search and optimize), rules_contact.cpp (FEM, Hertz, rims),
+// rules_robustness.cpp (a ranking of bodies over the modelling choices).
 #include "audit/command_output.h"
 #include <functional>
 #include <string>
@@ -13,11 +14,24 @@
 namespace rollcheck::audit
 {
 /// A recomputed cell of the table: its value as printed, and whether it
-/// satisfies its claim's rule.
+/// satisfies its claim's rule; or, when `undecided` says why, neither (a
+/// difference inside the score's noise: "cannot be decided at this
+/// resolution"; a ranking that flips: "depends on CHOICE").
 struct CellResult
 {
   std::string value;
   bool holds = false;
+  std::string undecided = {};
+};
+
+/// A claim's ranking of two bodies under one score of `rollcheck robustness`:
+/// its comparison's name ("oloid vs cylinder"), the score's key, and whether
+/// the claim has the comparison's first body the more even (lower score).
+struct Ranking
+{
+  std::string comparison;
+  std::string score;
+  bool first_more_even = true;
 };
 
 /// A verdict rule: decides one cell from the outputs of the cell's commands,
@@ -68,9 +82,10 @@ Rule below(std::string label, std::size_t output, std::string pointer, double li
 
 // The oracle and mesh outputs (rules_oracle.cpp).
 
-/// (oloid, cylinder) rolling: the oloid's uniformity score U is below the cylinder's.
+/// (oloid, cylinder) rolling: the oloid's U_inf (the resolution-free
+/// uniformity_score_continuum) is below the cylinder's.
 Rule oloid_more_uniform();
-/// (oloid, cylinder) rolling: the ratio of the uniformity scores U exceeds 1.
+/// (oloid, cylinder) rolling: cylinder U_inf / oloid U_inf exceeds 1.
 Rule uniformity_ratio_above_one();
 /// (oracle): CDS at the first over the last convergence snapshot is within
 /// `tolerance` of `rate`.
@@ -88,14 +103,21 @@ Rule cylinder_fds_infinite();
 Rule areas_within(double area, double tolerance, std::vector<std::string> labels);
 /// (oracle): no score of the vector is below TDS, and TDS is below CDS.
 Rule tds_lowest();
-/// (preprint's oracles): no face goes untouched.
+/// (preprint's oracles[, the same run with --per-face]): no face goes
+/// untouched; with the per-face run the value gives the untouched area.
 Rule every_face_touched();
-/// (real rolling): the touched area fraction is at least `fraction`.
+/// (real rolling[, real rolling with the Hertz width at several face
+/// subdivisions]): the touched area fraction of the first is at least
+/// `fraction`; the value lists the others' coverage by subdivisions.
 Rule coverage_at_least(double fraction);
 
 // Search and optimize (rules_search.cpp).
 
-/// (search): no revalidated candidate has a lower rigid-body CDS than the anchor.
+/// (search[, search with the anchor meshed like the candidates]): no
+/// revalidated candidate has a lower rigid-body CDS than the anchor. With the
+/// second output, a candidate below the anchor by less than the anchor's own
+/// change between the two meshes (the score's change under refinement) is
+/// within noise: not a beat.
 Rule no_candidate_beats_anchor();
 /// (search): the approximate layer: `beaten` genomes (within `tolerance`)
 /// score below the grid's oloid genome (within `tolerance` of `oloid_cds`),
@@ -111,8 +133,12 @@ Rule improvement_direction();
 /// (search): each genome's approximate CDS is within `tolerance` of its paper
 /// value (counting those to the printed 3 digits).
 Rule approximate_scores(std::vector<std::pair<Genome, double>> paper, double tolerance);
-/// optimize: the start is not beaten beyond the noise threshold and its verdict is "local minimum".
-Rule start_is_local_optimum();
+/// optimize: the start is not beaten beyond the noise threshold and its
+/// verdict is "local minimum". `resolution_free`: the score does not move
+/// with the face count (U); otherwise (a per-face score, which moves with the
+/// genome's face count by as much as the gains) anything but a local minimum
+/// not beaten cannot be decided at this resolution.
+Rule start_is_local_optimum(bool resolution_free);
 
 // FEM, Hertz and the rims (rules_contact.cpp).
 
@@ -133,5 +159,14 @@ Rule fem_agrees_with_line_hertz(double tolerance);
 /// ends is singular and its loop's largest end pressure is at most its
 /// largest interior pressure (no stress concentrated at its rims).
 Rule rims_free_of_concentration();
+
+// Rankings over the modelling choices (rules_robustness.cpp).
+
+/// (robustness): each ranking's comparison at its score, as `rollcheck
+/// robustness` judged it over its grid: holds when every one is robust the
+/// claim's way; fails when one is robust the other way; otherwise undecided,
+/// "depends on" its choices, the reason naming the flip nearest the default
+/// choices (E = 0.1, hertz, dynamic, 0.05).
+Rule rankings_over_choices(std::vector<Ranking> rankings);
 } // namespace rules
 } // namespace rollcheck::audit

@@ -29,16 +29,18 @@ std::pair<double, double> power_law_fit(const std::vector<double>& x, const std:
 Rule oloid_more_uniform()
 {
   return [](const std::vector<CommandOutput*>& out) {
-    const double u_oloid = out[0]->number("/uniformity_score"), u_cylinder = out[1]->number("/uniformity_score");
-    return CellResult{fmt::format("U {:.3f} (cylinder {:.3f})", u_oloid, u_cylinder), u_oloid < u_cylinder};
+    const double u_oloid = out[0]->number("/uniformity_score_continuum");
+    const double u_cylinder = out[1]->number("/uniformity_score_continuum");
+    return CellResult{fmt::format("U_inf {:.3f} (cylinder {:.3f})", u_oloid, u_cylinder), u_oloid < u_cylinder};
   };
 }
 
 Rule uniformity_ratio_above_one()
 {
   return [](const std::vector<CommandOutput*>& out) {
-    const double r = out[1]->number("/uniformity_score") / out[0]->number("/uniformity_score");
-    return CellResult{fmt::format("U ratio {:.2f}x", r), r > 1};
+    const double r =
+        out[1]->number("/uniformity_score_continuum") / out[0]->number("/uniformity_score_continuum");
+    return CellResult{fmt::format("U_inf ratio {:.2f}x", r), r > 1};
   };
 }
 
@@ -132,7 +134,17 @@ Rule every_face_touched()
   return [](const std::vector<CommandOutput*>& out) {
     const double untouched = out[0]->number("/contact/faces_without_contact");
     const double faces = out[0]->number("/n_faces");
-    return CellResult{fmt::format("{:g} of {:g} faces untouched", untouched, faces), untouched == 0};
+    CellResult cell{fmt::format("{:g} of {:g} faces untouched", untouched, faces), untouched == 0};
+    if (out[0]->has("/per_face"))
+    {
+      const nlohmann::json& counts = out[0]->at("/per_face/contact_counts");
+      const nlohmann::json& areas = out[0]->at("/per_face/face_areas_m2");
+      double area = 0;
+      for (std::size_t f = 0; f < counts.size(); ++f)
+        area += counts[f].get<double>() == 0 ? areas[f].get<double>() : 0.0;
+      cell.value += fmt::format(" (area {:.3f} m²)", area);
+    }
+    return cell;
   };
 }
 
@@ -140,7 +152,14 @@ Rule coverage_at_least(double fraction)
 {
   return [=](const std::vector<CommandOutput*>& out) {
     const double coverage = out[0]->number("/coverage");
-    return CellResult{fmt::format("coverage {:.4f}", coverage), coverage >= fraction};
+    CellResult cell{fmt::format("coverage {:.4f}", coverage), coverage >= fraction};
+    std::string hertz;
+    for (std::size_t i = 1; i < out.size(); ++i)
+      append_listed(hertz, fmt::format("{:.3f} ({:g}²)", out[i]->number("/coverage"),
+                                       out[i]->number("/face_subdivisions")));
+    if (!hertz.empty())
+      cell.value += "; Hertz width, by face subdivisions: " + hertz;
+    return cell;
   };
 }
 } // namespace rollcheck::audit::rules

@@ -5,6 +5,7 @@
 #include "audit/search_grid.h"
 #include "core/error.h"
 #include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 #include <limits>
 
@@ -24,13 +25,23 @@ Rule no_candidate_beats_anchor()
   return [](const std::vector<CommandOutput*>& out) {
     CommandOutput& search = *out[0];
     const double anchor = search.number("/anchor/rigid/cds");
+    // The anchor's CDS at the candidates' mesh over its own: how much the
+    // score moves with the resolution alone (it falls as N^-2).
+    const double noise = out.size() > 1 ? std::abs(out[1]->number("/anchor/rigid/cds") / anchor - 1) : 0.0;
     const auto ranked = revalidated_by_cds(search);
-    const auto better = std::count_if(ranked.begin(), ranked.end(), [&](const auto& r) { return r.first < anchor; });
+    const auto better = std::count_if(ranked.begin(), ranked.end(),
+                                      [&](const auto& r) { return r.first < anchor * (1 - noise); });
+    const auto below = std::count_if(ranked.begin(), ranked.end(), [&](const auto& r) { return r.first < anchor; });
     const double best = ranked.empty() ? std::numeric_limits<double>::infinity() : ranked.front().first;
     const std::string best_name = ranked.empty() ? "-" : genome_text(genome_at(search, ranked.front().second));
-    return CellResult{fmt::format("anchor {}; {} of {} better, best {} {:.3f}x", sci(anchor), better, ranked.size(),
-                                  best_name, best / anchor),
-                      better == 0};
+    CellResult cell{fmt::format("anchor {}; {} of {} better, best {} {:.3f}x", sci(anchor), better, ranked.size(),
+                                best_name, best / anchor),
+                    better == 0};
+    if (below > better)
+      cell.value += fmt::format(" ({} below the anchor within noise: the anchor's CDS changes by {:.0f} % on the "
+                                "candidates' mesh)",
+                                below - better, 100 * noise);
+    return cell;
   };
 }
 
@@ -131,9 +142,9 @@ Rule approximate_scores(std::vector<std::pair<Genome, double>> paper, double tol
   };
 }
 
-Rule start_is_local_optimum()
+Rule start_is_local_optimum(bool resolution_free)
 {
-  return [](const std::vector<CommandOutput*>& out) {
+  return [=](const std::vector<CommandOutput*>& out) {
     CommandOutput& o = *out[0];
     const double start = o.number("/start_value"), best = o.number("/optimum/value");
     const double threshold = o.number("/optimum/significance_threshold");
@@ -141,12 +152,16 @@ Rule start_is_local_optimum()
     const nlohmann::json& verdict = o.at("/verdict_at_start");
     const std::string at_start = verdict.is_string() ? verdict.get<std::string>() : "no derivatives";
     const nlohmann::json& x = o.at("/optimum/x");
-    return CellResult{fmt::format("{}; best ({:.1f}, {:.3f}, {:.3f}) {} against {} at the start ({:+.1f} %, noise "
-                                  "threshold {:.2g}); at the start: {}",
-                                  beaten ? "beaten" : "not beaten", x[0].get<double>(), x[1].get<double>(),
-                                  x[2].get<double>(), sci(best), sci(start), 100 * (best / start - 1), threshold,
-                                  at_start),
-                      !beaten && at_start == "local minimum"};
+    CellResult cell{fmt::format("{}; best ({:.1f}, {:.3f}, {:.3f}) {} against {} at the start ({:+.1f} %, noise "
+                                "threshold {:.2g}); at the start: {}",
+                                beaten ? "beaten" : "not beaten", x[0].get<double>(), x[1].get<double>(),
+                                x[2].get<double>(), sci(best), sci(start), 100 * (best / start - 1), threshold,
+                                at_start),
+                    !beaten && at_start == "local minimum"};
+    if (!cell.holds && !resolution_free)
+      cell.undecided = "cannot be decided at this resolution: a per-face score moves with the genome's face count "
+                       "by as much as the gains and the gradients measured";
+    return cell;
   };
 }
 } // namespace rollcheck::audit::rules

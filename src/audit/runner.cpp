@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fmt/format.h>
 #include <fstream>
+#include <functional>
 #include <mutex>
 #include <spdlog/spdlog.h>
 #include <thread>
@@ -52,16 +53,38 @@ struct ScratchFolder
   ScratchFolder(const ScratchFolder&) = delete;
   ScratchFolder& operator=(const ScratchFolder&) = delete;
 };
+/// The claim's `true` verdict from its source: a cell, its own rule (run by
+/// `run_rule`, which fills the command ids) or its untestable reason.
+Judgement decide_truth(const AuditClaim& claim, const TruthSource& source,
+                       const std::function<CellResult(std::vector<std::string>&)>& run_rule)
+{
+  if (!source.mode.empty())
+    return truth_from_cell(claim, source.mode, source.note);
+  if (!source.rule)
+    return {truth::cannot_be_tested,
+            source.untestable.empty() ? "no recomputation under the best physics" : source.untestable, {}};
+  Judgement j;
+  const CellResult result = run_rule(j.commands);
+  j.verdict = !result.undecided.empty() ? result.undecided : result.holds ? truth::holds : truth::does_not_hold;
+  j.reason = source.note.empty() ? result.value : result.value + ". " + source.note;
+  return j;
+}
 } // namespace
 
 std::vector<CommandArgs> distinct_commands(const std::vector<Claim>& claims)
 {
   std::vector<CommandArgs> commands;
+  auto add = [&](const std::vector<CommandArgs>& cited) {
+    for (const CommandArgs& args : cited)
+      if (std::find(commands.begin(), commands.end(), args) == commands.end())
+        commands.push_back(args);
+  };
   for (const Claim& claim : claims)
+  {
     for (const ClaimCell& cell : claim.cells)
-      for (const CommandArgs& args : cell.commands)
-        if (std::find(commands.begin(), commands.end(), args) == commands.end())
-          commands.push_back(args);
+      add(cell.commands);
+    add(claim.truth.commands);
+  }
   return commands;
 }
 
@@ -77,7 +100,14 @@ std::vector<CommandOutput> run_commands(const std::vector<CommandArgs>& commands
   auto worker = [&] {
     for (std::size_t i = next++; i < commands.size(); i = next++)
     {
-      errors[i] = run_one(commands[i], rollcheck, scratch.path / (command_id(i) + ".json"), outputs[i]);
+      try
+      {
+        errors[i] = run_one(commands[i], rollcheck, scratch.path / (command_id(i) + ".json"), outputs[i]);
+      }
+      catch (const std::exception& e) // a child that cannot start: reported with the others, not thrown from a thread
+      {
+        errors[i] = e.what();
+      }
       std::lock_guard lock(log_mutex);
       spdlog::info("audit [{}/{}] {}", ++done, commands.size(), command_line(commands[i]));
     }
@@ -106,33 +136,42 @@ AuditTable decide_claims(const std::vector<Claim>& claims, std::vector<CommandOu
   auto index = [&](const CommandArgs& args) {
     return static_cast<std::size_t>(std::find(commands.begin(), commands.end(), args) - commands.begin());
   };
+  // A rule on its commands' outputs, with the ids it cites; errors name the claim and what was decided.
+  auto apply = [&](const Claim& claim, const std::string& what, const Rule& rule,
+                   const std::vector<CommandArgs>& cited, std::vector<std::string>& ids) {
+    std::vector<CommandOutput*> inputs;
+    for (const CommandArgs& args : cited)
+    {
+      inputs.push_back(&outputs[index(args)]);
+      ids.push_back(command_id(index(args)));
+    }
+    try
+    {
+      return rule(inputs);
+    }
+    catch (const ComputationError& e)
+    {
+      throw ComputationError(fmt::format("audit claim '{}' ({}): {}", claim.id, what, e.what()));
+    }
+  };
   AuditTable table;
   for (const Claim& claim : claims)
   {
-    AuditClaim decided{claim.id, claim.claim, claim.paper_value, claim.rule, {}, Verdict::not_built, claim.note};
+    AuditClaim decided{claim.id, claim.claim, claim.paper_value, claim.rule, {}, Verdict::not_built, claim.note, {}, {}};
     for (const ClaimCell& cell : claim.cells)
     {
       AuditCell& out = decided.cells[cell.mode];
       out = {true, static_cast<bool>(cell.rule), "", {}, false, cell.untestable};
       if (!cell.rule)
         continue;
-      std::vector<CommandOutput*> inputs;
-      for (const CommandArgs& args : cell.commands)
-      {
-        inputs.push_back(&outputs[index(args)]);
-        out.commands.push_back(command_id(index(args)));
-      }
-      try
-      {
-        const CellResult result = cell.rule(inputs);
-        out.value = result.value, out.holds = result.holds;
-      }
-      catch (const ComputationError& e)
-      {
-        throw ComputationError(fmt::format("audit claim '{}' ({}): {}", claim.id, cell.mode, e.what()));
-      }
+      const CellResult result = apply(claim, cell.mode, cell.rule, cell.commands, out.commands);
+      out.value = result.value, out.holds = result.holds, out.undecided = result.undecided;
     }
     decided.verdict = judge(decided);
+    decided.reproduced = judge_reproduced(decided, claim.reproduced_note);
+    decided.truth = decide_truth(decided, claim.truth, [&](std::vector<std::string>& ids) {
+      return apply(claim, "true", claim.truth.rule, claim.truth.commands, ids);
+    });
     table.claims.push_back(std::move(decided));
   }
   for (std::size_t i = 0; i < commands.size(); ++i)

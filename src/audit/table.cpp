@@ -21,12 +21,13 @@ std::string verdict_text(Verdict v)
 Verdict judge(const AuditClaim& claim)
 {
   const auto paper = claim.cells.find(paper_compatible_mode);
-  const bool has_paper = paper != claim.cells.end() && paper->second.applicable && paper->second.built;
+  const bool has_paper = paper != claim.cells.end() && paper->second.applicable && paper->second.built &&
+                         paper->second.undecided.empty();
   bool any = has_paper, others_hold = true, untestable = false;
   for (const auto& [mode, cell] : claim.cells)
   {
-    untestable = untestable || (cell.applicable && !cell.untestable.empty());
-    if (mode != paper_compatible_mode && cell.applicable && cell.built)
+    untestable = untestable || (cell.applicable && (!cell.untestable.empty() || !cell.undecided.empty()));
+    if (mode != paper_compatible_mode && cell.applicable && cell.built && cell.undecided.empty())
     {
       any = true;
       others_hold = others_hold && cell.holds;
@@ -43,6 +44,14 @@ Verdict judge(const AuditClaim& claim)
 
 namespace
 {
+std::string references(const std::vector<std::string>& commands)
+{
+  std::string refs;
+  for (const std::string& id : commands)
+    refs += (refs.empty() ? "" : ",") + id;
+  return refs;
+}
+
 std::string cell_text(const AuditCell& cell)
 {
   if (!cell.applicable)
@@ -51,12 +60,62 @@ std::string cell_text(const AuditCell& cell)
     return "cannot be tested: " + cell.untestable;
   if (!cell.built)
     return "not built yet";
-  std::string refs;
-  for (const std::string& id : cell.commands)
-    refs += (refs.empty() ? "" : ",") + id;
-  return fmt::format("{}{} [{}]", cell.value, cell.holds ? "" : " (✗)", refs);
+  const std::string mark = !cell.undecided.empty() ? " (" + cell.undecided + ")" : cell.holds ? "" : " (✗)";
+  return fmt::format("{}{} [{}]", cell.value, mark, references(cell.commands));
+}
+
+/// A judgement as a table cell: its verdict, and its reason unless it is the
+/// row's cell of its mode.
+std::string judgement_text(const Judgement& j)
+{
+  if (!j.mode.empty())
+    return fmt::format("**{}** ({})", j.verdict, j.mode);
+  return fmt::format("**{}**: {}{}", j.verdict, j.reason,
+                     j.commands.empty() ? "" : fmt::format(" [{}]", references(j.commands)));
+}
+
+std::string with_note(std::string reason, const std::string& note)
+{
+  return note.empty() ? reason : reason + ". " + note;
 }
 } // namespace
+
+Judgement judge_reproduced(const AuditClaim& claim, const std::string& note)
+{
+  const auto paper = claim.cells.find(paper_compatible_mode);
+  if (paper == claim.cells.end() || !paper->second.applicable)
+    return {reproduction::cannot_be_tested, note.empty() ? "the preprint has no computation of it to rerun" : note,
+            {}};
+  if (!paper->second.built)
+    return {reproduction::cannot_be_tested,
+            with_note(paper->second.untestable.empty() ? "not built yet" : paper->second.untestable, note), {}};
+  const AuditCell& cell = paper->second;
+  if (!cell.undecided.empty())
+    return {reproduction::cannot_be_tested, with_note(cell.undecided + ": " + cell.value, note), cell.commands,
+            paper_compatible_mode};
+  return {cell.holds ? reproduction::reproduced : reproduction::not_reproduced, with_note(cell.value, note),
+          cell.commands, paper_compatible_mode};
+}
+
+Judgement truth_from_cell(const AuditClaim& claim, const std::string& mode, const std::string& note)
+{
+  const auto it = claim.cells.find(mode);
+  if (it == claim.cells.end() || !it->second.applicable)
+    return {truth::cannot_be_tested, with_note("no " + mode + " recomputation", note), {}};
+  const AuditCell& cell = it->second;
+  if (!cell.untestable.empty() || !cell.built)
+    return {truth::cannot_be_tested, with_note(cell.untestable.empty() ? "not built yet" : cell.untestable, note),
+            {}};
+  const std::string verdict = !cell.undecided.empty()
+                                  ? (cell.undecided.rfind(truth::depends_prefix, 0) == 0 ? cell.undecided
+                                                                                          : truth::cannot_be_tested)
+                                  : cell.holds ? truth::holds
+                                               : truth::does_not_hold;
+  const std::string reason = cell.undecided.empty() || verdict == cell.undecided
+                                 ? cell.value
+                                 : cell.undecided + ": " + cell.value;
+  return {verdict, with_note(reason, note), cell.commands, mode};
+}
 
 std::string to_markdown(const AuditTable& table)
 {
@@ -67,7 +126,7 @@ std::string to_markdown(const AuditTable& table)
     md += fmt::format(" {} |", mode);
     rule += "---|";
   }
-  md += " verdict |\n" + rule + "---|\n";
+  md += " reproduced | true |\n" + rule + "---|---|\n";
   for (const AuditClaim& c : table.claims)
   {
     md += fmt::format("| {} | {} |", c.claim, c.paper_value);
@@ -76,10 +135,11 @@ std::string to_markdown(const AuditTable& table)
       const auto it = c.cells.find(mode);
       md += fmt::format(" {} |", it == c.cells.end() ? std::string("n/a") : cell_text(it->second));
     }
-    md += fmt::format(" **{}** |\n", verdict_text(c.verdict));
+    md += fmt::format(" {} | {} |\n", judgement_text(c.reproduced), judgement_text(c.truth));
   }
   md += "\n(✗) marks a recomputation that fails the claim's rule; [cN] are the commands below that print the "
-        "numbers used.\n\nModes:\n\n";
+        "numbers used. *reproduced*: the preprint's method and meshes give its number (the paper-compatible "
+        "cell); *true*: the claim under the best physics the table has, over the modelling choices.\n\nModes:\n\n";
   for (const auto& [mode, meaning] : table.modes)
     md += fmt::format("- **{}**: {}\n", mode, meaning);
   md += "\nVerdict rules:\n\n";
@@ -88,6 +148,10 @@ std::string to_markdown(const AuditTable& table)
   md += "\nPer-claim rules and notes:\n\n";
   for (const AuditClaim& c : table.claims)
     md += fmt::format("- *{}*: {}{}\n", c.claim, c.rule, c.note.empty() ? "" : " " + c.note);
+  md += "\nWhy each claim is true or not (the reasons of the `true` column that come from a cell):\n\n";
+  for (const AuditClaim& c : table.claims)
+    if (!c.truth.mode.empty())
+      md += fmt::format("- *{}*: {}: {}\n", c.claim, c.truth.verdict, c.truth.reason);
   md += "\nCommands (each prints, with `--json -`, the values the audit read from it):\n\n";
   for (const AuditCommand& c : table.commands)
   {
@@ -105,7 +169,8 @@ void to_json(nlohmann::json& j, const AuditClaim& c)
   j = {{"id", c.id},                   {"claim", c.claim},
        {"paper_value", c.paper_value}, {"rule", c.rule},
        {"recomputations", c.cells},    {"verdict", verdict_text(c.verdict)},
-       {"note", c.note}};
+       {"note", c.note},               {"reproduced", c.reproduced},
+       {"true", c.truth}};
 }
 
 void to_json(nlohmann::json& j, const AuditCommand& c)

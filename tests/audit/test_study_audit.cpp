@@ -253,9 +253,17 @@ TEST(Audit, VectorCoverageAndFemRules)
   EXPECT_TRUE(rules::every_face_touched()({&touched}).holds);
   EXPECT_EQ(rules::every_face_touched()({&gaps}).value, "257 of 1198 faces untouched");
   EXPECT_FALSE(rules::every_face_touched()({&gaps}).holds);
-  CommandOutput full("r", json{{"coverage", 1.0}}), partial("r", json{{"coverage", 0.948}});
+  // With the per-face arrays the untouched area is summed: faces 1 and 3 (0.5 + 2 m²).
+  CommandOutput per_face("o", json{{"n_faces", 4},
+                                   {"contact", {{"faces_without_contact", 2}}},
+                                   {"per_face", {{"contact_counts", {3, 0, 7, 0}}, {"face_areas_m2", {1, 0.5, 1, 2}}}}});
+  EXPECT_EQ(rules::every_face_touched()({&per_face}).value, "2 of 4 faces untouched (area 2.500 m²)");
+  CommandOutput full("r", json{{"coverage", 1.0}}), partial("r", json{{"coverage", 0.948}, {"face_subdivisions", 8}});
   EXPECT_TRUE(rules::coverage_at_least(0.999)({&full}).holds);
   EXPECT_FALSE(rules::coverage_at_least(0.999)({&partial}).holds);
+  const CellResult with_hertz = rules::coverage_at_least(0.999)({&full, &partial});
+  EXPECT_TRUE(with_hertz.holds); // the first decides, the others explain
+  EXPECT_EQ(with_hertz.value, "coverage 1.0000; Hertz width, by face subdivisions: 0.948 (8²)");
 
   // Point Hertz 114 MPa against FEM 2.2 MPa (52x) and 5.6 MPa (20x); the unsolved orientation is skipped.
   auto orientation = [](bool solved, double point, double fem) {
@@ -281,12 +289,22 @@ TEST(Audit, VectorCoverageAndFemRules)
   };
   CommandOutput beaten("optimize", search(true, "local minimum")), flat("optimize", search(false, "local minimum")),
       sloped("optimize", search(false, "not stationary"));
-  const CellResult lost = rules::start_is_local_optimum()({&beaten});
+  const CellResult lost = rules::start_is_local_optimum(true)({&beaten});
   EXPECT_FALSE(lost.holds);
+  EXPECT_TRUE(lost.undecided.empty()); // a resolution-free score decides
   EXPECT_EQ(lost.value, "beaten; best (72.6, 1.107, 0.942) 1.5e-06 against 2e-06 at the start (-25.0 %, noise "
                         "threshold 2e-07); at the start: local minimum");
-  EXPECT_TRUE(rules::start_is_local_optimum()({&flat}).holds);
-  EXPECT_FALSE(rules::start_is_local_optimum()({&sloped}).holds);
+  EXPECT_TRUE(rules::start_is_local_optimum(true)({&flat}).holds);
+  EXPECT_TRUE(rules::start_is_local_optimum(false)({&flat}).holds);
+  EXPECT_FALSE(rules::start_is_local_optimum(true)({&sloped}).holds);
+  EXPECT_TRUE(rules::start_is_local_optimum(true)({&sloped}).undecided.empty());
+  // A per-face score's gains and gradients are inside its mesh noise: undecided, not failed.
+  for (CommandOutput* o : {&beaten, &sloped})
+  {
+    const CellResult per_face = rules::start_is_local_optimum(false)({o});
+    EXPECT_FALSE(per_face.holds);
+    EXPECT_EQ(per_face.undecided.rfind("cannot be decided at this resolution", 0), 0u) << per_face.undecided;
+  }
 }
 
 TEST(Audit, RimRuleFailsOnASingularEndOrAConcentration)
@@ -339,10 +357,174 @@ TEST(Audit, TheClaimTableIsWellFormed)
       EXPECT_TRUE(modes.count(cell.mode)) << c.id << ": " << cell.mode;
       EXPECT_EQ(cell.commands.empty(), !cell.rule) << c.id << ": " << cell.mode; // built cells have commands
     }
+    // Every claim says where its `true` verdict comes from: one of its cells, a rule on commands, or why not.
+    const TruthSource& t = c.truth;
+    EXPECT_EQ(!t.mode.empty() + static_cast<bool>(t.rule) + !t.untestable.empty(), 1) << c.id;
+    if (!t.mode.empty())
+      EXPECT_TRUE(std::ranges::any_of(c.cells, [&](const ClaimCell& cell) { return cell.mode == t.mode; }))
+          << c.id << ": no cell of " << t.mode;
+    EXPECT_EQ(t.commands.empty(), !t.rule) << c.id;
   }
   // The quick table's oracle commands scan 3 mesh sizes, 2 extra thresholds.
   const auto scaling_row = std::ranges::find(claims, std::string("face_scaling"), &Claim::id);
   ASSERT_NE(scaling_row, claims.end());
   const Claim& scaling = *scaling_row;
   EXPECT_EQ(scaling.cells[0].commands.size(), 3u);
+}
+
+TEST(Audit, ACandidateBeatsTheAnchorOnlyBeyondTheScoresChangeOnItsMesh)
+{
+  // Anchor 7.44e-7 at its own mesh; the best candidate 7.40e-7 is 0.5 % below it.
+  auto grid = [](double anchor) {
+    json g = {{"theta_deg", 120}, {"offset", 1.0}, {"ratio", 0.8}, {"approximate", {{"cds", 1e-6}}},
+              {"validated", true}, {"is_anchor_genome", false}, {"rigid", {{"cds", 7.40e-7}}}};
+    return CommandOutput(command_line({"search", std::to_string(anchor)}),
+                         json{{"anchor", {{"rigid", {{"cds", anchor}}}}}, {"genomes", {g}}});
+  };
+  CommandOutput own = grid(7.44e-7), on_candidates_mesh = grid(1.74e-6), same = grid(7.44e-7);
+  const CellResult alone = rules::no_candidate_beats_anchor()({&own});
+  EXPECT_FALSE(alone.holds);
+  EXPECT_EQ(alone.value, "anchor 7.44e-07; 1 of 1 better, best (120, 1.00, 0.80) 0.995x");
+  // On the candidates' mesh the anchor's CDS is 134 % higher: 0.5 % is within noise.
+  const CellResult noisy = rules::no_candidate_beats_anchor()({&own, &on_candidates_mesh});
+  EXPECT_TRUE(noisy.holds);
+  EXPECT_EQ(noisy.value, "anchor 7.44e-07; 0 of 1 better, best (120, 1.00, 0.80) 0.995x (1 below the anchor within "
+                         "noise: the anchor's CDS changes by 134 % on the candidates' mesh)");
+  // No change between the meshes: no noise, the 0.5 % is a beat.
+  EXPECT_FALSE(rules::no_candidate_beats_anchor()({&own, &same}).holds);
+}
+
+namespace
+{
+/// A `rollcheck robustness` output with one comparison of bodies a, b at score s.
+json comparison(const std::string& name, const std::string& score, const std::string& verdict, json lo, json hi,
+                json flips = json::array())
+{
+  return {{"name", name}, {"score", score}, {"bodies", {"a", "b"}}, {"verdict", verdict},
+          {"ratio_min", lo},  {"ratio_max", hi},  {"flips", flips}};
+}
+
+json flip(const std::string& load_rule, double energy)
+{
+  return {{"choice", "rolling_energy"}, {"from", "0.1"}, {"to", "0.36"}, {"value", energy},
+          {"settings", {{"contact_width", "hertz"}, {"end_margin", "0.05"}, {"load_rule", load_rule}}}};
+}
+} // namespace
+
+TEST(Audit, RankingsOverTheChoicesHoldFailOrDepend)
+{
+  CommandOutput robustness(
+      command_line({"robustness"}),
+      json{{"comparisons",
+            {comparison("a vs b", "u", "robust", 0.2, 0.9), comparison("a vs b", "p", "robust", 1.2, "inf"),
+             comparison("a vs b", "d", "depends on rolling_energy", 0.5, 2.0,
+                        {flip("uniform", 0.0328), flip("dynamic", 0.361)})}}});
+  const CellResult as_claimed = rules::rankings_over_choices({{"a vs b", "u", true}})({&robustness});
+  EXPECT_TRUE(as_claimed.holds);
+  EXPECT_EQ(as_claimed.value, "u a / b 0.2 ... 0.9, robust: a the more even under every choice");
+  const CellResult against = rules::rankings_over_choices({{"a vs b", "p", true}})({&robustness});
+  EXPECT_FALSE(against.holds);
+  EXPECT_TRUE(against.undecided.empty());
+  EXPECT_EQ(against.value, "p a / b 1.2 ... ∞, robust: b the more even under every choice");
+  // A dependent ranking names the flip nearest the default choices (load rule dynamic).
+  const CellResult depends = rules::rankings_over_choices({{"a vs b", "u", true}, {"a vs b", "d", true}})({&robustness});
+  EXPECT_FALSE(depends.holds);
+  EXPECT_EQ(depends.undecided, "depends on rolling_energy");
+  EXPECT_NE(depends.value.find("flips at rolling_energy 0.361 (contact_width hertz, end_margin 0.05, load_rule "
+                               "dynamic)"),
+            std::string::npos)
+      << depends.value;
+  // Two dependent rankings name each choice once; a flip placed at an energy comes before one between load rules.
+  CommandOutput two(command_line({"robustness", "2"}),
+                    json{{"comparisons",
+                          {comparison("a vs b", "x", "depends on rolling_energy, load_rule", 0.5, 2.0,
+                                      {{{"choice", "load_rule"}, {"from", "dynamic"}, {"to", "uniform"},
+                                        {"settings", {{"contact_width", "hertz"}, {"end_margin", "0.05"},
+                                                      {"rolling_energy", "0.1"}}}},
+                                       flip("dynamic", 0.361)}),
+                           comparison("a vs b", "y", "depends on load_rule, end_margin", 0.5, 2.0,
+                                      {flip("static", 1)})}}});
+  const CellResult both = rules::rankings_over_choices({{"a vs b", "x", true}, {"a vs b", "y", true}})({&two});
+  EXPECT_EQ(both.undecided, "depends on rolling_energy, load_rule, end_margin");
+  EXPECT_NE(both.value.find("x a / b 0.5 ... 2, depends on rolling_energy, load_rule, flips at rolling_energy 0.361"),
+            std::string::npos)
+      << both.value;
+  // One ranking robust against the claim refutes it, whatever the others.
+  const CellResult refuted = rules::rankings_over_choices({{"a vs b", "d", true}, {"a vs b", "p", true}})({&robustness});
+  EXPECT_FALSE(refuted.holds);
+  EXPECT_TRUE(refuted.undecided.empty());
+  // A comparison robustness does not print is an error naming it.
+  const std::string missing =
+      message_of([&] { rules::rankings_over_choices({{"a vs c", "u", true}})({&robustness}); });
+  EXPECT_NE(missing.find("'a vs c'"), std::string::npos) << missing;
+}
+
+TEST(Audit, EveryClaimAnswersReproducedAndTrueCitingListedCommands)
+{
+  const Rule ratio = rules::ratios_within({{"/cds", 58}}, 0.2);
+  const Rule ranking = rules::rankings_over_choices({{"a vs b", "u", false}});
+  const CommandArgs robustness_args = {"robustness"};
+  Claim ranked{"ranked", "CDS cylinder / oloid", "58.0x", "within 20 % of 58", "",
+               {{paper_compatible_mode, {{"oracle", "o1"}, {"oracle", "y1"}}, ratio},
+                {"corrected physics", {{"oracle", "o1"}, {"oracle", "y2"}}, ratio}},
+               {{}, {robustness_args}, ranking, {}, "a note"}};
+  Claim from_cell{"celled", "CDS cylinder / oloid", "58.0x", "within 20 % of 58", "",
+                  {{paper_compatible_mode, {{"oracle", "o1"}, {"oracle", "y2"}}, ratio},
+                   {"corrected physics", {{"oracle", "o1"}, {"oracle", "y1"}}, ratio}},
+                  {"corrected physics"}};
+  Claim unrunnable{"unrunnable", "a statement", "-", "-", "", {{"corrected physics", {{"oracle", "o1"}, {"oracle", "y1"}}, ratio}},
+                   {{}, {}, {}, "no score has it"}, "the preprint computes nothing"};
+  std::vector<CommandOutput> outputs = {
+      oracle("o1", 1e-6), oracle("y1", 6e-5), oracle("y2", 2e-5),
+      CommandOutput(command_line(robustness_args),
+                    json{{"comparisons", {comparison("a vs b", "u", "depends on load_rule", 0.5, 2, {flip("static", 1)})}}})};
+  const AuditTable table = decide_claims({ranked, from_cell, unrunnable}, outputs);
+  ASSERT_EQ(table.claims.size(), 3u);
+  const AuditClaim& r = table.claims[0];
+  EXPECT_EQ(r.reproduced.verdict, reproduction::reproduced); // 60x within 20 % of 58x
+  EXPECT_EQ(r.reproduced.mode, paper_compatible_mode);
+  EXPECT_EQ(r.truth.verdict, "depends on load_rule");
+  EXPECT_EQ(r.truth.commands, (std::vector<std::string>{"c4"}));
+  EXPECT_NE(r.truth.reason.find(". a note"), std::string::npos) << r.truth.reason;
+  const AuditClaim& c = table.claims[1];
+  EXPECT_EQ(c.reproduced.verdict, reproduction::not_reproduced); // 20x
+  EXPECT_EQ(c.reproduced.reason, "20.0x");
+  EXPECT_EQ(c.truth.verdict, truth::holds); // its corrected cell: 60x
+  EXPECT_EQ(c.truth.mode, "corrected physics");
+  const AuditClaim& u = table.claims[2];
+  EXPECT_EQ(u.reproduced.verdict, reproduction::cannot_be_tested);
+  EXPECT_EQ(u.reproduced.reason, "the preprint computes nothing");
+  EXPECT_EQ(u.truth.verdict, truth::cannot_be_tested);
+  EXPECT_EQ(u.truth.reason, "no score has it");
+
+  // Every command a cell or a judgement cites is in the table's command list, and the JSON has both answers.
+  std::set<std::string> listed;
+  for (const AuditCommand& command : table.commands)
+    listed.insert(command.id);
+  for (const AuditClaim& claim : table.claims)
+  {
+    for (const auto& [mode, cell] : claim.cells)
+      for (const std::string& id : cell.commands)
+        EXPECT_TRUE(listed.count(id)) << claim.id << " " << mode << " cites " << id;
+    for (const Judgement* j : {&claim.reproduced, &claim.truth})
+      for (const std::string& id : j->commands)
+        EXPECT_TRUE(listed.count(id)) << claim.id << " cites " << id;
+  }
+  const json j = to_json(table);
+  EXPECT_EQ(j["claims"][0]["true"]["verdict"], "depends on load_rule");
+  EXPECT_EQ(j["claims"][1]["reproduced"]["verdict"], "not reproduced");
+}
+
+TEST(Audit, UndecidedCellsAreLeftOutOfTheVerdict)
+{
+  AuditClaim c;
+  c.cells[paper_compatible_mode] = {true, true, "-12 %", {"c1"}, false, "", "cannot be decided at this resolution"};
+  c.cells["real rolling"] = {true, true, "-36 %", {"c2"}, false};
+  EXPECT_EQ(judge(c), Verdict::does_not_hold); // the paper cell undecided: the others decide
+  const Judgement reproduced = judge_reproduced(c, "");
+  EXPECT_EQ(reproduced.verdict, reproduction::cannot_be_tested);
+  EXPECT_EQ(reproduced.reason, "cannot be decided at this resolution: -12 %");
+  EXPECT_EQ(truth_from_cell(c, paper_compatible_mode, "").verdict, truth::cannot_be_tested);
+  EXPECT_EQ(truth_from_cell(c, "real rolling", "why").reason, "-36 %. why");
+  EXPECT_EQ(truth_from_cell(c, "contact mechanics", "").verdict, truth::cannot_be_tested);
 }

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # `rollcheck audit --quick`: the claim table's structure (every claim, mode
-# cells, verdicts from the stated set, commands cited), the Markdown table,
+# cells, verdicts from the stated set, the two verdicts `reproduced` and
+# `true` with their reasons, every command cited listed in the same JSON,
+# the surface-coverage claim's two answers), the Markdown table,
 # that numbers the audit read equal what four of its listed commands print
 # when run on their own (an oracle run, a mesh run, a Hertz FEM run and a
 # FEM-SDS run; timings aside), and that its paper-compatible reads on the reference meshes are the
@@ -17,20 +19,30 @@ meshes=$source/meshes/reference
 j=$tmp/audit.json
 check_json "30 claims" '.claims | length == 30' "$j"
 check_json "six modes, paper-compatible first" '(.modes | length) == 6 and .modes[0].mode == "paper-compatible"' "$j"
-check_json "verdicts from the stated set" \
+check_json "verdicts over the modes from the stated set" \
   '[.claims[].verdict] | all(. == "holds" or . == "holds only in paper-compatible mode" or . == "does not hold" or . == "cannot be tested" or . == "not built yet")' "$j"
 check_json "verdict rules stated" '(.verdict_rules | length) >= 4 and ([.claims[].rule] | all(length > 0))' "$j"
 check_json "every built cell cites known commands" \
   '([.commands[].id]) as $ids | [.claims[].recomputations[] | select(.applicable and .built) | (.commands | length > 0) and all(.commands[]; . as $c | $ids | index($c) != null)] | all' "$j"
+check_json "every command a cell or a verdict cites is in the command list" \
+  '([.commands[].id]) as $ids | [.claims[] | (.recomputations[].commands[], .reproduced.commands[], .true.commands[])] | all(. as $c | $ids | index($c) != null)' "$j"
+check_json "reproduced: a verdict of the stated set and a reason" \
+  '[.claims[].reproduced] | all((.verdict == "reproduced" or .verdict == "not reproduced" or .verdict == "cannot be tested") and (.reason | length > 0))' "$j"
+check_json "true: a verdict of the stated set and a reason" \
+  '[.claims[].true] | all((.verdict == "holds" or .verdict == "does not hold" or .verdict == "cannot be tested" or (.verdict | startswith("depends on "))) and (.reason | length > 0))' "$j"
+check_json "a ranking of bodies over the choices is read from rollcheck robustness" \
+  '([.commands[] | select(.command == "rollcheck robustness --json -") | .id]) as $r | ($r | length == 1) and ([.claims[] | select(.id == "cds_ratio") | .true.commands[]] == $r)' "$j"
+check_json "surface coverage: true for the oloid under real rolling, not reproduced on the preprint's body (its flat disc)" \
+  '.claims[] | select(.id == "surface_coverage") | .true.verdict == "holds" and .true.mode == "real rolling" and .reproduced.verdict == "not reproduced" and (.reproduced.reason | test("257 of 1198 faces untouched.*flat disc x = 1"))' "$j"
 check_json "every command is a rollcheck command printing JSON" \
   '[.commands[].command] | all(startswith("rollcheck ") and endswith(" --json -"))' "$j"
 check_json "quick mode recorded" '.quick == true' "$j"
 check_json "claims that cannot be tested say why" \
   '[.claims[] | select(.verdict == "cannot be tested") | .recomputations[] | select(.applicable and (.built | not)) | .untestable | length > 0] | (length > 0 and all)' "$j"
 cmp -s "$tmp/audit.md" "$tmp/stdout.md" || { echo "FAIL: --markdown file differs from stdout"; fail=1; }
-grep -q '^| claim | paper | paper-compatible | matched resolution | true oloid | corrected physics | real rolling | contact mechanics | verdict |$' \
+grep -q '^| claim | paper | paper-compatible | matched resolution | true oloid | corrected physics | real rolling | contact mechanics | reproduced | true |$' \
   "$tmp/audit.md" || { echo "FAIL: Markdown header"; fail=1; }
-rows=$(grep -c '^| .* | \*\*\(holds\|holds only in paper-compatible mode\|does not hold\|cannot be tested\|not built yet\)\*\* |$' "$tmp/audit.md")
+rows=$(grep -c '^| .* | \*\*\(reproduced\|not reproduced\|cannot be tested\)\*\*[^|]* | \*\*\(holds\|does not hold\|cannot be tested\|depends on [^*]*\)\*\*[^|]* |$' "$tmp/audit.md")
 [[ $rows == 30 ]] || { echo "FAIL: Markdown has $rows claim rows, want 30"; fail=1; }
 grep -q '^Verdict rules:' "$tmp/audit.md" || { echo "FAIL: no verdict rules in the Markdown"; fail=1; }
 
