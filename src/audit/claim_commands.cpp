@@ -114,7 +114,7 @@ void add_rolling_and_contact(ClaimCommands& c)
   // Real rolling (defaults: 1.1 dV, one loop, Hertz width, faces cut 8 x 8).
   c.rolling_pair = {{"oracle", "--oracle", "rolling", "--body", "oloid"},
                     {"oracle", "--oracle", "rolling", "--body", "cylinder"}};
-  c.rolling_coverage = {{"oracle", "--oracle", "rolling", "--body", "oloid", "--contact-width", "rigid"},
+  c.rolling_coverage = {{"oracle", "--oracle", "rolling", "--body", "oloid", "--contact-width", "geometric"},
                         {"oracle", "--oracle", "rolling", "--body", "oloid", "--face-subdivisions", "1"},
                         c.rolling_pair[0],
                         {"oracle", "--oracle", "rolling", "--body", "oloid", "--face-subdivisions", "16"}};

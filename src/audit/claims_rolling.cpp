@@ -22,7 +22,7 @@ std::vector<Claim> rolling_claims(const ClaimCommands& c)
       {"surface_coverage", "Every point of the oloid's surface touches the plane during one complete roll",
        "every point",
        fmt::format("the preprint's oracles: holds when no face goes untouched; real rolling (geometric contact width, "
-                   "`--contact-width rigid`: which points touch, not how long): holds when the touched area fraction "
+                   "`--contact-width geometric`: which points touch, not how long): holds when the touched area fraction "
                    "is at least {:g}.",
                    full_coverage),
        "With the Hertz contact width the coverage falls as the faces are cut finer (the real-rolling cell's values at "

@@ -133,10 +133,8 @@ void add_rolling_parameters(Schema& s)
                          "mass, inertia and area (error ~ 1/this^2); at most 2^20, a resource guard",
                          io::Bounds{16, 1 << 20})
                 .choice("contact_width", "--contact-width", [](auto& p) -> auto& { return p.contact_width.model; },
-                        "Rolling oracle: contact strip width, hertz (Hertz patch) or geometric (unit width; rigid: "
-                        "the same, its former name)",
-                        {{"hertz", oracle::ContactWidthModel::hertz}, {"geometric", oracle::ContactWidthModel::rigid},
-                         {"rigid", oracle::ContactWidthModel::rigid}}),
+                        "Rolling oracle: contact strip width, hertz (Hertz patch) or geometric (unit width)",
+                        {{"hertz", oracle::ContactWidthModel::hertz}, {"geometric", oracle::ContactWidthModel::rigid}}),
             &OracleScene::rolling);
   using C = contact::ContinuumLoopSettings;
   s.include(io::BoundSchema<C>("continuum")
