@@ -132,7 +132,8 @@ def claim_text(audit, claim, modes):
         if c["claim"] == claim:
             cells = require(c, "recomputations", f"--audit: claim '{claim}'")
             values = [f"{cells[m]['value']} ({m})" for m in modes if cells.get(m, {}).get("value")]
-            return f"The audit: {c['verdict']}; " + "; ".join(values) if values else f"The audit: {c['verdict']}"
+            verdicts = f"The audit: reproduced: {c['reproduced']['verdict']}, true: {c['true']['verdict']}"
+            return f"{verdicts}; " + "; ".join(values) if values else verdicts
     return None
 
 

@@ -44,9 +44,25 @@ TEMPLATES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "templates"
 WIDE = 8          # more cases of one scene kind than this: the raw table is split
 NOTE = 60         # a longer text result goes below its table, as a note
 NUMBER = re.compile(r"^[-+]?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?$|^-?inf$")
-# Every verdict of audit/table.cpp verdict_text(); an unknown one is an error.
-VERDICT_CLASS = {"holds": "pass", "holds only in paper-compatible mode": "partial", "does not hold": "fail",
-                 "cannot be tested": "none", "not built yet": "none"}
+# The claim's `true` verdict (audit/table.h): "depends on CHOICES" is partial.
+TRUE_CLASS = {"holds": "pass", "does not hold": "fail", "cannot be tested": "none"}
+
+
+def true_class(verdict):
+    if verdict.startswith("depends on"):
+        return "partial"
+    if verdict not in TRUE_CLASS:
+        raise BadInput(f"unknown `true` verdict '{verdict}' (known: {', '.join(TRUE_CLASS)}, depends on ...)")
+    return TRUE_CLASS[verdict]
+
+
+def two_verdicts(claim, at):
+    """The claim's `reproduced` and `true` verdicts, each with its reason."""
+    texts = []
+    for key in ("reproduced", "true"):
+        v = require(claim, key, at)
+        texts.append(f"{require(v, 'verdict', f'{at}/{key}')}: {require(v, 'reason', f'{at}/{key}')}")
+    return texts
 
 
 def cell(v):
@@ -116,7 +132,8 @@ def audit_cell(cell_json, at):
         return "n/a"
     if not require(cell_json, "built", at):
         return "not built yet"
-    mark = "" if require(cell_json, "holds", at) else " (✗)"
+    undecided = cell_json.get("undecided", "")
+    mark = f" ({undecided})" if undecided else "" if require(cell_json, "holds", at) else " (✗)"
     return f"{require(cell_json, 'value', at)}{mark} [{', '.join(require(cell_json, 'commands', at))}]"
 
 
@@ -130,12 +147,10 @@ def audit(path):
     for k, claim in enumerate(require(data, "claims", where)):
         at = f"{where}: claims/{k}"
         cells = require(claim, "recomputations", at)
-        verdict = require(claim, "verdict", at)
-        rows.append([require(claim, "claim", at), verdict, require(claim, "paper_value", at)]
+        reproduced, true = two_verdicts(claim, at)
+        rows.append([require(claim, "claim", at), reproduced, true, require(claim, "paper_value", at)]
                     + [audit_cell(cells[m], f"{at}/recomputations/{m}") if m in cells else "n/a" for m, _ in modes])
-        if verdict not in VERDICT_CLASS:
-            raise BadInput(f"{at}: unknown verdict '{verdict}' (known: {', '.join(VERDICT_CLASS)})")
-        classes.append(VERDICT_CLASS[verdict])
+        classes.append(true_class(claim["true"]["verdict"]))
         note = require(claim, "note", at)
         rules.append(f"{rows[-1][0]}: {require(claim, 'rule', at)}" + (f" {note}" if note else ""))
     commands = []
@@ -143,12 +158,13 @@ def audit(path):
         at = f"{where}: commands/{k}"
         reads = ", ".join(f"{p} = {cell(v)}" for p, v in require(command, "reads", at).items())
         commands.append([require(command, "id", at), require(command, "command", at), reads])
-    verdicts = [r[1] for r in rows]
-    tally = ", ".join(f"{v}: {verdicts.count(v)}" for v in VERDICT_CLASS if verdicts.count(v))
+    verdicts = [c["true"]["verdict"] for c in require(data, "claims", where)]
+    kinds = sorted(set(verdicts), key=verdicts.index)
+    tally = ", ".join(f"{v}: {verdicts.count(v)}" for v in kinds)
     return {"summary": f"{count(len(rows), 'claim')}: {tally}.", "modes": modes, "rules": rules,
             "verdict_rules": require(data, "verdict_rules", where),
             "quick": require(data, "quick", where), "wall_s": require(data, "wall_s", where),
-            "table": Table(["claim", "verdict", "paper"] + [m for m, _ in modes], rows, classes),
+            "table": Table(["claim", "reproduced", "true", "paper"] + [m for m, _ in modes], rows, classes),
             "commands": Table(["id", "command", "values read"], commands)}
 
 

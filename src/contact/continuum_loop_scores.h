@@ -92,7 +92,7 @@ struct ContinuumLoopSettings
   double basquin_exponent = FatigueParameters{}.basquin_exponent;
   int pieces = 64;            ///< Gauss pieces along each ruling
   /// g(lambda), lambda = q / (E* R), multiplying every peak pressure; empty: 1 (line Hertz).
-  std::function<double(double)> pressure_factor;
+  std::function<double(double)> pressure_factor = {};
 };
 
 /// The scores of one per-point quantity x.

@@ -90,7 +90,7 @@ void remove_stale_work(const fs::path& out)
   if (!manifest)
     return;
   std::vector<fs::path> stale;
-  for (const fs::path folder : {fs::path(), fs::path("cases")})
+  for (const fs::path& folder : {fs::path(), fs::path("cases")})
     if (fs::is_directory(out / folder))
       for (const fs::directory_entry& entry : fs::directory_iterator(out / folder))
         if (const fs::path inside = folder / entry.path().filename(); is_stale_work(*manifest, inside))
