@@ -4,15 +4,13 @@
 # ranks) in at most 25 times the wall time of `fem-sds --body oloid` (2
 # ranks) measured in the same run, with its end-aware status and FEM-SDS.
 # Prints both wall times, their ratio, and the loop's status.
-#   bash scripts/bench/bench_rim_loop.sh [ROLLCHECK] [-- EXTRA RIM OPTIONS]
+#   bash scripts/bench/bench_rim_loop.sh [ROLLCHECK]
 set -euo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
-bin=$here/build/src/cli/rollcheck
-if [[ $# -gt 0 && $1 != -- ]]; then bin=$1; shift; fi
-[[ ${1:-} == -- ]] && shift
+bin=${1:-$here/build/src/cli/rollcheck}
 source "$here/scripts/bench/bench_lib.sh"
 run fem_sds mpirun -n 2 "$bin" fem-sds --body oloid
-run rim_loop mpirun -n 2 "$bin" rim --body oloid --edge-radius 0.001 "$@"
+run rim_loop mpirun -n 2 "$bin" rim --body oloid --edge-radius 0.001
 /usr/bin/python3 - "$tmp" <<'PY'
 import json, sys
 tmp = sys.argv[1]

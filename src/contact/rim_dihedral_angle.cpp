@@ -10,7 +10,8 @@ std::array<double, 2> rim_dihedral_angle(std::span<const oracle::Circle> circles
                                          const oracle::Ruling& ruling)
 {
   const Eigen::Vector3d& u = ruling.direction;
-  const std::array<std::pair<int, Eigen::Vector3d>, 2> ends{{{start_circle, ruling.start_m}, {end_circle, ruling.end_m}}};
+  const std::array<std::pair<int, Eigen::Vector3d>, 2> ends{
+      {{start_circle, ruling.start_m}, {end_circle, ruling.end_m}}};
   std::array<double, 2> dihedral{};
   for (std::size_t e = 0; e < 2; ++e)
   {

@@ -32,7 +32,9 @@ std::vector<Eigen::Vector3d> tangent_planes_through_line(const oracle::Circle& o
                                                          const Eigen::Vector3d& s, const Eigen::Vector3d& t)
 {
   const Eigen::Vector3d e1 = other.normal.unitOrthogonal(), e2 = other.normal.cross(e1);
-  auto point = [&](double a) { return Eigen::Vector3d(other.centre_m + other.radius_m * (std::cos(a) * e1 + std::sin(a) * e2)); };
+  auto point = [&](double a) {
+    return Eigen::Vector3d(other.centre_m + other.radius_m * (std::cos(a) * e1 + std::sin(a) * e2));
+  };
   auto residual = [&](double a) {
     const Eigen::Vector3d tangent = -std::sin(a) * e1 + std::cos(a) * e2;
     return (point(a) - s).dot(t.cross(tangent));

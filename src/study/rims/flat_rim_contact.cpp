@@ -111,7 +111,8 @@ FlatRimContact flat_rim_contact(const FlatRimSettings& s, const LoopEnd& loop_en
                                  loop_end.interior_angle_rad * 180 / std::numbers::pi,
                                  smallest_flat_rim_angle_rad * 180 / std::numbers::pi));
   const contact::RoundedEndProblem end = loop_end_problem(loop_end, s.normal_load_n);
-  return {contact::solve_rounded_end(s, end, progress), loop_end.ruling.length_m, loop_end.centre_of_pressure_from_end(),
+  return {contact::solve_rounded_end(s, end, progress), loop_end.ruling.length_m,
+          loop_end.centre_of_pressure_from_end(),
           loop_end.interior_angle_rad, loop_end.radius_m(), loop_end.dihedral_angle_rad()};
 }
 

@@ -158,7 +158,8 @@ std::vector<RimLoopEnd> direct_ends(MPI_Comm comm, const RimLoopSettings& s, con
     {
       if (!r.solved || !(end == 0 ? r.locus.loaded_from == 0 : r.locus.loaded_to == 1))
         continue;
-      const double q = oracle::line_load(s.loop.normal_load_n, r.locus.centre_of_pressure, r.locus.ruling->length_m, end);
+      const double q
+          = oracle::line_load(s.loop.normal_load_n, r.locus.centre_of_pressure, r.locus.ruling->length_m, end);
       if (q > 0)
         loaded.push_back({&r, end, q});
     }
@@ -171,7 +172,8 @@ std::vector<RimLoopEnd> direct_ends(MPI_Comm comm, const RimLoopSettings& s, con
   {
     beat.step(fmt::format("direct end {} of {} (orientation {}, its {})", ends.size() + 1, loaded.size(),
                           l.orientation->index, l.end == 0 ? "start" : "end"));
-    ends.push_back(direct_end(comm, s, interior.circles, *l.orientation, l.end, l.load_n_per_m, approach_over_estimate));
+    ends.push_back(
+        direct_end(comm, s, interior.circles, *l.orientation, l.end, l.load_n_per_m, approach_over_estimate));
     if (ends.back().outside_model.empty())
       approach_over_estimate = ends.back().study.approach_over_estimate();
   }
@@ -261,7 +263,8 @@ std::pair<double, double> exponent_shift(MPI_Comm comm, const loop_scores::LoopS
   for (const loop_scores::RulingSample& ruling : samples.rulings)
     for (const loop_scores::LoadedEnd& e : ruling.ends)
     {
-      const double shift = sharp_edge_exponent(end, e.dihedral_angle_rad) - sharp_edge_exponent(end, e.interior_angle_rad);
+      const double shift
+          = sharp_edge_exponent(end, e.dihedral_angle_rad) - sharp_edge_exponent(end, e.interior_angle_rad);
       sums[0] += shift;
       sums[1] += 1;
       largest = std::max(largest, shift);
@@ -344,7 +347,8 @@ void add_end_table(MPI_Comm comm, const RimLoopSettings& s, RimLoopResult& resul
   const auto range = dihedral_range(comm, result.fem_sds.loop_samples, result.ends,
                                     result.flat_table.empty() ? std::numeric_limits<double>::infinity()
                                                               : result.flat_from_rad);
-  const auto [lowest, highest] = range.value_or(std::pair{result.loaded_end_dihedral_min_rad, result.loaded_end_dihedral_min_rad});
+  const auto [lowest, highest]
+      = range.value_or(std::pair{result.loaded_end_dihedral_min_rad, result.loaded_end_dihedral_min_rad});
   const double lo = std::max(lowest, smallest_modelled_angle_rad);
   const double hi = std::min({highest, result.singular_from_rad - 10 * singular_angle_tolerance_rad,
                               largest_modelled_angle(s.end)});
@@ -412,7 +416,7 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   ProgressBeat beat("rim loop", rank == 0);
-  beat.step(fmt::format("the interior (fem-sds, {} orientations)", s.loop.orientations));
+  beat.step(fmt::format("the interior (fem-sds; orientations solved directly: {})", s.loop.orientations));
   fem::SliceScaling slices(loop_scores::slice_settings(s.loop), s.loop.table_nodes_per_decade);
   result.fem_sds = loop_scores::run_fem_sds(comm, s.loop, slices);
   result.ends = direct_ends(comm, s, result.fem_sds, beat);
