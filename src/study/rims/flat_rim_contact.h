@@ -77,8 +77,8 @@ struct FlatRimContact : contact::RoundedEndContact
   double ruling_length_m = 0;           ///< the body's
   double centre_of_pressure = 0;        ///< the body's c, as a fraction of the ruling from the end
   double interior_angle_rad = 0;        ///< of the rim at the end (its section in the ruling's vertical plane)
-  double dihedral_angle_rad = 0;        ///< of the rim at the end, normal to its edge (contact/rim_dihedral_angle.h)
   double end_radius_m = 0;              ///< the hull's sheet radius across the ruling at the end
+  double dihedral_angle_rad = 0;        ///< of the rim at the end, normal to its edge (contact/rim_dihedral_angle.h)
 };
 
 /// Whether a body's end solved at the settings' window wants its whole
