@@ -8,6 +8,7 @@
 #include "cli/cli.h"
 #include "cli/scenes.h"
 #include "study/rims/flat_rim_contact.h"
+#include "study/rims/progress_beat.h"
 #include <numbers>
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
@@ -80,7 +81,9 @@ const SceneSchema<study::rims::FlatRimSettings>& flat_rim_schema()
 nlohmann::json run_flat_rim(const io::Parameters& p)
 {
   const study::rims::FlatRimSettings setup = flat_rim_schema().bind(p);
-  const study::rims::FlatRimContact r = study::rims::flat_rim_contact(setup);
+  study::rims::ProgressBeat beat("flat-rim", study::rims::logging_rank());
+  const study::rims::FlatRimContact r
+      = study::rims::flat_rim_contact(setup, [&](const std::string& what) { beat.step(what); });
   print_summary(study::rims::report(setup, r));
   nlohmann::json j = to_json(r);
   j["counter_face"] = setup.steel_counter_face ? "steel" : "rigid";

@@ -58,11 +58,11 @@ void add_loop_options(RimSchema& s)
 void add_end_table_options(RimSchema& s)
 {
   s.real("end_table_step_deg", "--end-table-step", &RimCommand::end_table_step_rad, "deg",
-         "With --body: largest spacing of the end table's interior angles (end models across the loop's range of "
-         "loaded ends; the check halves it)",
+         "With --body: largest spacing of the end table's dihedral angles (end models across the loop's range of "
+         "loaded ends, each end's angle normal to its rim; the check halves it)",
          io::Bounds{0.5, 60}, degree)
       .real("end_table_acute_step_deg", "--end-table-acute-step", &RimCommand::end_table_acute_step_rad, "deg",
-            "With --body: below 90 deg, largest spacing of the end table's interior angles instead (a node at 90 deg), "
+            "With --body: below 90 deg, largest spacing of the end table's dihedral angles instead (a node at 90 deg), "
             "where an acute rounded end's ratio bends; 0: --end-table-step throughout",
             io::Bounds{0, 60}, degree)
       .real("end_table_radius_step", "--end-table-radius-step", &RimCommand::end_table_radius_step, "",
@@ -95,7 +95,8 @@ void add_end_options(RimSchema& s)
             "One end: q, the line load at the end (the preprint's F = 100 N over a 10 mm ruling)", io::positive)
       .real("interior_angle_deg", "--interior-angle", end(&RimEndSettings::interior_angle_rad), "deg",
             "One end: a, between the contact sheet and the rim's other face through the body: 90 a square end, below "
-            "it an acute rim, towards 180 the other face rises gently (fem-sds reports 90 + each end's rim lean)",
+            "it an acute rim, towards 180 the other face rises gently; measured normal to the edge, which is square to "
+            "the ruling (with --body each end's dihedral angle normal to its rim)",
             io::Bounds{60, 180, false, true}, degree)
       .real("edge_radius_m", "--edge-radius", end(&RimEndSettings::edge_radius_m), "m",
             "r_e of the edge's fillet, the way a part is finished; 0: the sharp edge of the ideal hull. With --body "

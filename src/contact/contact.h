@@ -8,7 +8,8 @@
 // material and load parameter is a named option whose default is the
 // preprint's value. Also the contact loci of sampled orientations of bodies
 // that are hulls of circles (contact_locus.h: support set, load, creases) and
-// the rims at a ruling's ends (rim_overhang.h), which the FEM layer is given,
+// the rims at a ruling's ends (rim_overhang.h; their dihedral angles,
+// rim_dihedral_angle.h), which the FEM layer is given,
 // and the stress singularity of a rim's edge on the rigid plane
 // (wedge_exponent.h) or on a block of elastic material
 // (edge_on_elastic_block_exponent.h), and frictionless contact of two
@@ -32,6 +33,7 @@
 #include "contact/line_contact.h"
 #include "contact/line_hertz_beyond.h"
 #include "contact/load_ratio.h"
+#include "contact/rim_dihedral_angle.h"
 #include "contact/rim_overhang.h"
 #include "contact/rounded_end.h"
 #include "contact/rounded_end_level.h"

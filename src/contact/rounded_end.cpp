@@ -4,6 +4,7 @@
 #include "core/refinement_series.h"
 #include <algorithm>
 #include <cmath>
+#include <fmt/format.h>
 
 namespace rollcheck::contact
 {
@@ -39,8 +40,13 @@ SolvedLevel solve_level(const RoundedEndSettings& s, const RoundedEndProblem& en
 
 /// The levels and the longer window of one end at the settings' window,
 /// into `result`.
-void solve_levels(const RoundedEndSettings& s, const RoundedEndProblem& end, RoundedEndContact& result)
+void solve_levels(const RoundedEndSettings& s, const RoundedEndProblem& end, RoundedEndContact& result,
+                  const RoundedEndProgress& progress)
 {
+  auto tell = [&](const std::string& what) {
+    if (progress)
+      progress(what);
+  };
   result.levels.clear();
   result.largest_slope = 0;
   // The window's length: the first level again with the window twice as
@@ -52,12 +58,16 @@ void solve_levels(const RoundedEndSettings& s, const RoundedEndProblem& end, Rou
   {
     RoundedEndSettings longer = s;
     longer.after_over_half_width *= 2;
+    tell(fmt::format("the window twice as long ({:.0f} b), cells of b / {:.0f}", longer.after_over_half_width,
+                     s.cells_per_half_width));
     result.longer_window_peak_pa = solve_level(longer, end, first_cell, result).level.peak_pressure_pa;
   }
   for (int k = 0; k < s.levels + s.extra_levels
                   && (k < s.levels || !converged(peak_series(result.levels), s.tolerance, relative_change));
        ++k)
   {
+    tell(fmt::format("level {} ({} set, up to {} more while the peak changes), cells of b / {:.0f}", k + 1, s.levels,
+                     s.extra_levels, s.cells_per_half_width * std::pow(2.0, k)));
     SolvedLevel solved = solve_level(s, end, first_cell / std::pow(2.0, k), result);
     result.largest_slope = std::max(result.largest_slope, solved.largest_slope);
     result.end_lift_m = solved.end_lift_m;
@@ -66,7 +76,8 @@ void solve_levels(const RoundedEndSettings& s, const RoundedEndProblem& end, Rou
 }
 } // namespace
 
-RoundedEndContact solve_rounded_end(const RoundedEndSettings& s, const RoundedEndProblem& end)
+RoundedEndContact solve_rounded_end(const RoundedEndSettings& s, const RoundedEndProblem& end,
+                                    const RoundedEndProgress& progress)
 {
   const auto start = std::chrono::steady_clock::now();
   RoundedEndContact result;
@@ -81,7 +92,7 @@ RoundedEndContact solve_rounded_end(const RoundedEndSettings& s, const RoundedEn
   for (int shortened = 0;; ++shortened)
     try
     {
-      solve_levels(window, end, result);
+      solve_levels(window, end, result, progress);
       break;
     }
     catch (const WindowCannotBalance&)

@@ -40,6 +40,8 @@
 // have no plane-strain limit).
 #include "contact/rounded_end_level.h"
 #include "contact/rounded_end_problem.h"
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace rollcheck::contact
@@ -69,7 +71,11 @@ struct RoundedEndContact
 /// across once the window has widened twice (ContactBeyondGrid), a window
 /// shortened three times that still cannot balance the body
 /// (WindowCannotBalance), a matching or balance that does not settle.
-RoundedEndContact solve_rounded_end(const RoundedEndSettings& settings, const RoundedEndProblem& end);
+/// `progress`, if set, is told each solve as it starts (the longer window,
+/// each level), in words.
+using RoundedEndProgress = std::function<void(const std::string&)>;
+RoundedEndContact solve_rounded_end(const RoundedEndSettings& settings, const RoundedEndProblem& end,
+                                    const RoundedEndProgress& progress = {});
 
 /// Whether a body's end solved at the settings' window wants its whole
 /// ruling instead: the balance shortened the window and the doubled window

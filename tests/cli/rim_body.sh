@@ -16,6 +16,10 @@ check_json "two loaded square ends per sample, none singular on the rigid plane"
   '.loop_scores.loaded_ends == 512 and .loop_scores.loaded_end_samples == 256 and .singular_from_deg > 89.999
    and (.ends | length) == 2 and all(.ends[]; .singular == false and (.interior_angle_deg - 90 | fabs) < 1e-6)' \
   "$tmp/cylinder.json"
+check_json "a rim square to the ruling: its dihedral angle is its section, 90 deg, with a wedge exponent of 0 at both" \
+  'all(.ends[]; (.dihedral_angle_deg - 90 | fabs) < 1e-6 and .dihedral_wedge_exponent == 0 and .section_wedge_exponent == 0)
+   and (.loaded_end_dihedral_min_deg - 90 | fabs) < 1e-6 and (.loaded_end_dihedral_max_deg - 90 | fabs) < 1e-6
+   and .dihedral_minus_section_exponent_max == 0' "$tmp/cylinder.json"
 check_json "the square ends converge below the interior (a free end is softer), and the table (same q, R) agrees with them within 3 %" \
   'all(.ends[]; .converged and .end_to_interior < 1 and .end_peak_over_interior_peak < 1)
    and (.end_table | length) == 1 and .end_table_vs_direct < 0.03' "$tmp/cylinder.json"

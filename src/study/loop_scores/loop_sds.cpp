@@ -2,6 +2,7 @@
 #include "study/loop_scores/loop_sds.h"
 #include "contact/fatigue.h"
 #include "contact/load_ratio.h"
+#include "contact/rim_dihedral_angle.h"
 #include "contact/rim_overhang.h"
 #include "core/error.h"
 #include "core/json_number.h"
@@ -92,6 +93,8 @@ RulingSample map_ruling(std::span<const oracle::Circle> circles, const contact::
     return sample;
   const std::array<double, 2> lean
       = contact::rim_overhang(circles, locus.support.circles[0], locus.support.circles[1], ruling);
+  const std::array<double, 2> dihedral
+      = contact::rim_dihedral_angle(circles, locus.support.circles[0], locus.support.circles[1], ruling);
   for (const int end : {0, 1})
   {
     if (!(end == 0 ? start_loaded : end_loaded))
@@ -104,7 +107,7 @@ RulingSample map_ruling(std::span<const oracle::Circle> circles, const contact::
         {contact::faces_along_ruling(cones, locus, fractions)[0],
          line_hertz_peak(s.normal_load_n, locus.centre_of_pressure, ruling, effective_modulus_pa, f),
          contact::load_ratio(load_at(f), radius_at(f), effective_modulus_pa), std::numbers::pi / 2 + lean[end],
-         radius_at(f)});
+         radius_at(f), dihedral[end]});
   }
   return sample;
 }

@@ -116,6 +116,9 @@ struct LoadedEnd
   double load_ratio = 0;
   double interior_angle_rad = 0;
   double radius_m = 0;
+  /// The rim's angle normal to its edge (contact/rim_dihedral_angle.h), where
+  /// interior_angle_rad is the section in the ruling's vertical plane.
+  double dihedral_angle_rad = 0;
 };
 
 /// The end's b / R by line Hertz, sqrt(4 q / (pi E* R)) = sqrt(4 lambda / pi)

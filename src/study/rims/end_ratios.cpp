@@ -10,8 +10,10 @@ std::optional<double> EndRatios::operator()(int stride, const loop_scores::Loade
   if (!flat_table.empty() && end.interior_angle_rad >= flat_from_rad)
     return flat_rim_peak(flat_table, static_cast<int>(own_stride(stride, flat_table.size())), end.interior_angle_rad)
            / end.line_hertz_pa;
+  // The end table's angle is the wedge's, normal to the rim; the flat-rim
+  // table's is the section's (its nodes are the loop's own ends).
   return end_table_ratio(table, stride, singular_from_rad,
-                         std::clamp(end.interior_angle_rad, smallest_modelled_angle_rad, largest_modelled_rad),
+                         std::clamp(end.dihedral_angle_rad, smallest_modelled_angle_rad, largest_modelled_rad),
                          end.radius_m);
 }
 

@@ -1,9 +1,9 @@
 #pragma once
 // The loop's end/interior ratio of a loaded end, from the rim loop's two
 // tables (study/rims/rim_loop.h): from flat_from_rad on the flat-rim
-// table's peak at its interior angle over its line Hertz peak
+// table's peak at its (section) interior angle over its line Hertz peak
 // (study/rims/flat_rim_table.h), below it the FEM end table's ratio at its
-// angle (held to [60 deg, largest_modelled_rad]) and R
+// dihedral angle (held to [60 deg, largest_modelled_rad]) and R
 // (study/rims/end_table.h). The loop's end-aware scores
 // (study/loop_scores/loop_sds.h loop_scores::end_aware_scores) take an end's
 // pressure as that ratio times the FEM pressure at the end.
@@ -26,7 +26,7 @@ struct EndRatios
   double singular_from_rad = std::numbers::pi;
   double largest_modelled_rad = std::numbers::pi;
   /// The ratio of a loaded end (as loop_scores::finished_end has it); none
-  /// above singular_from_rad.
+  /// where its dihedral angle lies above singular_from_rad.
   std::optional<double> operator()(int stride, const loop_scores::LoadedEnd& end) const;
   /// The end-aware scores' factors: by every node, then by every other when
   /// either table has 3 or more nodes.

@@ -15,14 +15,6 @@ namespace
 {
 constexpr double degree = std::numbers::pi / 180;
 
-double sharp_edge_exponent(const fem::RimEndSettings& end, double interior_angle_rad)
-{
-  return end.counter_face == fem::CounterFace::rigid
-             ? contact::edge_on_rigid_plane_exponent(interior_angle_rad)
-             : contact::edge_on_elastic_block_exponent(interior_angle_rad, end.youngs_modulus_pa, end.poisson_ratio,
-                                                       end.youngs_modulus_pa, end.poisson_ratio);
-}
-
 /// The table's columns: its runs of nodes of one R.
 std::vector<std::span<const EndTableNode>> table_columns(const std::vector<EndTableNode>& table)
 {
@@ -38,6 +30,14 @@ std::vector<std::span<const EndTableNode>> table_columns(const std::vector<EndTa
   return columns;
 }
 } // namespace
+
+double sharp_edge_exponent(const fem::RimEndSettings& end, double interior_angle_rad)
+{
+  return end.counter_face == fem::CounterFace::rigid
+             ? contact::edge_on_rigid_plane_exponent(interior_angle_rad)
+             : contact::edge_on_elastic_block_exponent(interior_angle_rad, end.youngs_modulus_pa, end.poisson_ratio,
+                                                       end.youngs_modulus_pa, end.poisson_ratio);
+}
 
 double largest_modelled_angle(const fem::RimEndSettings& end)
 {

@@ -30,6 +30,12 @@ constexpr double largest_rounded_angle_rad = 170 * (std::numbers::pi / 180);
 /// The bisection's tolerance on the angle where sharp edges turn singular.
 constexpr double singular_angle_tolerance_rad = 1e-10;
 
+/// lambda - 1 of a sharp edge of `interior_angle_rad` (the dihedral, normal
+/// to the edge) against `end`'s counter-face: the rigid plane's wedge
+/// (contact/wedge_exponent.h) or a block of the body's own material
+/// (contact/edge_on_elastic_block_exponent.h); negative: singular.
+double sharp_edge_exponent(const fem::RimEndSettings& end, double interior_angle_rad);
+
 /// The largest interior angle the end model takes with `end`'s edge.
 double largest_modelled_angle(const fem::RimEndSettings& end);
 

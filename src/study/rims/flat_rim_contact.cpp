@@ -87,20 +87,23 @@ double end_hull_height(const LoopEnd& end, double along_m, double across_m)
   return contact::RulingEndSurface(end.circles, end.ruling, end.end).height(along_m, across_m);
 }
 
-FlatRimContact flat_rim_contact(const FlatRimSettings& s)
+FlatRimContact flat_rim_contact(const FlatRimSettings& s, const contact::RoundedEndProgress& progress)
 {
   check_settings(s);
   if (s.interior_angle_rad == 0)
-    return flat_rim_contact(s, body_loop_end(s.body, s.end_angle_rad, s.loop_side));
+    return flat_rim_contact(s, body_loop_end(s.body, s.end_angle_rad, s.loop_side), progress);
   if (s.whole_ruling)
     throw InputError("flat-rim: --whole-ruling solves a body's loop end; a straight rim's load is held along a long "
                      "contact, with no ruling to end it (drop --interior-angle or --whole-ruling)");
   const contact::RoundedEndProblem end
       = contact::straight_rim_end(s, s.interior_angle_rad, s.sheet_radius_m, s.load_n_per_m);
-  return {contact::solve_rounded_end(s, end), 0.0, 0.0, s.interior_angle_rad, s.sheet_radius_m};
+  // The straight rim is square to the ruling: its section is its dihedral.
+  return {contact::solve_rounded_end(s, end, progress), 0.0, 0.0, s.interior_angle_rad, s.sheet_radius_m,
+          s.interior_angle_rad};
 }
 
-FlatRimContact flat_rim_contact(const FlatRimSettings& s, const LoopEnd& loop_end)
+FlatRimContact flat_rim_contact(const FlatRimSettings& s, const LoopEnd& loop_end,
+                                const contact::RoundedEndProgress& progress)
 {
   check_settings(s);
   if (!(loop_end.interior_angle_rad >= smallest_flat_rim_angle_rad))
@@ -108,8 +111,9 @@ FlatRimContact flat_rim_contact(const FlatRimSettings& s, const LoopEnd& loop_en
                                  loop_end.interior_angle_rad * 180 / std::numbers::pi,
                                  smallest_flat_rim_angle_rad * 180 / std::numbers::pi));
   const contact::RoundedEndProblem end = loop_end_problem(loop_end, s.normal_load_n);
-  return {contact::solve_rounded_end(s, end), loop_end.ruling.length_m, loop_end.centre_of_pressure_from_end(),
-          loop_end.interior_angle_rad, loop_end.radius_m()};
+  return {contact::solve_rounded_end(s, end, progress), loop_end.ruling.length_m,
+          loop_end.centre_of_pressure_from_end(),
+          loop_end.interior_angle_rad, loop_end.radius_m(), loop_end.dihedral_angle_rad()};
 }
 
 nlohmann::json to_json(const FlatRimContact& r)
@@ -136,6 +140,7 @@ nlohmann::json to_json(const FlatRimContact& r)
                       {"station_load_n_per_m", l.station_load_n_per_m}});
   return {{"ruling_length_m", r.ruling_length_m},
           {"end_interior_angle_deg", r.interior_angle_rad * 180 / std::numbers::pi},
+          {"end_dihedral_angle_deg", r.dihedral_angle_rad * 180 / std::numbers::pi},
           {"end_sheet_radius_m", r.end_radius_m},
           {"centre_of_pressure", r.centre_of_pressure},
           {"end_line_load_n_per_m", r.end_line_load_n_per_m},

@@ -76,8 +76,9 @@ struct FlatRimContact : contact::RoundedEndContact
 {
   double ruling_length_m = 0;           ///< the body's
   double centre_of_pressure = 0;        ///< the body's c, as a fraction of the ruling from the end
-  double interior_angle_rad = 0;        ///< of the rim at the end
+  double interior_angle_rad = 0;        ///< of the rim at the end (its section in the ruling's vertical plane)
   double end_radius_m = 0;              ///< the hull's sheet radius across the ruling at the end
+  double dihedral_angle_rad = 0;        ///< of the rim at the end, normal to its edge (contact/rim_dihedral_angle.h)
 };
 
 /// Whether a body's end solved at the settings' window wants its whole
@@ -89,11 +90,12 @@ using contact::needs_whole_ruling;
 /// radius, load, edge radius or modulus, an angle outside [150, 180] deg or
 /// a body other than the oloids and rollers (the cylinder's ends are square),
 /// ComputationError when a solve fails (contact::solve_rounded_end).
-FlatRimContact flat_rim_contact(const FlatRimSettings& settings);
+FlatRimContact flat_rim_contact(const FlatRimSettings& settings, const contact::RoundedEndProgress& progress = {});
 /// A loaded end of any two-circle body's loop (study/rims/flattest_loop_ends.h),
 /// its q from F (the settings' normal_load_n) and c by the locus's rule; the
 /// settings' oloid and straight-rim fields are not used.
-FlatRimContact flat_rim_contact(const FlatRimSettings& settings, const LoopEnd& end);
+FlatRimContact flat_rim_contact(const FlatRimSettings& settings, const LoopEnd& end,
+                                const contact::RoundedEndProgress& progress = {});
 /// The hull's lower surface near a loop's end, as flat-rim solves it: its
 /// height (m) above the ground at x' along the ruling from the end (negative:
 /// beyond it) and y across (contact/ruling_end_surface.h).

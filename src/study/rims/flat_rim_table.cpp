@@ -47,9 +47,10 @@ std::vector<std::vector<LoopEnd>> node_ends(std::span<const oracle::Circle> circ
 
 /// One end solved by flat-rim, packed: over its whole loaded ruling where
 /// its window does not converge (the fuller model: no window to shorten).
-std::array<double, packed_side> solve_side(const FlatRimSettings& setup, const LoopEnd& end)
+std::array<double, packed_side> solve_side(const FlatRimSettings& setup, const LoopEnd& end,
+                                           const contact::RoundedEndProgress& progress)
 {
-  FlatRimContact r = flat_rim_contact(setup, end);
+  FlatRimContact r = flat_rim_contact(setup, end, progress);
   double window_peak = 0;
   if (needs_whole_ruling(setup, r))
   {
@@ -57,7 +58,7 @@ std::array<double, packed_side> solve_side(const FlatRimSettings& setup, const L
     FlatRimSettings whole = setup;
     whole.whole_ruling = true;
     const double window_wall_s = r.wall_s;
-    r = flat_rim_contact(whole, end);
+    r = flat_rim_contact(whole, end, [&](const std::string& what) { progress("its whole ruling: " + what); });
     r.wall_s += window_wall_s;
   }
   return {r.centre_of_pressure, r.end_line_load_n_per_m, r.end_radius_m, r.levels.back().peak_pressure_pa,
@@ -74,8 +75,11 @@ FlatRimSide unpack_side(const double* v)
 /// others' values stay 0, so a sum shares them. A failed solve is logged
 /// where it failed and refused alike on every rank (its slot's slope -1).
 std::vector<double> solve_sides(MPI_Comm comm, const FlatRimSettings& setup,
-                                const std::vector<std::vector<LoopEnd>>& ends)
+                                const std::vector<std::vector<LoopEnd>>& ends, ProgressBeat* beat)
 {
+  std::size_t sides = 0;
+  for (const std::vector<LoopEnd>& node_ends : ends)
+    sides += node_ends.size();
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
@@ -88,7 +92,12 @@ std::vector<double> solve_sides(MPI_Comm comm, const FlatRimSettings& setup,
       if (job++ % size == rank)
         try
         {
-          v = solve_side(setup, end);
+          const std::string side = fmt::format("flat-rim side {} of {} at {:.2f} deg", job, sides,
+                                               end.interior_angle_rad / degree);
+          v = solve_side(setup, end, [&](const std::string& what) {
+            if (beat)
+              beat->step(side + ", " + what);
+          });
         }
         catch (const ComputationError& e)
         {
@@ -103,10 +112,11 @@ std::vector<double> solve_sides(MPI_Comm comm, const FlatRimSettings& setup,
 } // namespace
 
 FlatRimTable flat_rim_table(MPI_Comm comm, const FlatRimSettings& setup, std::span<const oracle::Circle> circles,
-                            const Eigen::Vector3d& centre_of_mass_m, double from_rad, double step_rad)
+                            const Eigen::Vector3d& centre_of_mass_m, double from_rad, double step_rad,
+                            ProgressBeat* beat)
 {
   const std::vector<std::vector<LoopEnd>> ends = node_ends(circles, centre_of_mass_m, from_rad, step_rad);
-  const std::vector<double> values = solve_sides(comm, setup, ends);
+  const std::vector<double> values = solve_sides(comm, setup, ends, beat);
   std::vector<FlatRimNode> table;
   std::vector<bool> refused;
   std::vector<std::string> refused_angles;
@@ -115,6 +125,7 @@ FlatRimTable flat_rim_table(MPI_Comm comm, const FlatRimSettings& setup, std::sp
   {
     FlatRimNode& node = table.emplace_back();
     node.interior_angle_rad = node_ends.front().interior_angle_rad;
+    node.dihedral_angle_rad = node_ends.front().dihedral_angle_rad();
     bool failed = false;
     double slope = 0;
     for (std::size_t k = 0; k < node_ends.size(); ++k, v += packed_side)

@@ -14,6 +14,7 @@
 // hull): the table then starts after the last refused node
 // (flat_rim_table_start), the FEM end table taking the ends below.
 #include "study/rims/flat_rim_contact.h"
+#include "study/rims/progress_beat.h"
 #include <Eigen/Core>
 #include <cstddef>
 #include <mpi.h>
@@ -53,6 +54,8 @@ struct FlatRimSide
 struct FlatRimNode
 {
   double interior_angle_rad = 0;
+  /// Normal to the rim (contact/rim_dihedral_angle.h), the first side's.
+  double dihedral_angle_rad = 0;
   std::vector<FlatRimSide> sides;
   /// The largest peak over the sides (Pa): the loop's ends near this angle
   /// take it, interpolated linearly in the angle (it is smooth there, where
@@ -81,9 +84,11 @@ struct FlatRimTable
 /// flat_rim_table_start's node on when some are refused. Collective: every
 /// rank gets the table. ComputationError when the flattest node is refused
 /// or too few are left; InputError (from flattest_loop_ends_below) when no
-/// orientation has a node's angle.
+/// orientation has a node's angle. `beat`, if given, is told each side this
+/// rank solves.
 FlatRimTable flat_rim_table(MPI_Comm comm, const FlatRimSettings& setup, std::span<const oracle::Circle> circles,
-                            const Eigen::Vector3d& centre_of_mass_m, double from_rad, double step_rad);
+                            const Eigen::Vector3d& centre_of_mass_m, double from_rad, double step_rad,
+                            ProgressBeat* beat = nullptr);
 
 /// Where the flat-rim table starts when some of its nodes are refused (a
 /// failed solve, or contact on slopes too steep for half-space theory, as

@@ -1,4 +1,5 @@
 #include "study/rims/flattest_loop_ends.h"
+#include "contact/rim_dihedral_angle.h"
 #include "contact/rim_overhang.h"
 #include "core/error.h"
 #include "oracle/contact_density.h"
@@ -138,6 +139,11 @@ FlattestLoopEnds flattest_loop_ends_below(std::span<const oracle::Circle> circle
     result.at_angle.push_back(sides);
   }
   return result;
+}
+
+double LoopEnd::dihedral_angle_rad() const
+{
+  return contact::rim_dihedral_angle(circles, 0, 1, ruling)[static_cast<std::size_t>(end)];
 }
 
 LoopEnd body_loop_end(const geometry::BodySpec& body, double interior_angle_rad, int loop_side)

@@ -40,6 +40,9 @@ struct LoopEnd
   double radius_m() const { return end == 0 ? ruling.start_radius_m : ruling.end_radius_m; }
   double other_radius_m() const { return end == 0 ? ruling.end_radius_m : ruling.start_radius_m; }
   const Eigen::Vector3d& point_m() const { return end == 0 ? ruling.start_m : ruling.end_m; }
+  /// The rim's angle normal to its edge (contact/rim_dihedral_angle.h);
+  /// interior_angle_rad is its section in the ruling's vertical plane.
+  double dihedral_angle_rad() const;
 };
 
 /// The loop's flattest loaded end and, for each of `angles_rad` below its

@@ -3,11 +3,13 @@
 // end-aware scores, in that order.
 #include "study/rims/rim_loop.h"
 #include "contact/hertz.h"
+#include "contact/rim_dihedral_angle.h"
 #include "core/error.h"
 #include "fem/mesh/scene_mesh.h"
 #include "fem/petsc_session.h"
 #include "fem/scenes/slice_scaling.h"
 #include "oracle/contact_density.h"
+#include "study/rims/progress_beat.h"
 #include "study/rims/table_nodes.h"
 #include <algorithm>
 #include <chrono>
@@ -15,7 +17,9 @@
 #include <fmt/format.h>
 #include <limits>
 #include <numbers>
+#include <span>
 #include <spdlog/spdlog.h>
+#include <tuple>
 
 namespace rollcheck::study::rims
 {
@@ -106,17 +110,19 @@ FlatRimSettings flat_rim_settings(const RimLoopSettings& s)
 /// The end model at one loaded end of a directly solved orientation, from
 /// `approach_over_estimate` (the end before's); outside the model (no
 /// solve) where b / R is too large for line contact.
-RimLoopEnd direct_end(MPI_Comm comm, const RimLoopSettings& s, const loop_scores::FemSdsOrientation& r, int end,
-                      double q, double approach_over_estimate)
+RimLoopEnd direct_end(MPI_Comm comm, const RimLoopSettings& s, std::span<const oracle::Circle> circles,
+                      const loop_scores::FemSdsOrientation& r, int end, double q, double approach_over_estimate)
 {
   const oracle::Ruling& ruling = *r.locus.ruling;
   RimLoopEnd e;
   e.orientation = r.index;
   e.end = end;
   e.interior_angle_rad = std::numbers::pi / 2 + r.rim_overhang_rad[static_cast<std::size_t>(end)];
+  e.dihedral_angle_rad = contact::rim_dihedral_angle(circles, r.locus.support.circles[0], r.locus.support.circles[1],
+                                                     ruling)[static_cast<std::size_t>(end)];
   // A rounded part's finish leaves no radius below r_e (study/loop_scores/loop_sds.h loop_scores::end_aware_scores).
   const double hull_radius = end == 0 ? ruling.start_radius_m : ruling.end_radius_m;
-  fem::RimEndSettings settings = end_settings(s, std::max(hull_radius, s.end.edge_radius_m), q, e.interior_angle_rad);
+  fem::RimEndSettings settings = end_settings(s, std::max(hull_radius, s.end.edge_radius_m), q, e.dihedral_angle_rad);
   settings.first_approach_scale = approach_over_estimate;
   e.modelled_angle_rad = settings.interior_angle_rad;
   const double b = half_width(settings);
@@ -137,27 +143,39 @@ RimLoopEnd direct_end(MPI_Comm comm, const RimLoopSettings& s, const loop_scores
 }
 
 /// The end models at every loaded end of the directly solved orientations.
-std::vector<RimLoopEnd> direct_ends(MPI_Comm comm, const RimLoopSettings& s, const loop_scores::FemSdsResult& interior)
+std::vector<RimLoopEnd> direct_ends(MPI_Comm comm, const RimLoopSettings& s, const loop_scores::FemSdsResult& interior,
+                                    ProgressBeat& beat)
 {
+  struct Loaded
+  {
+    const loop_scores::FemSdsOrientation* orientation;
+    int end;
+    double load_n_per_m;
+  };
+  std::vector<Loaded> loaded;
+  for (const loop_scores::FemSdsOrientation& r : interior.orientations)
+    for (const int end : {0, 1})
+    {
+      if (!r.solved || !(end == 0 ? r.locus.loaded_from == 0 : r.locus.loaded_to == 1))
+        continue;
+      const double q
+          = oracle::line_load(s.loop.normal_load_n, r.locus.centre_of_pressure, r.locus.ruling->length_m, end);
+      if (q > 0)
+        loaded.push_back({&r, end, q});
+    }
   std::vector<RimLoopEnd> ends;
   // Each end's load control starts from the end before's converged approach
   // over its estimate, as the end table's nodes do: the estimate overshoots
   // a held block's approach by about 20 % whatever the end's q and R.
   double approach_over_estimate = 1;
-  for (const loop_scores::FemSdsOrientation& r : interior.orientations)
+  for (const Loaded& l : loaded)
   {
-    if (!r.solved)
-      continue;
-    for (const int end : {0, 1})
-    {
-      const bool loaded = end == 0 ? r.locus.loaded_from == 0 : r.locus.loaded_to == 1;
-      const double q = oracle::line_load(s.loop.normal_load_n, r.locus.centre_of_pressure, r.locus.ruling->length_m, end);
-      if (!loaded || !(q > 0))
-        continue;
-      ends.push_back(direct_end(comm, s, r, end, q, approach_over_estimate));
-      if (ends.back().outside_model.empty())
-        approach_over_estimate = ends.back().study.approach_over_estimate();
-    }
+    beat.step(fmt::format("direct end {} of {} (orientation {}, its {})", ends.size() + 1, loaded.size(),
+                          l.orientation->index, l.end == 0 ? "start" : "end"));
+    ends.push_back(
+        direct_end(comm, s, interior.circles, *l.orientation, l.end, l.load_n_per_m, approach_over_estimate));
+    if (ends.back().outside_model.empty())
+      approach_over_estimate = ends.back().study.approach_over_estimate();
   }
   return ends;
 }
@@ -180,14 +198,15 @@ void log_flat_rim_node(const FlatRimNode& node)
 /// (study/rims/flat_rim_table.h). Where half-space theory cannot stand for
 /// them (the hull not found, or steep beside the contact), the FEM end table
 /// takes them, as for a body with no such ends; the JSON says why.
-void add_flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, RimLoopResult& result)
+void add_flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, RimLoopResult& result, ProgressBeat& beat)
 {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   try
   {
     FlatRimTable flat = flat_rim_table(comm, flat_rim_settings(s), result.fem_sds.circles,
-                                       result.fem_sds.centre_of_mass_m, s.flat_rim_from_rad, s.flat_rim_step_rad);
+                                       result.fem_sds.centre_of_mass_m, s.flat_rim_from_rad, s.flat_rim_step_rad,
+                                       &beat);
     result.flat_table = std::move(flat.nodes);
     result.flat_rim_refused = std::move(flat.refused);
     result.flat_from_rad
@@ -207,6 +226,52 @@ void add_flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, RimLoopResult& 
     if (rank == 0)
       log_flat_rim_node(node);
   }
+}
+
+/// The range of the dihedral angles over the loop's loaded ends (the
+/// samples' and the directly modelled ones) whose section angle lies below
+/// `below_section_rad`; none without such ends.
+std::optional<std::pair<double, double>> dihedral_range(MPI_Comm comm, const loop_scores::LoopSamples& samples,
+                                                        const std::vector<RimLoopEnd>& direct, double below_section_rad)
+{
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  auto add = [&](double section, double dihedral) {
+    if (section >= below_section_rad)
+      return;
+    lo = std::min(lo, dihedral);
+    hi = std::max(hi, dihedral);
+  };
+  for (const loop_scores::RulingSample& ruling : samples.rulings)
+    for (const loop_scores::LoadedEnd& end : ruling.ends)
+      add(end.interior_angle_rad, end.dihedral_angle_rad);
+  for (const RimLoopEnd& e : direct)
+    add(e.interior_angle_rad, e.dihedral_angle_rad);
+  MPI_Allreduce(MPI_IN_PLACE, &lo, 1, MPI_DOUBLE, MPI_MIN, comm);
+  MPI_Allreduce(MPI_IN_PLACE, &hi, 1, MPI_DOUBLE, MPI_MAX, comm);
+  if (!(hi >= lo))
+    return std::nullopt;
+  return std::pair{lo, hi};
+}
+
+/// Over the loop's loaded ends (every rank's samples): the mean and the
+/// largest of the sharp edge's exponent at the dihedral angle less that at
+/// the section angle.
+std::pair<double, double> exponent_shift(MPI_Comm comm, const loop_scores::LoopSamples& samples,
+                                         const fem::RimEndSettings& end)
+{
+  double sums[2] = {0, 0}, largest = 0;
+  for (const loop_scores::RulingSample& ruling : samples.rulings)
+    for (const loop_scores::LoadedEnd& e : ruling.ends)
+    {
+      const double shift
+          = sharp_edge_exponent(end, e.dihedral_angle_rad) - sharp_edge_exponent(end, e.interior_angle_rad);
+      sums[0] += shift;
+      sums[1] += 1;
+      largest = std::max(largest, shift);
+    }
+  MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm);
+  MPI_Allreduce(MPI_IN_PLACE, &largest, 1, MPI_DOUBLE, MPI_MAX, comm);
+  return {sums[1] > 0 ? sums[0] / sums[1] : 0.0, largest};
 }
 
 /// The range of R over the loaded ends the end table stands for: the loop's
@@ -274,15 +339,19 @@ std::vector<double> end_table_columns(MPI_Comm comm, const RimLoopSettings& s, R
 /// angles from the smallest the end model takes to the last below the
 /// singular angle, where the end model still finds a (square) edge, or to
 /// where the flat-rim table takes over.
-void add_end_table(MPI_Comm comm, const RimLoopSettings& s, RimLoopResult& result)
+void add_end_table(MPI_Comm comm, const RimLoopSettings& s, RimLoopResult& result, ProgressBeat& beat)
 {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  const loop_scores::LoopSds& interior = result.fem_sds.loop;
-  const double lo = std::max(interior.loaded_end_angle_min_rad, smallest_modelled_angle_rad);
-  const double hi = std::min({interior.loaded_end_angle_max_rad,
-                              result.singular_from_rad - 10 * singular_angle_tolerance_rad, largest_modelled_angle(s.end),
-                              result.flat_from_rad});
+  // The dihedral angles of the ends the end table stands for: those below the flat-rim table's section angle.
+  const auto range = dihedral_range(comm, result.fem_sds.loop_samples, result.ends,
+                                    result.flat_table.empty() ? std::numeric_limits<double>::infinity()
+                                                              : result.flat_from_rad);
+  const auto [lowest, highest]
+      = range.value_or(std::pair{result.loaded_end_dihedral_min_rad, result.loaded_end_dihedral_min_rad});
+  const double lo = std::max(lowest, smallest_modelled_angle_rad);
+  const double hi = std::min({highest, result.singular_from_rad - 10 * singular_angle_tolerance_rad,
+                              largest_modelled_angle(s.end)});
   const std::vector<double> columns = end_table_columns(comm, s, result);
   // Each node's load control starts from the node before's converged
   // approach over its estimate (neighbours differ in angle or R only): one
@@ -292,9 +361,13 @@ void add_end_table(MPI_Comm comm, const RimLoopSettings& s, RimLoopResult& resul
   for (const RimLoopEnd& e : result.ends)
     if (!e.study.levels.empty())
       approach_over_estimate = e.study.approach_over_estimate();
+  const std::vector<double> angles
+      = end_table_angles(std::min(lo, hi), hi, s.end_table_step_rad, s.end_table_acute_step_rad);
   for (const double radius : columns)
-    for (const double angle : end_table_angles(std::min(lo, hi), hi, s.end_table_step_rad, s.end_table_acute_step_rad))
+    for (const double angle : angles)
     {
+      beat.step(fmt::format("end table node {} of {} ({:.2f} deg, R = {:.4g} m)", result.table.size() + 1,
+                            columns.size() * angles.size(), angle / degree, radius));
       fem::RimEndSettings settings = end_settings(s, radius, result.reference_load_n_per_m, angle);
       settings.first_approach_scale = approach_over_estimate;
       EndTableNode node{angle, radius, fem::solve_rim_end(comm, settings)};
@@ -340,20 +413,32 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
   const auto start = std::chrono::steady_clock::now();
   fem::ensure_petsc();
   RimLoopResult result;
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  ProgressBeat beat("rim loop", rank == 0);
+  beat.step(fmt::format("the interior (fem-sds; orientations solved directly: {})", s.loop.orientations));
   fem::SliceScaling slices(loop_scores::slice_settings(s.loop), s.loop.table_nodes_per_decade);
   result.fem_sds = loop_scores::run_fem_sds(comm, s.loop, slices);
-  result.ends = direct_ends(comm, s, result.fem_sds);
+  result.ends = direct_ends(comm, s, result.fem_sds, beat);
   result.end_setup = end_settings(s, s.end.radius_m, s.end.load_n_per_m, s.end.interior_angle_rad);
   result.singular_from_rad = singular_from_angle(result.end_setup);
 
   const loop_scores::LoopSds& interior = result.fem_sds.loop;
+  if (const auto range = dihedral_range(comm, result.fem_sds.loop_samples, result.ends,
+                                        std::numeric_limits<double>::infinity()))
+    std::tie(result.loaded_end_dihedral_min_rad, result.loaded_end_dihedral_max_rad) = *range;
+  std::tie(result.exponent_shift_mean, result.exponent_shift_max)
+      = exponent_shift(comm, result.fem_sds.loop_samples, result.end_setup);
   if (s.end.edge_radius_m > 0 && interior.loaded_ends > 0 && interior.loaded_end_angle_max_rad >= s.flat_rim_from_rad
       && result.fem_sds.circles.size() == 2)
-    add_flat_rim_table(comm, s, result);
-  std::vector<loop_scores::EndFactor> factors;
-  if (interior.loaded_ends > 0 && interior.loaded_end_angle_min_rad <= result.singular_from_rad)
   {
-    add_end_table(comm, s, result);
+    beat.step("the flat-rim table (the loop's flattest ends, half-space theory)");
+    add_flat_rim_table(comm, s, result, beat);
+  }
+  std::vector<loop_scores::EndFactor> factors;
+  if (interior.loaded_ends > 0 && result.loaded_end_dihedral_min_rad <= result.singular_from_rad)
+  {
+    add_end_table(comm, s, result, beat);
     check_tables_against_direct_ends(result);
     factors = EndRatios{result.table, result.flat_table, result.flat_from_rad, result.singular_from_rad,
                         largest_modelled_angle(s.end)}
@@ -362,6 +447,7 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
   else if (interior.loaded_ends > 0)
     factors.push_back([](const loop_scores::LoadedEnd&) { return std::optional<double>(); }); // every loaded end singular
   // The interior's scores with the ends', from the samples it mapped.
+  beat.step("the end-aware scores over the loop's samples");
   result.loop = result.fem_sds.loop;
   result.loop.end_aware = loop_scores::end_aware_scores(comm, result.fem_sds.loop_samples, slices,
                                                         loop_scores::loop_settings(s.loop), factors,

@@ -4,8 +4,12 @@
 // orientations fem-sds solves directly, and FEM-SDS and FEM-FDS over every
 // sample of the loop with the ends' pressures in them (study/loop_scores/loop_sds.h).
 //
-// A ruling end is loaded where the contact's load reaches a rim; its interior
-// angle is 90 deg + the rim's lean (contact/rim_overhang.h). At each such end
+// A ruling end is loaded where the contact's load reaches a rim; its section
+// angle in the ruling's vertical plane is 90 deg + the rim's lean
+// (contact/rim_overhang.h), its dihedral angle normal to the rim
+// (contact/rim_dihedral_angle.h) the wedge's: the rim crosses the ruling
+// obliquely, and the edge's singularity and the end model (its edge square
+// to the ruling) take the dihedral angle. At each such end
 // of the K orientations the end model runs at the end's own line load q and
 // radius R across the ruling: a sharp edge is singular (the wedge's exponent
 // below 0: a > 90 deg on the rigid plane, a > 77.45 deg on a steel block) or
@@ -15,7 +19,7 @@
 // Over the whole loop the end's pressure is taken as the end/interior ratio
 // times the FEM pressure at the end (study/rims/end_ratios.h). The ratio
 // comes from a table (study/rims/end_table.h): end models at evenly spaced
-// interior angles across the loop's range, and for a rounded edge at
+// dihedral angles across the loop's range, and for a rounded edge at
 // geometrically spaced R across the range of the loop's ends (its columns),
 // all at the directly modelled ends' median q, interpolated linearly in the
 // angle and in log R. A rounded end's ratio depends on r_e /
@@ -117,8 +121,11 @@ struct RimLoopEnd
 {
   std::size_t orientation = 0;       ///< loop_scores::FemSdsOrientation::index
   int end = 0;                       ///< 0 the ruling's start, 1 its end
-  double interior_angle_rad = 0;     ///< 90 deg + the rim's lean
-  double modelled_angle_rad = 0;     ///< within the end model's [60, 179.5] deg ([60, 170] rounded)
+  double interior_angle_rad = 0;     ///< the section in the ruling's vertical plane: 90 deg + the rim's lean
+  /// Normal to the rim (contact/rim_dihedral_angle.h): the wedge's angle,
+  /// which the end model (its edge square to the ruling) and the end table take.
+  double dihedral_angle_rad = 0;
+  double modelled_angle_rad = 0;     ///< the dihedral within the end model's [60, 179.5] deg ([60, 170] rounded)
   fem::RimEndStudy study;            ///< at the end's q and R (no levels when outside the model)
   /// Why the end model cannot stand for this end (empty: it does): b / R
   /// beyond fem::largest_half_width_over_radius, where the ruling ends near
@@ -138,8 +145,15 @@ struct RimLoopResult
   /// The directly modelled ends' median q and R: the end table's q, and
   /// its R when it has one column.
   double reference_load_n_per_m = 0, reference_radius_m = 0;
-  /// Interior angles above this are singular (a sharp edge; pi when rounded).
+  /// Dihedral angles above this are singular (a sharp edge; pi when rounded).
   double singular_from_rad = 0;
+  /// The loaded ends' dihedral angles over the loop (none loaded: 0, 0).
+  double loaded_end_dihedral_min_rad = 0, loaded_end_dihedral_max_rad = 0;
+  /// Over the loop's loaded ends, a sharp edge's wedge exponent at the
+  /// dihedral angle less that at the section angle (end_table.h
+  /// sharp_edge_exponent): how much too negative the section made it, on
+  /// average and at most.
+  double exponent_shift_mean = 0, exponent_shift_max = 0;
   /// Over the loop's non-singular loaded ends' angles below flat_from_rad,
   /// column by column (ascending R), each over the angles.
   std::vector<EndTableNode> table;

@@ -60,6 +60,7 @@ nlohmann::json to_json(const FlatRimSide& side)
 nlohmann::json to_json(const FlatRimNode& node)
 {
   return {{"interior_angle_deg", node.interior_angle_rad / degree},
+          {"dihedral_angle_deg", node.dihedral_angle_rad / degree},
           {"peak_pressure_pa", node.peak_pa()},
           {"ratio", node.ratio()},
           {"converged", node.converged()},
@@ -72,7 +73,12 @@ nlohmann::json to_json(const RimLoopEnd& e)
   j["orientation"] = e.orientation;
   j["end"] = e.end == 0 ? "start" : "end";
   j["interior_angle_deg"] = e.interior_angle_rad / degree;
+  j["dihedral_angle_deg"] = e.dihedral_angle_rad / degree;
   j["modelled_angle_deg"] = e.modelled_angle_rad / degree;
+  // A sharp edge's wedge equation at the angle normal to the rim (the
+  // end's) and at the section's (the reduction that was used before).
+  j["dihedral_wedge_exponent"] = sharp_edge_exponent(e.study.setup, e.dihedral_angle_rad);
+  j["section_wedge_exponent"] = sharp_edge_exponent(e.study.setup, e.interior_angle_rad);
   j["interior_peak_pa"] = e.interior_peak_pa;
   j["end_peak_pa"] = json_number(e.end_peak_pa);
   j["end_peak_over_interior_peak"]
@@ -90,6 +96,10 @@ nlohmann::json to_json(const RimLoopResult& r)
           {"counter_face", counter_face_name(r.end_setup.counter_face)},
           {"edge_radius_m", r.end_setup.edge_radius_m},
           {"singular_from_deg", r.singular_from_rad / degree},
+          {"loaded_end_dihedral_min_deg", r.loaded_end_dihedral_min_rad / degree},
+          {"loaded_end_dihedral_max_deg", r.loaded_end_dihedral_max_rad / degree},
+          {"dihedral_minus_section_exponent_mean", r.exponent_shift_mean},
+          {"dihedral_minus_section_exponent_max", r.exponent_shift_max},
           {"ends", array_json(r.ends)},
           {"worst_end_to_interior", json_number(r.worst_end_to_interior())},
           {"loop_end_to_interior", json_number(r.loop_end_to_interior())},

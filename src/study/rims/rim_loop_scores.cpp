@@ -52,7 +52,7 @@ std::string RimLoopResult::end_aware_status() const
     return "not computed";
   const loop_scores::EndAwareScores& all = loop.end_aware[0];
   if (all.singular_ends > 0)
-    return fmt::format("singular: {} of the loop's {} loaded rim ends have a sharp edge of interior angle above "
+    return fmt::format("singular: {} of the loop's {} loaded rim ends have a sharp edge of dihedral angle above "
                        "{:.2f} deg",
                        all.singular_ends, loop.loaded_ends, singular_from_rad / degree);
   if (all.outside_model_ends > 0)

@@ -38,13 +38,13 @@ std::string end_verdict(const fem::RimEndStudy& study)
 
 std::string ends_table(const RimLoopResult& r)
 {
-  std::string ends = "| orientation | end | interior angle (deg) | q (N/m) | R (mm) | b (um) | wedge exponent | FEM: "
-                     "exponent or end/interior | end peak / orientation's peak | end table | run time (s) |\n"
+  std::string ends = "| orientation | end | section / dihedral angle (deg) | q (N/m) | R (mm) | b (um) | "
+                     "wedge exponent | FEM: exponent or end/interior | end peak / orientation's peak | end table | run time (s) |\n"
                      "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const RimLoopEnd& e : r.ends)
-    ends += fmt::format("| {} | {} | {:.1f}{} | {:.4g} | {:.3g} | {:.3g} | {:.3f} | {} | {} | {} | {:.0f} |\n",
+    ends += fmt::format("| {} | {} | {:.1f} / {:.1f}{} | {:.4g} | {:.3g} | {:.3g} | {:.3f} | {} | {} | {} | {:.0f} |\n",
                         e.orientation, e.end == 0 ? "start" : "end", e.interior_angle_rad / degree,
-                        e.modelled_angle_rad != e.interior_angle_rad
+                        e.dihedral_angle_rad / degree, e.modelled_angle_rad != e.dihedral_angle_rad
                             ? fmt::format(" (modelled {:.1f})", e.modelled_angle_rad / degree)
                             : "",
                         e.study.setup.load_n_per_m, e.study.setup.radius_m * 1e3, e.study.half_width_m * 1e6,
@@ -186,14 +186,19 @@ std::string report(const RimLoopResult& r)
 {
   const loop_scores::LoopSds& loop = r.loop;
   return fmt::format("\nrims of {} ({}), counter-face {}, edge {}:\n\n{}\nloaded rim ends over the loop: {} in {} of {} "
-                     "samples, interior angles {:.1f} to {:.1f} deg (singular above {:.2f} deg); end table of {} nodes "
+                     "samples, section angles {:.1f} to {:.1f} deg, dihedral {:.1f} to {:.1f} deg (singular above "
+                     "{:.2f} deg; "
+                     "a sharp edge's exponent at the dihedral above the section's by {:.3f} on average, {:.3f} at "
+                     "most); end table of {} nodes "
                      "at q = {:.4g} N/m, {}, against the direct ends {}{}\n{}\n\n",
                      r.fem_sds.body, r.fem_sds.source, counter_face_name(r.end_setup.counter_face),
                      r.end_setup.edge_radius_m > 0 ? fmt::format("rounded, r_e = {:.3g} m", r.end_setup.edge_radius_m)
                                                    : "sharp",
                      ends_table(r), loop.loaded_ends, loop.loaded_end_samples, loop.samples,
                      loop.loaded_end_angle_min_rad / degree, loop.loaded_end_angle_max_rad / degree,
-                     r.singular_from_rad / degree, r.table.size(), r.reference_load_n_per_m, table_columns_text(r),
+                     r.loaded_end_dihedral_min_rad / degree, r.loaded_end_dihedral_max_rad / degree,
+                     r.singular_from_rad / degree, r.exponent_shift_mean, r.exponent_shift_max, r.table.size(),
+                     r.reference_load_n_per_m, table_columns_text(r),
                      r.table_vs_direct ? fmt::format("{:.2f} %", 100 * *r.table_vs_direct) : "-", flat_table_text(r),
                      scores_text(r));
 }

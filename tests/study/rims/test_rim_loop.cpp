@@ -24,11 +24,12 @@ study::rims::EndTableNode node(double angle_deg, std::optional<double> end_to_in
   return n;
 }
 
-/// A loaded end at `angle_deg` with line Hertz's peak `line_hertz_pa` and R.
+/// A loaded end at `angle_deg` (its section and its dihedral angle: a rim
+/// square to the ruling) with line Hertz's peak `line_hertz_pa` and R.
 study::loop_scores::LoadedEnd loaded_end(double angle_deg, double line_hertz_pa, double radius_m = 0.01)
 {
   study::loop_scores::LoadedEnd end;
-  end.interior_angle_rad = angle_deg * degree;
+  end.interior_angle_rad = end.dihedral_angle_rad = angle_deg * degree;
   end.line_hertz_pa = line_hertz_pa;
   end.radius_m = radius_m;
   return end;
@@ -166,6 +167,37 @@ TEST(RimLoop, EndRatiosReadTheColumnOfTheEndsOwnRadius)
   EXPECT_NEAR(finished.line_hertz_pa, 0.5e9, 1e-3);
   EXPECT_NEAR(finished.load_ratio, 0.25e-4, 1e-18);
   EXPECT_NEAR(*ratios(1, finished), 2.5, 1e-12);
+}
+
+// An oblique rim's end: the end table is read at its dihedral angle, normal
+// to the rim, and singular by it; the flat-rim table at its section (its
+// nodes are the loop's own ends, whatever their angles).
+TEST(RimLoop, EndRatiosReadTheEndTableAtTheDihedralAngle)
+{
+  study::rims::EndRatios ratios;
+  ratios.table = {node(60, 1.0), node(80, 1.2), node(120, 2.0), node(160, 2.4)};
+  ratios.largest_modelled_rad = 170 * degree;
+  study::loop_scores::LoadedEnd oblique = loaded_end(148.5, 1e9);
+  oblique.dihedral_angle_rad = 129 * degree;
+  EXPECT_NEAR(*ratios(1, oblique), 2.0 + 0.4 * 9 / 40, 1e-12); // not 2.0 + 0.4 * 28.5 / 40
+  // A sharp edge on steel is singular from 77.45 deg: an end of section
+  // 80 deg but dihedral 76 deg is not.
+  ratios.singular_from_rad = 77.45 * degree;
+  study::loop_scores::LoadedEnd acute = loaded_end(80, 1e9);
+  acute.dihedral_angle_rad = 76 * degree;
+  EXPECT_NEAR(*ratios(1, acute), 1.0 + 0.2 * 16 / 20, 1e-12);
+  acute.dihedral_angle_rad = 78 * degree;
+  EXPECT_FALSE(ratios(1, acute).has_value());
+  // From flat_from_rad on, by the section: the flat-rim table's single node.
+  study::rims::FlatRimNode flat;
+  flat.interior_angle_rad = 160 * degree;
+  flat.sides = {{0.3, 1e5, 1e-3, 3e9, 2e9, 0, 0, true, 1}};
+  ratios.flat_table = {flat};
+  ratios.flat_from_rad = 160 * degree;
+  ratios.singular_from_rad = std::numbers::pi;
+  study::loop_scores::LoadedEnd flattish = loaded_end(165, 1e9);
+  flattish.dihedral_angle_rad = 150 * degree;
+  EXPECT_NEAR(*ratios(1, flattish), 3.0, 1e-12);
 }
 
 TEST(RimLoop, ANodeWithoutARatioIsAnError)

@@ -1,0 +1,62 @@
+// A long phase's progress on a thread of its own (study/rims/progress_beat.h).
+#include "study/rims/progress_beat.h"
+#include <mpi.h>
+#include <spdlog/spdlog.h>
+
+namespace rollcheck::study::rims
+{
+ProgressBeat::ProgressBeat(std::string phase, bool active, std::chrono::milliseconds period)
+    : phase_(std::move(phase)), active_(active), period_(period)
+{
+  if (!active_)
+    return;
+  thread_ = std::thread([this] {
+    std::unique_lock lock(mutex_);
+    while (!wake_.wait_for(lock, period_, [this] { return stop_; }))
+      log_locked();
+  });
+}
+
+ProgressBeat::~ProgressBeat()
+{
+  if (!thread_.joinable())
+    return;
+  {
+    const std::lock_guard lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_all();
+  thread_.join();
+}
+
+void ProgressBeat::step(std::string what)
+{
+  if (!active_)
+    return;
+  const std::lock_guard lock(mutex_);
+  step_ = std::move(what);
+  log_locked();
+}
+
+double ProgressBeat::elapsed_s() const
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+void ProgressBeat::log_locked() const
+{
+  spdlog::info("{}: {} ({:.0f} s)", phase_, step_.empty() ? "running" : step_, elapsed_s());
+}
+
+bool logging_rank()
+{
+  int initialised = 0, finalised = 0;
+  MPI_Initialized(&initialised);
+  MPI_Finalized(&finalised);
+  if (!initialised || finalised)
+    return true;
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  return rank == 0;
+}
+} // namespace rollcheck::study::rims

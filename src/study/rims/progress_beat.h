@@ -1,0 +1,51 @@
+#pragma once
+// Progress of a long phase at the default log level (info) while it runs:
+// the rim loop's steps (the interior, each direct end, the flat-rim table,
+// each node of the end table) and flat-rim's levels take from seconds to
+// many minutes each, longer than a user should wait without a word. A beat
+// logs the current step when it is set and, on a thread of its own, again
+// every `period` while it lasts, with the time since the phase began; a
+// solve that logs nothing for minutes still shows that it runs.
+//
+// Only the process that is to speak beats (rank 0 under MPI: `active`); the
+// thread touches nothing but its own text and spdlog's thread-safe default
+// logger.
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <string>
+#include <thread>
+
+namespace rollcheck::study::rims
+{
+class ProgressBeat
+{
+public:
+  /// Starts the phase `phase` (the log lines' prefix); silent when not `active`.
+  ProgressBeat(std::string phase, bool active, std::chrono::milliseconds period = std::chrono::seconds(8));
+  ~ProgressBeat();
+  ProgressBeat(const ProgressBeat&) = delete;
+  ProgressBeat& operator=(const ProgressBeat&) = delete;
+
+  /// The phase's current step, logged now and on every beat until the next.
+  void step(std::string what);
+  /// Seconds since the phase began.
+  double elapsed_s() const;
+
+private:
+  void log_locked() const;
+  const std::string phase_;
+  const bool active_;
+  const std::chrono::milliseconds period_;
+  const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  std::string step_;
+  bool stop_ = false;
+  std::thread thread_;
+};
+
+/// True on the process that logs: rank 0 of MPI_COMM_WORLD, or any process
+/// where MPI is not initialised.
+bool logging_rank();
+} // namespace rollcheck::study::rims
