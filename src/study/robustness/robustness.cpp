@@ -82,11 +82,12 @@ private:
   std::map<std::tuple<int, double, long>, oracle::RealRolling> runs_;
 };
 
+/// The scores over the run's first whole loop (callers skip a run whose rim
+/// lifts before the loop closes: a part of a loop is not a loop's score).
 contact::ContinuumLoopScores scores_of(const oracle::RealRolling& run, const contact::ContinuumLoopSettings& s)
 {
-  const double end = std::isfinite(run.first_loop_end_s) ? run.first_loop_end_s : run.scored_end_s;
   const contact::RollingBodyMass mass{run.mass.centre_of_mass_m, run.mass.mass_kg, 9.81};
-  return contact::continuum_loop_scores(run.trajectory, 0, end, run.surface_area_m2, mass, s);
+  return contact::continuum_loop_scores(run.trajectory, 0, run.first_loop_end_s, run.surface_area_m2, mass, s);
 }
 
 /// The score keys' values from one evaluation, in score_names() order.
@@ -101,7 +102,10 @@ std::vector<double> evaluate(Runs& runs, int b, const CellSettings& c, long samp
 {
   if (c.uniform_rate && c.scores.load_rule == contact::LoadRule::dynamic)
     return std::vector<double>(score_names().size(), nan); // no free motion rolls at a uniform rate
-  return pick(scores_of(runs.at(b, c.energy_excess, samples_per_loop), c.scores));
+  const oracle::RealRolling& run = runs.at(b, c.energy_excess, samples_per_loop);
+  if (!run.trajectory.contact_held || !std::isfinite(run.first_loop_end_s))
+    return std::vector<double>(score_names().size(), nan); // a rim lifts before the loop closes
+  return pick(scores_of(run, c.scores));
 }
 
 std::optional<double> ratio(double a, double b)
