@@ -57,7 +57,7 @@ const io::BoundSchema<geometry::BodySpec>& body_schema()
               "r1 of rollers, radius of the other bodies (the preprint: 1)", io::positive)
         .real("height_m", "--height", &BodySpec::height_m, "m", "Cylinder height (the reference: 2)", io::positive)
         .integer("sections", "--sections", &BodySpec::sections, "",
-                 "Cylinder sides, UV-sphere sectors (the reference: 60)", io::Bounds{4, 100000})
+                 "Cylinder sides, UV-sphere sectors (the reference: 60)", io::body_sections)
         .integer("subdivisions", "--subdivisions", &BodySpec::subdivisions, "",
                  "Icosphere subdivisions (the reference: 3)", io::Bounds{0, 8})
         .path("mesh_file", "--mesh", &BodySpec::mesh_file,

@@ -35,6 +35,9 @@ VolumeMeshInfo write_tetrahedral_mesh(const SurfaceMesh& surface, double mesh_si
     gmsh::model::geo::addVolume({loop});
     gmsh::model::geo::synchronize();
     gmsh::option::setNumber("Mesh.MeshSizeMax", mesh_size_m);
+    // Sizes inside come from mesh_size_m alone, not from the surface's spacing
+    // (else every size coarser than that spacing gives the same mesh).
+    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
     gmsh::model::mesh::generate(3);
     std::vector<std::size_t> tags;
     std::vector<double> xyz, param;
