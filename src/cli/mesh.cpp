@@ -50,11 +50,11 @@ void check_volume_mesh_size(const geometry::SurfaceMesh& mesh, double volume_m3,
   const double diameter_m = (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
   const double tetrahedra = volume_m3 / (std::pow(size_m, 3) / (6 * std::numbers::sqrt2));
   if (size_m > diameter_m)
-    throw InputError(fmt::format("option --size (volume_mesh_size_m): {:g} m is larger than the body ({:g} m across), "
+    throw InputError(fmt::format("option --size (size_m): {:g} m is larger than the body ({:g} m across), "
                                  "where every size gives the same mesh",
                                  size_m, diameter_m));
   if (tetrahedra > max_tetrahedra)
-    throw InputError(fmt::format("option --size (volume_mesh_size_m): {:g} m asks for about {:.3g} tetrahedra, more "
+    throw InputError(fmt::format("option --size (size_m): {:g} m asks for about {:.3g} tetrahedra, more "
                                  "than the {:g} of the work budget",
                                  size_m, tetrahedra, max_tetrahedra));
 }

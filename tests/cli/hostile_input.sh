@@ -87,6 +87,7 @@ expect 2 "inf.toml': check 1: max_abs and rel_tol must be finite" -- "$bin" run 
 check "! cmp -s '$tmp/a.msh' '$tmp/b.msh'" "--size 0.2 and 0.1 give the same .msh"
 expect 2 "option --size.*1e\+300 m is larger than the body" -- "$bin" mesh --body sphere --size 1e300 --out "$tmp/c.msh"
 expect 2 "option --size.*1e-06 m asks for about .* tetrahedra" -- "$bin" mesh --body sphere --size 1e-6 --out "$tmp/c.msh"
+expect 2 "size 0.2 m asks for about .* gmsh inserted no node inside" -- "$bin" mesh --body oloid --points 100 --size 0.2 --out "$tmp/c.msh"
 
 # report --from: a file that is not a results store.
 printf 'not hdf5\n' > "$in/store.h5"
