@@ -72,7 +72,7 @@ expect_input_error "orientations" fem-sds --body cylinder --orientations 0
 expect_input_error "samples" fem-sds --body cylinder --samples 1
 expect_input_error "tolerance" fem-sds --body cylinder --tolerance 0
 expect_input_error "crease_margin" fem-sds --body cylinder --crease-margin 0.3
-expect_input_error "normal_load_n" fem-sds --body cylinder --load nan
+expect_input_error "load_n" fem-sds --body cylinder --load nan
 expect_input_error "mesh_file" fem-sds --mesh "$tmp/none.obj"
 expect_input_error "sphere" fem-sds --body sphere
 expect_input_error "slab_check" fem-sds --body cylinder --slab-check -1
