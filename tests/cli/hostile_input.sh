@@ -62,7 +62,8 @@ expect 2 "duration_s.*\(0, 2000\]" -- "$bin" optimize --oracle rigid --duration 
 expect 2 "ratio_max.*\[0.001, 1000\], got 1e\+300" -- "$bin" optimize --ratio-max 1e300
 
 # PETSc options on a command line that needs no MPI end PETSc and MPI once.
-for sub in "mesh --body sphere --subdivisions 1" "oracle --body sphere --subdivisions 1 --steps 10"; do
+for sub in "mesh --body sphere --subdivisions 1" "oracle --body sphere --subdivisions 1 --steps 10" \
+           "search --grid quick --steps 20 --validate-top 0"; do
   out=$("$bin" $sub -- -foo 2>&1); rc=$?
   check "[[ $rc -eq 0 ]] && ! grep -q 'MPI_Finalize\|MPI_FINALIZE' <<<\"\$out\"" "$sub -- -foo: exit $rc: $out"
   check "grep -q 'PETSc option -foo was not used' <<<\"\$out\"" "$sub -- -foo names the unused option: $out"
