@@ -40,10 +40,6 @@ VolumeMeshInfo write_tetrahedral_mesh(const SurfaceMesh& surface, double mesh_si
     // Sizes inside come from mesh_size_m alone, not from the surface's spacing
     // (else every size coarser than that spacing gives the same mesh).
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-    const int size_field = gmsh::model::mesh::field::add("MathEval");
-    gmsh::model::mesh::field::setString(size_field, "F", fmt::format("{:.17g}", mesh_size_m));
-    gmsh::model::mesh::field::setAsBackgroundMesh(size_field);
     gmsh::model::mesh::generate(3);
     std::vector<std::size_t> tags;
     std::vector<double> xyz, param;
