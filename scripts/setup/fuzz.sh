@@ -6,13 +6,13 @@
 # build-fuzz/corpus/<target>/, never into the seeds. Crashes (and their
 # reports) are printed at the end and make the exit status 1; save a crash
 # input in fuzz/regressions/<target>/ once its bug is understood.
-# Usage: scripts/setup/fuzz.sh [SECONDS (default 600)] [TARGET...]   (case obj stl ply off)
+# Usage: scripts/setup/fuzz.sh [SECONDS (default 600)] [TARGET...]   (case options obj stl ply off)
 set -euo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
 build=$here/build-fuzz
 seconds=${1:-600}
 targets=("${@:2}")
-((${#targets[@]})) || targets=(case obj stl ply off)
+((${#targets[@]})) || targets=(case options obj stl ply off)
 jobs=${JOBS:-$(nproc)}
 
 flags="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"

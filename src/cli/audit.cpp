@@ -10,6 +10,7 @@
 #include "core/data_folder.h"
 #include "core/error.h"
 #include "audit/runner.h"
+#include "io/work_budget.h"
 #include <filesystem>
 #include <fmt/format.h>
 
@@ -47,7 +48,8 @@ void add_audit_command(CLI::App& app)
                   "Also write the table as Markdown to PATH ('-' for stdout) (default: none)");
   sub->add_flag("--quick", settings.quick,
                 "Fewer thresholds (0.01, 0.04, 0.16) and mesh sizes (100, 200, 400 points per circle) (default: off)");
-  sub->add_option("--threads", settings.threads, "Commands run at once; 0 = one per core (default: 0)");
+  sub->add_option("--threads", settings.threads, "Commands run at once; 0 = one per core (default: 0)")
+      ->check(CLI::Range(0, static_cast<int>(io::thread_count.upper)));
   sub->add_option("--reference-meshes", meshes, "Folder of the reference meshes (default: <source>/meshes/reference)");
   on_run(sub, [] {
     if (json_path == "-" && markdown_path == "-")

@@ -2,6 +2,7 @@
 // worker processes (and MPI ranks under mpirun) into one results store,
 // skipping cases already done. src/io/batch_run.h has the design.
 #include "cli/cli.h"
+#include "cli/option_checks.h"
 #include "cli/scenes.h"
 #include "io/batch_progress.h"
 
@@ -30,10 +31,11 @@ void add_batch_command(CLI::App& app)
                   "node's CPUs shared among its ranks)")
       ->check(CLI::Range(0, 1024));
   sub->add_option("--out", options.out,
-                  "Results folder: cases/<hash>/ per case, results.h5 for all (default: results)");
+                  "Results folder: cases/<hash>/ per case, results.h5 for all (default: results)")
+      ->check(non_empty());
   sub->add_flag("--force", options.force, "Recompute cases already done (default: reuse their results)");
   sub->add_option("--timeout", options.case_timeout_s,
                   "A case running longer than this fails [s] (default: 0 = no limit)")
-      ->check(CLI::Range(0.0, 1e7));
+      ->check(finite_number() & CLI::Range(0.0, 1e7));
 }
 } // namespace rollcheck::cli

@@ -68,7 +68,12 @@ ProcessSession::~ProcessSession()
     warn_unused_petsc_options();
     PetscFinalize();
   }
-  MPI_Finalize();
+  // PETSc ends MPI itself when it started it (PETSc options on a command line
+  // that needs no MPI, `mesh -- -foo`): MPI may be ended only once.
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (!finalized)
+    MPI_Finalize();
 }
 
 void add_fem_commands(CLI::App& app)

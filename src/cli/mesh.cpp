@@ -8,7 +8,10 @@
 #include "geometry/mass_properties.h"
 #include "geometry/mesh_checks.h"
 #include "geometry/write_mesh.h"
+#include <cmath>
 #include <fmt/format.h>
+#include <numbers>
+#include <spdlog/spdlog.h>
 
 namespace rollcheck::cli
 {
@@ -32,6 +35,28 @@ const SceneSchema<MeshScene>& mesh_schema()
         .real("volume_mesh_size_m", "--size", &MeshScene::volume_mesh_size_m, "m",
               "Tetrahedron size of a .msh volume mesh", io::positive);
   });
+}
+
+/// Tetrahedra a volume mesh may have: gmsh takes about 1 kB per tetrahedron
+/// while meshing, so a million stays well inside the 2 GB work budget.
+constexpr double max_tetrahedra = 1e6;
+
+/// The tetrahedron size S is honoured between the body's size (above it every
+/// S gives the same mesh, the surface's alone) and the size at which the volume
+/// would need more than max_tetrahedra (a regular tetrahedron of edge S has
+/// volume S^3 / (6 sqrt 2)); InputError naming --size outside.
+void check_volume_mesh_size(const geometry::SurfaceMesh& mesh, double volume_m3, double size_m)
+{
+  const double diameter_m = (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
+  const double tetrahedra = volume_m3 / (std::pow(size_m, 3) / (6 * std::numbers::sqrt2));
+  if (size_m > diameter_m)
+    throw InputError(fmt::format("option --size (size_m): {:g} m is larger than the body ({:g} m across), "
+                                 "where every size gives the same mesh",
+                                 size_m, diameter_m));
+  if (tetrahedra > max_tetrahedra)
+    throw InputError(fmt::format("option --size (size_m): {:g} m asks for about {:.3g} tetrahedra, more "
+                                 "than the {:g} of the work budget",
+                                 size_m, tetrahedra, max_tetrahedra));
 }
 
 nlohmann::json run_mesh(const io::Parameters& params)
@@ -60,7 +85,10 @@ nlohmann::json run_mesh(const io::Parameters& params)
   {
     const std::filesystem::path path(scene.out);
     if (path.extension() == ".msh")
+    {
+      check_volume_mesh_size(mesh, mp.volume_m3, scene.volume_mesh_size_m);
       summary["volume_mesh"] = write_volume_mesh(mesh, scene.volume_mesh_size_m, path);
+    }
     else
       geometry::write_mesh(mesh, path);
     summary["out"] = scene.out;

@@ -79,7 +79,7 @@ void add_method_parameters(Schema& s)
       .integer("sweep_points", "--sweep-points", &S::sweep_points, "",
                "Points per axis of the sweeps through the start", io::Bounds{2, 1000})
       .integer("threads", "--threads", &S::threads, "", "Evaluations in parallel (0: one per core)",
-               io::Bounds{0, 1024});
+               io::thread_count);
 }
 
 void add_oracle_parameters(Schema& s)
@@ -87,9 +87,9 @@ void add_oracle_parameters(Schema& s)
   s.integer("steps", "--steps", [](FamilySearchSettings& f) -> auto& { return f.scoring.approximate.steps; }, "",
             "Approximate oracle: rotation steps T", io::Bounds{1, double(study::body_scores::max_oracle_samples)})
       .real("duration_s", "--duration", [](FamilySearchSettings& f) -> auto& { return f.scoring.rigid.duration_s; },
-            "s", "Rigid-body oracle: time per run", io::positive)
+            "s", "Rigid-body oracle: time per run", io::rigid_duration_s)
       .integer("loops", "--loops", [](FamilySearchSettings& f) -> auto& { return f.scoring.rolling.loops; }, "",
-               "Rolling oracle: loops of the contact curve scored", io::Bounds{1, 1000})
+               "Rolling oracle: loops of the contact curve scored", io::rolling_loops)
       .unbound({"out", "--out", std::string(), "",
                 "Folder for optimize.json, the meshes start.obj and optimum.obj, sweeps.png and optimum.png (a "
                 "rendered view of both bodies), written whole or not at all, and evaluations.json, the finished "
@@ -109,8 +109,8 @@ const SceneSchema<FamilySearchSettings>& optimize_schema()
     add_method_parameters(s);
     add_axis(s, &FamilySearchSettings::theta_deg, "theta", "deg", "angle between the circle planes",
              io::Bounds{0, 180, true, true});
-    add_axis(s, &FamilySearchSettings::offset, "offset", "", "centre distance d in units of r1", io::non_negative);
-    add_axis(s, &FamilySearchSettings::ratio, "ratio", "", "radius ratio rho = r2 / r1", io::positive);
+    add_axis(s, &FamilySearchSettings::offset, "offset", "", "centre distance d in units of r1", io::Bounds{0, 1000});
+    add_axis(s, &FamilySearchSettings::ratio, "ratio", "", "radius ratio rho = r2 / r1", io::Bounds{1e-3, 1000});
     add_oracle_parameters(s);
   });
 }

@@ -78,7 +78,8 @@ void add_oracle_parameters(Schema& s)
                 .real("mass_kg", "--mass", &R::mass_kg, "kg", "Rigid and rolling: mass m", io::positive)
                 .real("gravity_m_s2", "--gravity", &R::gravity_m_s2, "m/s^2", "Rigid and rolling: g", io::non_negative)
                 .real("max_angular_speed_rad_s", "--max-spin", &R::max_angular_speed_rad_s, "rad/s",
-                      "Rigid-body oracle: cap on |omega| (the reference code's)", io::positive),
+                      "Rigid-body oracle: cap on |omega| (the reference code's)", io::positive)
+                .ratio_cap("duration_s", "dt_s", io::max_rigid_steps, "rigid-body time steps"),
             &OracleScene::rigid);
 }
 
@@ -124,7 +125,7 @@ void add_rolling_parameters(Schema& s)
                       "no rim lifts)", io::non_negative)
                 .integer("loops", "--loops", &P::loops, "",
                          "Rolling oracle: loops of the contact curve scored (undamped, every loop is the same)",
-                         io::Bounds{1, 1000})
+                         io::rolling_loops)
                 .integer("face_subdivisions", "--face-subdivisions", &P::face_subdivisions, "",
                          "Rolling oracle: every mesh face cut into this^2 parts for scoring U, which rises towards "
                          "its mesh-free value U_inf as this grows; at most 64, a resource guard", io::Bounds{1, 64})

@@ -46,7 +46,7 @@ void add_loop_options(RimSchema& s)
       .integer("seed", "--seed", [](RimCommand& c) -> std::uint64_t& { return c.loop.seed; }, "",
                "With --body: seed of the stratified sampling of those orientations", io::non_negative)
       .integer("samples_per_loop", "--samples", [](RimCommand& c) -> long& { return c.loop.samples_per_loop; }, "",
-               "With --body: samples of the rolling loop, every one scored", io::Bounds{2, 1e7})
+               "With --body: samples of the rolling loop, every one scored", io::loop_samples)
       .real("normal_load_n", "--load", [](RimCommand& c) -> double& { return c.loop.normal_load_n; }, "N",
             "With --body: force F pressing the body onto the counter-face through its centre of mass (the preprint's; "
             "its fatigue load is 5000 N)",
@@ -169,6 +169,9 @@ const SceneSchema<RimCommand>& rim_schema()
 nlohmann::json run_rim(const io::Parameters& p)
 {
   RimCommand command = rim_schema().bind(p);
+  if (command.loop.body.body.empty() && !command.loop.body.mesh_file.empty())
+    throw InputError("option --mesh (mesh_file) reads a body, which needs --body (the loop's ends); without --body "
+                     "rim solves one end and reads no mesh");
   if (command.loop.body.body.empty())
   {
     const fem::RimEndStudy study = fem::solve_rim_end(MPI_COMM_WORLD, command.end);

@@ -69,7 +69,7 @@ void declare_body(io::BoundSchema<geometry::BodySpec>& s, bool line_contact)
       .real("height_m", "--height", &BodySpec::height_m, "m", "Cylinder height (the reference: 2)", io::positive)
       .integer("sections", "--sections", &BodySpec::sections, "",
                line_contact ? "Cylinder sides (the reference: 60)" : "Cylinder sides, UV-sphere sectors (the reference: 60)",
-               io::Bounds{4, 100000});
+               io::body_sections);
   if (line_contact)
     return;
   s.integer("subdivisions", "--subdivisions", &BodySpec::subdivisions, "", "Icosphere subdivisions (the reference: 3)",

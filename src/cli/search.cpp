@@ -74,7 +74,7 @@ const SceneSchema<SearchScene>& search_schema()
                              "most {}, a resource guard", study::body_scores::max_oracle_samples),
                  io::Bounds{0, static_cast<double>(study::body_scores::max_oracle_samples)})
         .real("radius_m", "--radius", &S::radius_m, "m", "r1 of every roller (the preprint's)", io::positive)
-        .integer("threads", "--threads", &S::threads, "", "Worker threads; 0 = one per core", io::Bounds{0, 1024})
+        .integer("threads", "--threads", &S::threads, "", "Worker threads; 0 = one per core", io::thread_count)
         .flag("paper_compat", "--paper-compat", &S::paper_compat,
               "Reproduce the reference code's quirks (see `rollcheck oracle --help`); without it every quirk is "
               "corrected")
@@ -129,6 +129,9 @@ private:
 nlohmann::json run_search(const io::Parameters& params)
 {
   const SearchScene scene = search_schema().bind(params);
+  if (scene.score != SearchScore::fem_sds && !scene.out.empty())
+    throw InputError("option --out (out) is written only with --score fem-sds; the CDS search writes --hdf5 and "
+                     "--json");
   if (scene.score == SearchScore::fem_sds)
     return run_family_scores(scene.grid, scene.points, scene.radius_m, scene.out, scene.python);
   oracle::SearchSettings o = scene;

@@ -4,6 +4,7 @@
 // writes validation.json and the report (verdicts first), and exits 1 when a
 // check fails.
 #include "cli/cli.h"
+#include "cli/option_checks.h"
 #include "core/atomic_file.h"
 #include "core/data_folder.h"
 #include "io/batch_report.h"
@@ -98,6 +99,6 @@ void add_validate_command(CLI::App& app)
       ->check(CLI::ExistingFile);
   sub->add_flag("--force", options.force, "Recompute cases already done (default: reuse their results)");
   sub->add_option("--timeout", options.case_timeout_s, "A case running longer than this fails [s] (default: 600)")
-      ->check(CLI::Range(0.0, 1e7));
+      ->check(finite_number() & CLI::Range(0.0, 1e7));
 }
 } // namespace rollcheck::cli

@@ -114,7 +114,7 @@ const SceneSchema<WholeBodyCheckSettings>& whole_body_schema()
               "Above 0: solve nothing; list the orientations of the directions 0, step, ... below 360 deg (the "
               "locus's c and loaded part, R, interior angle, q and b at each end, the wedge exponent at a loaded "
               "obtuse end), to choose --direction from",
-              io::Bounds{0, 360});
+              io::scan_step_deg);
     add_material(s, &WholeBodyCheckSettings::youngs_modulus_pa, &WholeBodyCheckSettings::poisson_ratio);
     add_whole_body_options(s);
     add_reduced_model_options(s);

@@ -290,7 +290,7 @@ NewtonReport PenaltyContact::solve()
     start = Clock::now();
     KSPSetOperators(_ksp, _A, _A);
     VecZeroEntries(du_petsc);
-    KSPSolve(_ksp, b_petsc, du_petsc);
+    solve_linear(_ksp, b_petsc, du_petsc);
     report.solve_s += seconds_since(start);
     KSPConvergedReason reason;
     KSPGetConvergedReason(_ksp, &reason);

@@ -153,6 +153,17 @@ KSP create_linear_solver(MPI_Comm comm, Model model, const std::string& petsc_op
   return ksp;
 }
 
+void solve_linear(KSP ksp, Vec b, Vec x)
+{
+  std::string rejection;
+  PetscPushErrorHandler(keep_first_message, &rejection);
+  const PetscErrorCode solved = KSPSolve(ksp, b, x);
+  PetscPopErrorHandler();
+  if (solved != 0)
+    throw InputError(fmt::format("PETSc cannot run the linear solver the options chose (prefix {}): {}",
+                                 solver_prefix, rejection));
+}
+
 std::vector<std::string> use_pair_solver_defaults(KSP ksp)
 {
   // The pairs join two bodies by springs of c E h against an element's E h

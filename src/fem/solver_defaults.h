@@ -43,6 +43,14 @@ MatNullSpace rigid_body_near_nullspace(const dolfinx::fem::FunctionSpace& V, Mod
 /// `petsc_options` only names them in that message. The caller destroys it.
 KSP create_linear_solver(MPI_Comm comm, Model model, const std::string& petsc_options);
 
+/// KSPSolve with PETSc's error kept as create_linear_solver keeps it: a solver
+/// the options chose that cannot run here (PETSc's own LU on several ranks:
+/// "MatSolverType petsc does not support matrix type mpiaij") raises
+/// InputError with PETSc's message on every rank (the set-up is collective),
+/// not PETSc's trace and an improper exit under mpirun. A solve that runs but
+/// does not converge is the caller's to judge (KSPGetConvergedReason).
+void solve_linear(KSP ksp, Vec b, Vec x);
+
 /// 3D with node pairs: GMRES + hypre BoomerAMG unless a -hertz_pc_type is
 /// given; each BoomerAMG setting is a default that a given option keeps.
 /// Returns the names of the options it set (for clear_options).

@@ -3,6 +3,8 @@
 #include "geometry/mass_properties.h"
 #include <Eigen/Geometry>
 #include <fmt/format.h>
+#include <algorithm>
+#include <cmath>
 #include <unordered_map>
 
 namespace rollcheck::geometry
@@ -32,10 +34,14 @@ MeshChecks check_mesh(const SurfaceMesh& mesh)
     return checks;
   }
 
-  // Each directed edge must occur once, and its reverse once: then every edge
-  // has exactly two faces and they agree on orientation.
+  // Watertight: every undirected edge has exactly two faces. Consistently
+  // oriented: besides, each directed edge occurs once, so the two faces of an
+  // edge run along it in opposite directions (one flipped face breaks this
+  // but not watertightness).
   std::unordered_map<std::uint64_t, int> face_of_edge;
+  std::unordered_map<std::uint64_t, int> faces_at_edge;
   face_of_edge.reserve(static_cast<std::size_t>(3 * nf));
+  faces_at_edge.reserve(static_cast<std::size_t>(3 * nf));
   bool duplicate_directed = false;
   for (Eigen::Index f = 0; f < nf; ++f)
     for (int j = 0; j < 3; ++j)
@@ -43,13 +49,10 @@ MeshChecks check_mesh(const SurfaceMesh& mesh)
       const int a = mesh.faces(f, j), b = mesh.faces(f, (j + 1) % 3);
       if (!face_of_edge.emplace(edge_key(a, b), static_cast<int>(f)).second)
         duplicate_directed = true;
+      ++faces_at_edge[edge_key(std::min(a, b), std::max(a, b))];
     }
-  bool every_edge_paired = true;
-  for (const auto& [key, f] : face_of_edge)
-    if (!face_of_edge.count(edge_key(static_cast<int>(key & 0xffffffffu), static_cast<int>(key >> 32))))
-      every_edge_paired = false;
-  checks.watertight = every_edge_paired;
-  checks.consistently_oriented = every_edge_paired && !duplicate_directed;
+  checks.watertight = std::ranges::all_of(faces_at_edge, [](const auto& entry) { return entry.second == 2; });
+  checks.consistently_oriented = checks.watertight && !duplicate_directed;
   if (!checks.watertight)
   {
     checks.problem = "not watertight: some edge does not have exactly two faces";
@@ -57,10 +60,17 @@ MeshChecks check_mesh(const SurfaceMesh& mesh)
   }
   if (!checks.consistently_oriented)
   {
-    checks.problem = "faces are not consistently oriented";
+    checks.problem = "faces are not consistently oriented: two faces run along a shared edge in the same direction "
+                     "(a flipped face)";
     return checks;
   }
-  checks.outward = mass_properties(mesh).volume_m3 > 0;
+  const double volume_m3 = mass_properties(mesh).volume_m3;
+  if (!std::isfinite(volume_m3))
+  {
+    checks.problem = "the enclosed volume overflows (coordinates too large)";
+    return checks;
+  }
+  checks.outward = volume_m3 > 0;
   if (!checks.outward)
     checks.problem = "faces point inward (negative enclosed volume)";
 

@@ -1,11 +1,11 @@
 #include "geometry/read_mesh.h"
+#include "core/bounded_file.h"
 #include "core/error.h"
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
 #include <fmt/format.h>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -20,6 +20,7 @@ struct Builder
 {
   std::vector<std::array<double, 3>> vertices;
   std::vector<std::array<int, 3>> faces;
+  int index_base = 0; ///< the file's first vertex index: 1 in OBJ, 0 in OFF and PLY
 
   /// Fans a polygon (0-based indices) into triangles.
   void add_polygon(const std::vector<int>& poly, const std::string& where)
@@ -45,12 +46,18 @@ struct Builder
       {
         const int v = faces[i][j];
         if (v < 0 || v >= static_cast<int>(vertices.size()))
-          throw InputError(fmt::format("mesh file '{}': face {} refers to vertex {} of {}", name, i + 1, v + 1,
-                                       vertices.size()));
+          throw InputError(fmt::format("mesh file '{}': face {} refers to vertex index {}, but the {} vertices "
+                                       "are numbered {} to {}",
+                                       name, i + 1, static_cast<long long>(v) + index_base, vertices.size(),
+                                       index_base, static_cast<long long>(vertices.size()) - 1 + index_base));
         mesh.faces(static_cast<Eigen::Index>(i), j) = v;
       }
     if (!mesh.vertices.allFinite())
       throw InputError(fmt::format("mesh file '{}': a vertex coordinate is NaN or infinite", name));
+    if (const double largest = mesh.vertices.cwiseAbs().maxCoeff(); largest > max_mesh_coordinate_m)
+      throw InputError(fmt::format("mesh file '{}': a vertex coordinate of {:g} m is beyond the {:g} m a mesh may "
+                                   "reach (its volume and inertia would overflow)",
+                                   name, largest, max_mesh_coordinate_m));
     return mesh;
   }
 };
@@ -106,6 +113,7 @@ void check_declared_count(long long count, std::size_t available, const std::str
 SurfaceMesh read_obj(std::istream& in, const std::string& name)
 {
   Builder b;
+  b.index_base = 1;
   std::string line;
   for (int lineno = 1; std::getline(in, line); ++lineno)
   {
@@ -132,6 +140,12 @@ SurfaceMesh read_obj(std::istream& in, const std::string& name)
       {
         // "v", "v/vt", "v//vn", "v/vt/vn"; negative indices count from the end.
         const int v = parse_int(token.substr(0, token.find('/')), where);
+        if (v == 0)
+          throw InputError(fmt::format("{}: vertex index 0 (OBJ numbers vertices from 1)", where));
+        if (v < 0 && -static_cast<long long>(v) > static_cast<long long>(b.vertices.size()))
+          throw InputError(fmt::format("{}: relative vertex index {} reaches before the first of the {} vertices "
+                                       "read so far",
+                                       where, v, b.vertices.size()));
         poly.push_back(v > 0 ? v - 1 : static_cast<int>(b.vertices.size()) + v);
       }
       b.add_polygon(poly, where);
@@ -284,7 +298,9 @@ PlyHeader read_ply_header(const std::string& bytes, const std::string& name)
     else if (kind == "element")
     {
       PlyElement e;
-      words >> e.name >> e.count;
+      if (!(words >> e.name >> e.count) || e.count < 0)
+        throw InputError(fmt::format("mesh file '{}': PLY header line '{}' does not declare a count >= 0", name,
+                                     line));
       h.elements.push_back(e);
     }
     else if (kind == "property" && !h.elements.empty())
@@ -423,20 +439,18 @@ SurfaceMesh read_ply(const std::string& bytes, const std::string& name)
 SurfaceMesh read_mesh(const std::filesystem::path& path)
 {
   const std::string name = path.string();
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw InputError(fmt::format("mesh file '{}': cannot be opened (missing or unreadable)", name));
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-  if (ext == ".obj")
-    return read_obj(in, name);
-  if (ext == ".off")
-    return read_off(in, name);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (ext != ".obj" && ext != ".off" && ext != ".stl" && ext != ".ply")
+    throw InputError(fmt::format("mesh file '{}': unknown extension '{}' (use .obj, .stl, .ply or .off)", name, ext));
+  const std::string bytes = core::read_bounded_file(path, "mesh file", max_mesh_file_bytes);
+  if (ext == ".obj" || ext == ".off")
+  {
+    std::istringstream in(bytes);
+    return ext == ".obj" ? read_obj(in, name) : read_off(in, name);
+  }
   if (ext == ".stl")
     return read_stl(bytes, name);
-  if (ext == ".ply")
-    return read_ply(bytes, name);
-  throw InputError(fmt::format("mesh file '{}': unknown extension '{}' (use .obj, .stl, .ply or .off)", name, ext));
+  return read_ply(bytes, name);
 }
 } // namespace rollcheck::geometry

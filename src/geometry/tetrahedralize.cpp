@@ -1,10 +1,12 @@
 #include "geometry/tetrahedralize.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "geometry/mass_properties.h"
 #include "geometry/write_mesh.h"
 #include <cmath>
 #include <fmt/format.h>
 #include <gmsh.h>
+#include <numbers>
 #include <numeric>
 
 namespace rollcheck::geometry
@@ -36,6 +38,9 @@ VolumeMeshInfo write_tetrahedral_mesh(const SurfaceMesh& surface, double mesh_si
     gmsh::model::geo::addVolume({loop});
     gmsh::model::geo::synchronize();
     gmsh::option::setNumber("Mesh.MeshSizeMax", mesh_size_m);
+    // Sizes inside come from mesh_size_m alone, not from the surface's spacing
+    // (else every size coarser than that spacing gives the same mesh).
+    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
     gmsh::model::mesh::generate(3);
     std::vector<std::size_t> tags;
     std::vector<double> xyz, param;
@@ -46,6 +51,16 @@ VolumeMeshInfo write_tetrahedral_mesh(const SurfaceMesh& surface, double mesh_si
     info.tetrahedra = tets.size();
     if (info.tetrahedra == 0)
       throw ComputationError("gmsh produced no tetrahedra");
+    // gmsh refines inside only where the surface's triangles allow it: a body
+    // of long thin triangles (an oloid's rulings) gets none at any size. A
+    // size that asks for several times the tetrahedra made is then refused,
+    // not written as if honoured (a regular tetrahedron of edge h: h^3 / (6 sqrt 2)).
+    const double asked = mass_properties(surface).volume_m3 * 6 * std::numbers::sqrt2 / std::pow(mesh_size_m, 3);
+    if (info.nodes == static_cast<std::size_t>(surface.vertices.rows()) && asked > 2.0 * info.tetrahedra)
+      throw InputError(fmt::format("volume mesh: size {:g} m asks for about {:.3g} tetrahedra, but gmsh inserted no "
+                                   "node inside this surface ({} tetrahedra): refine the surface (--points) or give "
+                                   "a larger size",
+                                   mesh_size_m, asked, info.tetrahedra));
     write_atomically(path, [&](const std::filesystem::path& tmp) {
       gmsh::write(tmp.string());
       check_gmsh_file_complete(tmp, path);

@@ -10,6 +10,7 @@
 //   s.real("load_n", "--load", &fem::CreaseSettings::load_n, "N", "Force on the crease", positive);
 //   fem::CreaseSettings setup = s.bind(params);
 #include "io/parameters.h"
+#include "io/work_budget.h"
 #include <algorithm>
 #include <functional>
 #include <limits>
@@ -85,7 +86,11 @@ public:
   BoundSchema& path(std::string key, std::string flag, Access access, std::string help)
   {
     text(std::move(key), std::move(flag), access, std::move(help));
-    schema_.parameters.back().is_path = true;
+    Parameter& p = schema_.parameters.back();
+    p.is_path = true;
+    const std::string declared = p.former_key.empty() ? p.key : p.former_key;
+    p.key = case_key(p.flag, p.unit, true);
+    p.former_key = declared == p.key ? "" : declared;
     return *this;
   }
 
@@ -130,12 +135,23 @@ public:
       add(group.schema().parameters[i],
           [set = group.setter(i), access](Settings& s, const Value& v) { set(std::invoke(access, s), v); },
           [get = group.getter(i), access](const Settings& s) { return get(read(access, s)); });
+    for (const RatioCap& cap : group.schema().ratio_caps)
+      schema_.ratio_caps.push_back(cap);
     return *this;
   }
 
-  /// Settings{} with every parameter of `params` stored in its member.
+  /// Caps numerator / denominator (two keys of this schema) at `max` (io/work_budget.h).
+  BoundSchema& ratio_cap(std::string numerator, std::string denominator, double max, std::string what)
+  {
+    schema_.ratio_caps.push_back({std::move(numerator), std::move(denominator), max, std::move(what)});
+    return *this;
+  }
+
+  /// Settings{} with every parameter of `params` stored in its member, once
+  /// the schema's ratio caps hold.
   Settings bind(const Parameters& params) const
   {
+    params.check_ratio_caps();
     Settings s;
     for (std::size_t i = 0; i < setters_.size(); ++i)
       setters_[i](s, params.value(schema_.parameters[i].key));
@@ -163,6 +179,14 @@ private:
   {
     static const Settings defaults{};
     parameter.default_value = get(defaults);
+    // The key follows the one rule (io::case_key); a key declared otherwise
+    // is the former key, refused by name in case files.
+    if (const std::string key = case_key(parameter.flag, parameter.unit, parameter.is_path); key != parameter.key)
+    {
+      if (parameter.former_key.empty())
+        parameter.former_key = parameter.key;
+      parameter.key = key;
+    }
     schema_.parameters.push_back(std::move(parameter));
     setters_.push_back(std::move(set));
     getters_.push_back(std::move(get));

@@ -1,7 +1,11 @@
 #include "io/parameters.h"
+#include "core/bounded_file.h"
 #include "core/error.h"
+#include "io/toml_nesting.h"
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
@@ -79,16 +83,39 @@ std::vector<CaseCheck> read_checks(const toml::table& table, const std::string& 
     const int criteria = c.max_abs.has_value() + c.value.has_value() + c.expect.has_value();
     if (criteria != 1)
       throw InputError(fmt::format("{}: give exactly one of max_abs, value (with rel_tol) or expect", where));
-    if ((c.max_abs && !(*c.max_abs >= 0)) || (c.value && (!std::isfinite(*c.value) || *c.value == 0))
-        || !(c.rel_tol >= 0) || (c.value && t["rel_tol"].value<double>() == std::nullopt))
-      throw InputError(fmt::format("{}: max_abs and rel_tol must be >= 0; value must be finite and non-zero, with "
-                                   "its rel_tol",
+    auto finite_non_negative = [](double x) { return std::isfinite(x) && x >= 0; };
+    if ((c.max_abs && !finite_non_negative(*c.max_abs)) || (c.value && (!std::isfinite(*c.value) || *c.value == 0))
+        || !finite_non_negative(c.rel_tol) || (c.value && t["rel_tol"].value<double>() == std::nullopt))
+      throw InputError(fmt::format("{}: max_abs and rel_tol must be finite and >= 0 (an infinite tolerance passes "
+                                   "anything); value must be finite and non-zero, with its rel_tol",
                                    where));
     checks.push_back(std::move(c));
   }
   return checks;
 }
 } // namespace
+
+std::string case_key(const std::string& flag, const std::string& unit, bool is_path)
+{
+  static const std::map<std::string, std::string> suffixes = {
+      {"", ""},           {"m", "_m"},       {"N", "_n"},         {"Pa", "_pa"},    {"N/m", "_n_per_m"},
+      {"deg", "_deg"},    {"rad", "_rad"},   {"s", "_s"},         {"kg", "_kg"},    {"m/s^2", "_m_s2"},
+      {"rad/s", "_rad_s"}, {"N m s", "_n_m_s"}, {"1/m", "_per_m"}, {"m^2", "_m2"}, {"m^3", "_m3"}};
+  const auto suffix = suffixes.find(unit);
+  if (suffix == suffixes.end())
+    throw std::logic_error(fmt::format("option {}: the unit '{}' has no case-key suffix", flag, unit));
+  std::string name = flag.substr(flag.find_first_not_of('-'));
+  std::ranges::replace(name, '-', '_');
+  return name + (is_path ? "_file" : suffix->second);
+}
+
+std::string Schema::unknown_key(const std::string& key) const
+{
+  for (const Parameter& p : parameters)
+    if (p.former_key == key)
+      return fmt::format("key '{}' is now '{}' (a key is its option's name with its unit, {})", key, p.key, p.flag);
+  return fmt::format("unknown key '{}'", key);
+}
 
 const Parameter& Schema::find(const std::string& key, const std::string& origin) const
 {
@@ -98,7 +125,7 @@ const Parameter& Schema::find(const std::string& key, const std::string& origin)
   std::string known;
   for (const Parameter& p : parameters)
     known += (known.empty() ? "" : ", ") + p.key;
-  throw InputError(fmt::format("{}: unknown key '{}' for a '{}' scene (known: {})", origin, key, kind, known));
+  throw InputError(fmt::format("{}: {} for a '{}' scene (known: {})", origin, unknown_key(key), kind, known));
 }
 
 Parameters::Parameters(const Schema& schema) : schema_(&schema)
@@ -117,12 +144,19 @@ void Parameters::set(const std::string& key, const Value& given, const std::stri
   if (value.index() != p.default_value.index())
     throw InputError(fmt::format("{}: '{}' must be a {}, got '{}'", origin, key, type_name(p.default_value),
                                  to_text(given)));
+  // The default is valid as given, even where it lies outside the range or
+  // the choices ("" for "none", -1 for "the model's"): a case file may state it.
+  if (value == p.default_value)
+  {
+    values_[key] = value;
+    return;
+  }
   if (const double* x = std::get_if<double>(&value); x && !std::isfinite(*x))
     throw InputError(fmt::format("{}: '{}' must be finite, got {}", origin, key, *x));
   if (const double* x = std::get_if<double>(&value); x && !p.bounds.contains(*x))
     throw InputError(fmt::format("{}: '{}' must be {}{}, got {}", origin, key, p.bounds.describe(),
                                  p.unit.empty() ? "" : " " + p.unit, *x));
-  if (const std::int64_t* n = std::get_if<std::int64_t>(&value); n && !p.bounds.contains(static_cast<double>(*n)))
+  if (const std::int64_t* n = std::get_if<std::int64_t>(&value); n && !p.bounds.contains_integer(*n))
     throw InputError(fmt::format("{}: '{}' must be an integer {}, got {}", origin, key, p.bounds.describe(), *n));
   if (const std::string* s = std::get_if<std::string>(&value); s && !valid_utf8(*s))
     throw InputError(fmt::format("{}: '{}' is not valid UTF-8 text", origin, key));
@@ -167,11 +201,29 @@ void Parameters::set_text(const std::string& key, const std::string& text, const
 
 bool Bounds::contains(double x) const
 {
+  if (or_zero && x == 0)
+    return true;
+  return (lower_open ? x > lower : x >= lower) && (upper_open ? x < upper : x <= upper);
+}
+
+bool Bounds::contains_integer(std::int64_t n) const
+{
+  // long double holds every int64 exactly; a double would round 2^53 + 1 down
+  // to 2^53 and let it pass an upper bound of 2^53.
+  const long double x = static_cast<long double>(n);
+  if (or_zero && n == 0)
+    return true;
   return (lower_open ? x > lower : x >= lower) && (upper_open ? x < upper : x <= upper);
 }
 
 std::string Bounds::describe() const
 {
+  if (or_zero)
+  {
+    Bounds rest = *this;
+    rest.or_zero = false;
+    return "0 or " + rest.describe();
+  }
   const bool has_lower = std::isfinite(lower), has_upper = std::isfinite(upper);
   if (has_lower && has_upper)
     return fmt::format("in {}{:g}, {:g}{}", lower_open ? "(" : "[", lower, upper, upper_open ? ")" : "]");
@@ -187,6 +239,19 @@ const Value& Parameters::value(const std::string& key) const
   if (auto it = values_.find(key); it != values_.end())
     return it->second;
   throw std::logic_error(fmt::format("the '{}' scene has no parameter '{}'", schema_->kind, key));
+}
+
+void Parameters::check_ratio_caps() const
+{
+  auto number = [&](const std::string& key) {
+    const Value& v = value(key);
+    return std::holds_alternative<double>(v) ? std::get<double>(v) : static_cast<double>(std::get<std::int64_t>(v));
+  };
+  for (const RatioCap& cap : schema_->ratio_caps)
+    if (const double ratio = number(cap.numerator) / number(cap.denominator); !(ratio <= cap.max))
+      throw InputError(fmt::format("'{}' / '{}' asks for {:.3g} {}, more than the {:g} of the work budget "
+                                   "(docs/guide/case-files.md#limits)",
+                                   cap.numerator, cap.denominator, ratio, cap.what, cap.max));
 }
 
 double Parameters::real(const std::string& key) const { return std::get<double>(value(key)); }
@@ -218,6 +283,7 @@ SchemaOptions::SchemaOptions(CLI::App* sub, const Schema& schema) : schema_(&sch
       continue;
     }
     CLI::Option* opt = sub->add_option(p.flag, given_[p.key], help);
+    options_[p.key] = opt;
     opt->type_name(std::holds_alternative<std::int64_t>(p.default_value) ? "INT"
                    : std::holds_alternative<double>(p.default_value) ? "NUMBER"
                                                                     : "TEXT");
@@ -237,8 +303,14 @@ Parameters SchemaOptions::apply() const
       if (it->second)
         params.set(p.key, true, "option " + p.flag);
     }
-    else if (const std::string& text = given_.at(p.key); !text.empty())
+    else if (options_.at(p.key)->count() > 0)
+    {
+      // Given, even as "": an empty number is refused, not read as the default.
+      const std::string& text = given_.at(p.key);
+      if (text.empty() && (p.is_path || !std::holds_alternative<std::string>(p.default_value)))
+        throw InputError(fmt::format("option {}: the value is empty", p.flag));
       params.set_text(p.key, text, "option " + p.flag);
+    }
   }
   return params;
 }
@@ -246,12 +318,13 @@ Parameters SchemaOptions::apply() const
 CaseFile read_case_file(const std::filesystem::path& path)
 {
   const std::string name = path.string();
-  if (!std::filesystem::is_regular_file(path))
-    throw InputError(fmt::format("case file '{}': does not exist", name));
+  const std::string text = core::read_bounded_file(path, "case file", max_case_file_bytes);
+  core::check_line_caps(text, path, "case file", max_case_file_lines, max_case_line_bytes);
+  check_toml_nesting(text, path, max_case_nesting);
   toml::table table;
   try
   {
-    table = toml::parse_file(name);
+    table = toml::parse(text, name);
   }
   catch (const toml::parse_error& e)
   {
@@ -301,14 +374,39 @@ Parameters resolve_case(const CaseFile& file, const Schema& schema, const std::v
                         const std::string& origin)
 {
   Parameters params(schema);
+  // Every bad key of the file is named at once, not one per run.
+  std::vector<std::string> unknown, problems;
   for (const auto& [key, value] : file.values)
   {
+    const auto known = std::ranges::find(schema.parameters, key, &Parameter::key);
+    if (known == schema.parameters.end())
+    {
+      unknown.push_back(schema.unknown_key(key));
+      continue;
+    }
     const std::string* text = std::get_if<std::string>(&value);
-    if (text && schema.find(key, origin).is_path && !text->empty() && std::filesystem::path(*text).is_relative())
-      params.set(key, (file.folder / *text).lexically_normal().string(), origin);
-    else
-      params.set(key, value, origin);
+    try
+    {
+      if (text && known->is_path && !text->empty() && std::filesystem::path(*text).is_relative())
+        params.set(key, (file.folder / *text).lexically_normal().string(), origin);
+      else
+        params.set(key, value, origin);
+    }
+    catch (const InputError& e)
+    {
+      problems.emplace_back(e.what());
+    }
   }
+  if (!unknown.empty())
+  {
+    std::string known;
+    for (const Parameter& p : schema.parameters)
+      known += (known.empty() ? "" : ", ") + p.key;
+    problems.insert(problems.begin(), fmt::format("{}: {} for a '{}' scene (known: {})", origin,
+                                                  fmt::join(unknown, "; "), schema.kind, known));
+  }
+  if (!problems.empty())
+    throw InputError(fmt::format("{}", fmt::join(problems, "\n")));
   for (const std::string& assignment : overrides)
   {
     const auto eq = assignment.find('=');

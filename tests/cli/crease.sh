@@ -23,7 +23,7 @@ for l in r["levels"]:
 assert r["apex_pressure_converged"] is False
 print("apex", apex, "Pa: grows; p(a/2) converged")
 PY
-for args in "--face-angle 50:face_angle_deg" "--load-per-length -1:load_n_per_m" "--refine -5:refine" "--levels 1:levels" "--width nan:width_m"; do
+for args in "--face-angle 50:face_angle_deg" "--load-per-length -1:load_per_length_n_per_m" "--refine -5:refine" "--levels 1:levels" "--width nan:width_m"; do
   "$bin" -q crease ${args%%:*} > "$tmp/bad.log" 2>&1; rc=$?
   if [[ $rc -ne 2 ]] || ! grep -q -- "${args#*:}" "$tmp/bad.log"; then
     echo "FAIL: crease ${args%%:*} gave exit $rc without '${args#*:}':"; cat "$tmp/bad.log"; fail=1

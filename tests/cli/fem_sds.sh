@@ -12,7 +12,7 @@ rm -rf "$tmp"; mkdir -p "$tmp"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
 here=$(cd "$(dirname "$0")/../.." && pwd)
 mpi="mpirun -n 2 --oversubscribe"
-$mpi "$bin" -q run "$here/cases/fem_sds_cylinder.toml" --set orientations=2 --set fem_slices=3 --set slab_orientations=0 \
+$mpi "$bin" -q run "$here/cases/fem_sds_cylinder.toml" --set orientations=2 --set fem_slices=3 --set slab_check=0 \
   --set "out=$tmp/cylinder" --json "$tmp/cylinder.json" > "$tmp/cylinder.log" 2>&1 || { echo "FAIL: cylinder run"; cat "$tmp/cylinder.log"; fail=1; }
 "$bin" -q fem-sds --body oloid --oracle rigid --orientations 3 --fem-slices 3 --json "$tmp/rigid.json" \
   > "$tmp/rigid.log" 2>&1 || { echo "FAIL: rigid-oracle run"; cat "$tmp/rigid.log"; fail=1; }
@@ -73,13 +73,13 @@ expect_input_error() { # args...; expected text
   fi
 }
 expect_input_error "orientations" fem-sds --body cylinder --orientations 0
-expect_input_error "samples_per_loop" fem-sds --body cylinder --samples 1
+expect_input_error "samples" fem-sds --body cylinder --samples 1
 expect_input_error "tolerance" fem-sds --body cylinder --tolerance 0
 expect_input_error "end_margin" fem-sds --body cylinder --end-margin 0.3
-expect_input_error "normal_load_n" fem-sds --body cylinder --load nan
+expect_input_error "load_n" fem-sds --body cylinder --load nan
 expect_input_error "unknown option '--mesh'" fem-sds --mesh "$tmp/none.obj"
 expect_input_error "sphere not in" fem-sds --body sphere
-expect_input_error "slab_orientations" fem-sds --body cylinder --slab-check -1
+expect_input_error "slab_check" fem-sds --body cylinder --slab-check -1
 expect_input_error "load-rule" fem-sds --body cylinder --load-rule quasi
 expect_input_error "uniform_rate" fem-sds --body cylinder --time-law uniform_rate
 exit $fail

@@ -13,7 +13,7 @@ expect 2 "option --points.*\[3, 100000\], got 200000" -- "$bin" mesh --body oloi
 expect 2 "option --size.*> 0 m, got 0" -- "$bin" mesh --body oloid --size 0 --out "$tmp/c.msh"
 # Two coincident circles (theta nearly 0, no offset): the hull is flat.
 expect 2 "flat or degenerate" -- "$bin" mesh --body roller --family centre-line --theta 1e-9 --offset 0 --out "$tmp/d.obj"
-expect 2 "cannot be opened" -- "$bin" mesh --mesh "$in/missing.obj" --out "$tmp/e.obj"
+expect 2 "missing.obj.: does not exist" -- "$bin" mesh --mesh "$in/missing.obj" --out "$tmp/e.obj"
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' > "$in/open.obj"
 expect 2 "open.obj.*(watertight|fewer than 4)" -- "$bin" mesh --mesh "$in/open.obj" --out "$tmp/f.obj"
 printf 'v 0 0 x\n' > "$in/malformed.obj"

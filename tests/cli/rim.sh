@@ -31,6 +31,6 @@ check_json "steel block: the square end singular with the elastic wedge's expone
   '.counter_face == "steel" and .singular == true and .wedge_exponent < -0.225 and .wedge_exponent > -0.227
    and .half_width_m > 3.40e-5 and .half_width_m < 3.41e-5 and .end_to_interior == null' "$tmp/steel.json"
 refuses rim "--interior-angle 180:interior_angle_deg" "--interior-angle 50:interior_angle_deg" \
-  "--sheet-radius -1:sheet_radius_m" "--load-per-length nan:load_n_per_m" "--levels 0:levels" \
+  "--sheet-radius -1:sheet_radius_m" "--load-per-length nan:load_per_length_n_per_m" "--levels 0:levels" \
   "--xdmf $tmp/f.vtu:--xdmf" "--edge-radius 1e-3:edge_radius_m"
 exit $fail

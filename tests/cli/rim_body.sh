@@ -29,5 +29,5 @@ check_json "end-aware FEM-SDS is a number with its status, beside the interior's
 refuses rim "--body sphere:sphere not in" "--body cylinder --end-table-step 0:end_table_step_deg" \
   "--body cylinder --end-table-radius-step 0.5:end_table_radius_step" \
   "--body cylinder --end-table-acute-step -5:end_table_acute_step_deg" \
-  "--body cylinder --block-depth 4:depth_over_edge_radius" "--body cylinder --orientations 0:orientations"
+  "--body cylinder --block-depth 4:block_depth" "--body cylinder --orientations 0:orientations"
 exit $fail

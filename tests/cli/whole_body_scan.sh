@@ -22,6 +22,6 @@ check_json "oloid: c within [1/4, 3/4], a loaded end at the vertex (180 deg)" \
    and ([.orientations[] | .interior_angle_deg[1] as $a | select(.end_load_n_per_m[1] > 0) | $a] | max) > 179.9' \
   "$tmp/oloid.json"
 expect 2 "sphere not in" -- "$bin" whole-body --body sphere --scan-directions 10 --json "$tmp/sphere.json"
-expect 2 "scan_step_deg" -- "$bin" whole-body --scan-directions -1 --json "$tmp/negative.json"
+expect 2 "scan_directions_deg" -- "$bin" whole-body --scan-directions -1 --json "$tmp/negative.json"
 check '[[ ! -e $tmp/sphere.json && ! -e $tmp/negative.json ]]' "a refused scan left no output"
 exit $fail
