@@ -74,7 +74,7 @@ void add_reduced_model_options(WholeBodySchema& s)
             "locus's at the end) from the edge, their reading over their own pressure there times the slice at "
             "the rule's q there",
             io::Bounds{1, 100})
-      .real("crease_margin", "--crease-margin", &WholeBodyCheckSettings::crease_margin, "",
+      .real("end_margin", "--end-margin", &WholeBodyCheckSettings::crease_margin, "",
             "Fraction of the ruling kept clear inside each loaded end for the stations (fem-sds's 5 %)",
             io::Bounds{0, 0.25, true, true})
       .integer("slice_refine", "--refine", &WholeBodyCheckSettings::slice_refine, "",
