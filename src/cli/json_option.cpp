@@ -62,9 +62,9 @@ CommandResult run_with_markdown(const std::string& markdown_path,
     check_output_file(markdown_path, "option --markdown");
   auto [summary, table] = run();
   write_text_output(markdown_path, table);
+  print_summary(table);
   if (process_rank() != 0)
     return {nlohmann::json(), 0};
-  spdlog::info("\n{}", table);
   return {std::move(summary), 0};
 }
 } // namespace rollcheck::cli

@@ -2,7 +2,7 @@
 // from the subsurface stress over the loop (study/life/life_study.h): the FEM
 // slice's subsurface stress against the closed form, the load-life exponent,
 // and the L10 life ratios of the bodies against the cylinder at the same
-// load and steel over the modelling choices, each with a verdict. Logs the
+// load and steel over the modelling choices, each with a verdict. Prints the
 // table; --json writes everything, --markdown the table.
 #include "cli/text_output.h"
 #include "study/life/life_study.h"

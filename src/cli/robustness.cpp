@@ -1,14 +1,9 @@
 // `rollcheck robustness`: every headline comparison of bodies over the grid
 // of modelling choices, with resolution-free scores and a verdict each
-// (study/robustness/robustness.h). Logs the verdict table; --json writes
+// (study/robustness/robustness.h). Prints the verdict table; --json writes
 // the grid, the comparisons and every body's scores per cell.
-#include "cli/cli.h"
-#include "core/atomic_file.h"
-#include "core/error.h"
+#include "cli/text_output.h"
 #include "study/robustness/robustness.h"
-#include <fmt/format.h>
-#include <fstream>
-#include <spdlog/spdlog.h>
 
 namespace rollcheck::cli
 {
@@ -22,19 +17,10 @@ void add_robustness_command(CLI::App& app)
       "modelling choices (rolling energy, contact width, load rule, end margin) with resolution-free scores: "
       "a verdict each, robust or the choice it depends on",
       [] {
-        if (!markdown_path.empty())
-          check_output_file(markdown_path, "option --markdown");
-        const study::robustness::RobustnessResult result = study::robustness::run_robustness(settings);
-        const std::string table = study::robustness::markdown_report(result);
-        if (!markdown_path.empty())
-          write_atomically(markdown_path, [&](const std::filesystem::path& tmp) {
-            std::ofstream out(tmp);
-            out << table;
-            if (!out)
-              throw ComputationError(fmt::format("option --markdown: cannot write '{}'", markdown_path));
-          });
-        print_summary(table);
-        return CommandResult{study::robustness::to_json(result), 0};
+        return run_with_markdown(markdown_path, [] {
+          const study::robustness::RobustnessResult result = study::robustness::run_robustness(settings);
+          return std::pair{study::robustness::to_json(result), study::robustness::markdown_report(result)};
+        });
       });
   sub->add_option("--samples-per-loop", settings.samples_per_loop,
                   "Samples of each rolling loop (default: 8000)")

@@ -13,8 +13,9 @@ namespace rollcheck::cli
 void write_text_output(const std::string& path, const std::string& text);
 
 /// A study that also makes a Markdown table: checks `markdown_path` (option
-/// --markdown; none when empty) before `run`, then logs the table on rank 0,
-/// writes it there, and returns `run`'s JSON as the command's summary.
+/// --markdown; none when empty) before `run`, then prints the table
+/// (print_summary), writes it on rank 0 and returns `run`'s JSON as the
+/// command's summary.
 CommandResult run_with_markdown(const std::string& markdown_path,
                                 const std::function<std::pair<nlohmann::json, std::string>()>& run);
 } // namespace rollcheck::cli
