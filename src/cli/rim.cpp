@@ -169,9 +169,6 @@ const SceneSchema<RimCommand>& rim_schema()
 nlohmann::json run_rim(const io::Parameters& p)
 {
   RimCommand command = rim_schema().bind(p);
-  if (command.loop.body.body.empty() && !command.loop.body.mesh_file.empty())
-    throw InputError("option --mesh (mesh_file) reads a body, which needs --body (the loop's ends); without --body "
-                     "rim solves one end and reads no mesh");
   if (command.loop.body.body.empty())
   {
     const fem::RimEndStudy study = fem::solve_rim_end(MPI_COMM_WORLD, command.end);
