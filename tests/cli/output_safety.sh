@@ -43,7 +43,7 @@ if mount -t tmpfs -o size=2M tmpfs "$full" 2>/dev/null; then
   echo previous > "$full/m.json"; echo previous > "$full/v.msh"
   dd if=/dev/zero of="$full/filler" bs=4k 2>/dev/null
   expect 1 "m.json" -- "$bin" mesh --points 200 --json "$full/m.json"
-  expect 1 "v.msh" -- "$bin" mesh --points 200 --out "$full/v.msh"
+  expect 1 "v.msh" -- "$bin" mesh --points 200 --size 0.5 --out "$full/v.msh"
   check '[[ "$(cat "$full/m.json")" == previous && "$(cat "$full/v.msh")" == previous ]]' "full disk: a previous file changed"
   check '[[ $(ls -A "$full" | wc -l) -eq 3 ]]' "full disk: temporary files left: $(ls -A "$full")"
   umount "$full"
