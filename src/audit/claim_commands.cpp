@@ -109,7 +109,7 @@ void add_tables_and_searches(ClaimCommands& c, const CommandArgs& paper_oloid, c
 }
 
 /// Real rolling and contact mechanics.
-void add_rolling_and_contact(ClaimCommands& c)
+void add_rolling_and_contact(ClaimCommands& c, bool quick)
 {
   // Real rolling (defaults: 1.1 dV, one loop, Hertz width, faces cut 8 x 8).
   c.rolling_pair = {{"oracle", "--oracle", "rolling", "--body", "oloid"},
@@ -118,8 +118,10 @@ void add_rolling_and_contact(ClaimCommands& c)
                         {"oracle", "--oracle", "rolling", "--body", "oloid", "--face-subdivisions", "1"},
                         c.rolling_pair[0],
                         {"oracle", "--oracle", "rolling", "--body", "oloid", "--face-subdivisions", "16"}};
-  // Its defaults: the grid of choices of issue 57, resolution-free scores (22 s on the idle 2-core machine).
-  c.robustness = {{"robustness"}};
+  // The grid of modelling choices with resolution-free scores; the quick audit (a test) rolls half the samples
+  // per loop and scores the family's genomes coarser, which the comparisons it reads do not use.
+  c.robustness = {quick ? CommandArgs{"robustness", "--samples-per-loop", "4000", "--family-samples-per-loop", "500"}
+                        : CommandArgs{"robustness"}};
 
   c.hertz = {{"hertz", "--model", "axi"}, {"hertz", "--model", "plane-strain"}};
   // FEM-SDS over one loop of real rolling, the preprint's body against the
@@ -151,7 +153,7 @@ ClaimCommands claim_commands(const fs::path& reference_meshes, bool quick)
   const CommandArgs paper_cylinder = {"oracle", "--mesh", cylinder_mesh, "--paper-compat"};
   add_oracle_modes(c, paper_oloid, paper_cylinder, oloid_mesh, cylinder_mesh);
   add_tables_and_searches(c, paper_oloid, paper_cylinder, quick);
-  add_rolling_and_contact(c);
+  add_rolling_and_contact(c, quick);
   return c;
 }
 } // namespace rollcheck::audit
