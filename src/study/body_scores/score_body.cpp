@@ -1,6 +1,7 @@
 #include "study/body_scores/score_body.h"
 #include "core/error.h"
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
@@ -135,7 +136,8 @@ nlohmann::json record_json(const BodyScores& r)
                       {"wds_depth", json_number(v.wds_depth)},
                       {"fds", json_number(v.fds)},
                       {"n_faces", r.n_faces},
-                      {"wall_s", r.wall_s}};
+                      {"wall_s", r.wall_s},
+                      {"cpu_s", r.cpu_s}};
   return j;
 }
 
@@ -259,6 +261,7 @@ BodyScores score_body(const ScoreBodySettings& s)
 {
   validate(s);
   const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpu_start = std::clock();
   BodyScores r;
   r.body = geometry::body_label(s.body);
   r.oracle = s.oracle;
@@ -299,6 +302,7 @@ BodyScores score_body(const ScoreBodySettings& s)
     r.n_faces = static_cast<long>(mesh.faces.rows());
   }
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.cpu_s = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   return r;
 }
 

@@ -68,6 +68,7 @@ struct BodyScores
   Oracle oracle = Oracle::rigid;
   long n_faces = 0;  ///< of the body's mesh (rolling: of the subdivided scoring mesh)
   double wall_s = 0;
+  double cpu_s = 0;  ///< processor time of the scoring (all threads): its cost, independent of machine load
   // The preprint's oracles (approximate, rigid).
   contact::ScoreVector scores;
   contact::FaceCurvature curvature;
