@@ -25,22 +25,20 @@ Rule no_candidate_beats_anchor()
   return [](const std::vector<CommandOutput*>& out) {
     CommandOutput& search = *out[0];
     const double anchor = search.number("/anchor/rigid/cds");
-    // The anchor's CDS at the candidates' mesh over its own: how much the
-    // score moves with the resolution alone (it falls as N^-2).
-    const double noise = out.size() > 1 ? std::abs(out[1]->number("/anchor/rigid/cds") / anchor - 1) : 0.0;
     const auto ranked = revalidated_by_cds(search);
-    const auto better = std::count_if(ranked.begin(), ranked.end(),
-                                      [&](const auto& r) { return r.first < anchor * (1 - noise); });
-    const auto below = std::count_if(ranked.begin(), ranked.end(), [&](const auto& r) { return r.first < anchor; });
+    const auto better = std::count_if(ranked.begin(), ranked.end(), [&](const auto& r) { return r.first < anchor; });
     const double best = ranked.empty() ? std::numeric_limits<double>::infinity() : ranked.front().first;
     const std::string best_name = ranked.empty() ? "-" : genome_text(genome_at(search, ranked.front().second));
     CellResult cell{fmt::format("anchor {}; {} of {} better, best {} {:.3f}x", sci(anchor), better, ranked.size(),
                                 best_name, best / anchor),
                     better == 0};
-    if (below > better)
-      cell.value += fmt::format(" ({} below the anchor within noise: the anchor's CDS changes by {:.0f} % on the "
-                                "candidates' mesh)",
-                                below - better, 100 * noise);
+    // Where the anchor is meshed apart from the candidates, its CDS on their
+    // mesh (a second search's anchor) says how much of a difference the
+    // meshes alone make: CDS falls as N^-2, a shift, not a symmetric noise.
+    if (out.size() > 1)
+      cell.value += fmt::format(" (the anchor's own CDS is {:+.0f} % on the candidates' mesh: the meshes, not the "
+                                "shapes, decide a difference this small)",
+                                100 * (out[1]->number("/anchor/rigid/cds") / anchor - 1));
     return cell;
   };
 }
@@ -158,9 +156,14 @@ Rule start_is_local_optimum(bool resolution_free)
                                 x[2].get<double>(), sci(best), sci(start), 100 * (best / start - 1), threshold,
                                 at_start),
                     !beaten && at_start == "local minimum"};
-    if (!cell.holds && !resolution_free)
+    // A per-face score moves with the face count by as much as the gains:
+    // neither a win nor a loss is decided by it.
+    if (!resolution_free)
+    {
+      cell.holds = false;
       cell.undecided = "cannot be decided at this resolution: a per-face score moves with the genome's face count "
                        "by as much as the gains and the gradients measured";
+    }
     return cell;
   };
 }
