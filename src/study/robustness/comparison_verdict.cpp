@@ -50,9 +50,12 @@ Verdict judge_comparison(const std::vector<Choice>& grid, const std::function<st
   for (const auto& [cell, r] : value)
     for (std::size_t c = 0; c < grid.size(); ++c)
     {
+      // The next defined cell along choice c: a flip across undefined cells
+      // between them is still a flip.
       Cell next = cell;
-      ++next[c];
-      const auto it = value.find(next);
+      auto it = value.end();
+      while (it == value.end() && ++next[c] < static_cast<int>(grid[c].values.size()))
+        it = value.find(next);
       if (it == value.end() || rank(r) == rank(it->second))
         continue;
       v.flips.push_back({static_cast<int>(c), cell[c], next[c], cell, std::nullopt});

@@ -7,7 +7,8 @@
 // and a ratio r(cell) = score(A) / score(B) of two bodies at each cell
 // (lower scores are more uniform, so r < 1 ranks A first). The comparison is
 // robust when every defined cell ranks the bodies alike; otherwise it depends
-// on the choices along which a neighbouring pair of cells ranks them
+// on the choices along which a neighbouring pair of defined cells (undefined
+// cells between them skipped) ranks them
 // differently, and each such pair is a flip: the choice, the two values it
 // lies between and the other choices' values there.
 #include <functional>
@@ -32,7 +33,7 @@ std::vector<Cell> grid_cells(const std::vector<Choice>& grid);
 struct Flip
 {
   int choice = 0;
-  int from = 0, to = 0; ///< value indices of the neighbouring cells, to = from + 1
+  int from = 0, to = 0; ///< value indices of the neighbouring defined cells (to = from + 1 unless undefined cells lie between)
   Cell cell;            ///< the cell at `from`
   std::optional<double> value; ///< where the ranking changes, when the caller refines it
 };

@@ -7,6 +7,18 @@
 
 namespace rollcheck::study::robustness
 {
+std::vector<geometry::RollerGenome> distinct_bodies(const std::vector<geometry::RollerGenome>& grid)
+{
+  auto is_mirror = [](const geometry::RollerGenome& a, const geometry::RollerGenome& b) {
+    return std::abs(a.theta_deg + b.theta_deg - 180) < 1e-9 && a.offset == b.offset && a.ratio == b.ratio;
+  };
+  std::vector<geometry::RollerGenome> kept;
+  for (const geometry::RollerGenome& g : grid)
+    if (g.theta_deg <= 90 || std::none_of(grid.begin(), grid.end(), [&](const auto& m) { return is_mirror(g, m); }))
+      kept.push_back(g);
+  return kept;
+}
+
 std::vector<std::size_t> best_genomes(const std::vector<FamilyGenome>& genomes, std::size_t cell, std::size_t count)
 {
   std::vector<std::size_t> scored;
@@ -61,6 +73,7 @@ nlohmann::json to_json(const FamilyRanking& r, const std::vector<Choice>& grid)
                        {"reference_value", json_number_or_null(g.values[r.reference_cell])},
                        {"cells_scored", scored}});
   }
-  return {{"grid", r.grid}, {"score", r.score}, {"reference_cell", cell}, {"best", best}, {"genomes", genomes}};
+  return {{"grid", r.grid},       {"score", r.score},   {"reference_cell", cell},
+          {"best", best},         {"genomes", genomes}, {"mirrors_merged", r.mirrors_merged}};
 }
 } // namespace rollcheck::study::robustness

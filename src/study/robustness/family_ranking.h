@@ -2,6 +2,11 @@
 // Wing of the study layer (study/robustness): whether a family's best bodies
 // stay its best over the grid of modelling choices.
 //
+// A genome (theta, d, rho) and its mirror (180 deg - theta, d, rho) are one
+// body reflected (the same area, volume, inertia and scores): the ranking
+// keeps one of each pair (distinct_bodies), so "the best" are distinct bodies
+// and a pair is never split between "the best" and "the rest".
+//
 // Each genome of a search grid is scored at every cell of the grid (NaN where
 // it has no whole loop there: a rim lifts, or it cannot roll over its
 // barrier). Its best `count` bodies are those with the lowest scores at the
@@ -32,7 +37,12 @@ struct FamilyRanking
   std::size_t reference_cell = 0;  ///< index into grid_cells(grid)
   std::vector<FamilyGenome> genomes;
   std::vector<std::size_t> best;   ///< indices of the best genomes at the reference cell, best first
+  std::size_t mirrors_merged = 0;  ///< genomes of the grid left out as the mirror of one kept
 };
+
+/// The genomes of `grid` with each mirror pair (theta, d, rho), (180 deg -
+/// theta, d, rho) kept once, at theta <= 90 deg.
+std::vector<geometry::RollerGenome> distinct_bodies(const std::vector<geometry::RollerGenome>& grid);
 
 /// The `count` genomes with the lowest finite values at `cell`, best first.
 std::vector<std::size_t> best_genomes(const std::vector<FamilyGenome>& genomes, std::size_t cell, std::size_t count);
@@ -45,6 +55,6 @@ std::optional<double> best_against_rest(const FamilyRanking& ranking, std::size_
 std::string genome_label(const geometry::RollerGenome& genome);
 
 /// {"grid", "score", "reference_cell": {choice: value}, "best": [labels],
-///  "genomes": [{theta_deg, offset, ratio, "reference_value"}]}.
+///  "genomes": [{theta_deg, offset, ratio, "reference_value"}], "mirrors_merged"}.
 nlohmann::json to_json(const FamilyRanking& ranking, const std::vector<Choice>& grid);
 } // namespace rollcheck::study::robustness

@@ -228,8 +228,9 @@ std::vector<double> genome_values(const geometry::BodySpec& spec, const std::vec
   return values;
 }
 
-/// The family's genomes over the grid, two at a time, and its best at the
-/// continuum FEM-SDS's reference cell.
+/// The family's distinct bodies over the grid, two at a time, and its best at
+/// the reference cell by the accumulated line-Hertz pressure (g = 1 of the
+/// continuum FEM-SDS).
 FamilyRanking rank_family(oracle::SearchGrid grid, const std::vector<Cell>& cells, const RobustnessSettings& s)
 {
   FamilyRanking r;
@@ -240,8 +241,10 @@ FamilyRanking rank_family(oracle::SearchGrid grid, const std::vector<Cell>& cell
       std::find_if(names.begin(), names.end(), [&](const auto& n) { return n.first == r.score; }) - names.begin());
   r.reference_cell = cell_index(s.grid, cells, {{"rolling_energy", "0.1"}, {"contact_width", "geometric"},
                                                  {"load_rule", "dynamic"}, {"end_margin", "0.05"}});
-  for (const geometry::RollerGenome& genome : oracle::search_grid(grid))
+  const std::vector<geometry::RollerGenome> all = oracle::search_grid(grid);
+  for (const geometry::RollerGenome& genome : distinct_bodies(all))
     r.genomes.push_back({genome, {}});
+  r.mirrors_merged = all.size() - r.genomes.size();
   auto spec_of = [&](std::size_t g) {
     geometry::BodySpec spec;
     spec.body = "roller";
@@ -445,8 +448,8 @@ nlohmann::json to_json(const RobustnessResult& r)
                            {"score", c.score},
                            {"bodies", c.bodies},
                            {"verdict", c.verdict.text},
-                           {"ratio_min", json_number(c.verdict.ratio_min)},
-                           {"ratio_max", json_number(c.verdict.ratio_max)},
+                           {"ratio_min", c.verdict.cells > 0 ? json_number(c.verdict.ratio_min) : nlohmann::json()},
+                           {"ratio_max", c.verdict.cells > 0 ? json_number(c.verdict.ratio_max) : nlohmann::json()},
                            {"cells", c.verdict.cells},
                            {"flips", flips}});
   }

@@ -29,8 +29,9 @@
 // (oracle/rolling_study.h); every other choice re-scores the same loop.
 //
 // The family: every genome of the preprint's quick grid is scored over the
-// grid too, by the continuum FEM-SDS's definition (the accumulated pressure
-// over the whole surface); its five best at fem-sds's defaults (E = 0.1,
+// grid too, by the accumulated line-Hertz pressure over the whole surface
+// (the continuum FEM-SDS without its FEM factor, fem_sds_continuum.h), one
+// of each mirror pair (family_ranking.h); its five best at fem-sds's defaults (E = 0.1,
 // geometric width, dynamic load, 5 % margin) are judged against the rest
 // (family_ranking.h), and the best of them, "quick-grid-best", joins the
 // bodies against the oloid.

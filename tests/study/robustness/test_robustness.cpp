@@ -150,8 +150,34 @@ TEST(ComparisonVerdict, RobustDependentAndUntestable)
   });
   EXPECT_TRUE(v.robust);
   EXPECT_EQ(v.cells, 4);
+  // A flip across an undefined cell is still a flip, from the last defined
+  // value to the next one.
+  v = judge_comparison(grid, [](const Cell& c) -> std::optional<double> {
+    if (c[0] == 1)
+      return std::nullopt;
+    return c[0] == 0 ? 0.5 : 2.0;
+  });
+  EXPECT_EQ(v.text, "depends on energy");
+  ASSERT_EQ(v.flips.size(), 2u); // one per width
+  EXPECT_EQ(v.flips[0].from, 0);
+  EXPECT_EQ(v.flips[0].to, 2);
   v = judge_comparison(grid, [](const Cell&) -> std::optional<double> { return std::nullopt; });
   EXPECT_EQ(v.text, "cannot be tested");
+}
+
+TEST(FamilyRanking, AMirrorPairIsOneBody)
+{
+  // (75, 0.7, 1) and (105, 0.7, 1) are one body reflected; (120, 1, 1) has no
+  // mirror (60 deg) in this grid and stays.
+  const std::vector<geometry::RollerGenome> grid = {
+      {75, 0.7, 1.0, 2}, {105, 0.7, 1.0, 2}, {105, 1.0, 1.0, 2}, {120, 1.0, 1.0, 2}, {90, 1.0, 1.0, 2}};
+  const auto kept = distinct_bodies(grid);
+  ASSERT_EQ(kept.size(), 4u);
+  EXPECT_EQ(kept[0].theta_deg, 75);
+  EXPECT_EQ(kept[1].theta_deg, 105); // its mirror (75, 1, 1) is not in the grid
+  EXPECT_EQ(kept[1].offset, 1.0);
+  EXPECT_EQ(kept[2].theta_deg, 120);
+  EXPECT_EQ(kept[3].theta_deg, 90);
 }
 
 
