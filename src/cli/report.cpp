@@ -2,6 +2,7 @@
 // store, with the plots of postprocess/ (docs/guide/report.md).
 #include "cli/cli.h"
 #include "io/batch_report.h"
+#include "io/report_json_inputs.h"
 #include "io/results_store_check.h"
 #include <fmt/format.h>
 
@@ -18,6 +19,7 @@ void add_report_command(CLI::App& app)
                                                  ? std::filesystem::absolute(store).parent_path() / "report"
                                                  : std::filesystem::path(folder);
         io::require_results_store(store, "option --from");
+        io::require_report_json_inputs({validation, audit, robustness}, "report");
         const io::ReportFiles report = io::write_report(store, target, scripts, python, validation, audit, robustness);
         print_summary(fmt::format("report: {}\nmarkdown: {}\n", report.html.string(), report.markdown.string()));
         return CommandResult{{{"html", report.html.string()}, {"markdown", report.markdown.string()}}};

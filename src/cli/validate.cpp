@@ -8,6 +8,7 @@
 #include "core/atomic_file.h"
 #include "core/data_folder.h"
 #include "io/batch_report.h"
+#include "io/report_json_inputs.h"
 #include "io/batch_validation.h"
 #include "core/error.h"
 #include "rollcheck_version.h"
@@ -30,15 +31,11 @@ bool written_by_validate(const std::filesystem::path& path)
 
 /// What validate writes besides the batch's own, checked before any case
 /// runs: validation.json (replaced only if rollcheck wrote it), report/ (a
-/// folder output) and the audit JSON the report reads.
-void check_validate_outputs(const std::filesystem::path& out, const std::string& audit_json)
+/// folder output) and the audit and robustness JSON the report reads.
+void check_validate_outputs(const std::filesystem::path& out, const std::string& audit_json,
+                            const std::string& robustness_json)
 {
-  if (!audit_json.empty())
-  {
-    std::ifstream in(audit_json);
-    if (!nlohmann::json::parse(in, nullptr, false).is_object())
-      throw InputError(fmt::format("validate --audit '{}': not the JSON of `rollcheck audit --json`", audit_json));
-  }
+  io::require_report_json_inputs({{}, audit_json, robustness_json}, "validate");
   check_output_location(out, "validate --out");
   if (!written_by_validate(out / validation_name))
     check_output_entries(out, {validation_name}, "validate --out");
@@ -62,7 +59,7 @@ void add_validate_command(CLI::App& app)
   }();
   CLI::App* sub = add_command(
       app, "validate", "The main job: run the default cases (cases/default) as a batch and write the report", [] {
-        check_validate_outputs(options.out, audit_json);
+        check_validate_outputs(options.out, audit_json, robustness_json);
         const io::BatchResult batch = run_scene_batch(options);
         if (!batch.coordinator)
           return CommandResult{};
