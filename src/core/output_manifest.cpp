@@ -44,13 +44,9 @@ std::optional<OutputManifest> read_output_manifest(const fs::path& folder)
         manifest.entries.insert(entry.get<std::string>());
     return manifest;
   }
-  // The plain-text marker of a folder written whole: what it held when the
-  // marker was written is rollcheck's; what came later is the user's.
-  const fs::file_time_type marked = fs::last_write_time(path);
-  for (const fs::directory_entry& entry : fs::directory_iterator(folder))
-    if (entry.path().filename() != output_marker && fs::symlink_status(entry.path()).type() != fs::file_type::symlink
-        && entry.last_write_time() <= marked)
-      manifest.entries.insert(entry.path().filename().generic_string());
+  // The plain-text marker of a rollcheck before manifests names no files,
+  // and a file's age cannot tell them from the user's (mv, cp -p and tar
+  // keep old times): nothing in such a folder is taken for rollcheck's.
   return manifest;
 }
 

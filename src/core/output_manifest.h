@@ -34,9 +34,9 @@ struct OutputManifest
 };
 
 /// The manifest of `folder`, nullopt if it holds none. A marker of rollcheck
-/// before manifests (plain text; such folders were written whole) lists
-/// every entry at least as old as the marker. ComputationError if it cannot
-/// be read.
+/// before manifests (plain text) lists nothing: its files cannot be told
+/// from the user's, so none is removed or replaced. ComputationError if it
+/// cannot be read.
 std::optional<OutputManifest> read_output_manifest(const std::filesystem::path& folder);
 
 /// Writes the manifest of `folder` (atomically).
