@@ -52,6 +52,7 @@ nlohmann::json to_json(const ContinuumSds& c)
 {
   return {{"line_hertz_sds_continuum", json_number(c.line_hertz)},
           {"fem_sds_continuum", json_number(c.fem)},
-          {"fem_sds_continuum_change", json_number(c.change())}};
+          {"fem_sds_continuum_change", json_number(c.change())},
+          {"fem_sds_continuum_held_below_table", c.below_table}};
 }
 } // namespace rollcheck::study::loop_scores

@@ -36,7 +36,8 @@ struct ContinuumSds
   double fem = 0;         ///< V of x with the FEM's g
   double fem_coarse = 0;  ///< every other sample, half the pieces
   double load_ratio_min = 0, load_ratio_max = 0;
-  /// Points whose load ratio lies below the table's least, where g is held.
+  /// Whether some point's load ratio lies below the slice table's least, where
+  /// g is held at the table's last value (JSON fem_sds_continuum_held_below_table).
   bool below_table = false;
   double change() const { return fem / fem_coarse - 1; }
 };

@@ -185,6 +185,9 @@ nlohmann::json continuum_json(const std::optional<ContinuumSds>& continuum)
 {
   if (continuum)
     return to_json(*continuum);
-  return {{"line_hertz_sds_continuum", nullptr}, {"fem_sds_continuum", nullptr}, {"fem_sds_continuum_change", nullptr}};
+  return {{"line_hertz_sds_continuum", nullptr},
+          {"fem_sds_continuum", nullptr},
+          {"fem_sds_continuum_change", nullptr},
+          {"fem_sds_continuum_held_below_table", nullptr}};
 }
 } // namespace rollcheck::study::loop_scores
