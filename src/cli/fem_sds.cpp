@@ -50,6 +50,7 @@ const SceneSchema<FemSdsSettings>& fem_sds_schema()
         .real("rolling_energy", "--rolling-energy", &FemSdsSettings::barrier_energy_excess, "",
               "Rolling oracle: initial kinetic energy / potential barrier - 1 (docs/results/real-rolling.md#u-against-the-rolling-speed-rollcheck-oracle---oracle-rolling)",
               io::non_negative)
+        .former("barrier_energy_excess")
         .integer("runs", "--runs", &FemSdsSettings::runs, "",
                  "Rigid oracle: runs with the reference's initial spins (the preprint: 3)", io::Bounds{1, 5})
         .real("threshold_m", "--threshold", &FemSdsSettings::contact_threshold_m, "m",
@@ -69,6 +70,7 @@ const SceneSchema<FemSdsSettings>& fem_sds_schema()
               "away from the creases (end effects decay within a few contact widths b, and b / L < 1e-3 here); "
               "the continuum value holds the pressure there too",
               io::Bounds{0, 0.25, true, true})
+        .former("crease_margin")
         .choice("load_rule", "--load-rule", &FemSdsSettings::load_rule,
                 "The continuum value's load on each ruling: dynamic (the normal force and centre of pressure of the "
                 "same rolling motion, scaled to --load), static (--load through the centre of mass) or uniform "

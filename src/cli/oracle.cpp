@@ -123,6 +123,7 @@ void add_rolling_parameters(Schema& s)
                 .real("rolling_energy", "--rolling-energy", &P::barrier_energy_excess, "",
                       "Rolling oracle: initial kinetic energy / potential barrier dV - 1 (0.1: over every barrier, "
                       "no rim lifts)", io::non_negative)
+                .former("barrier_energy_excess")
                 .integer("loops", "--loops", &P::loops, "",
                          "Rolling oracle: loops of the contact curve scored (undamped, every loop is the same)",
                          io::rolling_loops)

@@ -77,6 +77,7 @@ void add_reduced_model_options(WholeBodySchema& s)
       .real("end_margin", "--end-margin", &WholeBodyCheckSettings::crease_margin, "",
             "Fraction of the ruling kept clear inside each loaded end for the stations (fem-sds's 5 %)",
             io::Bounds{0, 0.25, true, true})
+      .former("crease_margin")
       .integer("slice_refine", "--refine", &WholeBodyCheckSettings::slice_refine, "",
                "The slices' mesh level (-1: the plane-strain default)", io::Bounds{-1, 8})
       .choice("end_depth", "--end-depth", &WholeBodyCheckSettings::end_depth,

@@ -117,6 +117,14 @@ public:
     return *this;
   }
 
+  /// The key the last parameter had before it was renamed: a case file that
+  /// still uses it is refused with a message naming the key to use.
+  BoundSchema& former(std::string key)
+  {
+    schema_.parameters.back().former_key = std::move(key);
+    return *this;
+  }
+
   /// A parameter that sets no member (the scene reads it by name from
   /// Parameters): for what steers the scene itself rather than a library struct.
   BoundSchema& unbound(Parameter parameter)

@@ -211,4 +211,15 @@ TEST(CaseKeys, OneRuleAndFormerKeysNamed)
   const std::string message = refusal([&] { io::resolve_case(file, s.schema(), {}, "case file 'former.toml'"); });
   EXPECT_NE(message.find("key 'force_n' is now 'load_n'"), std::string::npos) << message;
   EXPECT_NE(message.find("key 'mesh' is now 'mesh_file'"), std::string::npos) << message;
+  // A quantity renamed: its former key is declared with former().
+  struct Margin
+  {
+    double end_margin = 0.05;
+  };
+  io::BoundSchema<Margin> m("margin");
+  m.real("end_margin", "--end-margin", &Margin::end_margin, "", "Margin", io::non_negative).former("crease_margin");
+  const io::CaseFile renamed
+      = io::read_case_file(case_file("renamed.toml", "[scene]\nkind = \"margin\"\ncrease_margin = 0.1\n"));
+  const std::string said = refusal([&] { io::resolve_case(renamed, m.schema(), {}, "case file 'renamed.toml'"); });
+  EXPECT_NE(said.find("key 'crease_margin' is now 'end_margin'"), std::string::npos) << said;
 }
