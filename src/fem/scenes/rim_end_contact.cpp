@@ -381,6 +381,7 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   level.edge_element_m = edge_element_m;
   const RimEndSizes sizes = level_sizes(study, edge_element_m);
   const SceneMesh scene = level_mesh(comm, study, sizes);
+  level.mesh_wall_s = wall_seconds_since(comm, start);
   PenaltyContact problem(scene, Model::solid, 1, s.youngs_modulus_pa, s.poisson_ratio,
                          s.penalty_c * s.youngs_modulus_pa / sizes.contact_m, s.petsc_options);
   const bool block = s.counter_face == CounterFace::block;
@@ -574,9 +575,9 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
     const RimEndLevel& l = study.levels.back();
     if (rank == 0)
       spdlog::info("rim level {}: h_e = {:.3g} b, {} dofs, far q {:.5g} N/m, far p {:.5g} Pa, end peak {:.5g} Pa "
-                   "at x = {:.3g} b, edge {:.5g} Pa, {:.1f} s",
+                   "at x = {:.3g} b, edge {:.5g} Pa, {:.1f} s ({:.1f} s meshing)",
                    k, h_e / study.half_width_m, l.dofs, l.far_load_n_per_m, l.far_peak_pa, l.end_peak_pa,
-                   l.end_peak_x_m / study.half_width_m, l.edge_pressure_pa, l.wall_s);
+                   l.end_peak_x_m / study.half_width_m, l.edge_pressure_pa, l.wall_s, l.mesh_wall_s);
     if (k + 1 >= setup.levels)
       judge_levels(study, sharp);
   }

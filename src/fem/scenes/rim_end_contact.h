@@ -186,6 +186,7 @@ struct RimEndLevel
   double start_load_n_per_m = 0;     ///< q_far at the level's first approach (a finer level: the coarser's)
   double estimated_approach_m = 0;   ///< line contact's estimate of it (unscaled)
   int load_steps = 0, newton_iterations = 0, krylov_iterations = 0;
+  double mesh_wall_s = 0;            ///< of wall_s, building and distributing the mesh
   double wall_s = 0;
 };
 
