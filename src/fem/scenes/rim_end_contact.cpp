@@ -509,6 +509,7 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
   ensure_petsc(); // MPI too
   RimEndStudy study;
   study.setup = setup;
+  study.setup.on_level = nullptr; // the caller's progress, not the study's: it may outlive what it refers to
   const bool block = setup.counter_face == CounterFace::block;
   study.effective_modulus_pa = contact::effective_modulus(setup.youngs_modulus_pa, setup.poisson_ratio, block);
   const contact::LineHertz hertz
@@ -568,6 +569,8 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
                    study.resolved ? fmt::format("ratio change {:+.2f} %", 100 * *study.end_change)
                                   : std::string("boundary layer not resolved"));
     const double h_e = first_edge_element / std::pow(2.0, k);
+    if (setup.on_level)
+      setup.on_level(k, h_e);
     // Any level from the last asked for may be the last: each keeps its fields.
     study.levels.push_back(solve_level(comm, study, h_e,
                                        k + 1 >= setup.levels && !setup.xdmf_path.empty() ? &last_fields : nullptr,

@@ -65,6 +65,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <mpi.h>
 #include <numbers>
 #include <optional>
@@ -156,6 +157,9 @@ struct RimEndSettings
   /// held block's by about 20 %: 1, or a solved neighbour's
   /// RimEndStudy::approach_over_estimate (the rim loop's end table).
   double first_approach_scale = 1;
+  /// If set, called on every rank as each level starts, with its index (0
+  /// the first) and h_e: the rim loop's progress lines name the level.
+  std::function<void(int, double)> on_level;
 };
 
 /// A surface node on the ruling's centre line y = 0: position along the

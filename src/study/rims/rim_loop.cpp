@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
+#include <functional>
 #include <limits>
 #include <numbers>
 #include <span>
@@ -107,11 +108,21 @@ FlatRimSettings flat_rim_settings(const RimLoopSettings& s)
   return setup;
 }
 
+/// An end model's level callback (fem::RimEndSettings::on_level) that
+/// makes the beat's step `what` at that level.
+std::function<void(int, double)> level_beat(ProgressBeat& beat, const std::string& what)
+{
+  return [&beat, what](int level, double edge_element_m) {
+    beat.step(fmt::format("{}, level {} (h_e = {:.3g} m)", what, level + 1, edge_element_m));
+  };
+}
+
 /// The end model at one loaded end of a directly solved orientation, from
 /// `approach_over_estimate` (the end before's); outside the model (no
 /// solve) where b / R is too large for line contact.
 RimLoopEnd direct_end(MPI_Comm comm, const RimLoopSettings& s, std::span<const oracle::Circle> circles,
-                      const loop_scores::FemSdsOrientation& r, int end, double q, double approach_over_estimate)
+                      const loop_scores::FemSdsOrientation& r, int end, double q, double approach_over_estimate,
+                      const std::function<void(int, double)>& on_level)
 {
   const oracle::Ruling& ruling = *r.locus.ruling;
   RimLoopEnd e;
@@ -124,6 +135,7 @@ RimLoopEnd direct_end(MPI_Comm comm, const RimLoopSettings& s, std::span<const o
   const double hull_radius = end == 0 ? ruling.start_radius_m : ruling.end_radius_m;
   fem::RimEndSettings settings = end_settings(s, std::max(hull_radius, s.end.edge_radius_m), q, e.dihedral_angle_rad);
   settings.first_approach_scale = approach_over_estimate;
+  settings.on_level = on_level;
   e.modelled_angle_rad = settings.interior_angle_rad;
   const double b = half_width(settings);
   if (!(b < fem::largest_half_width_over_radius * settings.radius_m))
@@ -170,10 +182,11 @@ std::vector<RimLoopEnd> direct_ends(MPI_Comm comm, const RimLoopSettings& s, con
   double approach_over_estimate = 1;
   for (const Loaded& l : loaded)
   {
-    beat.step(fmt::format("direct end {} of {} (orientation {}, its {})", ends.size() + 1, loaded.size(),
-                          l.orientation->index, l.end == 0 ? "start" : "end"));
-    ends.push_back(
-        direct_end(comm, s, interior.circles, *l.orientation, l.end, l.load_n_per_m, approach_over_estimate));
+    const std::string what = fmt::format("direct end {} of {} (orientation {}, its {})", ends.size() + 1,
+                                         loaded.size(), l.orientation->index, l.end == 0 ? "start" : "end");
+    beat.step(what);
+    ends.push_back(direct_end(comm, s, interior.circles, *l.orientation, l.end, l.load_n_per_m,
+                              approach_over_estimate, level_beat(beat, what)));
     if (ends.back().outside_model.empty())
       approach_over_estimate = ends.back().study.approach_over_estimate();
   }
@@ -412,10 +425,12 @@ void add_end_table(MPI_Comm comm, const RimLoopSettings& s, RimLoopResult& resul
     if (!node.reached)
       continue;
     const double angle = node.interior_angle_rad, radius = node.sheet_radius_m;
-    beat.step(fmt::format("end table node {} of {} ({:.2f} deg, R = {:.4g} m)", ++solved, reached, angle / degree,
-                          radius));
+    const std::string what = fmt::format("end table node {} of {} ({:.2f} deg, R = {:.4g} m)", ++solved, reached,
+                                         angle / degree, radius);
+    beat.step(what);
     fem::RimEndSettings settings = end_settings(s, radius, result.reference_load_n_per_m, angle);
     settings.first_approach_scale = approach_over_estimate;
+    settings.on_level = level_beat(beat, what);
     node.study = fem::solve_rim_end(comm, settings);
     approach_over_estimate = node.study.approach_over_estimate();
     result.table_converged = result.table_converged && node.study.converged;
