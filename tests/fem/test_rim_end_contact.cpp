@@ -16,6 +16,8 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <utility>
+#include <vector>
 #include <gtest/gtest.h>
 #include <mpi.h>
 #include <numbers>
@@ -46,12 +48,22 @@ TEST(RimEndContact, SquareEndIsFiniteAndConverges)
 {
   fem::RimEndSettings s;
   s.extra_levels = 1; // converged at the levels asked for: none added
+  // The rim loop's progress names each level as it starts.
+  std::vector<std::pair<int, double>> started;
+  s.on_level = [&](int level, double edge_element_m) { started.emplace_back(level, edge_element_m); };
   const fem::RimEndStudy study = fem::solve_rim_end(MPI_COMM_WORLD, s);
   print(study);
   EXPECT_FALSE(study.singular);
   ASSERT_TRUE(study.end_change.has_value());
   EXPECT_TRUE(study.converged) << *study.end_change;
   EXPECT_EQ(study.levels.size(), static_cast<std::size_t>(s.levels));
+  ASSERT_EQ(started.size(), study.levels.size());
+  for (std::size_t k = 0; k < started.size(); ++k)
+  {
+    EXPECT_EQ(started[k].first, static_cast<int>(k));
+    EXPECT_EQ(started[k].second, study.levels[k].edge_element_m);
+  }
+  EXPECT_FALSE(study.setup.on_level); // not kept: it refers to the caller's state
   // The far side is in plane strain: the middle's pressure is the far
   // side's within three standard errors of the nodes' scatter, which the
   // averages keep below 1 %.

@@ -1,6 +1,7 @@
 // The rim end on a block (fem/mesh/rim_block_mesh.h).
 #include "fem/mesh/rim_block_mesh.h"
 #include "core/error.h"
+#include "fem/mesh/rim_end_distribute.h"
 #include "fem/mesh/rim_end_solid.h"
 #include <cmath>
 #include <dolfinx/mesh/utils.h>
@@ -16,7 +17,7 @@ SceneMesh build_rim_block_mesh(MPI_Comm comm, const RimEndGeometry& g, const Rim
     throw InputError("rim end on a block: the sheet must be flat (its profile in the initial gap)");
   const double H = g.depth_m, L = g.length_m;
   const RimEndGeometry unit{g.radius_m / H, g.interior_angle_rad, g.edge_radius_m / H, 1.0, L / H, true};
-  SceneMesh scene = distribute(comm, 3, [&] { return mesh_rim_end(unit, sizes, H, true); });
+  SceneMesh scene = distribute_quietly(comm, 3, [&] { return mesh_rim_end(unit, sizes, H, true); });
   const double tol = 1e-9 * H;
   SceneParts parts = rim_end_planes(L, tol);
   parts.top = [=](double, double, double z) { return std::abs(std::abs(z) - H) < tol; };

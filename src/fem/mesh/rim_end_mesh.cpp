@@ -1,6 +1,7 @@
 // The rim end's mesh (fem/mesh/rim_end_mesh.h).
 #include "fem/mesh/rim_end_mesh.h"
 #include "core/error.h"
+#include "fem/mesh/rim_end_distribute.h"
 #include "fem/mesh/rim_end_solid.h"
 #include <algorithm>
 #include <cmath>
@@ -30,7 +31,7 @@ SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& g, const RimEn
   // OpenCASCADE's tolerances are absolute (1e-7): the geometry is built with
   // H as the unit and the mesh scaled back.
   const RimEndGeometry unit{g.radius_m / H, g.interior_angle_rad, g.edge_radius_m / H, 1.0, L / H, g.flat_sheet};
-  SceneMesh scene = distribute(comm, 3, [&] { return mesh_rim_end(unit, sizes, H, false); });
+  SceneMesh scene = distribute_quietly(comm, 3, [&] { return mesh_rim_end(unit, sizes, H, false); });
   const double tol = 1e-9 * H;
   tag_rim_end(
       scene, H, L, [](double, double, double) { return true; },

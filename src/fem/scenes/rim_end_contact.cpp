@@ -381,6 +381,7 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   level.edge_element_m = edge_element_m;
   const RimEndSizes sizes = level_sizes(study, edge_element_m);
   const SceneMesh scene = level_mesh(comm, study, sizes);
+  level.mesh_wall_s = wall_seconds_since(comm, start);
   PenaltyContact problem(scene, Model::solid, 1, s.youngs_modulus_pa, s.poisson_ratio,
                          s.penalty_c * s.youngs_modulus_pa / sizes.contact_m, s.petsc_options);
   const bool block = s.counter_face == CounterFace::block;
@@ -508,6 +509,7 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
   ensure_petsc(); // MPI too
   RimEndStudy study;
   study.setup = setup;
+  study.setup.on_level = nullptr; // the caller's progress, not the study's: it may outlive what it refers to
   const bool block = setup.counter_face == CounterFace::block;
   study.effective_modulus_pa = contact::effective_modulus(setup.youngs_modulus_pa, setup.poisson_ratio, block);
   const contact::LineHertz hertz
@@ -567,6 +569,8 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
                    study.resolved ? fmt::format("ratio change {:+.2f} %", 100 * *study.end_change)
                                   : std::string("boundary layer not resolved"));
     const double h_e = first_edge_element / std::pow(2.0, k);
+    if (setup.on_level)
+      setup.on_level(k, h_e);
     // Any level from the last asked for may be the last: each keeps its fields.
     study.levels.push_back(solve_level(comm, study, h_e,
                                        k + 1 >= setup.levels && !setup.xdmf_path.empty() ? &last_fields : nullptr,
@@ -574,9 +578,9 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
     const RimEndLevel& l = study.levels.back();
     if (rank == 0)
       spdlog::info("rim level {}: h_e = {:.3g} b, {} dofs, far q {:.5g} N/m, far p {:.5g} Pa, end peak {:.5g} Pa "
-                   "at x = {:.3g} b, edge {:.5g} Pa, {:.1f} s",
+                   "at x = {:.3g} b, edge {:.5g} Pa, {:.1f} s ({:.1f} s meshing)",
                    k, h_e / study.half_width_m, l.dofs, l.far_load_n_per_m, l.far_peak_pa, l.end_peak_pa,
-                   l.end_peak_x_m / study.half_width_m, l.edge_pressure_pa, l.wall_s);
+                   l.end_peak_x_m / study.half_width_m, l.edge_pressure_pa, l.wall_s, l.mesh_wall_s);
     if (k + 1 >= setup.levels)
       judge_levels(study, sharp);
   }

@@ -65,6 +65,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <mpi.h>
 #include <numbers>
 #include <optional>
@@ -156,6 +157,9 @@ struct RimEndSettings
   /// held block's by about 20 %: 1, or a solved neighbour's
   /// RimEndStudy::approach_over_estimate (the rim loop's end table).
   double first_approach_scale = 1;
+  /// If set, called on every rank as each level starts, with its index (0
+  /// the first) and h_e: the rim loop's progress lines name the level.
+  std::function<void(int, double)> on_level;
 };
 
 /// A surface node on the ruling's centre line y = 0: position along the
@@ -186,6 +190,7 @@ struct RimEndLevel
   double start_load_n_per_m = 0;     ///< q_far at the level's first approach (a finer level: the coarser's)
   double estimated_approach_m = 0;   ///< line contact's estimate of it (unscaled)
   int load_steps = 0, newton_iterations = 0, krylov_iterations = 0;
+  double mesh_wall_s = 0;            ///< of wall_s, building and distributing the mesh
   double wall_s = 0;
 };
 

@@ -76,32 +76,86 @@ std::vector<double> end_table_angles(double lo, double hi, double step_rad, doub
   return angles;
 }
 
-std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, int stride, double singular_from_rad,
-                                      double interior_angle_rad, double radius_m)
+namespace
 {
-  if (interior_angle_rad > singular_from_rad)
-    return std::nullopt;
+/// A look-up's reads: per column about R, its weight and its nodes about the
+/// angle (indices into the table) with theirs.
+struct ColumnRead
+{
+  double weight;
+  std::vector<std::pair<std::size_t, double>> nodes;
+};
+
+std::vector<ColumnRead> table_reads(const std::vector<EndTableNode>& table, int stride, double interior_angle_rad,
+                                    double radius_m)
+{
   if (table.empty())
     throw ComputationError("rim loop: a non-singular loaded end, but the end table is empty");
   const std::vector<std::span<const EndTableNode>> columns = table_columns(table);
   if (columns.size() > 1 && !(radius_m > 0))
     throw ComputationError(fmt::format("rim loop: the end table's ratio needs R > 0, got {} m", radius_m));
-  std::vector<std::pair<double, double>> across;
-  for (std::size_t c = 0; c < columns.size(); c += own_stride(stride, columns.size()))
+  std::vector<double> column_positions;
+  for (const std::span<const EndTableNode> column : columns)
+    column_positions.push_back(columns.size() > 1 ? std::log(column.front().sheet_radius_m) : 0.0);
+  std::vector<ColumnRead> reads;
+  for (const auto& [c, weight] : held_bracket(column_positions, own_stride(stride, columns.size()),
+                                              columns.size() > 1 ? std::log(radius_m) : 0.0))
   {
-    std::vector<std::pair<double, double>> nodes;
-    for (std::size_t k = 0; k < columns[c].size(); k += own_stride(stride, columns[c].size()))
+    const std::span<const EndTableNode> column = columns[c];
+    std::vector<double> angles;
+    for (const EndTableNode& n : column)
+      angles.push_back(n.interior_angle_rad);
+    ColumnRead read{weight, {}};
+    const auto first = static_cast<std::size_t>(&column.front() - table.data());
+    for (const auto& [k, node_weight] : held_bracket(angles, own_stride(stride, column.size()), interior_angle_rad))
+      read.nodes.emplace_back(first + k, node_weight);
+    reads.push_back(std::move(read));
+  }
+  return reads;
+}
+} // namespace
+
+std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, int stride, double singular_from_rad,
+                                      double interior_angle_rad, double radius_m)
+{
+  if (interior_angle_rad > singular_from_rad)
+    return std::nullopt;
+  // Summed as interpolate_held sums: (1 - t) left + t right, a held node alone.
+  auto weighted = [](const std::vector<std::pair<double, double>>& terms) {
+    return terms.size() == 1 ? terms[0].second : terms[0].first * terms[0].second + terms[1].first * terms[1].second;
+  };
+  std::vector<std::pair<double, double>> across;
+  for (const ColumnRead& read : table_reads(table, stride, interior_angle_rad, radius_m))
+  {
+    std::vector<std::pair<double, double>> along;
+    for (const auto& [k, weight] : read.nodes)
     {
-      const EndTableNode& n = columns[c][k];
+      const EndTableNode& n = table[k];
+      if (!n.reached)
+        throw ComputationError(fmt::format("rim loop: the end table's node at {:.2f} deg, R = {:.4g} m was left "
+                                           "unsolved, but a look-up at {:.2f} deg, R = {:.4g} m reads it",
+                                           n.interior_angle_rad / degree, n.sheet_radius_m,
+                                           interior_angle_rad / degree, radius_m));
       if (!n.study.end_to_interior)
         throw ComputationError(fmt::format("rim loop: the end table's node at {:.2f} deg, R = {:.4g} m has no "
                                            "end/interior ratio (its rounded edge is not resolved)",
                                            n.interior_angle_rad / degree, n.sheet_radius_m));
-      nodes.emplace_back(n.interior_angle_rad, *n.study.end_to_interior);
+      along.emplace_back(weight, *n.study.end_to_interior);
     }
-    across.emplace_back(columns.size() > 1 ? std::log(columns[c].front().sheet_radius_m) : 0.0,
-                        interpolate_held(nodes, interior_angle_rad));
+    across.emplace_back(read.weight, weighted(along));
   }
-  return interpolate_held(across, columns.size() > 1 ? std::log(radius_m) : 0.0);
+  return weighted(across);
+}
+
+std::vector<std::size_t> end_table_nodes_read(const std::vector<EndTableNode>& table, int stride,
+                                              double singular_from_rad, double interior_angle_rad, double radius_m)
+{
+  std::vector<std::size_t> nodes;
+  if (interior_angle_rad > singular_from_rad)
+    return nodes;
+  for (const ColumnRead& read : table_reads(table, stride, interior_angle_rad, radius_m))
+    for (const auto& [k, weight] : read.nodes)
+      nodes.push_back(k);
+  return nodes;
 }
 } // namespace rollcheck::study::rims

@@ -48,6 +48,9 @@ struct EndTableNode
   double interior_angle_rad = 0;
   /// The node's column: R of its end model.
   double sheet_radius_m = 0;
+  /// Whether a look-up of the loop reads the node (end_table_nodes_read); a
+  /// node none reads is not solved, its study left empty.
+  bool reached = true;
   fem::RimEndStudy study;
 };
 
@@ -70,4 +73,14 @@ std::vector<double> end_table_angles(double lo, double hi, double step_rad, doub
 /// `singular_from_rad`.
 std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, int stride, double singular_from_rad,
                                       double interior_angle_rad, double radius_m);
+
+/// The indices into `table` of the nodes end_table_ratio reads at
+/// `interior_angle_rad` and `radius_m` by every `stride`-th node (none above
+/// `singular_from_rad`): in each of the one or two columns about R, the
+/// one or two nodes about the angle. Only their ratios enter the look-up, so
+/// a table whose nodes no look-up reads are left unsolved gives every
+/// look-up the ratio of the whole table; a look-up that reads an unsolved
+/// node is an error (end_table_ratio).
+std::vector<std::size_t> end_table_nodes_read(const std::vector<EndTableNode>& table, int stride,
+                                              double singular_from_rad, double interior_angle_rad, double radius_m);
 } // namespace rollcheck::study::rims

@@ -42,6 +42,7 @@ nlohmann::json level_json(const fem::RimEndLevel& l, double from_x_m)
           {"load_steps", l.load_steps},
           {"newton_iterations", l.newton_iterations},
           {"krylov_iterations", l.krylov_iterations},
+          {"mesh_wall_s", l.mesh_wall_s},
           {"wall_s", l.wall_s},
           {"far_load_n_per_m", l.far_load_n_per_m},
           {"far_peak_pa", l.far_peak_pa},
@@ -92,16 +93,19 @@ nlohmann::json to_json(const fem::RimEndStudy& study)
 nlohmann::json end_model_json(const fem::RimEndStudy& study)
 {
   int load_steps = 0, newton_iterations = 0;
+  double mesh_wall_s = 0;
   for (const fem::RimEndLevel& l : study.levels)
   {
     load_steps += l.load_steps;
     newton_iterations += l.newton_iterations;
+    mesh_wall_s += l.mesh_wall_s;
   }
   nlohmann::json j = verdict_json(study);
   j.update({{"depth_over_half_width", study.setup.depth_over_half_width},
             {"levels", study.levels.size()},
             {"load_steps", load_steps},
             {"newton_iterations", newton_iterations},
+            {"mesh_wall_s", mesh_wall_s},
             {"wall_s", study.wall_s()}});
   return j;
 }

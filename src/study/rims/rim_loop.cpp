@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
+#include <functional>
 #include <limits>
 #include <numbers>
 #include <span>
@@ -107,11 +108,21 @@ FlatRimSettings flat_rim_settings(const RimLoopSettings& s)
   return setup;
 }
 
+/// An end model's level callback (fem::RimEndSettings::on_level) that
+/// makes the beat's step `what` at that level.
+std::function<void(int, double)> level_beat(ProgressBeat& beat, const std::string& what)
+{
+  return [&beat, what](int level, double edge_element_m) {
+    beat.step(fmt::format("{}, level {} (h_e = {:.3g} m)", what, level + 1, edge_element_m));
+  };
+}
+
 /// The end model at one loaded end of a directly solved orientation, from
 /// `approach_over_estimate` (the end before's); outside the model (no
 /// solve) where b / R is too large for line contact.
 RimLoopEnd direct_end(MPI_Comm comm, const RimLoopSettings& s, std::span<const oracle::Circle> circles,
-                      const loop_scores::FemSdsOrientation& r, int end, double q, double approach_over_estimate)
+                      const loop_scores::FemSdsOrientation& r, int end, double q, double approach_over_estimate,
+                      const std::function<void(int, double)>& on_level)
 {
   const oracle::Ruling& ruling = *r.locus.ruling;
   RimLoopEnd e;
@@ -124,6 +135,7 @@ RimLoopEnd direct_end(MPI_Comm comm, const RimLoopSettings& s, std::span<const o
   const double hull_radius = end == 0 ? ruling.start_radius_m : ruling.end_radius_m;
   fem::RimEndSettings settings = end_settings(s, std::max(hull_radius, s.end.edge_radius_m), q, e.dihedral_angle_rad);
   settings.first_approach_scale = approach_over_estimate;
+  settings.on_level = on_level;
   e.modelled_angle_rad = settings.interior_angle_rad;
   const double b = half_width(settings);
   if (!(b < fem::largest_half_width_over_radius * settings.radius_m))
@@ -170,10 +182,11 @@ std::vector<RimLoopEnd> direct_ends(MPI_Comm comm, const RimLoopSettings& s, con
   double approach_over_estimate = 1;
   for (const Loaded& l : loaded)
   {
-    beat.step(fmt::format("direct end {} of {} (orientation {}, its {})", ends.size() + 1, loaded.size(),
-                          l.orientation->index, l.end == 0 ? "start" : "end"));
-    ends.push_back(
-        direct_end(comm, s, interior.circles, *l.orientation, l.end, l.load_n_per_m, approach_over_estimate));
+    const std::string what = fmt::format("direct end {} of {} (orientation {}, its {})", ends.size() + 1,
+                                         loaded.size(), l.orientation->index, l.end == 0 ? "start" : "end");
+    beat.step(what);
+    ends.push_back(direct_end(comm, s, interior.circles, *l.orientation, l.end, l.load_n_per_m,
+                              approach_over_estimate, level_beat(beat, what)));
     if (ends.back().outside_model.empty())
       approach_over_estimate = ends.back().study.approach_over_estimate();
   }
@@ -335,6 +348,40 @@ std::vector<double> end_table_columns(MPI_Comm comm, const RimLoopSettings& s, R
   return columns;
 }
 
+/// Marks the end table's nodes that the loop's look-ups read
+/// (end_table_nodes_read): every loaded end of every rank's samples and the
+/// direct ends below the flat-rim table, each by every node and by every
+/// other (EndRatios, check_tables_against_direct_ends), and where the two
+/// tables meet (RimLoopResult::flat_rim_seam). A node none reads is left
+/// unsolved: no score, check or ratio of the loop depends on it.
+void mark_reached_nodes(MPI_Comm comm, const RimLoopSettings& s, const RimLoopResult& result,
+                        std::vector<EndTableNode>& table)
+{
+  std::vector<int> reached(table.size(), 0);
+  auto reach = [&](double angle, double radius) {
+    for (const int stride : {1, 2})
+      for (const std::size_t k : end_table_nodes_read(table, stride, result.singular_from_rad, angle, radius))
+        reached[k] = 1;
+  };
+  const bool flat = !result.flat_table.empty();
+  for (const loop_scores::RulingSample& ruling : result.fem_sds.loop_samples.rulings)
+    for (const loop_scores::LoadedEnd& hull_end : ruling.ends)
+    {
+      const loop_scores::LoadedEnd end = loop_scores::finished_end(hull_end, s.end.edge_radius_m);
+      if (!flat || end.interior_angle_rad < result.flat_from_rad)
+        reach(std::clamp(end.dihedral_angle_rad, smallest_modelled_angle_rad, largest_modelled_angle(s.end)),
+              end.radius_m);
+    }
+  for (const RimLoopEnd& e : result.ends)
+    if (!flat || e.interior_angle_rad < result.flat_from_rad)
+      reach(e.modelled_angle_rad, e.study.setup.radius_m);
+  if (flat)
+    reach(result.flat_from_rad, result.flat_rim_seam_radius());
+  MPI_Allreduce(MPI_IN_PLACE, reached.data(), static_cast<int>(reached.size()), MPI_INT, MPI_MAX, comm);
+  for (std::size_t k = 0; k < table.size(); ++k)
+    table[k].reached = reached[k] != 0;
+}
+
 /// The FEM end table (study/rims/end_table.h) over the loop's loaded ends'
 /// angles from the smallest the end model takes to the last below the
 /// singular angle, where the end model still finds a (square) edge, or to
@@ -363,23 +410,37 @@ void add_end_table(MPI_Comm comm, const RimLoopSettings& s, RimLoopResult& resul
       approach_over_estimate = e.study.approach_over_estimate();
   const std::vector<double> angles
       = end_table_angles(std::min(lo, hi), hi, s.end_table_step_rad, s.end_table_acute_step_rad);
+  std::vector<EndTableNode> table;
   for (const double radius : columns)
     for (const double angle : angles)
-    {
-      beat.step(fmt::format("end table node {} of {} ({:.2f} deg, R = {:.4g} m)", result.table.size() + 1,
-                            columns.size() * angles.size(), angle / degree, radius));
-      fem::RimEndSettings settings = end_settings(s, radius, result.reference_load_n_per_m, angle);
-      settings.first_approach_scale = approach_over_estimate;
-      EndTableNode node{angle, radius, fem::solve_rim_end(comm, settings)};
-      approach_over_estimate = node.study.approach_over_estimate();
-      result.table_converged = result.table_converged && node.study.converged;
-      if (rank == 0)
-        spdlog::info("rim loop: end table at {:.2f} deg, R = {:.4g} m (r_e / b = {:.3g}): end/interior {} ({})",
-                     angle / degree, radius, s.end.edge_radius_m / node.study.half_width_m,
-                     node.study.end_to_interior ? fmt::format("{:.4f}", *node.study.end_to_interior) : "none",
-                     node.study.converged ? "converged" : "NOT converged");
-      result.table.push_back(std::move(node));
-    }
+      table.push_back({angle, radius});
+  mark_reached_nodes(comm, s, result, table);
+  const auto reached = std::count_if(table.begin(), table.end(), [](const EndTableNode& n) { return n.reached; });
+  if (rank == 0)
+    spdlog::info("rim loop: the loop's ends read {} of the end table's {} nodes; the others are not solved", reached,
+                 table.size());
+  int solved = 0;
+  for (EndTableNode& node : table)
+  {
+    if (!node.reached)
+      continue;
+    const double angle = node.interior_angle_rad, radius = node.sheet_radius_m;
+    const std::string what = fmt::format("end table node {} of {} ({:.2f} deg, R = {:.4g} m)", ++solved, reached,
+                                         angle / degree, radius);
+    beat.step(what);
+    fem::RimEndSettings settings = end_settings(s, radius, result.reference_load_n_per_m, angle);
+    settings.first_approach_scale = approach_over_estimate;
+    settings.on_level = level_beat(beat, what);
+    node.study = fem::solve_rim_end(comm, settings);
+    approach_over_estimate = node.study.approach_over_estimate();
+    result.table_converged = result.table_converged && node.study.converged;
+    if (rank == 0)
+      spdlog::info("rim loop: end table at {:.2f} deg, R = {:.4g} m (r_e / b = {:.3g}): end/interior {} ({})",
+                   angle / degree, radius, s.end.edge_radius_m / node.study.half_width_m,
+                   node.study.end_to_interior ? fmt::format("{:.4f}", *node.study.end_to_interior) : "none",
+                   node.study.converged ? "converged" : "NOT converged");
+  }
+  result.table = std::move(table);
 }
 
 /// Each direct end's ratio from the tables, and the end table's largest

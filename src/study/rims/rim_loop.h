@@ -200,6 +200,8 @@ struct RimLoopResult
     double flat_rim_ratio = 0;
   };
   std::optional<FlatRimSeam> flat_rim_seam() const;
+  /// The seam's R (with a flat-rim table).
+  double flat_rim_seam_radius() const;
 };
 
 /// Collective on `comm` (every rank gets the result). The end's counter-face

@@ -35,8 +35,11 @@ nlohmann::json seam_json(const RimLoopResult& r)
 
 nlohmann::json to_json(const EndTableNode& node)
 {
-  nlohmann::json j = end_model_json(node.study);
+  // A node no look-up of the loop reads is not solved: its place alone.
+  nlohmann::json j = node.reached ? end_model_json(node.study)
+                                  : nlohmann::json{{"sheet_radius_m", node.sheet_radius_m}};
   j["interior_angle_deg"] = node.interior_angle_rad / degree;
+  j["reached"] = node.reached;
   return j;
 }
 

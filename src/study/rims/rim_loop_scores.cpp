@@ -81,12 +81,19 @@ std::string RimLoopResult::end_aware_status() const
   return text;
 }
 
+double RimLoopResult::flat_rim_seam_radius() const
+{
+  return std::max(flat_table.front().largest_ratio_side().end_radius_m, end_setup.edge_radius_m);
+}
+
 std::optional<RimLoopResult::FlatRimSeam> RimLoopResult::flat_rim_seam() const
 {
-  if (flat_table.empty() || table.empty() || !table.back().study.end_to_interior)
+  if (flat_table.empty() || table.empty())
     return std::nullopt;
-  const FlatRimSide& side = flat_table.front().largest_ratio_side();
-  const double radius = std::max(side.end_radius_m, end_setup.edge_radius_m);
+  const double radius = flat_rim_seam_radius();
+  for (const std::size_t k : end_table_nodes_read(table, 1, singular_from_rad, flat_from_rad, radius))
+    if (!table[k].study.end_to_interior)
+      return std::nullopt;
   return FlatRimSeam{radius, *end_table_ratio(table, 1, singular_from_rad, flat_from_rad, radius),
                      flat_table.front().ratio()};
 }

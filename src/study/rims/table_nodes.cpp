@@ -30,6 +30,25 @@ double interpolate_held(const std::vector<std::pair<double, double>>& nodes, dou
   return (1 - t) * left->second + t * right->second;
 }
 
+std::vector<std::pair<std::size_t, double>> held_bracket(std::span<const double> positions, std::size_t step,
+                                                         double x)
+{
+  if (positions.empty())
+    return {};
+  std::vector<std::size_t> taken;
+  for (std::size_t k = 0; k < positions.size(); k += step)
+    taken.push_back(k);
+  if (taken.size() == 1 || x <= positions[taken.front()])
+    return {{taken.front(), 1.0}};
+  if (x >= positions[taken.back()])
+    return {{taken.back(), 1.0}};
+  const auto right = std::upper_bound(taken.begin(), taken.end(), x,
+                                      [&](double a, std::size_t k) { return a < positions[k]; });
+  const std::size_t r = *right, l = *(right - 1);
+  const double t = (x - positions[l]) / (positions[r] - positions[l]);
+  return {{l, 1 - t}, {r, t}};
+}
+
 std::size_t own_stride(int stride, std::size_t n)
 {
   return n >= 3 ? static_cast<std::size_t>(stride) : 1;

@@ -6,6 +6,7 @@
 // is a table too: the check of the spacing reads a table by every
 // `stride`-th node (2) and compares it with the whole (1).
 #include <cstddef>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -17,6 +18,13 @@ std::vector<double> even_nodes(double lo, double hi, double step);
 
 /// Linear interpolation over (x, value) nodes ascending in x, held at the ends.
 double interpolate_held(const std::vector<std::pair<double, double>>& nodes, double x);
+
+/// The nodes interpolate_held reads at x over every `step`-th of the nodes at
+/// `positions` (ascending), as (index into positions, weight): one node held
+/// (weight 1), or the two about x (1 - t, t). What a table's look-up reads,
+/// so that a table can solve only the nodes its look-ups reach.
+std::vector<std::pair<std::size_t, double>> held_bracket(std::span<const double> positions, std::size_t step,
+                                                         double x);
 
 /// The stride of a table of n nodes: `stride` when there are 3 or more,
 /// else 1 (every node).

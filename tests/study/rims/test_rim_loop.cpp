@@ -280,3 +280,50 @@ TEST(RimLoop, FlatRimTableTakesOverFromItsFirstAngle)
   ratios.flat_table.front().sides.back().converged = false;
   EXPECT_FALSE(ratios.flat_table.front().converged());
 }
+
+// The end table solves only the nodes the loop's look-ups read: with the
+// others left unsolved every look-up, by every node and by every other, gives
+// the whole table's ratio to the last bit, and a look-up that would read an
+// unsolved node is an error, not a ratio from farther nodes.
+TEST(RimLoop, EndTableLeftUnsolvedWhereNoLookUpReadsGivesTheWholeTablesRatios)
+{
+  auto ratio = [](double angle_deg, double radius_mm) {
+    return 2 + 0.01 * (angle_deg - 90) + 0.003 * (angle_deg - 90) * (angle_deg - 90) / 90 + 0.5 * std::log(radius_mm);
+  };
+  std::vector<study::rims::EndTableNode> whole;
+  for (const double radius_mm : {1.0, 2.0, 4.0, 8.0, 16.0})
+    for (const double angle : {60.0, 75.0, 90.0, 105.0, 120.0, 135.0, 150.0})
+      whole.push_back(node(angle, ratio(angle, radius_mm), radius_mm * 1e-3));
+  // Acute ends at small R, obtuse ones at large R, one held beyond the table.
+  const std::vector<std::pair<double, double>> look_ups
+      = {{62, 1.1e-3}, {70, 1.5e-3}, {88, 2.5e-3}, {118, 9e-3}, {140, 15e-3}, {155, 20e-3}};
+  const double open = std::numbers::pi;
+  std::vector<study::rims::EndTableNode> part = whole;
+  for (auto& n : part)
+    n.reached = false;
+  for (const auto& [angle, radius] : look_ups)
+    for (const int stride : {1, 2})
+      for (const std::size_t k : study::rims::end_table_nodes_read(whole, stride, open, angle * degree, radius))
+        part[k].reached = true;
+  std::size_t reached = 0;
+  for (auto& n : part)
+    if (n.reached)
+      ++reached;
+    else
+      n.study.end_to_interior.reset();
+  EXPECT_LT(reached, whole.size());
+  // No acute end at large R: 60 deg at R = 16 mm (the last column's first
+  // node) is read by none, every node or every other (16 mm with 4 mm, 120
+  // and 150 deg at most).
+  EXPECT_FALSE(part[4 * 7].reached);
+
+  for (const auto& [angle, radius] : look_ups)
+    for (const int stride : {1, 2})
+      EXPECT_EQ(*study::rims::end_table_ratio(part, stride, open, angle * degree, radius),
+                *study::rims::end_table_ratio(whole, stride, open, angle * degree, radius))
+          << angle << " deg, R = " << radius << ", stride " << stride;
+  // An obtuse end at small R reads nodes no look-up above reached.
+  EXPECT_THROW(study::rims::end_table_ratio(part, 1, open, 140 * degree, 1.1e-3), ComputationError);
+  // Above the singular angle a look-up reads nothing.
+  EXPECT_TRUE(study::rims::end_table_nodes_read(whole, 1, 100 * degree, 120 * degree, 2e-3).empty());
+}
