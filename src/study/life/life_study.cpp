@@ -194,6 +194,9 @@ LifeResult run_life(const LifeSettings& s)
     throw InputError("life: needs at least one load and two exponent loads");
   LifeResult r;
   r.settings = s;
+  validate(s.rims);
+  r.end_ratios = read_rounded_end_ratios(s.end_ratios_path.empty() ? default_rounded_end_ratios_path()
+                                                                   : std::filesystem::path(s.end_ratios_path));
   r.derived_exponent = derived_load_life_exponent(s.constants);
   const double e_star = contact::effective_modulus_identical_bodies(s.youngs_modulus_pa, s.poisson_ratio);
   r.loads_n = s.loads_n;
@@ -256,8 +259,6 @@ LifeResult run_life(const LifeSettings& s)
     if (s.bodies[b].spec.body == "cylinder")
       cylinder = b;
   }
-  r.end_ratios = read_rounded_end_ratios(s.end_ratios_path.empty() ? default_rounded_end_ratios_path()
-                                                                   : std::filesystem::path(s.end_ratios_path));
   r.rims = rim_lives(s.rims, s.bodies, default_runs, r.loads_n,
                      [&](double load) { return loop_settings(s, defaults, load); }, s.constants, tables, ratio,
                      r.end_ratios, cylinder);

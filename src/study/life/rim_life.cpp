@@ -23,6 +23,16 @@ std::optional<double> interior_governs_from(const std::vector<RimLifeRow>& rows)
   return std::nullopt;
 }
 
+void validate(const RimLifeSettings& s)
+{
+  const auto& radii = s.edge_radius_over_radius;
+  if (radii.empty() || !(radii.front() > 0)
+      || std::adjacent_find(radii.begin(), radii.end(), std::greater_equal<>()) != radii.end())
+    throw InputError("life: --edge-radii needs one or more positive edge radii, ascending");
+  if (!(s.zone_over_half_width > 0))
+    throw InputError(fmt::format("life: the rim ends' zone must be positive, got {} b", s.zone_over_half_width));
+}
+
 std::vector<RimLife> rim_lives(const RimLifeSettings& s, const std::vector<robustness::NamedBody>& bodies,
                                const std::vector<const oracle::RealRolling*>& runs, const std::vector<double>& loads_n,
                                const std::function<LoopLifeSettings(double)>& loop_settings,
@@ -30,9 +40,7 @@ std::vector<RimLife> rim_lives(const RimLifeSettings& s, const std::vector<robus
                                const std::array<double, 2>& ratio, const RoundedEndRatios& end_ratios,
                                std::optional<std::size_t> cylinder)
 {
-  const auto& radii = s.edge_radius_over_radius;
-  if (radii.empty() || !(radii.front() > 0) || std::adjacent_find(radii.begin(), radii.end(), std::greater_equal<>()) != radii.end())
-    throw InputError("life: --edge-radii needs one or more positive edge radii, ascending");
+  validate(s);
   const double e = k.weibull_slope;
   std::vector<RimLife> out;
   for (const double load : loads_n)

@@ -57,6 +57,9 @@ struct RimLife
   bool governs_at_every_radius = false; ///< already at the smallest r_e computed
 };
 
+/// InputError unless the edge radii are positive and ascending and the zone positive.
+void validate(const RimLifeSettings& settings);
+
 /// The rows of every body (runs[b] its loop at the cell's energy) at each
 /// load; `loop_settings(load)` the cell's loop settings. `cylinder` indexes
 /// the cylinder in `bodies` (none: no ratios to it).
