@@ -16,6 +16,7 @@ import itertools
 import json
 import math
 import sys
+from pathlib import Path
 
 import matplotlib
 
@@ -102,10 +103,9 @@ def draw_rims(ax, data):
 
 def draw(data, png):
     """The two panels of `data` into `png`."""
-    fig, axes = plt.subplots(2, 1, figsize=(9, 7.5))
-    draw_grid(axes[0], data)
-    draw_rims(axes[1], data)
-    fig.tight_layout()
+    fig, (grid_axes, rim_axes) = plt.subplots(2, 1, figsize=(9, 7.5), constrained_layout=True)
+    draw_grid(grid_axes, data)
+    draw_rims(rim_axes, data)
     fig.savefig(png, dpi=110)
     plt.close(fig)
 
@@ -113,8 +113,7 @@ def draw(data, png):
 def main(argv):
     if len(argv) != 3:
         sys.exit(__doc__)
-    with open(argv[1]) as f:
-        draw(json.load(f), argv[2])
+    draw(json.loads(Path(argv[1]).read_text()), argv[2])
 
 
 if __name__ == "__main__":

@@ -55,6 +55,30 @@ std::string rims_markdown(const LifeResult& r)
   }
   return out;
 }
+/// The rounded rim ends: the cell, the end table, the assumptions and each body's lives.
+nlohmann::json rims_json(const LifeResult& r)
+{
+  nlohmann::json rim_lives = nlohmann::json::array();
+  for (const RimLife& l : r.rims)
+    rim_lives.push_back(to_json(l));
+  return {{"cell", r.rim_cell},
+         {"model", "lundberg_palmgren"},
+         {"criterion", "orthogonal_shear"},
+         {"edge_radius_over_radius", r.settings.rims.edge_radius_over_radius},
+         {"rim_study_edge_radius_over_radius", json_number(r.settings.rims.rim_study_edge_radius_over_radius)},
+         {"zone_over_half_width", json_number(r.settings.rims.zone_over_half_width)},
+         {"end_table",
+          {{"r_over_edge_radius", r.end_ratios.r_over_edge_radius},
+           {"end_over_line_hertz", r.end_ratios.end_over_line_hertz},
+           {"interior_angle_deg", json_number(r.end_ratios.interior_angle_deg)},
+           {"source", r.end_ratios.source}}},
+         {"assumptions",
+          "each loaded end's pass is a line contact at the end's q on R = max(R_end, r_e), its peak rho(R_end / r_e) "
+          "times line Hertz's there (the end table, held at its ends, whatever the rim's interior angle), over one "
+          "patch of zone_over_half_width b along the ruling; the interior as without the ends"},
+         {"lives", rim_lives}};
+}
+
 } // namespace
 
 nlohmann::json to_json(const LifeResult& r)
@@ -122,28 +146,8 @@ nlohmann::json to_json(const LifeResult& r)
   nlohmann::json incomplete = nlohmann::json::array();
   for (const auto& [body, energy] : r.incomplete_loops)
     incomplete.push_back({{"body", body}, {"rolling_energy", energy}});
-  nlohmann::json rim_lives = nlohmann::json::array();
-  for (const RimLife& l : r.rims)
-    rim_lives.push_back(to_json(l));
-  const nlohmann::json rims
-      = {{"cell", {{"rolling_energy", "0.1"}, {"load_rule", "dynamic"}, {"end_margin", "0.05"}}},
-         {"model", "lundberg_palmgren"},
-         {"criterion", "orthogonal_shear"},
-         {"edge_radius_over_radius", r.settings.rims.edge_radius_over_radius},
-         {"rim_study_edge_radius_over_radius", json_number(r.settings.rims.rim_study_edge_radius_over_radius)},
-         {"zone_over_half_width", json_number(r.settings.rims.zone_over_half_width)},
-         {"end_table",
-          {{"r_over_edge_radius", r.end_ratios.r_over_edge_radius},
-           {"end_over_line_hertz", r.end_ratios.end_over_line_hertz},
-           {"interior_angle_deg", json_number(r.end_ratios.interior_angle_deg)},
-           {"source", r.end_ratios.source}}},
-         {"assumptions",
-          "each loaded end's pass is a line contact at the end's q on R = max(R_end, r_e), its peak rho(R_end / r_e) "
-          "times line Hertz's there (the end table, held at its ends, whatever the rim's interior angle), over one "
-          "patch of zone_over_half_width b along the ruling; the interior as without the ends"},
-         {"lives", rim_lives}};
   return {{"subsurface", to_json(r.subsurface)},
-          {"rims", rims},
+          {"rims", rims_json(r)},
           {"incomplete_loops", incomplete},
           {"load_life_exponent", json_number(oloid_exponent)},
           {"load_life_exponent_derived", json_number(r.derived_exponent)},

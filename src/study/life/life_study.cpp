@@ -251,6 +251,8 @@ LifeResult run_life(const LifeSettings& s)
       for (int k = 0; k < 4; ++k)
         r.comparisons.push_back(compare(s, r, cells, a, b, l, k));
   const Cell defaults = {1, 1, 1};
+  for (std::size_t c = 0; c < s.grid.size(); ++c)
+    r.rim_cell[s.grid[c].name] = s.grid[c].values[defaults[c]];
   std::vector<const oracle::RealRolling*> default_runs;
   std::optional<std::size_t> cylinder;
   for (std::size_t b = 0; b < s.bodies.size(); ++b)

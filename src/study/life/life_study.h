@@ -22,6 +22,7 @@
 #include "study/life/loop_life.h"
 #include "study/life/rim_life.h"
 #include "study/robustness/robustness.h"
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -94,6 +95,7 @@ struct LifeResult
   std::vector<std::string> integral_keys;
   RoundedEndRatios end_ratios;
   std::vector<RimLife> rims; ///< per load, per body, at the grid's default cell
+  std::map<std::string, std::string> rim_cell; ///< that cell's choices
   double wall_s = 0;
 };
 

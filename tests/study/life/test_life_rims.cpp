@@ -1,18 +1,14 @@
 // The rounded rim ends in the life integrals (study/life): the end table's
-// interpolation and its file's errors, the cylinder's end integral over one
-// loop against its closed form (two ends per ruling, every ruling at F / L on
-// R = r), and the edge radius from which the interior governs, interpolated
-// in ln(r_e).
-#include "contact/hertz.h"
+// interpolation and its file's errors, and the edge radius from which the
+// interior governs, interpolated in ln(r_e). The cylinder's end integral is
+// checked with its loop integral (test_life_model.cpp).
 #include "core/error.h"
-#include "oracle/rolling_study.h"
 #include "study/life/rim_life.h"
 #include "study/life/rounded_end_ratios.h"
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
-#include <numbers>
 
 using namespace rollcheck;
 using namespace rollcheck::study::life;
@@ -63,36 +59,6 @@ TEST(LifeRims, TheShippedTableAndBadFilesAreRead)
     "interior_angle_deg": 90, "source": "x"})");
   EXPECT_THROW(read_rounded_end_ratios(descending), InputError);
   EXPECT_THROW(read_rounded_end_ratios("/nonexistent/table.json"), InputError);
-}
-
-TEST(LifeRims, CylinderEndIntegralMatchesItsClosedForm)
-{
-  geometry::BodySpec spec;
-  spec.body = "cylinder";
-  oracle::RollingStudyParameters p;
-  p.samples_per_loop = 400;
-  const oracle::RealRolling run = oracle::real_rolling(spec, p);
-  const LifeConstants k;
-  const DepthIntegrals orthogonal(contact::FatigueCriterion::orthogonal_shear, k);
-  const DepthIntegrals largest(contact::FatigueCriterion::largest_shear, k);
-  LoopLifeSettings s;
-  s.normal_load_n = 5000;
-  s.load_rule = contact::LoadRule::uniform;
-  const RoundedEndRatios t = table();
-  for (const double re : {0.05, 0.5, 2.0}) // R / r_e = 20 (held), 2, and r_e above R
-  {
-    const RoundedEnds ends{re, &t, 1.5};
-    const LoopIntegrals li = loop_integrals(run, s, k, {&orthogonal, &largest}, {1.0, 1.0}, largest, &ends);
-    // Each of the loop's rulings has two loaded ends at q = F / L on R = max(1 m, r_e): over one loop (2 pi
-    // of sigma) each sweeps 2 pi R, on a patch 1.5 b long.
-    const double r = std::max(1.0, re);
-    const contact::LineHertz h = contact::line_contact(s.normal_load_n / 2, r, s.effective_modulus_pa, 0.3);
-    const double expected = 2 * 2 * std::numbers::pi * r * 1.5 * h.half_width_m
-                            * std::pow(t(1 / re) * h.peak_pressure_pa, k.stress_exponent)
-                            * std::pow(h.half_width_m, 1 - k.depth_exponent) * orthogonal.integral(0, k.stress_exponent);
-    EXPECT_NEAR(li.end_lundberg_palmgren[0] / expected, 1, 1e-3) << "r_e = " << re;
-    EXPECT_EQ(li.ends_outside_table > 0, re == 0.05);
-  }
 }
 
 TEST(LifeRims, InteriorGovernsFromWhereTheEndsIntegralCrossesTheInteriors)
