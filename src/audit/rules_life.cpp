@@ -4,6 +4,7 @@
 #include "audit/cell_values.h"
 #include "audit/rules.h"
 #include "core/error.h"
+#include <algorithm>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -25,7 +26,20 @@ std::vector<std::string> comparison_pointers(const CommandOutput& life, const st
   return found;
 }
 
-std::string load_text(double load_n) { return fmt::format("{:.3g} N", load_n); }
+std::string load_text(double load_n) { return fmt::format("{:.4g} N", load_n); }
+
+/// Adds each choice of "depends on a, b" to `choices`, once.
+void add_choices(std::vector<std::string>& choices, const std::string& verdict)
+{
+  std::string list = verdict.substr(std::string("depends on ").size());
+  for (std::size_t start = 0, comma; start < list.size(); start = comma + 2)
+  {
+    comma = std::min(list.find(", ", start), list.size());
+    const std::string choice = list.substr(start, comma - start);
+    if (std::find(choices.begin(), choices.end(), choice) == choices.end())
+      choices.push_back(choice);
+  }
+}
 } // namespace
 
 Rule lives_longer_over_choices(std::string body, std::vector<std::string> others)
@@ -46,7 +60,7 @@ Rule lives_longer_over_choices(std::string body, std::vector<std::string> others
         const std::string verdict = life.at(c + "/verdict").get<std::string>();
         const double min = life.number(c + "/life_ratio_min"), max = life.number(c + "/life_ratio_max");
         if (verdict.rfind("depends on ", 0) == 0)
-          depends.push_back(fmt::format("{} at {}", verdict, load_text(life.number(c + "/load_n"))));
+          add_choices(depends, verdict);
         else if (verdict != "robust")
           throw ComputationError(fmt::format("`{}`: '{}' has verdict '{}'", life.command(), name, verdict));
         else
@@ -55,7 +69,8 @@ Rule lives_longer_over_choices(std::string body, std::vector<std::string> others
         loads.push_back(load_text(life.number(c + "/load_n")));
       }
       cell.holds = cell.holds && lo >= 1;
-      std::string text = fmt::format("L10 {} / {} {} ... {} over every cell at {} (Lundberg-Palmgren)", body, other,
+      std::string text = fmt::format("L10 {} / {} {} ... {} over the grid's cells where both roll a loop, at {} "
+                                     "(Lundberg-Palmgren)", body, other,
                                      sci(lo), sci(hi), fmt::join(loads, ", "));
       text += lo >= 1 ? fmt::format(", {} the longer-lived", body)
               : hi <= 1 ? fmt::format(", {} the longer-lived under every choice", other)
@@ -73,7 +88,7 @@ Rule lives_longer_over_choices(std::string body, std::vector<std::string> others
       append_listed(cell.value, text + "; with the fatigue limit (Ioannides-Harris): " + limited, "; ");
     }
     if (!refuted && !depends.empty())
-      cell.undecided = fmt::format("{}", fmt::join(depends, "; "));
+      cell.undecided = fmt::format("depends on {}", fmt::join(depends, ", "));
     return cell;
   };
 }

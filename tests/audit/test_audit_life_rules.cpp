@@ -51,10 +51,10 @@ TEST(AuditLifeRules, LongerLifeHoldsOnlyWhenEveryCellAtEveryLoadSaysSo)
   EXPECT_NE(a.value.find("4e-06 ... 0.02"), std::string::npos) << a.value;
   EXPECT_NE(a.value.find("cylinder the longer-lived under every choice"), std::string::npos) << a.value;
   EXPECT_NE(a.value.find("100 N both infinite (cannot be tested)"), std::string::npos) << a.value;
-  EXPECT_NE(a.value.find("5e+03 N 0 ... 0"), std::string::npos) << a.value;
+  EXPECT_NE(a.value.find("5000 N 0 ... 0"), std::string::npos) << a.value;
   EXPECT_TRUE(b.holds);
   EXPECT_FALSE(c.holds);
-  EXPECT_EQ(c.undecided.rfind("depends on load_rule", 0), 0u) << c.undecided;
+  EXPECT_EQ(c.undecided, "depends on load_rule") << c.undecided;
 }
 
 TEST(AuditLifeRules, AMissingComparisonIsAnError)
