@@ -42,7 +42,7 @@ check_json "quick mode recorded" '.quick == true' "$j"
 check_json "claims that cannot be tested say why" \
   '[.claims[] | select(.verdict == "cannot be tested") | .recomputations[] | select(.applicable and (.built | not)) | .untestable | length > 0] | (length > 0 and all)' "$j"
 cmp -s "$tmp/audit.md" "$tmp/stdout.md" || { echo "FAIL: --markdown file differs from stdout"; fail=1; }
-grep -q '^| claim | paper | paper-compatible | matched resolution | true oloid | corrected physics | real rolling | contact mechanics | reproduced | true |$' \
+grep -q '^| claim | paper | paper-compatible | matched resolution | true oloid | corrected physics | real rolling | contact mechanics | fatigue life | reproduced | true |$' \
   "$tmp/audit.md" || { echo "FAIL: Markdown header"; fail=1; }
 rows=$(grep -c '^| .* | \*\*\(reproduced\|not reproduced\|cannot be tested\)\*\*[^|]* | \*\*\(holds\|does not hold\|cannot be tested\|depends on [^*]*\)\*\*[^|]* |$' "$tmp/audit.md")
 [[ $rows == 30 ]] || { echo "FAIL: Markdown has $rows claim rows, want 30"; fail=1; }
