@@ -8,7 +8,9 @@ JSON of `rollcheck robustness --json`) and each finding with its evidence plot;
 2. verdicts: the validation checks (--validation, the JSON `rollcheck validate`
 writes) and the status of every case; 3. the audit of the preprint's claims
 (--audit, the JSON of `rollcheck audit --json`); 4. the plots, each with what it
-shows and what to conclude; 5. FEM against analytic SDS; appendix: the raw scalar results and parameters per
+shows and what to conclude; 5. FEM against analytic SDS; 6. rolling-contact
+fatigue life (--life, the JSON of `rollcheck life --json`: the life ratios as a
+figure and a table, the rounded rim ends); appendix: the raw scalar results and parameters per
 scene kind, the files the cases wrote. An optional input not given is a
 section saying how to get it; a key missing from an input is an error naming
 it (exit 1). `rollcheck report --from STORE` runs this in a temporary folder
@@ -16,6 +18,7 @@ that replaces the report folder when it succeeds.
 
     /usr/bin/python3 postprocess/make_report.py --store STORE --out DIR [--rollcheck BINARY]
         [--validation VALIDATION.json] [--audit AUDIT.json] [--robustness ROBUSTNESS.json]
+        [--life LIFE.json]
 """
 import argparse
 import base64
@@ -35,6 +38,7 @@ import plot_contact_density
 import plot_fem_sds
 import plot_fem_speed_error
 import plot_headline
+import plot_life
 import plot_pressure_profile
 import plot_robustness
 from rollcheck_store import Figure, MissingKey, Skip, count, is_number, load_cases, require
@@ -213,6 +217,55 @@ def raw_results(cases):
     return out
 
 
+def ratio_text(x):
+    return "-" if x is None else f"{x:.3g}"
+
+
+def life(path, out):
+    """The life study of `rollcheck life --json` (study/life/life_json.cpp): its figure, the comparisons under the
+    orthogonal shear (Lundberg-Palmgren's ratio is the same for both criteria) and the rim ends' table."""
+    where = f"--life {path}"
+    data = read_json(path, "--life")
+    rows, classes = [], []
+    for k, c in enumerate(require(data, "comparisons", where)):
+        at = f"{where}: comparisons/{k}"
+        if require(c, "criterion", at) != "orthogonal_shear":
+            continue
+        verdict, hi = require(c, "verdict", at), require(c, "life_ratio_max", at)
+        rows.append([require(c, "name", at), f"{require(c, 'load_n', at):.4g}", require(c, "model", at), verdict,
+                     ratio_text(require(c, "life_ratio_min", at)), ratio_text(hi),
+                     require(c, "untested_because", at) or ""])
+        classes.append("none" if verdict == "cannot be tested" else "partial" if verdict != "robust"
+                       else "fail" if hi is not None and hi < 1 else "pass")
+    rims = require(data, "rims", where)
+    at_re = require(rims, "rim_study_edge_radius_over_radius", f"{where}: rims")
+    rim_rows = []
+    for k, x in enumerate(require(rims, "lives", f"{where}: rims")):
+        at = f"{where}: rims/lives/{k}"
+        row = next((r for r in require(x, "rows", at) if r["edge_radius_over_radius"] == at_re), None)
+        if row is None:
+            continue
+        rim_rows.append([x["body"], f"{x['load_n']:.4g}", ratio_text(row["life_with_over_without_ends"]),
+                         ratio_text(x["interior_life_ratio_to_cylinder"]),
+                         ratio_text(row["life_ratio_to_cylinder_with_ends"]), require(x, "interior_governs", at),
+                         ratio_text(x["interior_governs_from_edge_radius_over_radius"])])
+    plot_life.draw(data, os.path.join(out, "life.png"))
+    figure = Figure("life.png", "Rolling-contact fatigue life against the cylinder's, and the rim ends",
+                    "Top: each body's L10 life over the cylinder's at the same load and steel (Lundberg-Palmgren, "
+                    "orthogonal shear) over the rolling energy; the band spans the load rules and end margins, the "
+                    "line is the dynamic load at a 5 % margin. Bottom: each body's L10 life with its rounded rim "
+                    "ends over without them against the edge radius, at each load (the grid's default cell).",
+                    "Below 1 on top the cylinder lives longer; on the bottom, below the dashed line the rim ends "
+                    "govern the life.")
+    return {"figure": figure,
+            "comparisons": Table(["comparison", "load N", "model", "verdict", "life ratio min", "life ratio max",
+                                  "cannot be tested because"], rows, classes),
+            "rims": Table(["body", "load N", f"L10 with ends / without (r_e = {at_re:g} r1)",
+                           "L10 / cylinder's, without ends", "with ends", "which governs", "interior from r_e / r1"],
+                          rim_rows),
+            "wall_s": require(data, "wall_s", where)}
+
+
 def findings_section(args, plots, fem_sds):
     """The findings: the opening paragraph, the headline figure and each finding with its evidence plot."""
     audit_data = read_json(args.audit, "--audit") if args.audit else None
@@ -253,6 +306,7 @@ def context(args, root, cases):
         "plots": plots,
         "fem_sds": fem_sds,
         "fem_sds_table": Table(*plot_fem_sds.table(cases)),
+        "life": life(args.life, args.out) if args.life else None,
         "raw": raw_results(cases),
         "files": Table(["case", "file"], [[c.name, f] for c in cases for f in c.files]),
     }
@@ -287,6 +341,7 @@ def main():
     parser.add_argument("--validation", help="the checks JSON written by `rollcheck validate` (default: none)")
     parser.add_argument("--audit", help="the JSON of `rollcheck audit --json PATH` (default: none)")
     parser.add_argument("--robustness", help="the JSON of `rollcheck robustness --json PATH` (default: none)")
+    parser.add_argument("--life", help="the JSON of `rollcheck life --json PATH` (default: none)")
     args = parser.parse_args()
     if args.rollcheck:
         os.environ["ROLLCHECK_BINARY"] = args.rollcheck

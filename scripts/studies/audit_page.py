@@ -15,6 +15,8 @@ import sys
 import tempfile
 from collections import Counter
 
+LIFE_MODE = "fatigue life"
+
 
 def summary(audit):
     """The claims counted by each verdict, `reproduced` and `true`."""
@@ -24,7 +26,25 @@ def summary(audit):
         counts = Counter(c[key]["verdict"] for c in audit["claims"])
         tally = ", ".join(f"{verdict} {n}" for verdict, n in counts.most_common())
         lines.append(f"- *{key}* ({question}): {tally}.")
+    life = [c["recomputations"][LIFE_MODE] for c in audit["claims"] if LIFE_MODE in c["recomputations"]]
+    if life:
+        counts = Counter(c["undecided"] or ("holds" if c["holds"] else "does not hold") for c in life)
+        tally = ", ".join(f"{verdict} {n}" for verdict, n in counts.most_common())
+        lines.append(f"- *{LIFE_MODE}* (the claim asked as rolling-contact fatigue life, `rollcheck life`): "
+                     f"{tally}, of {len(life)} claims.")
     return "\n".join(lines)
+
+
+def life_section(audit):
+    """Each claim's fatigue-life cell, the column the table shows among the others."""
+    rows = [f"- *{c['claim']}*: {'holds' if c['recomputations'][LIFE_MODE]['holds'] else 'does not hold'}"
+            f"{' (' + c['recomputations'][LIFE_MODE]['undecided'] + ')' if c['recomputations'][LIFE_MODE]['undecided'] else ''}: "
+            f"{c['recomputations'][LIFE_MODE]['value']}"
+            for c in audit["claims"] if LIFE_MODE in c["recomputations"]]
+    if not rows:
+        return ""
+    return ("## Fatigue life\n\nThe claims on fatigue asked as rolling-contact fatigue life from the subsurface "
+            "shear over the loop ([method](../methods/life.md), [results](life.md)):\n\n" + "\n".join(rows) + "\n\n")
 
 
 def page(audit, markdown, version):
@@ -42,7 +62,7 @@ is generated from the same run. Paths are relative to the source root.
 
 {summary(audit)}
 
-## The table
+{life_section(audit)}## The table
 
 {markdown}"""
 

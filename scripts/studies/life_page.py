@@ -41,6 +41,59 @@ def subsurface_section(s):
     return out
 
 
+def untested_section(d):
+    """Why the comparisons that cannot be tested cannot, each reason once with its loads."""
+    reasons = {}
+    for c in d["comparisons"]:
+        if c["untested_because"]:
+            reason = c["untested_because"].rsplit(" at ", 1)[0]
+            reasons.setdefault(reason, set()).add(load(c["load_n"]))
+    if not reasons:
+        return []
+    out = ["Why a comparison *cannot be tested*:\n"]
+    for reason, loads in reasons.items():
+        out.append(f"- at {', '.join(sorted(loads, key=float))} N: {reason}.")
+    return out + [""]
+
+
+def governs(life):
+    """Which part governs the life over the edge radii computed, in brief."""
+    if life["interior_governs_from_edge_radius_over_radius"] is None:
+        return "the ends, at every r_e"
+    if life["rows"][0]["end_over_interior"] < 1:
+        return "the interior, at every r_e"
+    return "the ends below, the interior above"
+
+
+def rims_section(d):
+    r = d["rims"]
+    at = r["rim_study_edge_radius_over_radius"]
+    t = r["end_table"]
+    cell = ", ".join(f"{k} {v}" for k, v in r["cell"].items())
+    out = ["## The rounded rim ends\n",
+           f"At one cell ({cell}), {r['model']} ({r['criterion']}), with the rims rounded to an edge radius",
+           f"r_e (a fraction of the body's r1: {', '.join(fmt(x) for x in r['edge_radius_over_radius'])}; "
+           f"the rim study's finish is {fmt(at)}).",
+           f"Assumed: {r['assumptions']}; the end patch is {fmt(r['zone_over_half_width'])} b long.",
+           f"End table ({t['interior_angle_deg']} deg end models): rho = "
+           + ", ".join(f"{fmt(y)} at R / r_e = {fmt(x)}" for x, y in zip(t['r_over_edge_radius'], t['end_over_line_hertz']))
+           + f"; from {t['source']}.\n",
+           f"| body | load N | L10 with ends / without (r_e = {fmt(at)} r1) | ends outside the table | L10 / cylinder's, "
+           "without ends | with ends | which governs | interior from r_e / r1 |",
+           "|---|---|---|---|---|---|---|---|"]
+    for x in r["lives"]:
+        row = next((y for y in x["rows"] if y["edge_radius_over_radius"] == at), None)
+        if row is None:
+            out.append(f"| {x['body']} | {load(x['load_n'])} | - | - | - | - | not a rolling loop | - |")
+            continue
+        out.append(f"| {x['body']} | {load(x['load_n'])} | {fmt(row['life_with_over_without_ends'])} | "
+                   f"{row['ends_outside_table']} of {row['ends']} | {fmt(x['interior_life_ratio_to_cylinder'])} | "
+                   f"{fmt(row['life_ratio_to_cylinder_with_ends'])} | {governs(x)} | "
+                   f"{fmt(x['interior_governs_from_edge_radius_over_radius'])} |")
+    out.append("")
+    return out
+
+
 def main(argv):
     if len(argv) != 3:
         sys.exit(__doc__)
@@ -65,12 +118,17 @@ def main(argv):
     out.append("\n## Life ratios against the cylinder\n")
     grid = ", ".join(f"{k} ({', '.join(d['grid'][k])})" for k in d["grid_order"])
     out.append(f"Grid: {grid}. Loads: {', '.join(load(x) for x in d['loads_n'])} N.\n")
+    out.append("A range is over the cells of the grid where the ratio is defined (both bodies roll a whole loop, "
+               "and not both lives are infinite): `cells` of the grid's in the JSON.\n")
     out.append("| comparison | load N | model | criterion | verdict | life ratio min | life ratio max | flips |")
     out.append("|---|---|---|---|---|---|---|---|")
     for c in d["comparisons"]:
         out.append(f"| {c['name']} | {load(c['load_n'])} | {c['model']} | {c['criterion']} | {c['verdict']} | "
                    f"{fmt(c['life_ratio_min'])} | {fmt(c['life_ratio_max'])} | {flips_text(c)} |")
-    out.append("\n## Dang Van check\n")
+    out.append("")
+    out += untested_section(d)
+    out += rims_section(d)
+    out.append("## Dang Van check\n")
     out.append(f"The Dang Van stress of a pass peaks at {d['dang_van_peak_over_p0']:.4f} p0, "
                f"{d['dang_van_peak_depth_over_b']:.3f} b deep (alpha = {d['constants']['dang_van_alpha']}).")
     out.append("Largest over the grid, over its value at the 1.5 GPa limit contact stress:\n")

@@ -4,7 +4,8 @@
 The block between the two markers below becomes a compact table (claim,
 paper value, and the claim's two verdicts with their reasons: `reproduced`,
 whether the preprint's method and meshes give its number, and `true`, whether
-it holds under the best physics over the modelling choices) and one line with
+it holds under the best physics over the modelling choices; then, for the
+claims the audit recomputes as rolling-contact fatigue life, that cell) and one line with
 the command that regenerates it. Nothing outside the block changes; the file
 is replaced atomically.
 
@@ -29,11 +30,30 @@ def cell(text):
     return str(text).replace("|", "\\|").replace("\n", " ")
 
 
+LIFE_MODE = "fatigue life"
+
+
+def life_cell(claim):
+    """The claim's fatigue-life recomputation: its verdict in bold, its value and commands; "n/a" without one."""
+    c = claim["recomputations"].get(LIFE_MODE)
+    if not c or not c["applicable"]:
+        return "n/a"
+    if c["untestable"]:
+        return f"**cannot be tested**: {c['untestable']}"
+    if not c["built"]:
+        return "not built yet"
+    verdict = c["undecided"] or ("holds" if c["holds"] else "does not hold")
+    return f"**{verdict}**: {c['value']} [{', '.join(c['commands'])}]"
+
+
 def findings(audit):
-    rows = ["| claim | paper | reproduced | true |", "|---|---|---|---|"]
+    life = any(LIFE_MODE in c["recomputations"] for c in audit["claims"])
+    rows = ["| claim | paper | reproduced | true |" + (f" {LIFE_MODE} |" if life else ""),
+            "|---|---|---|---|" + ("---|" if life else "")]
     for claim in audit["claims"]:
         rows.append(f"| {cell(claim['claim'])} | {cell(claim['paper_value'])} | "
-                    f"{cell(judgement(claim['reproduced']))} | {cell(judgement(claim['true']))} |")
+                    f"{cell(judgement(claim['reproduced']))} | {cell(judgement(claim['true']))} |"
+                    + (f" {cell(life_cell(claim))} |" if life else ""))
     quick = " (`--quick`)" if audit.get("quick") else ""
     rows.append("")
     rows.append(f"Regenerate with `bash scripts/studies/audit.sh` (`rollcheck audit --json results/audit/audit.json`){quick}; "

@@ -53,6 +53,9 @@ struct ClaimCommands
   std::vector<CommandArgs> fem_sds_body;     ///< the preprint's body alone
   std::vector<CommandArgs> fem_orientations; ///< the preprint's body, three orientations solved directly
   std::vector<CommandArgs> rims;             ///< the loop's ends: the oloid, the cylinder
+
+  // Rolling-contact fatigue life.
+  std::vector<CommandArgs> life; ///< the bodies' L10 life ratios over the grid, the rim ends
 };
 
 /// The commands on the reference meshes in `reference_meshes`

@@ -62,13 +62,15 @@ std::vector<Claim> ratio_claims(const ClaimCommands& c)
        truth_in(mode::contact)},
       {"fatigue", "FDS: the cylinder's is infinite (no stress above the endurance limit), the oloid's finite",
        "oloid 2.42e-6, cylinder ∞",
-       "holds when the cylinder's FDS is infinite and the oloid's finite.",
+       "holds when the cylinder's FDS is infinite and the oloid's finite. Fatigue life: holds when the oloid's L10 life is "
+       "at least the cylinder's in every cell of the grid at every load (Lundberg-Palmgren).",
        "With every quirk corrected both are infinite: the stress amplitude of a zero-to-p0 cycle is p0/2, which alone "
        "makes the oloid's FDS infinite (docs/results/oracles.md#paper-compat-quirk-table); the right E* alone makes the cylinder's finite.",
        joined({cells_in(oracle_modes, c.fatigue, rules::cylinder_fds_infinite()),
                {not_built(mode::rolling),
                 {mode::contact, c.fem_sds_pair,
-                 rules::line_contact_fatigue(fatigue_parameters.load_n, fatigue_parameters.endurance_limit_pa)}}}),
+                 rules::line_contact_fatigue(fatigue_parameters.load_n, fatigue_parameters.endurance_limit_pa)},
+                {mode::life, c.life, rules::lives_longer_over_choices("oloid", {"cylinder"})}}}),
        truth_in(mode::contact)},
       {"discrimination", "Cylinder / oloid CDS rises from the approximate to the rigid-body oracle", "28x → 58x",
        at_claim_tolerance("holds when the approximate and the rigid-body ratios are within {tolerance} of 28 and 58."),
@@ -79,10 +81,12 @@ std::vector<Claim> ratio_claims(const ClaimCommands& c)
        truth_in(mode::corrected)},
       {"all_metrics", "The cylinder is 58x worse on all metrics", "58x",
        at_claim_tolerance("holds when each cylinder / oloid ratio (CDS, SDS, TDS, WDS_vol, WDS_depth, FDS) is within "
-                          "{tolerance} of 58."),
+                          "{tolerance} of 58. Fatigue life (the FDS's question): holds when the oloid's L10 life is at "
+                          "least the cylinder's in every cell of the grid at every load."),
        "The preprint's own table gives 46-68x and an infinite FDS ratio.",
-       ratio_cells(c, {{"/cds", 58}, {"/sds", 58}, {"/tds", 58}, {"/wds_vol", 58}, {"/wds_depth", 58},
-                       {"/fds", 58}}),
+       joined({ratio_cells(c, {{"/cds", 58}, {"/sds", 58}, {"/tds", 58}, {"/wds_vol", 58}, {"/wds_depth", 58},
+                               {"/fds", 58}}),
+               {{mode::life, c.life, rules::lives_longer_over_choices("oloid", {"cylinder"})}}}),
        truth_over_choices(c, {{"oloid vs cylinder", "contact_time_u", true},
                               {"oloid vs cylinder", "accumulated_pressure_whole", true},
                               {"oloid vs cylinder", "basquin_damage_whole", true}})},

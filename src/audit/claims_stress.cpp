@@ -38,12 +38,14 @@ std::vector<Claim> stress_claims(const ClaimCommands& c)
        "the cylinder \"concentrates fatigue damage at fixed loci, the geometric failure mode that the oloid "
        "eliminates\"",
        "holds when no loaded ruling end of the oloid's loop is singular and its largest end pressure over the loop is "
-       "at most its largest interior pressure.",
+       "at most its largest interior pressure. Fatigue life: holds when, with the rim study's rounded edges, the "
+       "oloid's interior governs its life (its rim ends' stress-volume integral below its interior's) at every load.",
        "Every loaded ruling ends on the body's rims, for the oloid its two generating circles: fixed loci of the body. "
        "A sharp obtuse edge there is singular against the rigid plane (Williams's wedge), which a 3D FEM of each end "
        "confirms (`rollcheck rim`, docs/methods/rims.md); against a block of the same steel every sharp edge above 77.45 deg "
        "is, the cylinder's square ends too. Rounded edges are finite: README, \"The rims\".",
-       {{mode::contact, c.rims, rules::rims_free_of_concentration()}},
+       {{mode::contact, c.rims, rules::rims_free_of_concentration()},
+        {mode::life, c.life, rules::interior_governs_life("oloid")}},
        truth_in(mode::contact),
        "a statement the preprint makes without a computation of the rims"},
   };

@@ -24,6 +24,10 @@ std::vector<std::pair<std::string, std::string>> audit_modes()
                       "(`rollcheck fem-sds`, issue 13), each score converged (FEM table K to 2K and samples halved, "
                       "both under 1 %); the preprint's body (1198 faces) against the cylinder with 300 sides (1200 "
                       "faces); pressures are taken 5 % of the ruling inside its ends (the rims are issue 14)"},
+      {mode::life, "rolling-contact fatigue life from the subsurface shear over one loop (`rollcheck life`, issue 60): "
+                   "L10 life ratios by Lundberg-Palmgren's and Ioannides-Harris's stress-volume integrals at 100 N, "
+                   "5000 N and the load of a 1.5 GPa peak on the cylinder, over the grid of modelling choices; the "
+                   "rounded rim ends at the grid's default cell"},
   };
 }
 } // namespace rollcheck::audit

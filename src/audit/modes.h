@@ -17,6 +17,7 @@ inline const std::string true_oloid = "true oloid";
 inline const std::string corrected = "corrected physics";
 inline const std::string rolling = "real rolling";
 inline const std::string contact = "contact mechanics";
+inline const std::string life = "fatigue life";
 } // namespace mode
 
 /// The modes of the table, in column order, with what each means.

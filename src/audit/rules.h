@@ -4,7 +4,8 @@
 // Implemented by kind of command read: rules_values.cpp (numbers against the
 // paper's, any command), rules_oracle.cpp (the oracle and mesh outputs),
 // rules_search.cpp (search and optimize), rules_contact.cpp (FEM, Hertz, rims),
-// rules_robustness.cpp (a ranking of bodies over the modelling choices).
+// rules_robustness.cpp (a ranking of bodies over the modelling choices),
+// rules_life.cpp (rolling-contact fatigue life).
 #include "audit/command_output.h"
 #include <functional>
 #include <string>
@@ -168,5 +169,20 @@ Rule rims_free_of_concentration();
 /// "depends on" its choices, the reason naming the flip nearest the default
 /// choices (E = 0.1, hertz, dynamic, 0.05).
 Rule rankings_over_choices(std::vector<Ranking> rankings);
+
+// Rolling-contact fatigue life (rules_life.cpp).
+
+/// (life): `body`'s L10 life against each of `others` ("BODY vs OTHER" of
+/// `rollcheck life`, orthogonal shear): holds when Lundberg-Palmgren's life
+/// ratio is at least 1 in every cell of the grid at every load; the value
+/// adds Ioannides-Harris's ratios, or why a load cannot be tested (both
+/// lives infinite below the fatigue limit); a ranking that flips at some
+/// load leaves it undecided ("depends on" its choices).
+Rule lives_longer_over_choices(std::string body, std::vector<std::string> others);
+/// (life): `body`'s life with its rounded rim ends at the rim study's edge
+/// radius over without them, at every load: holds when the interior governs
+/// (the ends' integral below the interior's) at every load; the value adds
+/// the edge radius from which the interior governs.
+Rule interior_governs_life(std::string body);
 } // namespace rules
 } // namespace rollcheck::audit

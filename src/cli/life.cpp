@@ -33,6 +33,14 @@ void add_life_command(CLI::App& app)
   sub->add_option("--degree", settings.subsurface.degree,
                   "Lagrange degree of the FEM slice's displacement (default: 2; P1's shear stays biased under refinement: docs/methods/life.md)")
       ->check(CLI::Range(1, 2));
+  sub->add_option("--edge-radii", settings.rims.edge_radius_over_radius,
+                  "Rounded rims: edge radii over the body's radius r1, ascending (default: 0.0025 0.005 0.01 0.02 "
+                  "0.04 0.08 0.16)")
+      ->check(CLI::Range(1e-6, 10.0));
+  sub->add_option("--end-ratios", settings.end_ratios_path,
+                  "Rounded rim ends' peak over line Hertz against R / r_e, JSON (default: "
+                  "cases/life/rounded_end_ratios.json of the data folder)")
+      ->check(CLI::ExistingFile);
   sub->add_option("--markdown", markdown_path, "Also write the comparison table as Markdown to PATH (default: none)");
 }
 } // namespace rollcheck::cli

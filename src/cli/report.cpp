@@ -10,7 +10,7 @@ namespace rollcheck::cli
 {
 void add_report_command(CLI::App& app)
 {
-  static std::string store, folder, validation, audit, robustness;
+  static std::string store, folder, validation, audit, robustness, life;
   static std::string scripts = io::default_scripts_folder().string();
   static std::string python = "/usr/bin/python3";
   CLI::App* sub = add_command(
@@ -19,8 +19,9 @@ void add_report_command(CLI::App& app)
                                                  ? std::filesystem::absolute(store).parent_path() / "report"
                                                  : std::filesystem::path(folder);
         io::require_results_store(store, "option --from");
-        io::require_report_json_inputs({validation, audit, robustness}, "report");
-        const io::ReportFiles report = io::write_report(store, target, scripts, python, validation, audit, robustness);
+        io::require_report_json_inputs({validation, audit, robustness, life}, "report");
+        const io::ReportFiles report =
+            io::write_report(store, target, scripts, python, validation, audit, robustness, life);
         print_summary(fmt::format("report: {}\nmarkdown: {}\n", report.html.string(), report.markdown.string()));
         return CommandResult{{{"html", report.html.string()}, {"markdown", report.markdown.string()}}};
       });
@@ -33,6 +34,8 @@ void add_report_command(CLI::App& app)
   sub->add_option("--robustness", robustness,
                   "JSON of `rollcheck robustness --json PATH`: the headline's ranges over the modelling choices "
                   "(default: none)");
+  sub->add_option("--life", life,
+                  "JSON of `rollcheck life --json PATH`: the fatigue-life section, its figure and tables (default: none)");
   sub->add_option("--python", python, "Python with matplotlib and h5py (default: Debian's /usr/bin/python3)");
 }
 } // namespace rollcheck::cli

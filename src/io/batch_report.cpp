@@ -50,11 +50,12 @@ void draw_folder(const fs::path& folder, const fs::path& python, const fs::path&
 
 ReportFiles write_report(const fs::path& store, const fs::path& folder, const fs::path& scripts,
                          const fs::path& python, const fs::path& validation, const fs::path& audit,
-                         const fs::path& robustness)
+                         const fs::path& robustness, const fs::path& life)
 {
   std::vector<std::string> args = {"--store", fs::absolute(store).string(), "--rollcheck", own_executable().string()};
   for (const auto& [option, path] :
-       {std::pair{"--validation", validation}, std::pair{"--audit", audit}, std::pair{"--robustness", robustness}})
+       {std::pair{"--validation", validation}, std::pair{"--audit", audit}, std::pair{"--robustness", robustness},
+        std::pair{"--life", life}})
     if (!path.empty())
     {
       if (!fs::is_regular_file(path))

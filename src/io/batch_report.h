@@ -41,9 +41,10 @@ void draw_folder(const std::filesystem::path& folder, const std::filesystem::pat
 /// script fails.
 /// `validation` (the checks JSON of `rollcheck validate`) and `audit` (the JSON
 /// of `rollcheck audit`) are shown first when given; `robustness` (the JSON of
-/// `rollcheck robustness`) gives the headline's ranges over the modelling choices.
+/// `rollcheck robustness`) gives the headline's ranges over the modelling choices;
+/// `life` (the JSON of `rollcheck life`) the fatigue-life section.
 ReportFiles write_report(const std::filesystem::path& store, const std::filesystem::path& folder,
                          const std::filesystem::path& scripts, const std::filesystem::path& python,
                          const std::filesystem::path& validation = {}, const std::filesystem::path& audit = {},
-                         const std::filesystem::path& robustness = {});
+                         const std::filesystem::path& robustness = {}, const std::filesystem::path& life = {});
 } // namespace rollcheck::io

@@ -36,5 +36,6 @@ void require_report_json_inputs(const ReportJsonInputs& inputs, const char* comm
                       {"modes", "claims", "commands", "verdict_rules", "quick", "wall_s"});
   require_json_object(inputs.robustness, prefix + "--robustness", "rollcheck robustness --json",
                       {"comparisons", "grid"});
+  require_json_object(inputs.life, prefix + "--life", "rollcheck life --json", {"comparisons", "rims", "wall_s"});
 }
 } // namespace rollcheck::io

@@ -18,7 +18,9 @@ meshes=$source/meshes/reference
   > "$tmp/stdout.md" || { echo "FAIL: audit run"; exit 1; }
 j=$tmp/audit.json
 check_json "30 claims" '.claims | length == 30' "$j"
-check_json "six modes, paper-compatible first" '(.modes | length) == 6 and .modes[0].mode == "paper-compatible"' "$j"
+check_json "seven modes, paper-compatible first, fatigue life last" '(.modes | length) == 7 and .modes[0].mode == "paper-compatible" and .modes[6].mode == "fatigue life"' "$j"
+check_json "the FDS claims and fixed_loci have a fatigue-life cell read from rollcheck life" \
+  '([.commands[] | select(.command | startswith("rollcheck life ")) | .id]) as $l | [.claims[] | select(.id == "fatigue" or .id == "fatigue_values" or .id == "all_metrics" or .id == "fixed_loci") | .recomputations["fatigue life"] | .built and .commands == $l and (.value | length > 0)] | length == 4 and all' "$j"
 check_json "verdicts over the modes from the stated set" \
   '[.claims[].verdict] | all(. == "holds" or . == "holds only in paper-compatible mode" or . == "does not hold" or . == "cannot be tested" or . == "not built yet")' "$j"
 check_json "verdict rules stated" '(.verdict_rules | length) >= 4 and ([.claims[].rule] | all(length > 0))' "$j"
@@ -40,7 +42,7 @@ check_json "quick mode recorded" '.quick == true' "$j"
 check_json "claims that cannot be tested say why" \
   '[.claims[] | select(.verdict == "cannot be tested") | .recomputations[] | select(.applicable and (.built | not)) | .untestable | length > 0] | (length > 0 and all)' "$j"
 cmp -s "$tmp/audit.md" "$tmp/stdout.md" || { echo "FAIL: --markdown file differs from stdout"; fail=1; }
-grep -q '^| claim | paper | paper-compatible | matched resolution | true oloid | corrected physics | real rolling | contact mechanics | reproduced | true |$' \
+grep -q '^| claim | paper | paper-compatible | matched resolution | true oloid | corrected physics | real rolling | contact mechanics | fatigue life | reproduced | true |$' \
   "$tmp/audit.md" || { echo "FAIL: Markdown header"; fail=1; }
 rows=$(grep -c '^| .* | \*\*\(reproduced\|not reproduced\|cannot be tested\)\*\*[^|]* | \*\*\(holds\|does not hold\|cannot be tested\|depends on [^*]*\)\*\*[^|]* |$' "$tmp/audit.md")
 [[ $rows == 30 ]] || { echo "FAIL: Markdown has $rows claim rows, want 30"; fail=1; }

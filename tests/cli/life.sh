@@ -28,9 +28,24 @@ check_json "the oloid is compared with the cylinder" \
   '[.comparisons[] | select(.name == "oloid vs cylinder")] | length == 12' "$tmp/l.json"
 check_json "a verdict is robust or names its choices" \
   '[.comparisons[].verdict | test("^(robust|depends on [a-z_, ]+|cannot be tested)$")] | all' "$tmp/l.json"
+check_json "the oloid is compared with the preprint's body and the family's best" \
+  '[.comparisons[].name] | (index("oloid vs paper-oloid") != null and index("oloid vs u-optimum") != null and index("oloid vs fem-sds-optimum") != null)' "$tmp/l.json"
+check_json "a comparison that cannot be tested says why; one that can does not" \
+  '[.comparisons[] | (.verdict == "cannot be tested") == (.untested_because != null)] | all' "$tmp/l.json"
+check_json "Ioannides-Harris at 100 N: both lives infinite below the fatigue limit" \
+  '[.comparisons[] | select(.model == "ioannides_harris" and .load_n == 100) | .untested_because | test("fatigue limit")] | all' "$tmp/l.json"
+check_json "a range is over the cells where it is defined, at most the grid's" \
+  '[.comparisons[] | .cells <= .grid_cells and .grid_cells == 45] | all' "$tmp/l.json"
+check_json "rim ends: every body at every load, the life with the ends at most the life without" \
+  '(.rims.lives | length) == 15 and ([.rims.lives[] | select(.rows | length > 0) | .rows[] | .life_with_over_without_ends > 0 and .life_with_over_without_ends <= 1] | all)' "$tmp/l.json"
+check_json "rim ends: the end/interior ratio falls as the edge is rounded" \
+  '[.rims.lives[] | select(.body == "oloid") | [.rows[].end_over_interior] | . == (sort | reverse)] | all' "$tmp/l.json"
 grep -q '^| oloid vs cylinder | 100 |' "$tmp/l.md" || { echo "FAIL: no Markdown row"; fail=1; }
+grep -q '^| oloid | 100 | ' "$tmp/l.md" || { echo "FAIL: no Markdown row of the rim ends"; fail=1; }
 "$bin" -q life --markdown /nonexistent/l.md > /dev/null 2> "$tmp/err.txt"; code=$?
 [[ $code -eq 2 ]] || { echo "FAIL: bad --markdown path gave exit $code"; fail=1; }
 grep -q -- '--markdown' "$tmp/err.txt" || { echo "FAIL: the message does not name --markdown"; fail=1; }
-refuses life '--samples-per-loop 10:samples-per-loop' '--refines 20:refines'
+refuses life '--samples-per-loop 10:samples-per-loop' '--refines 20:refines' '--end-ratios /nonexistent.json:end-ratios'
+"$bin" -q life --edge-radii 0.04 0.01 > /dev/null 2> "$tmp/err2.txt"; code=$?
+[[ $code -eq 2 ]] && grep -q -- '--edge-radii' "$tmp/err2.txt" || { echo "FAIL: descending --edge-radii gave exit $code"; fail=1; }
 exit $fail

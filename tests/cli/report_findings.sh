@@ -2,7 +2,9 @@
 # The report concludes (docs/guide/report.md): its first section,
 # <section id="findings">, comes before any table and holds the headline
 # figure, drawn from the robustness study's JSON (`rollcheck robustness
-# --json`, read, not rerun). Rendered in headless Chromium at 1280x800, the
+# --json`, read, not rerun). Its fatigue-life section, <section id="life">,
+# holds the life study's figure and its comparisons as the JSON has them
+# (`rollcheck life --json`, a coarse run). Rendered in headless Chromium at 1280x800, the
 # first screen shows the findings' paragraph and the top of the headline
 # figure; the test skips that part, saying so, where no browser is installed
 # (Debian's chromium, scripts/setup/setup.sh).
@@ -14,7 +16,11 @@ printf '[scene]\nkind = "mesh"\nbody = "oloid"\npoints = 100\n' > "$tmp/cases/ol
 "$bin" -q batch "$tmp/cases" --out "$tmp/out" > /dev/null 2>&1 || { echo "FAIL: batch"; exit 1; }
 "$bin" -q robustness --samples-per-loop 200 --pieces 4 --json "$tmp/robustness.json" > /dev/null \
   || { echo "FAIL: robustness"; exit 1; }
-expect 0 "report: " -- "$bin" report --from "$tmp/out/results.h5" --out "$tmp/report" --robustness "$tmp/robustness.json"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
+"$bin" -q life --samples-per-loop 400 --pieces 4 --refines 2 --edge-radii 0.01 0.04 --json "$tmp/life.json" > /dev/null \
+  || { echo "FAIL: life"; exit 1; }
+expect 0 "report: " -- "$bin" report --from "$tmp/out/results.h5" --out "$tmp/report" --robustness "$tmp/robustness.json" \
+  --life "$tmp/life.json"
 html=$tmp/report/report.html
 pos() { grep -b -o -m1 -e "$1" "$html" | head -1 | cut -d: -f1; }
 check '[[ -n $(pos "<section id=\"findings\">") ]]' "no findings section"
@@ -29,6 +35,16 @@ c = next(c for c in json.load(open(sys.argv[1]))['comparisons'] if c['score'] ==
 print(f\"{1 / c['ratio_max']:.3g}-{1 / c['ratio_min']:.3g}x\")" "$tmp/robustness.json")
 check 'grep -q "spans $range over the modelling choices" <<<"$findings"' "the paragraph's range is not the JSON's ($range)"
 check '! grep -q "\.report\.tmp" "$tmp/report/report.log"' "report.log names the temporary folder it was drawn in"
+life=$(sed -n '/<section id="life">/,/<\/section>/p' "$html")
+check 'grep -q "<figure id=\"life-figure\">" <<<"$life" && grep -q "<img src=\"data:image/png;base64," <<<"$life"' \
+  "the fatigue-life section holds no figure"
+check '[[ -s $tmp/report/life.png ]] && grep -q "](life.png)" "$tmp/report/report.md"' "no life.png beside report.md"
+# The oloid's range in the section is the JSON's.
+read -r lo hi <<<"$(/usr/bin/python3 -c "import json, sys
+c = next(c for c in json.load(open(sys.argv[1]))['comparisons'] if c['name'] == 'oloid vs cylinder' and c['model'] == 'lundberg_palmgren' and c['criterion'] == 'orthogonal_shear')
+print(f\"{c['life_ratio_min']:.3g} {c['life_ratio_max']:.3g}\")" "$tmp/life.json")"
+check 'grep -qF ">$lo</td><td class=\"n\">$hi<" <<<"$life"' "the section's oloid vs cylinder range is not the JSON's ($lo, $hi)"
+check 'grep -q "neither body.*reaches its fatigue limit" <<<"$life"' "the section does not say why Ioannides-Harris cannot be tested"
 
 browser=$(command -v chromium || command -v chromium-browser || true)
 if [[ -z $browser ]]; then

@@ -1,6 +1,7 @@
 // The life study's JSON and Markdown (study/life/life_study.h).
 #include "core/json_number.h"
 #include "study/life/life_study.h"
+#include <algorithm>
 #include <fmt/format.h>
 
 namespace rollcheck::study::life
@@ -30,6 +31,54 @@ nlohmann::json constants_json(const LifeConstants& k)
 }
 
 std::string ratio_text(double x) { return std::isinf(x) ? "inf" : fmt::format("{:.3g}", x); }
+
+std::string optional_text(const std::optional<double>& x) { return x ? ratio_text(*x) : "-"; }
+
+/// The rims' table: per load and body, the life with the ends over without at the rim study's r_e and the r_e
+/// from which the interior governs.
+std::string rims_markdown(const LifeResult& r)
+{
+  const double at = r.settings.rims.rim_study_edge_radius_over_radius;
+  std::string out = fmt::format("\n| body | load N | L10 with ends / without (r_e = {:g} r1) | L10 / cylinder's, "
+                                "without ends | with ends | interior governs from r_e / r1 |\n|---|---|---|---|---|---|\n",
+                                at);
+  for (const RimLife& l : r.rims)
+  {
+    const auto row = std::find_if(l.rows.begin(), l.rows.end(),
+                                  [&](const RimLifeRow& x) { return x.edge_radius_over_radius == at; });
+    if (row == l.rows.end())
+      continue;
+    out += fmt::format("| {} | {:.4g} | {} | {} | {} | {} |\n", l.body, l.load_n,
+                       ratio_text(row->life_with_over_without_ends), optional_text(l.interior_life_ratio_to_cylinder),
+                       optional_text(row->life_ratio_to_cylinder),
+                       l.governs_at_every_radius ? "every r_e computed" : optional_text(l.interior_governs_from));
+  }
+  return out;
+}
+/// The rounded rim ends: the cell, the end table, the assumptions and each body's lives.
+nlohmann::json rims_json(const LifeResult& r)
+{
+  nlohmann::json rim_lives = nlohmann::json::array();
+  for (const RimLife& l : r.rims)
+    rim_lives.push_back(to_json(l));
+  return {{"cell", r.rim_cell},
+         {"model", "lundberg_palmgren"},
+         {"criterion", "orthogonal_shear"},
+         {"edge_radius_over_radius", r.settings.rims.edge_radius_over_radius},
+         {"rim_study_edge_radius_over_radius", json_number(r.settings.rims.rim_study_edge_radius_over_radius)},
+         {"zone_over_half_width", json_number(r.settings.rims.zone_over_half_width)},
+         {"end_table",
+          {{"r_over_edge_radius", r.end_ratios.r_over_edge_radius},
+           {"end_over_line_hertz", r.end_ratios.end_over_line_hertz},
+           {"interior_angle_deg", json_number(r.end_ratios.interior_angle_deg)},
+           {"source", r.end_ratios.source}}},
+         {"assumptions",
+          "each loaded end's pass is a line contact at the end's q on R = max(R_end, r_e), its peak rho(R_end / r_e) "
+          "times line Hertz's there (the end table, held at its ends, whatever the rim's interior angle), over one "
+          "patch of zone_over_half_width b along the ruling; the interior as without the ends"},
+         {"lives", rim_lives}};
+}
+
 } // namespace
 
 nlohmann::json to_json(const LifeResult& r)
@@ -53,6 +102,10 @@ nlohmann::json to_json(const LifeResult& r)
                            {"life_ratio_min", tested ? json_number(c.verdict.ratio_min) : nlohmann::json(nullptr)},
                            {"life_ratio_max", tested ? json_number(c.verdict.ratio_max) : nlohmann::json(nullptr)},
                            {"cells", c.verdict.cells},
+                           {"grid_cells", c.grid_cells},
+                           {"range_over", "the cells of the grid where the ratio is defined (both bodies roll a whole "
+                                          "loop and not both lives are infinite): `cells` of `grid_cells`"},
+                           {"untested_because", c.untested.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.untested)},
                            {"infinite_life_cells", c.infinite_life_cells},
                            {"flips", flips}});
   }
@@ -94,6 +147,7 @@ nlohmann::json to_json(const LifeResult& r)
   for (const auto& [body, energy] : r.incomplete_loops)
     incomplete.push_back({{"body", body}, {"rolling_energy", energy}});
   return {{"subsurface", to_json(r.subsurface)},
+          {"rims", rims_json(r)},
           {"incomplete_loops", incomplete},
           {"load_life_exponent", json_number(oloid_exponent)},
           {"load_life_exponent_derived", json_number(r.derived_exponent)},
@@ -133,6 +187,7 @@ std::string markdown_report(const LifeResult& r)
     out += fmt::format("| {} | {:.4g} | {} | {} | {} | {} | {} |\n", c.name, c.load_n, c.model, c.criterion,
                        c.verdict.text, c.verdict.cells ? ratio_text(c.verdict.ratio_min) : "-",
                        c.verdict.cells ? ratio_text(c.verdict.ratio_max) : "-");
+  out += rims_markdown(r);
   return out;
 }
 } // namespace rollcheck::study::life

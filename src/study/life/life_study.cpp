@@ -129,6 +129,50 @@ ExponentCheck measure_exponent(const LifeSettings& s, const std::string& body, c
   return e;
 }
 
+
+/// The pairs compared: every body against the cylinder, the oloid against every other body.
+std::vector<std::pair<std::size_t, std::size_t>> compared_pairs(const std::vector<robustness::NamedBody>& bodies)
+{
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t a = 0; a < bodies.size(); ++a)
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+      if (a != b && bodies[b].spec.body == "cylinder")
+        pairs.emplace_back(a, b);
+  for (std::size_t a = 0; a < bodies.size(); ++a)
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+      if (a != b && bodies[a].name == "oloid" && bodies[b].spec.body != "cylinder")
+        pairs.emplace_back(a, b);
+  return pairs;
+}
+
+/// L10(A) / L10(B) of integral key k at load l over the grid, with its verdict, and why it cannot be tested.
+LifeComparison compare(const LifeSettings& s, const LifeResult& r, const std::vector<Cell>& cells, std::size_t a,
+                       std::size_t b, std::size_t l, int k)
+{
+  LifeComparison c{s.bodies[a].name + " vs " + s.bodies[b].name,
+                   {s.bodies[a].name, s.bodies[b].name},
+                   r.loads_n[l], model_names[k / 2], criterion_names[k % 2], {}};
+  const auto& ia = r.integrals[a][l][k];
+  const auto& ib = r.integrals[b][l][k];
+  c.verdict = robustness::judge_comparison(s.grid, [&](const Cell& cell) {
+    const std::size_t i = std::lower_bound(cells.begin(), cells.end(), cell) - cells.begin();
+    return life_ratio(ia[i], ib[i], s.constants.weibull_slope);
+  });
+  int rolled = 0;
+  for (std::size_t i = 0; i < cells.size(); ++i)
+  {
+    c.infinite_life_cells[0] += ia[i] == 0, c.infinite_life_cells[1] += ib[i] == 0;
+    rolled += !std::isnan(ia[i]) && !std::isnan(ib[i]);
+  }
+  c.grid_cells = static_cast<int>(cells.size());
+  if (c.verdict.cells == 0)
+    c.untested = rolled == 0 ? "neither body rolls a whole loop in any cell of the grid"
+                             : fmt::format("neither body's {} reaches its fatigue limit (the stress at a {:.3g} GPa "
+                                           "contact) anywhere in the {} cells where both roll a whole loop: both "
+                                           "lives are infinite at {:.4g} N",
+                                           c.criterion, s.constants.fatigue_limit_contact_pa / 1e9, rolled, c.load_n);
+  return c;
+}
 } // namespace
 
 std::vector<Choice> default_life_grid()
@@ -150,6 +194,9 @@ LifeResult run_life(const LifeSettings& s)
     throw InputError("life: needs at least one load and two exponent loads");
   LifeResult r;
   r.settings = s;
+  validate(s.rims);
+  r.end_ratios = read_rounded_end_ratios(s.end_ratios_path.empty() ? default_rounded_end_ratios_path()
+                                                                   : std::filesystem::path(s.end_ratios_path));
   r.derived_exponent = derived_load_life_exponent(s.constants);
   const double e_star = contact::effective_modulus_identical_bodies(s.youngs_modulus_pa, s.poisson_ratio);
   r.loads_n = s.loads_n;
@@ -199,23 +246,24 @@ LifeResult run_life(const LifeSettings& s)
       r.dang_van.push_back({s.bodies[b].name, r.loads_n[l],
                             largest_dang_van / (dang_van.peak() * s.constants.fatigue_limit_contact_pa)});
     }
-  for (std::size_t a = 0; a < s.bodies.size(); ++a)
-    for (std::size_t b = 0; b < s.bodies.size(); ++b)
-      if (s.bodies[b].spec.body == "cylinder" && a != b)
-        for (std::size_t l = 0; l < r.loads_n.size(); ++l)
-          for (int k = 0; k < 4; ++k)
-          {
-            LifeComparison c{s.bodies[a].name + " vs " + s.bodies[b].name,
-                             {s.bodies[a].name, s.bodies[b].name},
-                             r.loads_n[l], model_names[k / 2], criterion_names[k % 2], {}};
-            c.verdict = robustness::judge_comparison(s.grid, [&](const Cell& cell) {
-              const std::size_t i = std::lower_bound(cells.begin(), cells.end(), cell) - cells.begin();
-              return life_ratio(r.integrals[a][l][k][i], r.integrals[b][l][k][i], s.constants.weibull_slope);
-            });
-            for (std::size_t i = 0; i < cells.size(); ++i)
-              c.infinite_life_cells[0] += r.integrals[a][l][k][i] == 0, c.infinite_life_cells[1] += r.integrals[b][l][k][i] == 0;
-            r.comparisons.push_back(c);
-          }
+  for (const auto& [a, b] : compared_pairs(s.bodies))
+    for (std::size_t l = 0; l < r.loads_n.size(); ++l)
+      for (int k = 0; k < 4; ++k)
+        r.comparisons.push_back(compare(s, r, cells, a, b, l, k));
+  const Cell defaults = {1, 1, 1};
+  for (std::size_t c = 0; c < s.grid.size(); ++c)
+    r.rim_cell[s.grid[c].name] = s.grid[c].values[defaults[c]];
+  std::vector<const oracle::RealRolling*> default_runs;
+  std::optional<std::size_t> cylinder;
+  for (std::size_t b = 0; b < s.bodies.size(); ++b)
+  {
+    default_runs.push_back(&runs[b].at(value_of(s.grid, defaults, "rolling_energy")));
+    if (s.bodies[b].spec.body == "cylinder")
+      cylinder = b;
+  }
+  r.rims = rim_lives(s.rims, s.bodies, default_runs, r.loads_n,
+                     [&](double load) { return loop_settings(s, defaults, load); }, s.constants, tables, ratio,
+                     r.end_ratios, cylinder);
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

@@ -14,9 +14,15 @@
 // rolling rate (a pass's life does not depend on how fast it rolls, and the
 // rate enters only through the dynamic load, which a uniform rate does not
 // define): rolling_energy x load_rule x end_margin.
+//
+// Each body is compared with the cylinder, and the oloid with each other
+// body (the preprint's and the family's best). The rounded rim ends are
+// added at the grid's default cell (rim_life.h).
 #include "study/life/fem_subsurface.h"
 #include "study/life/loop_life.h"
+#include "study/life/rim_life.h"
 #include "study/robustness/robustness.h"
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -39,6 +45,8 @@ struct LifeSettings
   SubsurfaceSettings subsurface;
   /// The load-life exponent is measured on these loads (N), default cell.
   std::vector<double> exponent_loads_n = {100, 1000, 10000};
+  RimLifeSettings rims;
+  std::string end_ratios_path; ///< the rounded-end table; empty: default_rounded_end_ratios_path()
 };
 
 struct LifeComparison
@@ -50,6 +58,8 @@ struct LifeComparison
   std::string criterion; ///< orthogonal_shear, largest_shear
   robustness::Verdict verdict; ///< of L10(A) / L10(B): > 1, A lives longer
   std::array<int, 2> infinite_life_cells{}; ///< cells where A, B never reach the fatigue limit
+  int grid_cells = 0;    ///< of the grid; the verdict's range is over its `cells` where both roll a whole loop
+  std::string untested = {}; ///< why the comparison cannot be tested (empty: it can)
 };
 
 struct ExponentCheck
@@ -83,6 +93,9 @@ struct LifeResult
   /// integrals[body][load][key][cell], key: model_criterion.
   std::vector<std::vector<std::vector<std::vector<double>>>> integrals;
   std::vector<std::string> integral_keys;
+  RoundedEndRatios end_ratios;
+  std::vector<RimLife> rims; ///< per load, per body, at the grid's default cell
+  std::map<std::string, std::string> rim_cell; ///< that cell's choices
   double wall_s = 0;
 };
 

@@ -39,15 +39,27 @@ void validate(const LoopLifeSettings& s)
 }
 } // namespace
 
-void for_each_loaded_element(const oracle::RealRolling& run, const LoopLifeSettings& s,
-                             const std::function<void(const LoadedElement&)>& visit)
+namespace
+{
+/// One loaded ruling of the loop: its sample, its weight in sigma, and the
+/// loaded part [from, to] of it (fractions from its start).
+struct LoadedRuling
+{
+  const oracle::RollingSample& sample;
+  double dsigma, length, force, centre, from, to;
+  bool uniform;
+  double radius(double f) const { return (1 - f) * sample.start_radius_m + f * sample.end_radius_m; }
+  double load(double f) const { return uniform ? force / length : oracle::line_load(force, centre, length, f); }
+};
+
+void for_each_loaded_ruling(const oracle::RealRolling& run, const LoopLifeSettings& s,
+                            const std::function<void(const LoadedRuling&)>& visit)
 {
   validate(s);
   if (run.trajectory.mode != oracle::ContactMode::line)
     throw InputError("life: defined for line contact only");
   const double end = std::isfinite(run.first_loop_end_s) ? run.first_loop_end_s : run.scored_end_s;
   const auto& samples = run.trajectory.samples;
-  const double e_star = s.effective_modulus_pa;
   // Trapezoid weights in sigma: each step's part inside the loop, half to either end.
   std::vector<double> weight(samples.size(), 0.0);
   for (std::size_t k = 0; k + 1 < samples.size(); ++k)
@@ -57,36 +69,69 @@ void for_each_loaded_element(const oracle::RealRolling& run, const LoopLifeSetti
     const double half = std::abs(samples[k + 1].turning_angle_rad - samples[k].turning_angle_rad) * inside / 2;
     weight[k] += half, weight[k + 1] += half;
   }
+  const bool uniform = s.load_rule == contact::LoadRule::uniform;
   for (std::size_t k = 0; k < samples.size(); ++k)
   {
     const oracle::RollingSample& x = samples[k];
-    const double dsigma = weight[k];
     const auto [force, centre] = ruling_force(x, run, s);
-    if (!(force > 0) || !(dsigma > 0))
+    if (!(force > 0) || !(weight[k] > 0))
       continue;
-    const double length = (x.contact_end_m - x.contact_start_m).norm();
-    const bool uniform = s.load_rule == contact::LoadRule::uniform;
     const double from = uniform || centre <= 2.0 / 3 ? 0 : 1 - 3 * (1 - centre);
     const double to = uniform || centre >= 1.0 / 3 ? 1 : 3 * centre;
-    const double lo = std::min(from + s.end_margin, (from + to) / 2), hi = std::max(to - s.end_margin, (from + to) / 2);
-    auto radius = [&](double f) { return (1 - f) * x.start_radius_m + f * x.end_radius_m; };
-    auto load = [&](double f) { return uniform ? force / length : oracle::line_load(force, centre, length, f); };
-    const double h = (to - from) / s.pieces, offset = h / (2 * std::sqrt(3.0));
-    for (int piece = 0; piece < s.pieces; ++piece)
-      for (const double f : {from + (piece + 0.5) * h - offset, from + (piece + 0.5) * h + offset})
-      {
-        const double held = std::clamp(f, lo, hi), q = load(held), r = radius(held);
-        if (!(q > 0))
-          continue;
-        visit({dsigma * length * radius(f) * h / 2, std::sqrt(q * e_star / (std::numbers::pi * r)),
-               std::sqrt(4 * q * r / (std::numbers::pi * e_star))});
-      }
+    visit({x, weight[k], (x.contact_end_m - x.contact_start_m).norm(), force, centre, from, to, uniform});
   }
+}
+
+/// Line Hertz's element of a pass at line load q on radius r.
+LoadedElement line_hertz(double area_m2, double q, double r, double e_star, double peak_factor = 1)
+{
+  return {area_m2, peak_factor * std::sqrt(q * e_star / (std::numbers::pi * r)),
+          std::sqrt(4 * q * r / (std::numbers::pi * e_star))};
+}
+} // namespace
+
+void for_each_loaded_element(const oracle::RealRolling& run, const LoopLifeSettings& s,
+                             const std::function<void(const LoadedElement&)>& visit)
+{
+  for_each_loaded_ruling(run, s, [&](const LoadedRuling& u) {
+    const double lo = std::min(u.from + s.end_margin, (u.from + u.to) / 2);
+    const double hi = std::max(u.to - s.end_margin, (u.from + u.to) / 2);
+    const double h = (u.to - u.from) / s.pieces, offset = h / (2 * std::sqrt(3.0));
+    for (int piece = 0; piece < s.pieces; ++piece)
+      for (const double f : {u.from + (piece + 0.5) * h - offset, u.from + (piece + 0.5) * h + offset})
+      {
+        const double held = std::clamp(f, lo, hi), q = u.load(held);
+        if (q > 0)
+          visit(line_hertz(u.dsigma * u.length * u.radius(f) * h / 2, q, u.radius(held), s.effective_modulus_pa));
+      }
+  });
+}
+
+void for_each_loaded_end(const oracle::RealRolling& run, const LoopLifeSettings& s, const RoundedEnds& ends,
+                         const std::function<void(const LoadedEnd&)>& visit)
+{
+  if (!(ends.edge_radius_m > 0) || !ends.ratios || !(ends.zone_over_half_width > 0))
+    throw InputError(fmt::format("life: rounded ends need a positive edge radius and zone and an end table, got "
+                                 "r_e = {} m, zone {} b",
+                                 ends.edge_radius_m, ends.zone_over_half_width));
+  for_each_loaded_ruling(run, s, [&](const LoadedRuling& u) {
+    for (const double f : {0.0, 1.0})
+    {
+      const double q = u.load(f);
+      if ((f == 0 && u.from > 0) || (f == 1 && u.to < 1) || !(q > 0))
+        continue; // this end carries no load
+      const double sheet = u.radius(f) / ends.edge_radius_m, r = std::max(u.radius(f), ends.edge_radius_m);
+      LoadedElement e = line_hertz(0, q, r, s.effective_modulus_pa, (*ends.ratios)(sheet));
+      e.area_m2 = ends.zone_over_half_width * e.half_width_m * r * u.dsigma;
+      visit({e, ends.ratios->covers(sheet)});
+    }
+  });
 }
 
 LoopIntegrals loop_integrals(const oracle::RealRolling& run, const LoopLifeSettings& settings,
                              const LifeConstants& k, const std::array<const DepthIntegrals*, 2>& depth,
-                             const std::array<double, 2>& ratio, const DepthIntegrals& dang_van)
+                             const std::array<double, 2>& ratio, const DepthIntegrals& dang_van,
+                             const RoundedEnds* ends)
 {
   LoopIntegrals out;
   const double c = k.stress_exponent, h = k.depth_exponent;
@@ -96,18 +141,26 @@ LoopIntegrals loop_integrals(const oracle::RealRolling& run, const LoopLifeSetti
     limit[i] = ratio[i] * depth[i]->peak() * k.fatigue_limit_contact_pa; // tau_u
     lp_depth[i] = depth[i]->integral(0, c);
   }
-  for_each_loaded_element(run, settings, [&](const LoadedElement& e) {
+  auto add = [&](const LoadedElement& e, std::array<double, 2>& lp, std::array<double, 2>& ih) {
     const double scale = e.area_m2 * std::pow(e.half_width_m, 1 - h);
     for (int i = 0; i < 2; ++i)
     {
       const double tau_scale = ratio[i] * e.peak_pressure_pa;
       const double amplitude = std::pow(tau_scale, c) * scale;
-      out.lundberg_palmgren[i] += amplitude * lp_depth[i];
-      out.ioannides_harris[i] += amplitude * depth[i]->integral(limit[i] / tau_scale, c);
+      lp[i] += amplitude * lp_depth[i];
+      ih[i] += amplitude * depth[i]->integral(limit[i] / tau_scale, c);
     }
+  };
+  for_each_loaded_element(run, settings, [&](const LoadedElement& e) {
+    add(e, out.lundberg_palmgren, out.ioannides_harris);
     out.max_peak_pressure_pa = std::max(out.max_peak_pressure_pa, e.peak_pressure_pa);
   });
   out.max_dang_van_pa = dang_van.peak() * out.max_peak_pressure_pa;
+  if (ends)
+    for_each_loaded_end(run, settings, *ends, [&](const LoadedEnd& e) {
+      add(e.element, out.end_lundberg_palmgren, out.end_ioannides_harris);
+      ++out.ends, out.ends_outside_table += !e.inside_table;
+    });
   return out;
 }
 

@@ -12,12 +12,13 @@
 // centre of mass, the motion's own dynamic load, uniform) and its end
 // margin: within `end_margin` of a loaded end of the ruling q and R are held
 // at their values there (the rim's own singular stress is not this model's:
-// study/rims). Quadrature: the trapezoid rule in sigma between the
+// study/rims; with a rounded edge, for_each_loaded_end adds them). Quadrature: the trapezoid rule in sigma between the
 // trajectory's samples, two-point Gauss-Legendre on `pieces` equal pieces of
 // the loaded part of each ruling. A pass's life does not depend on how fast
 // it rolls, so the rolling energy enters only through the dynamic load.
 #include "contact/continuum_loop_scores.h"
 #include "oracle/rolling_study.h"
+#include "study/life/rounded_end_ratios.h"
 #include "study/life/stress_volume.h"
 #include <array>
 #include <functional>
@@ -45,6 +46,37 @@ struct LoadedElement
 void for_each_loaded_element(const oracle::RealRolling& run, const LoopLifeSettings& settings,
                              const std::function<void(const LoadedElement&)>& visit);
 
+/// A rounded rim at every loaded end of the loop's rulings (edge radius
+/// r_e), each end's pass taken as a line contact of its own: at the end's
+/// line load q (not held at the margin) on R = max(R_end, r_e) (the rounded
+/// surface), half-width b = sqrt(4 q R / (pi E*)), and peak rho(R_end / r_e)
+/// times line Hertz's p0 there (rounded_end_ratios.h), over a patch of
+/// `zone_over_half_width` b along the ruling and R dsigma across. Assumed,
+/// not modelled: the end's subsurface field is line contact's at its own
+/// peak and b (the rim study's end pressure is a peak over about one b
+/// along the ruling, docs/results/rim-ends.md), and rho does not depend on
+/// the rim's interior angle (the table's is 87.5 deg; the oloid's end table
+/// moves 15-25 % across 66.7-160 deg, docs/results/rims.md).
+struct RoundedEnds
+{
+  double edge_radius_m = 0;
+  const RoundedEndRatios* ratios = nullptr;
+  double zone_over_half_width = 1;
+};
+
+/// One loaded end's element: as LoadedElement, and whether its R_end / r_e
+/// lies inside the table (else rho is held at the table's last node: an
+/// underestimate).
+struct LoadedEnd
+{
+  LoadedElement element;
+  bool inside_table;
+};
+
+/// Calls `visit` for every loaded end of every ruling of the loop [0, end] of `run`.
+void for_each_loaded_end(const oracle::RealRolling& run, const LoopLifeSettings& settings, const RoundedEnds& ends,
+                         const std::function<void(const LoadedEnd&)>& visit);
+
 /// The two criteria that enter the life integrals, in this order.
 inline constexpr std::array<contact::FatigueCriterion, 2> life_criteria{contact::FatigueCriterion::orthogonal_shear,
                                                                        contact::FatigueCriterion::largest_shear};
@@ -55,14 +87,19 @@ struct LoopIntegrals
   std::array<double, 2> ioannides_harris{};    ///< I with the fatigue limit
   double max_peak_pressure_pa = 0;
   double max_dang_van_pa = 0;                  ///< the largest Dang Van stress of any pass
+  /// With rounded ends: their own integrals (the interior's above leave them
+  /// out), their count and how many lie outside the end table.
+  std::array<double, 2> end_lundberg_palmgren{}, end_ioannides_harris{};
+  long ends = 0, ends_outside_table = 0;
 };
 
 /// The integrals of one loop; `ratio[i]` is the FEM's measured stress over the
 /// closed form's for life_criteria[i]; `depth[i]` the criteria's tables,
-/// `dang_van` the Dang Van table.
+/// `dang_van` the Dang Van table; `ends`, if given, the rounded rim ends.
 LoopIntegrals loop_integrals(const oracle::RealRolling& run, const LoopLifeSettings& settings,
                              const LifeConstants& constants, const std::array<const DepthIntegrals*, 2>& depth,
-                             const std::array<double, 2>& ratio, const DepthIntegrals& dang_van);
+                             const std::array<double, 2>& ratio, const DepthIntegrals& dang_van,
+                             const RoundedEnds* ends = nullptr);
 
 /// Lundberg-Palmgren's integral of one criterion (ratio 1) by direct
 /// quadrature over absolute depth: `depths` points uniform in ln(z) over

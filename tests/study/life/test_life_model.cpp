@@ -2,7 +2,8 @@
 // independent quadrature, the cylinder's loop integral against its closed
 // form (every generator carries F / L), and the Lundberg-Palmgren load-life
 // exponent measured from the integral by direct quadrature over absolute
-// depth against the derived (c + 1 - h) / (2 e) = 4.
+// depth against the derived (c + 1 - h) / (2 e) = 4; the rounded rim ends'
+// integral on the cylinder against its closed form (two ends per ruling).
 #include "contact/hertz.h"
 #include "contact/subsurface_pass.h"
 #include "oracle/rolling_study.h"
@@ -27,6 +28,15 @@ const oracle::RealRolling& cylinder_run()
     return oracle::real_rolling(spec, p);
   }();
   return run;
+}
+
+/// Every ruling of the loop carries F / L.
+LoopLifeSettings uniform_load(double load_n)
+{
+  LoopLifeSettings s;
+  s.load_rule = contact::LoadRule::uniform;
+  s.normal_load_n = load_n;
+  return s;
 }
 } // namespace
 
@@ -86,8 +96,7 @@ TEST(LifeModel, LoadLifeExponentMeasuredFromTheIntegral)
 {
   const LifeConstants k;
   const DepthIntegrals orthogonal(contact::FatigueCriterion::orthogonal_shear, k);
-  LoopLifeSettings s;
-  s.load_rule = contact::LoadRule::uniform;
+  LoopLifeSettings s = uniform_load(100);
   s.pieces = 2;
   // One depth grid for both loads, from 1e-3 of the smaller b to 10 times the larger.
   const double z_lo = 1e-3 * contact::line_contact(50, 1, s.effective_modulus_pa, 0.3).half_width_m;
@@ -99,4 +108,27 @@ TEST(LifeModel, LoadLifeExponentMeasuredFromTheIntegral)
   const double exponent = std::log(high / low) / std::log(100.0) / k.weibull_slope;
   EXPECT_NEAR(exponent / derived_load_life_exponent(k), 1, 0.02);
   EXPECT_NEAR(exponent / derived_load_life_exponent(k), 1, 0.005);
+}
+
+TEST(LifeModel, CylinderRimEndIntegralMatchesItsClosedForm)
+{
+  const LifeConstants k;
+  const DepthIntegrals orthogonal(contact::FatigueCriterion::orthogonal_shear, k);
+  const LoopLifeSettings s = uniform_load(5000);
+  const RoundedEndRatios t{{1, 4, 16}, {1.5, 2, 3}, 87.5, "hand-made"};
+  for (const double re : {0.05, 0.5, 2.0}) // R / r_e = 20 (held), 2, and r_e above R
+  {
+    const RoundedEnds ends{re, &t, 1.5};
+    const LoopIntegrals li
+        = loop_integrals(cylinder_run(), s, k, {&orthogonal, &orthogonal}, {1.0, 1.0}, orthogonal, &ends);
+    // Each of the loop's rulings has two loaded ends at q = F / L on R = max(1 m, r_e): over one loop (2 pi
+    // of sigma) each sweeps 2 pi R, on a patch 1.5 b long.
+    const double r = std::max(1.0, re);
+    const contact::LineHertz h = contact::line_contact(s.normal_load_n / 2, r, s.effective_modulus_pa, 0.3);
+    const double expected = 2 * 2 * std::numbers::pi * r * 1.5 * h.half_width_m
+                            * std::pow(t(1 / re) * h.peak_pressure_pa, k.stress_exponent)
+                            * std::pow(h.half_width_m, 1 - k.depth_exponent) * orthogonal.integral(0, k.stress_exponent);
+    EXPECT_NEAR(li.end_lundberg_palmgren[0] / expected, 1, 1e-3) << "r_e = " << re;
+    EXPECT_EQ(li.ends_outside_table > 0, re == 0.05);
+  }
 }
