@@ -16,6 +16,9 @@ check_json "the FEM slice's largest shear within 1 % of 0.300 p0 at 0.786 b" \
   "$tmp/l.json"
 check_json "the FEM slice's orthogonal shear within 1 % of 0.250 p0" \
   '(.subsurface.fem_orthogonal_shear_over_p0 / 0.250 - 1 | fabs) < 0.01' "$tmp/l.json"
+check_json "the loop quadrature's convergence: the oloid / cylinder life at each load, at half the quadrature too" \
+  '(.quadrature_convergence | length) == 3 and ([.quadrature_convergence[] | .oloid_over_cylinder_life > 0 and .oloid_over_cylinder_life_half_quadrature > 0 and (.change | type) == "number"] | all)' \
+  "$tmp/l.json"
 check_json "the measured load-life exponent within 2 % of the derived" \
   '.load_life_exponent_derived == 4 and (.load_life_exponent / .load_life_exponent_derived - 1 | fabs) < 0.02' \
   "$tmp/l.json"

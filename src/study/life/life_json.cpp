@@ -126,6 +126,12 @@ nlohmann::json to_json(const LifeResult& r)
   nlohmann::json dang_van = nlohmann::json::array();
   for (const DangVanCheck& d : r.dang_van)
     dang_van.push_back({{"body", d.body}, {"load_n", json_number(d.load_n)}, {"max_over_limit", json_number(d.max_over_limit)}});
+  nlohmann::json quadrature = nlohmann::json::array();
+  for (const QuadratureCheck& q : r.quadrature)
+    quadrature.push_back({{"load_n", json_number(q.load_n)},
+                          {"oloid_over_cylinder_life", json_number_or_null(q.life_ratio)},
+                          {"oloid_over_cylinder_life_half_quadrature", json_number_or_null(q.life_ratio_half)},
+                          {"change", json_number_or_null(q.change())}});
   nlohmann::json integrals = nlohmann::json::object();
   for (std::size_t b = 0; b < r.settings.bodies.size(); ++b)
     for (std::size_t l = 0; l < r.loads_n.size(); ++l)
@@ -165,6 +171,7 @@ nlohmann::json to_json(const LifeResult& r)
           {"integral_keys", r.integral_keys},
           {"integrals", integrals},
           {"samples_per_loop", r.settings.samples_per_loop},
+          {"quadrature_convergence", quadrature},
           {"pieces", r.settings.pieces},
           {"wall_s", json_number(r.wall_s)}};
 }
@@ -179,6 +186,10 @@ std::string markdown_report(const LifeResult& r)
       r.subsurface.closed_max_shear_depth_over_b, fine.orthogonal_shear_over_p0, r.subsurface.closed_orthogonal_shear_over_p0);
   for (const ExponentCheck& e : r.exponents)
     out += fmt::format("load-life exponent ({}): {:.4f} measured, {:.4f} derived\n", e.body, e.exponent, r.derived_exponent);
+  for (const QuadratureCheck& q : r.quadrature)
+    out += fmt::format("oloid / cylinder life at {:.4g} N (default cell): {} at the loop's quadrature, {} at half of "
+                       "it ({:+.2f} %)\n",
+                       q.load_n, ratio_text(q.life_ratio), ratio_text(q.life_ratio_half), 100 * q.change());
   for (const auto& [body, energy] : r.incomplete_loops)
     out += fmt::format("not a rolling loop (a rim lifts before the loop closes): {} at E = {}\n", body, energy);
   out += "\n| comparison | load N | model | criterion | verdict | life ratio min | life ratio max |\n"

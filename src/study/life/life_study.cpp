@@ -187,6 +187,50 @@ double cylinder_load_for_peak(const geometry::BodySpec& cylinder, double p0, dou
   return std::numbers::pi * cylinder.radius_m * cylinder.height_m * p0 * p0 / e_star;
 }
 
+/// QuadratureCheck at each load, for the bodies named "oloid" and the
+/// cylinder; none without both.
+std::vector<QuadratureCheck> check_quadrature(const LifeSettings& s, const LifeResult& r, const Runs& runs,
+                                              const Cell& cell, const std::array<const DepthIntegrals*, 2>& tables,
+                                              const std::array<double, 2>& ratio, const DepthIntegrals& dang_van)
+{
+  std::optional<std::size_t> oloid, cylinder;
+  for (std::size_t b = 0; b < s.bodies.size(); ++b)
+    if (s.bodies[b].name == "oloid")
+      oloid = b;
+    else if (s.bodies[b].spec.body == "cylinder")
+      cylinder = b;
+  if (!oloid || !cylinder)
+    return {};
+  const std::string& energy = value_of(s.grid, cell, "rolling_energy");
+  auto half_run = [&](std::size_t b) {
+    oracle::RollingStudyParameters p;
+    p.barrier_energy_excess = std::stod(energy);
+    p.samples_per_loop = std::max<long>(2, s.samples_per_loop / 2);
+    return oracle::real_rolling(s.bodies[b].spec, p);
+  };
+  const oracle::RealRolling half_oloid = half_run(*oloid), half_cylinder = half_run(*cylinder);
+  std::vector<QuadratureCheck> checks;
+  for (const double load : r.loads_n)
+  {
+    LoopLifeSettings full = loop_settings(s, cell, load), half = full;
+    half.pieces = std::max(1, full.pieces / 2);
+    auto integral = [&](const oracle::RealRolling& run, const LoopLifeSettings& l) {
+      return loop_integrals(run, l, s.constants, tables, ratio, dang_van).lundberg_palmgren[0];
+    };
+    const double slope = s.constants.weibull_slope;
+    QuadratureCheck q{load,
+                      life_ratio(integral(runs[*oloid].at(energy), full), integral(runs[*cylinder].at(energy), full),
+                                 slope).value_or(NAN),
+                      life_ratio(integral(half_oloid, half), integral(half_cylinder, half), slope).value_or(NAN)};
+    if (!(std::abs(q.change()) < 0.05))
+      spdlog::warn("life: the oloid / cylinder life ratio at {:g} N changes by {:+.1f} % from half the loop's "
+                   "quadrature: raise --samples-per-loop and --pieces",
+                   load, 100 * q.change());
+    checks.push_back(q);
+  }
+  return checks;
+}
+
 LifeResult run_life(const LifeSettings& s)
 {
   const auto start = std::chrono::steady_clock::now();
@@ -261,6 +305,7 @@ LifeResult run_life(const LifeSettings& s)
     if (s.bodies[b].spec.body == "cylinder")
       cylinder = b;
   }
+  r.quadrature = check_quadrature(s, r, runs, defaults, tables, ratio, dang_van);
   r.rims = rim_lives(s.rims, s.bodies, default_runs, r.loads_n,
                      [&](double load) { return loop_settings(s, defaults, load); }, s.constants, tables, ratio,
                      r.end_ratios, cylinder);

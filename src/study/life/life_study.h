@@ -3,9 +3,10 @@
 // rolling-contact fatigue life of the bodies of the robustness study
 // (study/robustness/robustness.h) from the subsurface stress of every pass
 // over one loop (loop_life.h), by the stress-volume integrals of
-// Lundberg-Palmgren and Ioannides-Harris (stress_volume.h) with the
-// closed-form field corrected by the FEM's measured ratio
-// (fem_subsurface.h), compared body against body as L10 life ratios at the
+// Lundberg-Palmgren and Ioannides-Harris (stress_volume.h) of the
+// closed-form field, verified against the FEM slice (fem_subsurface.h: its
+// ratio to the closed form scales every body alike and cancels from the
+// ratios), compared body against body as L10 life ratios at the
 // same load and steel over the grid of modelling choices, each with the
 // robustness study's verdict (comparison_verdict.h).
 //
@@ -70,6 +71,19 @@ struct ExponentCheck
   double table_agreement = 0;    ///< direct / tabulated integral - 1 at the middle load
 };
 
+/// The oloid-over-cylinder Lundberg-Palmgren life ratio (orthogonal shear) at
+/// the grid's default cell at one load, at the run's loop quadrature and at
+/// half of it (the loop rolled again at half the samples, half the Gauss
+/// pieces along each ruling): the change says whether the quadrature has
+/// converged (the life follows the highest pressures, which a coarse loop
+/// misses).
+struct QuadratureCheck
+{
+  double load_n = 0;
+  double life_ratio = 0, life_ratio_half = 0;
+  double change() const { return life_ratio / life_ratio_half - 1; }
+};
+
 struct DangVanCheck
 {
   std::string body;
@@ -86,6 +100,7 @@ struct LifeResult
   std::vector<ExponentCheck> exponents;
   std::vector<LifeComparison> comparisons;
   std::vector<DangVanCheck> dang_van;
+  std::vector<QuadratureCheck> quadrature; ///< per load; empty without an oloid and a cylinder
   double dang_van_peak_over_p0 = 0, dang_van_peak_depth_over_b = 0;
   /// Bodies and energies whose run leaves the plane (a rim lifts) before
   /// completing a loop: their cells are not defined (NaN integrals).
