@@ -36,7 +36,7 @@ def score(x, a):  # the preprint's template: (1/A) sum a_i (x_i / sum x - a_i / 
     return np.sum(a * (x / x.sum() - a / a.sum()) ** 2) / a.sum()
 a = cells["face_areas_m2"]
 for name, key in (("accumulated_point_hertz_pressure_pa", result["analytic_sds"]),
-                  ("accumulated_line_hertz_pressure_pa", result["loop"]["line_hertz_sds_rulings"])):
+                  ("accumulated_line_hertz_pressure_pa", result["loop"]["line_hertz_sds_rulings"]["value"])):
     need(cells[name].max() > 0, f"{name}: no face was loaded")
     need(abs(score(cells[name], a) / key - 1) < 1e-9, f"{name}: score {score(cells[name], a)} against the JSON's {key}")
 sys.exit(0 if ok else 1)
