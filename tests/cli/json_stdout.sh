@@ -16,13 +16,15 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_TH
 cd "$tmp" || exit 1
 printf '[scene]\nkind = "mesh"\nbody = "sphere"\nsubdivisions = 1\n' > cases/sphere.toml
 cp "$src/cases/default/geometry_oloids.toml" checked/ # validate: a case with its checks
+# report reads a store; the subcommands run in --help's order, report before batch.
+"$bin" -q batch cases --out prepared -j 1 > /dev/null 2>&1 || { echo "FAIL: the batch for report's store"; fail=1; }
 declare -A line=(
   [mesh]="mesh --body cylinder"
   [oracle]="oracle --body oloid --oracle approx --points 50 --steps 50"
   [run]="run cases/sphere.toml"
   [batch]="batch cases --out batch -j 1"
   [validate]="validate --cases checked --out validate"
-  [report]="report --from batch/results.h5 --out report"
+  [report]="report --from prepared/results.h5 --out report"
   [search]="search --grid quick --points 50 --anchor-points 50 --steps 50 --rows 3"
   [whole-body]="whole-body --scan-directions 30"
   [hertz]="hertz --model axi --refine 0"
