@@ -1,10 +1,10 @@
 """Reading a rollcheck results store (HDF5, layout "rollcheck-results-1").
 
-The layout is documented in src/io/results_store.h and in the README
-("Results store"): /cases/<name>/ per case, with the record's fields as
-attributes, the resolved parameters as attributes of ./parameters, the
-scene's JSON summary mapped to groups and datasets under ./summary, and the
-case's output files in ./files.
+The layout is documented in src/io/results_store.h: /cases/<name>/ per
+case, with the record's fields as attributes, the resolved parameters as
+attributes of ./parameters, the scene's JSON summary mapped to groups and
+datasets under ./summary (each numeric dataset with its declared "units", a
+table with its "columns"), and the case's output files in ./files.
 
 Run with Debian's interpreter, /usr/bin/python3 (matplotlib, h5py).
 """
@@ -21,6 +21,8 @@ class Case:
     parameters: dict                              # resolved parameters of the case file
     summary: dict = field(default_factory=dict)   # the scene's JSON summary, as numpy values
     files: list = field(default_factory=list)     # paths relative to the store's folder
+    units: dict = field(default_factory=dict)     # summary path ("sliding/max_speed_m_s") -> its unit ("m/s")
+    columns: dict = field(default_factory=dict)   # a table's path ("convergence/cds") -> its column names
 
     @property
     def kind(self):
@@ -61,6 +63,20 @@ def _tree(group):
     return out
 
 
+def _field_attributes(group):
+    """The declared unit of every numeric dataset under a summary group and the column names of its tables."""
+    units, columns = {}, {}
+
+    def visit(name, item):
+        if isinstance(item, h5py.Dataset):
+            if "units" in item.attrs:
+                units[name] = _value(item.attrs["units"])
+            if "columns" in item.attrs:
+                columns[name] = _value(item.attrs["columns"]).split(", ")
+    group.visititems(visit)
+    return units, columns
+
+
 def load_cases(path):
     """Every case of the store, in the batch's order, and the store's root attributes."""
     with h5py.File(path, "r") as f:
@@ -68,12 +84,15 @@ def load_cases(path):
         cases = []
         # /cases tracks creation order, so h5py lists the cases in the batch's order.
         for name, g in f["cases"].items():
+            units, columns = _field_attributes(g["summary"]) if "summary" in g else ({}, {})
             cases.append(Case(
                 name=name,
                 attrs=_attrs(g),
                 parameters=_attrs(g["parameters"]) if "parameters" in g else {},
                 summary=_tree(g["summary"]) if "summary" in g else {},
                 files=_value(g["files"][()]) if "files" in g else [],
+                units=units,
+                columns=columns,
             ))
     return root, cases
 

@@ -9,7 +9,9 @@
 # detect_leaks=0: OpenMPI and PETSc keep what MPI_Init and PetscInitialize
 # allocate until exit without freeing it, so LeakSanitizer would report at the
 # end of every test that starts MPI; leaks of our own are not checked here.
-# Usage: scripts/setup/sanitize.sh [ctest arguments...]   (JOBS=N: build/test jobs)
+# TARGETS="test_a test_b": build only those test executables (and what they
+# link) and run only their tests, the light subset on a loaded machine.
+# Usage: scripts/setup/sanitize.sh [ctest arguments...]   (JOBS=N: build/test jobs; TARGETS=...)
 set -euo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
 build=$here/build-asan
@@ -24,9 +26,17 @@ export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:log_path=$reports/ubsan
 export OPENBLAS_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
 (cd "$here" && cmake --preset asan >/dev/null)
-cmake --build "$build" -j "$jobs"
+targets=(${TARGETS:-})
+filter=()
+if ((${#targets[@]})); then
+  cmake --build "$build" -j "$jobs" --target "${targets[@]}"
+  # gtest_discover_tests labels each test with its executable's name.
+  filter=(-L "^($(IFS='|'; echo "${targets[*]}"))\$")
+else
+  cmake --build "$build" -j "$jobs"
+fi
 status=0
-ctest --test-dir "$build" --output-on-failure -j "$jobs" -LE long "$@" || status=$?
+ctest --test-dir "$build" --output-on-failure -j "$jobs" -LE long "${filter[@]}" "$@" || status=$?
 if compgen -G "$reports/*" >/dev/null; then
   for report in "$reports"/*; do
     echo "==== sanitizer report $report" >&2

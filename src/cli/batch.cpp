@@ -13,7 +13,7 @@ io::BatchResult run_scene_batch(const io::BatchSettings& options)
   const io::BatchResult result = io::run_batch(options, [](const std::string& kind, const std::string& origin)
                                                    -> const io::Schema& { return *find_scene(kind, origin).schema; });
   if (result.coordinator)
-    io::print_batch_table(result, stdout);
+    io::print_batch_table(result, summary_stream());
   return result;
 }
 

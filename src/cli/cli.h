@@ -4,6 +4,7 @@
 // below and write results; they hold no physics of their own.
 #include "io/batch_run.h"
 #include "io/parameters.h"
+#include <cstdio>
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <functional>
@@ -95,6 +96,10 @@ void print_summary(const std::string& text);
 
 /// Whether this run's --json writes to stdout (add_command sets it).
 void set_json_on_stdout(bool on_stdout);
+
+/// Where a subcommand prints its result table: stdout, or stderr when
+/// `--json -` has stdout (so that stdout is one JSON document).
+std::FILE* summary_stream();
 
 /// InputError naming the first option in `args` (before any `--`) that neither
 /// the subcommand they name nor the executable has, with the closest known

@@ -6,6 +6,7 @@
 #include "cli/cli.h"
 #include "cli/scenes.h"
 #include "io/batch_report.h"
+#include "io/surface_vtu.h"
 #include "study/loop_scores/fem_sds.h"
 #include "core/atomic_file.h"
 #include <mpi.h>
@@ -109,8 +110,24 @@ const SceneSchema<FemSdsSettings>& fem_sds_schema()
         .unbound({"out", "--out", std::string(), "",
                   "Folder for fem_sds.json, table.md and the plots (written whole or not at all); empty: none"})
         .unbound({"python", "--python", std::string("/usr/bin/python3"), "",
-                  "Python with matplotlib for the plots (Debian's)"});
+                  "Python with matplotlib for the plots (Debian's)"})
+        .unbound({"vtu_file", "--vtu", std::string(), "",
+                  "Write the body with its per-face loop sums (point-Hertz and line-Hertz pressure accumulated over "
+                  "every sample, face areas) as named cell data to this .vtu (ParaView, meshio); empty: none",
+                  {}, {}, true});
   });
+}
+
+/// The loop's per-face sums (every rank's, study/loop_scores/loop_sds.h
+/// LoopSamples) on the body's faces as a VTU's cell data (io/surface_vtu.h):
+/// the accumulated pressures whose spread over the faces the SDS scores.
+void write_face_sums(const std::string& path, const FemSdsSettings& settings,
+                     const study::loop_scores::LoopSamples& samples)
+{
+  io::write_surface_vtu(path, geometry::make_body(settings.body),
+                        {{"face_areas_m2", samples.face_areas},
+                         {"accumulated_point_hertz_pressure_pa", samples.point_all},
+                         {"accumulated_line_hertz_pressure_pa", samples.line_all}});
 }
 
 nlohmann::json run_fem_sds(const io::Parameters& params)
@@ -120,6 +137,8 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
   if (process_rank() != 0)
     return j;
   print_summary(study::loop_scores::report(result));
+  if (const std::string& vtu = params.text("vtu_file"); !vtu.empty())
+    write_face_sums(vtu, fem_sds_schema().bind(params), result.loop_samples);
   if (const std::string& out = params.text("out"); !out.empty())
     io::draw_folder(out, params.text("python"), io::default_scripts_folder() / "plot_fem_orientations.py", {},
                     "plot.log", [&](const std::filesystem::path& folder) {
@@ -133,6 +152,6 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
 void add_fem_sds_command(CLI::App& app)
 {
   add_scene_command(app, fem_sds_schema(), run_fem_sds);
-  declare_outputs(fem_sds_schema().schema(), {{"out", OutputKind::folder}});
+  declare_outputs(fem_sds_schema().schema(), {{"out", OutputKind::folder}, {"vtu_file", OutputKind::file}});
 }
 } // namespace rollcheck::cli

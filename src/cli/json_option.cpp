@@ -17,6 +17,8 @@ bool json_on_stdout = false;
 
 void set_json_on_stdout(bool on_stdout) { json_on_stdout = on_stdout; }
 
+std::FILE* summary_stream() { return json_on_stdout ? stderr : stdout; }
+
 void print_summary(const std::string& text)
 {
   if (process_rank() != 0)

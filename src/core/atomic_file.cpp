@@ -134,6 +134,12 @@ void write_atomically(const fs::path& target, const std::function<void(const fs:
     fsync(fd), close(fd);
 }
 
+void move_into_place(const fs::path& from, const fs::path& target)
+{
+  flush_to_disk(from, target);
+  rename_checked(from, target);
+}
+
 void write_file_atomically(const fs::path& target, std::string_view bytes)
 {
   write_atomically(target, [&](const fs::path& tmp) {

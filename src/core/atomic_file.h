@@ -23,6 +23,11 @@ namespace rollcheck
 void write_atomically(const std::filesystem::path& target,
                       const std::function<void(const std::filesystem::path&)>& fill);
 
+/// Moves the finished file `from` (written beside `target` by a writer of
+/// its own, as DOLFINx's XDMFFile) over `target`: flushed to the disk, then
+/// renamed; ComputationError naming `target` if either fails.
+void move_into_place(const std::filesystem::path& from, const std::filesystem::path& target);
+
 /// Writes `bytes` to `target` through write_atomically, every write(2) and the
 /// close checked: ComputationError naming `target` (with the system's reason,
 /// "No space left on device") if any fails.

@@ -1,9 +1,12 @@
 #include "fem/write_fields.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include <dolfinx/fem/FunctionSpace.h>
 #include <dolfinx/mesh/Mesh.h>
 #include <fmt/format.h>
+#include <hdf5.h>
 #include <pugixml.hpp>
+#include <sstream>
 #include <string_view>
 #include <unistd.h>
 
@@ -73,8 +76,11 @@ void join_collections(const std::filesystem::path& xdmf)
       mesh.append_copy(field);
     domain.remove_child(collections.front());
   }
-  if (!doc.save_file(xdmf.c_str(), "  "))
-    throw ComputationError(fmt::format("cannot write '{}'", xdmf.string()));
+  // pugixml's save_file does not see a write that fails when its buffer is
+  // flushed (a full disk): the text goes through the checked writer.
+  std::ostringstream text;
+  doc.save(text, "  ");
+  write_file_atomically(xdmf, text.str());
 }
 
 /// Every rank's failure becomes every rank's: a collective step that failed
@@ -86,10 +92,20 @@ void agree(MPI_Comm comm, bool failed, const std::string& what)
   if (any)
     throw ComputationError(fmt::format("writing fields: {}", what));
 }
+
+/// What DOLFINx's writer threw (std::runtime_error "Failed to create HDF5
+/// file.", from HDF5 on a full disk or a vanished folder) as a failed
+/// computation naming the file.
+ComputationError write_failure(const std::filesystem::path& target, const std::exception& e)
+{
+  return ComputationError(fmt::format("cannot write the fields '{}': {}", target.string(), e.what()));
+}
 } // namespace
 
 FieldSeries::FieldSeries(MPI_Comm comm, const std::filesystem::path& xdmf_path) : comm_(comm), target_(xdmf_path)
 {
+  // Our messages name the file; HDF5's own error stack would only repeat it.
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   // One temporary folder for all ranks, named by rank 0's process.
@@ -100,12 +116,39 @@ FieldSeries::FieldSeries(MPI_Comm comm, const std::filesystem::path& xdmf_path) 
   if (rank == 0)
     std::filesystem::create_directories(folder_, error);
   agree(comm, static_cast<bool>(error), fmt::format("cannot create '{}': {}", folder_.string(), error.message()));
-  file_ = std::make_unique<dolfinx::io::XDMFFile>(comm, folder_ / target_.filename(), "w");
+  try
+  {
+    file_ = std::make_unique<dolfinx::io::XDMFFile>(comm, folder_ / target_.filename(), "w");
+  }
+  catch (const std::exception& e)
+  {
+    remove_folder();
+    throw write_failure(target_, e);
+  }
 }
 
 FieldSeries::~FieldSeries()
 {
+  // After a failed write, closing the HDF5 file fails again and would throw
+  // out of this destructor: the writer is abandoned (its handle stays open
+  // until the process ends) and only the temporary folder is removed.
+  if (file_ && !failed_)
+    try
+    {
+      file_->close();
+    }
+    catch (const std::exception&)
+    {
+      failed_ = true;
+    }
+  if (failed_)
+    static_cast<void>(file_.release());
   file_.reset();
+  remove_folder();
+}
+
+void FieldSeries::remove_folder()
+{
   int rank = 0;
   MPI_Comm_rank(comm_, &rank);
   std::error_code ignored;
@@ -115,19 +158,35 @@ FieldSeries::~FieldSeries()
 
 void FieldSeries::write(const NodalFields& fields, int step)
 {
-  if (!mesh_written_)
+  try
   {
-    file_->write_mesh(*fields.pressure->function_space()->mesh());
-    mesh_written_ = true;
+    if (!mesh_written_)
+    {
+      file_->write_mesh(*fields.pressure->function_space()->mesh());
+      mesh_written_ = true;
+    }
+    for (const auto& field : {fields.displacement, stress_in_mesh_axes(*fields.stress), fields.von_mises,
+                              fields.max_shear, fields.pressure})
+      file_->write_function(*field, step);
   }
-  for (const auto& field : {fields.displacement, stress_in_mesh_axes(*fields.stress), fields.von_mises,
-                            fields.max_shear, fields.pressure})
-    file_->write_function(*field, step);
+  catch (const std::exception& e)
+  {
+    failed_ = true;
+    throw write_failure(target_, e);
+  }
 }
 
 void FieldSeries::close()
 {
-  file_->close();
+  try
+  {
+    file_->close(); // HDF5 writes what it buffered here: a full disk fails here
+  }
+  catch (const std::exception& e)
+  {
+    failed_ = true;
+    throw write_failure(target_, e);
+  }
   file_.reset();
   int rank = 0;
   MPI_Comm_rank(comm_, &rank);
@@ -140,8 +199,8 @@ void FieldSeries::close()
       std::filesystem::path h5 = target_;
       h5.replace_extension(".h5");
       // The .h5 first: the .xdmf, which names it, appears only when its data are in place.
-      std::filesystem::rename(folder_ / h5.filename(), h5);
-      std::filesystem::rename(folder_ / target_.filename(), target_);
+      move_into_place(folder_ / h5.filename(), h5);
+      move_into_place(folder_ / target_.filename(), target_);
     }
     catch (const std::exception& e)
     {

@@ -19,8 +19,11 @@
 // recovery, fem/nodal_fields.h, orders it (r, theta, z).)
 //
 // The pair is written whole or not at all: into a temporary folder beside
-// the target, moved into place by close(); the target's folder was checked
-// before any computation by the scene's setup (fem::validate).
+// the target, flushed to the disk and moved into place by close(); the
+// target's folder was checked before any computation by the scene's setup
+// (fem::validate). A write that fails (a full disk, the folder gone) is a
+// ComputationError naming the target (exit 1); the temporary folder is
+// removed and a previous NAME.xdmf / NAME.h5 stay as they were.
 #include "fem/nodal_fields.h"
 #include <dolfinx/io/XDMFFile.h>
 #include <filesystem>
@@ -45,10 +48,14 @@ public:
   void close();
 
 private:
+  void remove_folder();
+
   MPI_Comm comm_;
   std::filesystem::path target_, folder_;
   std::unique_ptr<dolfinx::io::XDMFFile> file_;
   bool mesh_written_ = false;
+  bool failed_ = false; ///< a write or the close failed: the writer cannot be closed again
+
 };
 
 /// The fields of one state, as a series of one step.

@@ -1,9 +1,11 @@
 #include "io/results_store.h"
 #include "io/hdf5_handle.h"
+#include "io/result_fields.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "rollcheck_version.h"
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <limits>
 #include <hdf5.h>
 #include <optional>
@@ -108,20 +110,6 @@ void flatten(const nlohmann::json& node, std::vector<const nlohmann::json*>& lea
 
 void write_attribute(hid_t object, const std::string& name, const nlohmann::json& value);
 
-/// The unit a key's suffix names (docs/guide/command-line.md#conventions: keys carry their
-/// unit), "1" for a pure number or a count.
-std::string unit_of(const std::string& key)
-{
-  static const std::vector<std::pair<std::string, std::string>> suffixes = {
-      {"_n_per_m", "N/m"}, {"_rad_s", "rad/s"}, {"_m2", "m^2"}, {"_m3", "m^3"}, {"_pa", "Pa"}, {"_mpa", "MPa"},
-      {"_kg", "kg"},       {"_deg", "deg"},     {"_rad", "rad"}, {"_mb", "MB"},  {"_m", "m"},   {"_s", "s"},
-      {"_n", "N"}};
-  for (const auto& [suffix, unit] : suffixes)
-    if (key.size() > suffix.size() && key.ends_with(suffix))
-      return unit;
-  return "1";
-}
-
 /// "inf" / "-inf" (the JSON form of an infinite result, core/json_number.h)
 /// back to floats, so the store holds numbers as numbers.
 nlohmann::json restore_infinities(const nlohmann::json& value)
@@ -136,7 +124,17 @@ nlohmann::json restore_infinities(const nlohmann::json& value)
   return copy;
 }
 
-void write_numeric(hid_t parent, const std::string& name, const nlohmann::json& value, const NumericArray& array)
+/// The attributes the record's schema gives a numeric dataset
+/// (io/result_fields.h): its unit, and a table's column names.
+void write_field_attributes(hid_t set, const ResultField& field)
+{
+  write_attribute(set, "units", field.unit);
+  if (!field.columns.empty())
+    write_attribute(set, "columns", fmt::format("{}", fmt::join(field.columns, ", ")));
+}
+
+void write_numeric(hid_t parent, const std::string& name, const nlohmann::json& value, const NumericArray& array,
+                   const ResultField& field)
 {
   std::vector<const nlohmann::json*> leaves;
   flatten(value, leaves);
@@ -149,7 +147,7 @@ void write_numeric(hid_t parent, const std::string& name, const nlohmann::json& 
                H5Dclose, "create dataset " + name);
     if (!leaves.empty())
       check(H5Dwrite(set, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "write dataset " + name);
-    write_attribute(set, "units", unit_of(name));
+    write_field_attributes(set, field);
   };
   switch (array.element)
   {
@@ -246,20 +244,25 @@ Handle create_group(hid_t parent, const std::string& name)
                 "create group " + name);
 }
 
-void write_json_value(hid_t parent, const std::string& name, const nlohmann::json& value);
+void write_json_value(hid_t parent, const std::string& parent_name, const std::string& name,
+                      const nlohmann::json& value);
 
-void write_json_tree(hid_t group, const nlohmann::json& object)
+/// The members of `object` into `group`, named `group_name` (the field
+/// schema's context: convergence/cds is a table).
+void write_json_tree(hid_t group, const std::string& group_name, const nlohmann::json& object)
 {
   for (const auto& [key, value] : object.items())
-    write_json_value(group, link_name(key), value);
+    write_json_value(group, group_name, link_name(key), value);
 }
 
-void write_json_value(hid_t parent, const std::string& name, const nlohmann::json& value)
+void write_json_value(hid_t parent, const std::string& parent_name, const std::string& name,
+                      const nlohmann::json& value)
 {
+  const ResultField field = result_field(parent_name, name);
   if (value.is_object())
   {
     const Handle group = create_group(parent, name);
-    write_json_tree(group, value);
+    write_json_tree(group, name, value);
   }
   else if (value.is_null())
   {
@@ -270,11 +273,15 @@ void write_json_value(hid_t parent, const std::string& name, const nlohmann::jso
   else if (value.is_string())
     write_strings(parent, name, {value.get<std::string>()}, true);
   else if (value.is_boolean() || value.is_number())
-    write_numeric(parent, name, value, NumericArray{{}, value.is_boolean() ? Element::boolean
-                                                        : value.is_number_float() ? Element::real
-                                                                                  : Element::integer});
+    write_numeric(parent, name, value,
+                  NumericArray{{}, value.is_boolean()        ? Element::boolean
+                                   : value.is_number_float() ? Element::real
+                                                             : Element::integer},
+                  field);
+  else if (field.text_list && value.empty())
+    write_strings(parent, name, {}, false);
   else if (const std::optional<NumericArray> array = numeric_array(value))
-    write_numeric(parent, name, value, *array);
+    write_numeric(parent, name, value, *array, field);
   else if (std::all_of(value.begin(), value.end(), [](const nlohmann::json& x) { return x.is_string(); }))
     write_strings(parent, name, value.get<std::vector<std::string>>(), false);
   else
@@ -282,8 +289,26 @@ void write_json_value(hid_t parent, const std::string& name, const nlohmann::jso
     const Handle group = create_group(parent, name);
     write_attribute(group, "json_array", 1);
     for (std::size_t i = 0; i < value.size(); ++i)
-      write_json_value(group, std::to_string(i), value[i]);
+      write_json_value(group, name, std::to_string(i), value[i]);
   }
+}
+
+/// The resolved parameters as the store records them: each input file's
+/// SHA-256 beside its path (KEY_sha256, from the record's `inputs`), and a
+/// body read from a mesh file named by that file, not by the body option the
+/// mesh file overrode.
+nlohmann::json stored_parameters(const nlohmann::json& record)
+{
+  nlohmann::json parameters = record.at("parameters");
+  if (!record.contains("inputs"))
+    return parameters;
+  for (const auto& [key, input] : record.at("inputs").items())
+  {
+    parameters[key + "_sha256"] = input.at("sha256");
+    if (key == "mesh_file" && parameters.contains("body"))
+      parameters["body"] = input.at("file");
+  }
+  return parameters;
 }
 
 void write_case(hid_t cases, const StoreEntry& entry)
@@ -294,13 +319,14 @@ void write_case(hid_t cases, const StoreEntry& entry)
     if (key == "parameters")
     {
       const Handle parameters = create_group(group, "parameters");
-      for (const auto& [name, parameter] : value.items())
+      const nlohmann::json stored = stored_parameters(entry.record);
+      for (const auto& [name, parameter] : stored.items())
         write_attribute(parameters, link_name(name), parameter);
     }
     else if (key == "summary")
     {
       const Handle summary = create_group(group, "summary");
-      write_json_tree(summary, restore_infinities(value));
+      write_json_tree(summary, "summary", restore_infinities(value));
     }
     else if (key == "files")
       write_strings(group, "files", value.get<std::vector<std::string>>(), false);

@@ -10,7 +10,9 @@
 //                          attrs: the record's scalar fields (status, message,
 //                                 case_file, case_text (the case file as run),
 //                                 hash, kind, wall_s, ...)
-//   /cases/<name>/parameters   attrs: the resolved parameters, one per key, typed
+//   /cases/<name>/parameters   attrs: the resolved parameters, one per key, typed;
+//                              an input file's SHA-256 as KEY_sha256 (mesh_file_sha256),
+//                              and body = the mesh file's path when a mesh file was read
 //   /cases/<name>/summary/     the scene's JSON summary, mapped by
 //   /cases/<name>/files        the output files of the case (paths relative to
 //                              the store's folder), a string dataset
@@ -18,8 +20,10 @@
 // JSON -> HDF5 mapping of a summary (write_json_tree):
 //   object                     -> group
 //   number                     -> scalar dataset, int64 or float64; every numeric
-//                                 dataset has an attribute "units" (from the
-//                                 key's suffix: _m -> m, _pa -> Pa, ...; "1" else)
+//                                 dataset has an attribute "units", the unit the
+//                                 record's schema declares for its field
+//                                 (io/result_fields.h; "1" for a pure number),
+//                                 and a table (convergence/*) "columns"
 //   "inf" / "-inf"             -> float64 +-infinity (numbers stay numbers)
 //   true/false                 -> scalar dataset of the enum {FALSE, TRUE} (numpy bool)
 //   string                     -> scalar dataset, variable-length UTF-8
@@ -27,7 +31,8 @@
 //   rectangular numeric array  -> n-d dataset (int64 if every entry is an
 //                                 integer or a boolean, else float64;
 //                                 booleans alone give the enum)
-//   array of strings           -> 1-d variable-length string dataset
+//   array of strings           -> 1-d variable-length string dataset (also an
+//                                 empty list the schema declares text: flags)
 //   any other array            -> group with attribute json_array = 1 and
 //                                 members "0", "1", ... mapped the same way
 // A '/' in a key (illegal in HDF5 names) becomes '_'.

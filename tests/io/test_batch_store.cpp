@@ -96,12 +96,23 @@ TEST(ResultsStore, NumbersCarryUnitsAndInfinitiesAreFloats)
   record["summary"]["tds"] = "inf";
   record["summary"]["bounds_pa"] = {"-inf", 1.0, "inf"};
   record["case_text"] = "[scene]\nkind = \"mesh\"\n";
+  record["summary"]["sliding"] = {{"max_speed_m_s", 0.4}};
+  record["summary"]["curvature"] = {{"face_mean_curvature_mean_per_m", 1.2}, {"face_gaussian_curvature_mean_per_m2", 0.8}};
+  record["summary"]["convergence"] = {{"cds", {{50, 0.1}, {100, 0.05}}}};
+  record["summary"]["flags"] = nlohmann::json::array();
   const fs::path store = fresh_folder("units") / "results.h5";
   io::write_results_store(store, {{"oloid", record}}, {{"n_cases", 1}});
   const Hdf5TestReader r(store);
   const std::string s = "/cases/oloid/summary/";
-  // Units from the key's suffix, "1" for a pure number, on every numeric dataset.
+  // Units the record's schema declares (io/result_fields.h), "1" for a pure
+  // number, on every numeric dataset; compound units whole, not their last word.
   EXPECT_EQ(r.string_attribute(s + "profile/p_pa", "units"), "Pa");
+  EXPECT_EQ(r.string_attribute(s + "sliding/max_speed_m_s", "units"), "m/s");
+  EXPECT_EQ(r.string_attribute(s + "curvature/face_mean_curvature_mean_per_m", "units"), "1/m");
+  EXPECT_EQ(r.string_attribute(s + "curvature/face_gaussian_curvature_mean_per_m2", "units"), "1/m^2");
+  // A table has its columns; an empty list of flags is text, not numbers.
+  EXPECT_EQ(r.string_attribute(s + "convergence/cds", "columns"), "samples, score");
+  EXPECT_EQ(r.type_class(s + "flags"), H5T_STRING);
   EXPECT_EQ(r.string_attribute(s + "profile/r_m", "units"), "m");
   EXPECT_EQ(r.string_attribute(s + "cds", "units"), "1");
   EXPECT_EQ(r.string_attribute(s + "n_faces", "units"), "1");
