@@ -35,4 +35,10 @@ PY
 # Refused before any computation: real rolling has no per-face scores; a folder as the file.
 refuses oracle "--oracle rolling --body oloid --vtu $tmp/r.vtu:--vtu" "--vtu $tmp:option --vtu"
 check '[[ ! -e $tmp/r.vtu ]]' "a refused --vtu wrote a file"
+# A write that fails (the file size limit, as a full disk would) is a failed
+# computation: exit 1 naming the file, no file and no temporary left.
+(trap '' XFSZ; ulimit -f 160; "$bin" -q oracle --body oloid --vtu "$tmp/small.vtu" > "$tmp/small.log" 2>&1)
+rc=$?
+check '[[ $rc -eq 1 ]] && grep -q "small.vtu" "$tmp/small.log"' "a failed VTU write gave exit $rc: $(head -c 300 "$tmp/small.log")"
+check '[[ ! -e $tmp/small.vtu ]] && [[ -z $(ls -A "$tmp" | grep "tmp") ]]' "a failed VTU write left a file"
 exit $fail
