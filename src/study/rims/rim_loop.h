@@ -23,9 +23,8 @@
 // geometrically spaced R across the range of the loop's ends (its columns),
 // all at the directly modelled ends' median q, interpolated linearly in the
 // angle and in log R. A rounded end's ratio depends on r_e /
-// R (its boundary layer s / b = 2 r_e / (pi R)) far more than on q: at the
-// preprint's body's 91.9 deg end, with b held, 2.353, 2.888 and 3.58 at R =
-// 2.96, 5.93 and 11.9 mm; with R held, 2.802 at twice q (docs/results/rim-ends.md#a-rounded-ends-ratio-against-r-and-q). A
+// R (its boundary layer s / b = 2 r_e / (pi R)) far more than on q
+// (measured: docs/results/rim-ends.md#a-rounded-ends-ratio-against-r-and-q). A
 // sharp edge's ratio has no such length: one column, at the median q and R.
 // The table is a reduction and is checked twice: against the direct end
 // models at their own q and R (`table_vs_direct`), and by the end-aware
@@ -43,8 +42,8 @@
 // end's pressure is the table's peak at its angle (interpolated: the
 // ends near the flattest are one family per side, whose c, q and R follow
 // the angle) times the slices' factor. The straight rim of the FEM end
-// model is the weaker reduction there: on the oloid at 170 deg it gives
-// 1.92-1.97 where the body's own end gives 1.49-1.53 (docs/methods/flat-rim.md).
+// model is the weaker reduction there: it overstates the oloid's flattest
+// ends' pressure against the body's own end (docs/methods/flat-rim.md).
 // A side on a short ruling whose shortened window does not converge is
 // solved over its whole loaded ruling instead (study::needs_whole_ruling).
 //
