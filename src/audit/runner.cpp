@@ -9,6 +9,7 @@
 #include <fstream>
 #include <functional>
 #include <mutex>
+#include <numeric>
 #include <spdlog/spdlog.h>
 #include <thread>
 
@@ -32,6 +33,28 @@ std::string run_one(const CommandArgs& args, const std::filesystem::path& rollch
   std::ifstream in(json_path);
   output = nlohmann::json::parse(in, nullptr, false);
   return output.is_discarded() ? fmt::format("unreadable JSON output in {}", json_path.string()) : "";
+}
+
+/// Subcommands that run for tens of seconds (FEM loops, searches over rolling
+/// loops, the grid of modelling choices), longest first. The runner starts
+/// them before the short ones, so that the short commands fill the other
+/// workers around them instead of one long command running alone at the end
+/// (longest-processing-time-first scheduling).
+const std::vector<std::string> long_subcommands = {"optimize", "rim", "robustness", "fem-sds", "search", "hertz"};
+
+/// The indices of `commands` in the order they start: the long subcommands
+/// first, in the order of long_subcommands, each group in citation order.
+std::vector<std::size_t> start_order(const std::vector<CommandArgs>& commands)
+{
+  auto rank = [&](std::size_t i) {
+    const auto it = commands[i].empty() ? long_subcommands.end()
+                                        : std::find(long_subcommands.begin(), long_subcommands.end(), commands[i][0]);
+    return it - long_subcommands.begin();
+  };
+  std::vector<std::size_t> order(commands.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rank(a) < rank(b); });
+  return order;
 }
 
 /// A fresh folder for the commands' JSON files, removed with it.
@@ -94,12 +117,15 @@ std::vector<CommandOutput> run_commands(const std::vector<CommandArgs>& commands
   const ScratchFolder scratch;
   std::vector<nlohmann::json> outputs(commands.size());
   std::vector<std::string> errors(commands.size());
+  const std::vector<std::size_t> order = start_order(commands);
   std::atomic<std::size_t> next{0};
   std::mutex log_mutex;
   std::size_t done = 0;
   auto worker = [&] {
-    for (std::size_t i = next++; i < commands.size(); i = next++)
+    for (std::size_t k = next++; k < commands.size(); k = next++)
     {
+      const std::size_t i = order[k];
+      const auto start = std::chrono::steady_clock::now();
       try
       {
         errors[i] = run_one(commands[i], rollcheck, scratch.path / (command_id(i) + ".json"), outputs[i]);
@@ -109,7 +135,8 @@ std::vector<CommandOutput> run_commands(const std::vector<CommandArgs>& commands
         errors[i] = e.what();
       }
       std::lock_guard lock(log_mutex);
-      spdlog::info("audit [{}/{}] {}", ++done, commands.size(), command_line(commands[i]));
+      spdlog::info("audit [{}/{}] {} {} ({:.1f} s)", ++done, commands.size(), command_id(i), command_line(commands[i]),
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
   };
   std::vector<std::thread> pool;

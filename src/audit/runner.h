@@ -22,8 +22,10 @@ struct AuditSettings
 std::vector<CommandArgs> distinct_commands(const std::vector<Claim>& claims);
 
 /// Runs each command as `rollcheck -q ARGS --json FILE` with the executable
-/// `rollcheck`, `threads` at a time, FILE in a scratch folder removed after,
-/// and parses FILE (the JSON the listed `--json -` prints). A command that
+/// `rollcheck`, `threads` at a time (the long subcommands, optimize, rim,
+/// robustness, fem-sds, search and hertz, started first; the outputs stay in
+/// the commands' order), FILE in a scratch folder removed after, and parses
+/// FILE (the JSON the listed `--json -` prints). A command that
 /// fails or writes no JSON is a ComputationError naming it, with its stderr.
 std::vector<CommandOutput> run_commands(const std::vector<CommandArgs>& commands,
                                         const std::filesystem::path& rollcheck, unsigned threads);
