@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <fstream>
 #include <functional>
 #include <mutex>
@@ -15,10 +16,10 @@
 
 namespace rollcheck::audit
 {
-namespace
-{
 std::string command_id(std::size_t i) { return fmt::format("c{}", i + 1); }
 
+namespace
+{
 /// Runs one command with its JSON written to `json_path` (not to stdout:
 /// `search` prints its table there too); the error text when it failed.
 std::string run_one(const CommandArgs& args, const std::filesystem::path& rollcheck,
@@ -93,6 +94,20 @@ Judgement decide_truth(const AuditClaim& claim, const TruthSource& source,
   return j;
 }
 } // namespace
+
+std::vector<Claim> select_claims(std::vector<Claim> all, const std::vector<std::string>& ids)
+{
+  if (ids.empty())
+    return all;
+  std::vector<std::string> known;
+  for (const Claim& claim : all)
+    known.push_back(claim.id);
+  for (const std::string& id : ids)
+    if (std::find(known.begin(), known.end(), id) == known.end())
+      throw InputError(fmt::format("option --claims: no claim '{}'; the claims are {}", id, fmt::join(known, ", ")));
+  std::erase_if(all, [&](const Claim& claim) { return std::find(ids.begin(), ids.end(), claim.id) == ids.end(); });
+  return all;
+}
 
 std::vector<CommandArgs> distinct_commands(const std::vector<Claim>& claims)
 {
@@ -206,10 +221,11 @@ AuditTable decide_claims(const std::vector<Claim>& claims, std::vector<CommandOu
   return table;
 }
 
-AuditTable run_audit(const AuditSettings& settings, const std::filesystem::path& rollcheck)
+AuditTable run_audit(const AuditSettings& settings, const std::filesystem::path& rollcheck,
+                     std::vector<CommandOutput>* kept)
 {
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<Claim> claims = audit_claims(settings.reference_meshes, settings.quick);
+  const std::vector<Claim> claims = select_claims(audit_claims(settings.reference_meshes, settings.quick), settings.claims);
   const std::vector<CommandArgs> commands = distinct_commands(claims);
   const unsigned threads = settings.threads ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
   spdlog::info("audit: {} commands on {} threads", commands.size(), threads);
@@ -219,6 +235,8 @@ AuditTable run_audit(const AuditSettings& settings, const std::filesystem::path&
   table.verdict_rules = audit_verdict_rules();
   table.quick = settings.quick;
   table.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (kept)
+    *kept = std::move(outputs);
   return table;
 }
 } // namespace rollcheck::audit

@@ -4,6 +4,7 @@
 // log is the start order: the long subcommands first, in the order of
 // their cost, the others in the order they are cited; the outputs come
 // back in the commands' order all the same, and a failing command is named.
+// --claims: the claims named, in the table's order; an unknown id refused.
 #include "core/error.h"
 #include "audit/runner.h"
 #include <filesystem>
@@ -70,5 +71,27 @@ TEST(AuditRunner, AFailedCommandIsNamedWithItsIdAndStderr)
     const std::string what = e.what();
     EXPECT_NE(what.find("c2 `rollcheck fail 2 --json -`"), std::string::npos) << what;
     EXPECT_NE(what.find("broken"), std::string::npos) << what;
+  }
+}
+
+TEST(AuditRunner, SelectsClaimsInTheTablesOrderAndRefusesAnUnknownId)
+{
+  const std::vector<Claim> all = {Claim{"first"}, Claim{"second"}, Claim{"third"}};
+  auto ids = [](const std::vector<Claim>& claims) {
+    std::vector<std::string> out;
+    for (const Claim& c : claims)
+      out.push_back(c.id);
+    return out;
+  };
+  EXPECT_EQ(ids(select_claims(all, {})), (std::vector<std::string>{"first", "second", "third"}));
+  EXPECT_EQ(ids(select_claims(all, {"third", "first"})), (std::vector<std::string>{"first", "third"}));
+  try
+  {
+    select_claims(all, {"second", "fourth"});
+    FAIL() << "no error";
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_EQ(std::string(e.what()), "option --claims: no claim 'fourth'; the claims are first, second, third");
   }
 }
