@@ -6,18 +6,20 @@
 #include <chrono>
 #include <cstdlib>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <fstream>
 #include <functional>
 #include <mutex>
+#include <numeric>
 #include <spdlog/spdlog.h>
 #include <thread>
 
 namespace rollcheck::audit
 {
-namespace
-{
 std::string command_id(std::size_t i) { return fmt::format("c{}", i + 1); }
 
+namespace
+{
 /// Runs one command with its JSON written to `json_path` (not to stdout:
 /// `search` prints its table there too); the error text when it failed.
 std::string run_one(const CommandArgs& args, const std::filesystem::path& rollcheck,
@@ -32,6 +34,28 @@ std::string run_one(const CommandArgs& args, const std::filesystem::path& rollch
   std::ifstream in(json_path);
   output = nlohmann::json::parse(in, nullptr, false);
   return output.is_discarded() ? fmt::format("unreadable JSON output in {}", json_path.string()) : "";
+}
+
+/// Subcommands that run for tens of seconds (FEM loops, searches over rolling
+/// loops, the grid of modelling choices), longest first. The runner starts
+/// them before the short ones, so that the short commands fill the other
+/// workers around them instead of one long command running alone at the end
+/// (longest-processing-time-first scheduling).
+const std::vector<std::string> long_subcommands = {"optimize", "rim", "robustness", "fem-sds", "search", "hertz"};
+
+/// The indices of `commands` in the order they start: the long subcommands
+/// first, in the order of long_subcommands, each group in citation order.
+std::vector<std::size_t> start_order(const std::vector<CommandArgs>& commands)
+{
+  auto rank = [&](std::size_t i) {
+    const auto it = commands[i].empty() ? long_subcommands.end()
+                                        : std::find(long_subcommands.begin(), long_subcommands.end(), commands[i][0]);
+    return it - long_subcommands.begin();
+  };
+  std::vector<std::size_t> order(commands.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rank(a) < rank(b); });
+  return order;
 }
 
 /// A fresh folder for the commands' JSON files, removed with it.
@@ -71,6 +95,20 @@ Judgement decide_truth(const AuditClaim& claim, const TruthSource& source,
 }
 } // namespace
 
+std::vector<Claim> select_claims(std::vector<Claim> all, const std::vector<std::string>& ids)
+{
+  if (ids.empty())
+    return all;
+  std::vector<std::string> known;
+  for (const Claim& claim : all)
+    known.push_back(claim.id);
+  for (const std::string& id : ids)
+    if (std::find(known.begin(), known.end(), id) == known.end())
+      throw InputError(fmt::format("option --claims: no claim '{}'; the claims are {}", id, fmt::join(known, ", ")));
+  std::erase_if(all, [&](const Claim& claim) { return std::find(ids.begin(), ids.end(), claim.id) == ids.end(); });
+  return all;
+}
+
 std::vector<CommandArgs> distinct_commands(const std::vector<Claim>& claims)
 {
   std::vector<CommandArgs> commands;
@@ -94,12 +132,15 @@ std::vector<CommandOutput> run_commands(const std::vector<CommandArgs>& commands
   const ScratchFolder scratch;
   std::vector<nlohmann::json> outputs(commands.size());
   std::vector<std::string> errors(commands.size());
+  const std::vector<std::size_t> order = start_order(commands);
   std::atomic<std::size_t> next{0};
   std::mutex log_mutex;
   std::size_t done = 0;
   auto worker = [&] {
-    for (std::size_t i = next++; i < commands.size(); i = next++)
+    for (std::size_t k = next++; k < commands.size(); k = next++)
     {
+      const std::size_t i = order[k];
+      const auto start = std::chrono::steady_clock::now();
       try
       {
         errors[i] = run_one(commands[i], rollcheck, scratch.path / (command_id(i) + ".json"), outputs[i]);
@@ -109,7 +150,8 @@ std::vector<CommandOutput> run_commands(const std::vector<CommandArgs>& commands
         errors[i] = e.what();
       }
       std::lock_guard lock(log_mutex);
-      spdlog::info("audit [{}/{}] {}", ++done, commands.size(), command_line(commands[i]));
+      spdlog::info("audit [{}/{}] {} {} ({:.1f} s)", ++done, commands.size(), command_id(i), command_line(commands[i]),
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
   };
   std::vector<std::thread> pool;
@@ -179,10 +221,11 @@ AuditTable decide_claims(const std::vector<Claim>& claims, std::vector<CommandOu
   return table;
 }
 
-AuditTable run_audit(const AuditSettings& settings, const std::filesystem::path& rollcheck)
+AuditTable run_audit(const AuditSettings& settings, const std::filesystem::path& rollcheck,
+                     std::vector<CommandOutput>* kept)
 {
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<Claim> claims = audit_claims(settings.reference_meshes, settings.quick);
+  const std::vector<Claim> claims = select_claims(audit_claims(settings.reference_meshes, settings.quick), settings.claims);
   const std::vector<CommandArgs> commands = distinct_commands(claims);
   const unsigned threads = settings.threads ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
   spdlog::info("audit: {} commands on {} threads", commands.size(), threads);
@@ -192,6 +235,8 @@ AuditTable run_audit(const AuditSettings& settings, const std::filesystem::path&
   table.verdict_rules = audit_verdict_rules();
   table.quick = settings.quick;
   table.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (kept)
+    *kept = std::move(outputs);
   return table;
 }
 } // namespace rollcheck::audit

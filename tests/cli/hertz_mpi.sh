@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # MPI: 1 and 2 ranks give the same a and p0 to 1e-6 (axisymmetric with MUMPS;
-# 3D with GMRES + GAMG), and the default 3D hemisphere on 2 ranks meets the
-# issue's tolerances: a within 1 %, p0 within 2 %, force within 1e-4.
+# 3D with GMRES + GAMG). The default 3D hemisphere's tolerances on 2 ranks are
+# hertz_mpi_default.sh (label long); serially, tests/fem/test_hertz_solid.cpp.
 set -u
 source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
@@ -12,7 +12,6 @@ mpi="mpirun -n 2 --oversubscribe"
 $mpi "$bin" -q hertz --model axi --json "$tmp/axi2.json" || fail=1
 "$bin" -q hertz --model 3d --refine 0 --json "$tmp/solid1.json" || fail=1
 $mpi "$bin" -q hertz --model 3d --refine 0 --json "$tmp/solid2.json" || fail=1
-$mpi "$bin" -q hertz --model 3d --json "$tmp/solid_default.json" || fail=1
 [[ $fail -eq 0 ]] || { echo "FAIL: a run failed"; exit 1; }
 /usr/bin/python3 - "$tmp" <<'PY'
 import json, sys
@@ -25,10 +24,4 @@ for model in ("axi", "solid"):
         rel = abs(one[key] - two[key]) / abs(one[key])
         print(f"{model} {key}: 1 rank {one[key]:.12e}, 2 ranks {two[key]:.12e}, rel. diff {rel:.1e}")
         assert rel < 1e-6, (model, key, rel)
-r = load("solid_default")
-print(f"3d default on 2 ranks: a {100 * r['a_error']:+.3f} %, p0 {100 * r['p0_error']:+.3f} %, "
-      f"force {r['force_error']:+.1e}, {r['dofs']} dofs, {r['wall_s']:.1f} s")
-assert r["ranks"] == 2
-assert abs(r["a_error"]) < 0.01 and abs(r["p0_error"]) < 0.02 and abs(r["force_error"]) < 1e-4
-assert not r["flags"], r["flags"]
 PY
