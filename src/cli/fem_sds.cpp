@@ -32,9 +32,10 @@ const SceneSchema<FemSdsSettings>& fem_sds_schema()
                 "every instant) or rigid (the preprint's rigid-body oracle, whose orientations mostly stand on a rim "
                 "point)",
                 {{"rolling", study::loop_scores::OrientationOracle::rolling}, {"rigid", study::loop_scores::OrientationOracle::rigid}})
-        .integer("samples_per_loop", "--samples", &FemSdsSettings::samples_per_loop, "",
+        .integer("samples_per_loop", "--samples-per-loop", &FemSdsSettings::samples_per_loop, "",
                  "Samples of the rolling loop (spread evenly in time over its period), every one scored",
                  io::loop_samples)
+        .former("samples")
         .integer("table_nodes_per_decade", "--table-nodes", &FemSdsSettings::table_nodes_per_decade, "",
                  "FEM solves per decade of the load ratio q / (E* R) to start the nondimensional slice table with "
                  "(fem/scenes/slice_scaling.h); doubled until FEM-SDS changes by less than the tolerance",

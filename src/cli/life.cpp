@@ -5,6 +5,7 @@
 // load and steel over the modelling choices, each with a verdict. Prints the
 // table; --json writes everything, --markdown the table.
 #include "cli/text_output.h"
+#include "io/work_budget.h"
 #include "study/life/life_study.h"
 
 namespace rollcheck::cli
@@ -25,7 +26,7 @@ void add_life_command(CLI::App& app)
         });
       });
   sub->add_option("--samples-per-loop", settings.samples_per_loop, "Samples of each rolling loop (default: 4000)")
-      ->check(CLI::Range(200L, 200000L));
+      ->check(CLI::Range(static_cast<long>(io::loop_samples.lower), static_cast<long>(io::loop_samples.upper)));
   sub->add_option("--pieces", settings.pieces, "Gauss pieces along each ruling (default: 32)")->check(CLI::Range(1, 1024));
   sub->add_option("--refines", settings.subsurface.refines,
                   "Contact-zone refinements of the FEM slice's subsurface check, coarse to fine (default: 2 4 6)")

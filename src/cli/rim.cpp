@@ -45,8 +45,9 @@ void add_loop_options(RimSchema& s)
             io::Bounds{1, 1000})
       .integer("seed", "--seed", [](RimCommand& c) -> std::uint64_t& { return c.loop.seed; }, "",
                "With --body: seed of the stratified sampling of those orientations", io::non_negative)
-      .integer("samples_per_loop", "--samples", [](RimCommand& c) -> long& { return c.loop.samples_per_loop; }, "",
+      .integer("samples_per_loop", "--samples-per-loop", [](RimCommand& c) -> long& { return c.loop.samples_per_loop; }, "",
                "With --body: samples of the rolling loop, every one scored", io::loop_samples)
+      .former("samples")
       .real("normal_load_n", "--load", [](RimCommand& c) -> double& { return c.loop.normal_load_n; }, "N",
             "With --body: force F pressing the body onto the counter-face through its centre of mass (the preprint's; "
             "its fatigue load is 5000 N)",

@@ -3,6 +3,7 @@
 // (study/robustness/robustness.h). Prints the verdict table; --json writes
 // the grid, the comparisons and every body's scores per cell.
 #include "cli/text_output.h"
+#include "io/work_budget.h"
 #include "study/robustness/robustness.h"
 
 namespace rollcheck::cli
@@ -24,12 +25,12 @@ void add_robustness_command(CLI::App& app)
       });
   sub->add_option("--samples-per-loop", settings.samples_per_loop,
                   "Samples of each rolling loop (default: 8000)")
-      ->check(CLI::Range(200L, 200000L));
+      ->check(CLI::Range(static_cast<long>(io::loop_samples.lower), static_cast<long>(io::loop_samples.upper)));
   sub->add_option("--pieces", settings.pieces, "Gauss pieces along each ruling (default: 64)")
       ->check(CLI::Range(4, 1024));
   sub->add_option("--family-samples-per-loop", settings.family_samples_per_loop,
                   "Samples of each rolling loop of the quick grid's genomes (default: 4000)")
-      ->check(CLI::Range(200L, 200000L));
+      ->check(CLI::Range(static_cast<long>(io::loop_samples.lower), static_cast<long>(io::loop_samples.upper)));
   sub->add_option("--markdown", markdown_path, "Also write the verdict table as Markdown to PATH (default: none)");
 }
 } // namespace rollcheck::cli

@@ -18,10 +18,10 @@ std::string type_name(const Value& v)
   return std::visit(
       [](const auto& x) -> std::string {
         using T = std::decay_t<decltype(x)>;
-        if constexpr (std::is_same_v<T, bool>) return "true/false";
-        else if constexpr (std::is_same_v<T, std::int64_t>) return "integer";
-        else if constexpr (std::is_same_v<T, double>) return "number";
-        else return "string";
+        if constexpr (std::is_same_v<T, bool>) return "true or false";
+        else if constexpr (std::is_same_v<T, std::int64_t>) return "an integer";
+        else if constexpr (std::is_same_v<T, double>) return "a number";
+        else return "a string";
       },
       v);
 }
@@ -142,7 +142,7 @@ void Parameters::set(const std::string& key, const Value& given, const std::stri
   if (std::holds_alternative<double>(p.default_value) && std::holds_alternative<std::int64_t>(given))
     value = static_cast<double>(std::get<std::int64_t>(given));
   if (value.index() != p.default_value.index())
-    throw InputError(fmt::format("{}: '{}' must be a {}, got '{}'", origin, key, type_name(p.default_value),
+    throw InputError(fmt::format("{}: '{}' must be {}, got '{}'", origin, key, type_name(p.default_value),
                                  to_text(given)));
   // The default is valid as given, even where it lies outside the range or
   // the choices ("" for "none", -1 for "the model's"): a case file may state it.
@@ -194,7 +194,7 @@ void Parameters::set_text(const std::string& key, const std::string& text, const
   }
   catch (const std::logic_error&)
   {
-    throw InputError(fmt::format("{}: '{}' must be a {}, got '{}'", origin, key, type_name(p.default_value), text));
+    throw InputError(fmt::format("{}: '{}' must be {}, got '{}'", origin, key, type_name(p.default_value), text));
   }
   set(key, value, origin);
 }

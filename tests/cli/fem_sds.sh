@@ -73,7 +73,7 @@ expect_input_error() { # args...; expected text
   fi
 }
 expect_input_error "orientations" fem-sds --body cylinder --orientations 0
-expect_input_error "samples" fem-sds --body cylinder --samples 1
+expect_input_error "samples" fem-sds --body cylinder --samples-per-loop 1
 expect_input_error "tolerance" fem-sds --body cylinder --tolerance 0
 expect_input_error "end_margin" fem-sds --body cylinder --end-margin 0.3
 expect_input_error "load_n" fem-sds --body cylinder --load nan

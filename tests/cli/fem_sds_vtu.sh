@@ -11,7 +11,7 @@ bin=$1; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
 
-expect 0 "" -- "$bin" -q fem-sds --body cylinder --samples 512 --orientations 1 --fem-slices 2 --slab-check 0 \
+expect 0 "" -- "$bin" -q fem-sds --body cylinder --samples-per-loop 512 --orientations 1 --fem-slices 2 --slab-check 0 \
   --vtu "$tmp/cylinder.vtu" --json "$tmp/cylinder.json"
 /usr/bin/python3 - "$tmp/cylinder.vtu" "$tmp/cylinder.json" << 'PY' || fail=1
 import json, sys

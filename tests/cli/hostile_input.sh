@@ -53,8 +53,8 @@ expect 1 "tables2k.toml': line 3 nests" -- "$bin" batch "$in/tables2k.toml" --ou
 expect 2 "sections.*\[4, 1024\], got 100000" -- "$bin" mesh --body uv-sphere --sections 100000
 expect 2 "duration_s' / 'dt_s' asks for 1e\+09 rigid-body time steps" -- "$bin" oracle --oracle rigid --duration 1e6 --dt 1e-3
 expect 2 "loops.*\[1, 100\], got 1000" -- "$bin" oracle --oracle rolling --loops 1000
-expect 2 "samples.*\[2, 262144\], got 10000000" -- "$bin" fem-sds --samples 10000000
-expect 2 "option --samples.*must be a integer, got '1e7'" -- "$bin" fem-sds --samples 1e7
+expect 2 "samples.*\[2, 262144\], got 10000000" -- "$bin" fem-sds --samples-per-loop 10000000
+expect 2 "option --samples-per-loop.*must be an integer, got '1e7'" -- "$bin" fem-sds --samples-per-loop 1e7
 expect 2 "scan_directions_deg.*0 or in \[0.01, 360\]" -- "$bin" whole-body --scan-directions 1e-9
 expect 2 "threads.*100000 not in range" -- "$bin" audit --quick --threads 100000
 expect 2 "threads.*0 or in \[1, 256\]" -- "$bin" search --threads 100000

@@ -30,7 +30,7 @@ declare -A line=(
   [hertz]="hertz --model axi --refine 0"
   [crease]="crease --levels 2"
   [optimize]="optimize --max-evaluations 3 --points 50 --steps 50 --sweep-points 2"
-  [fem-sds]="fem-sds --body cylinder --samples 256 --orientations 1 --fem-slices 2 --slab-check 0"
+  [fem-sds]="fem-sds --body cylinder --samples-per-loop 256 --orientations 1 --fem-slices 2 --slab-check 0"
 )
 skipped=(audit robustness life flat-rim rim)
 for sub in $("$bin" --help | sed -n '/^Subcommands:/,$p' | awk 'NR > 1 && /^  [a-z]/ {print $1}'); do

@@ -10,7 +10,7 @@ source "$(dirname "$0")/lib.sh"
 bin=$1; here=$2; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
-mpirun -n 2 --oversubscribe "$bin" -q rim --body cylinder --orientations 1 --samples 256 --levels 2 \
+mpirun -n 2 --oversubscribe "$bin" -q rim --body cylinder --orientations 1 --samples-per-loop 256 --levels 2 \
   --json "$tmp/cylinder.json" > "$tmp/cylinder.log" 2>&1 \
   || { echo "FAIL: rim --body cylinder"; cat "$tmp/cylinder.log"; exit 1; }
 check_json "two loaded square ends per sample, none singular on the rigid plane" \

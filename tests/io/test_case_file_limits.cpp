@@ -140,7 +140,7 @@ TEST(CaseFileLimits, EveryBadKeyNamedAtOnce)
   const io::CaseFile file = io::read_case_file(case_file(
       "bad.toml", "[scene]\nkind = \"toy\"\nwibble = 1\nwobble = 2\nradius_m = -1.0\nseed = \"x\"\n"));
   const std::string message = refusal([&] { io::resolve_case(file, toy_schema().schema(), {}, "case file 'bad.toml'"); });
-  for (const char* named : {"unknown key 'wibble'; unknown key 'wobble'", "'radius_m' must be > 0", "'seed' must be a integer"})
+  for (const char* named : {"unknown key 'wibble'; unknown key 'wobble'", "'radius_m' must be > 0", "'seed' must be an integer"})
     EXPECT_NE(message.find(named), std::string::npos) << named << " in: " << message;
 }
 
