@@ -53,17 +53,18 @@ void add_rim_end(const RimEndGeometry& g)
   {
     if (g.edge_radius_m > 0)
       throw InputError("rim end: an edge crossing the ruling obliquely is modelled sharp only");
-    // The ruling's centre line y = 0, where the pressures along the ruling
-    // are read, as mesh nodes: the body split there into two volumes that
-    // share the face (meshed on one surface mesh, conforming).
-    gmsh::vectorpair copy, upper, lower, split;
-    occ::copy(cut, copy);
-    occ::intersect(cut, {{3, occ::addBox(-span, 0, -span, 2 * span, span, 2 * span)}}, upper, map);
-    occ::cut(copy, {{3, occ::addBox(-span, 0, -span, 2 * span, span, 2 * span)}}, lower, map);
-    occ::fragment(upper, lower, split, map);
+    // The ruling's centre line on the sheet, where the pressures along the
+    // ruling are read, as a line of mesh nodes: the sheet's face split along
+    // it from the far side to the edge (one volume; two volumes split at
+    // y = 0 would be meshed with twin nodes on their shared face, apart).
+    const int centre_line = occ::addLine(occ::addPoint(-L, 0, 0), occ::addPoint(0, 0, 0));
+    gmsh::vectorpair split;
+    occ::fragment(cut, {{1, centre_line}}, split, map);
     occ::synchronize();
-    if (split.size() != 2)
-      throw ComputationError(fmt::format("rim end: the split at y = 0 left {} volumes, not two", split.size()));
+    gmsh::vectorpair volumes;
+    gmsh::model::getEntities(volumes, 3);
+    if (volumes.size() != 1)
+      throw ComputationError(fmt::format("rim end: the centre line left {} volumes, not one", volumes.size()));
     return;
   }
   if (!(g.edge_radius_m > 0))

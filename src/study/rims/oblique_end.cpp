@@ -8,6 +8,7 @@
 #include "oracle/rolling_dynamics.h"
 #include "oracle/support_set.h"
 #include "study/rims/rim_end_json.h"
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
