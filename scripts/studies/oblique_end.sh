@@ -7,13 +7,12 @@
 # Usage: scripts/studies/oblique_end.sh [ROLLCHECK_BINARY] [OUT_DIR] [LEVELS]
 set -euo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
-bin=${1:-$here/build/src/cli/rollcheck}
 out=${2:-$here/results/oblique_end}
-levels=${3:-2}
 mkdir -p "$out"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
+bin=${1:-$here/build/src/cli/rollcheck}
 start=$(date +%s)
-mpirun -n 2 --oversubscribe "$bin" rim --body oloid --oblique-study --levels "$levels" \
+OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1 \
+  mpirun -n 2 --oversubscribe "$bin" rim --body oloid --oblique-study --levels "${3:-2}" \
   --json "$out/oblique.json" > "$out/oblique.log" 2>&1 \
   || { echo "the oblique end failed: see $out/oblique.log" >&2; exit 1; }
 echo "oblique study: $(( $(date +%s) - start )) s" >&2
