@@ -44,13 +44,11 @@ def main():
     lower, upper = coarse["box"]["lower"], coarse["box"]["upper"]
     a, b = coarse["optimum"]["x"], fine["optimum"]["x"]
     distance = math.sqrt(sum(((p - q) / (u - l)) ** 2 for p, q, l, u in zip(a, b, lower, upper)))
-    lines += ["",
-              f"- The optimum moves by {distance:.3g} box widths from {coarse['mesh']['points_per_circle']} to "
-              f"{fine['mesh']['points_per_circle']} points per circle; its value by "
-              f"{100 * (fine['optimum']['value'] / coarse['optimum']['value'] - 1):+.2f} %, the start's by "
-              f"{100 * (fine['start_value'] / coarse['start_value'] - 1):+.2f} %.",
-              ""]
-    write_section(page, BEGIN, END, lines)
+    moved = (f"- The optimum moves by {distance:.3g} box widths from {coarse['mesh']['points_per_circle']} to "
+             f"{fine['mesh']['points_per_circle']} points per circle; its value by "
+             f"{100 * (fine['optimum']['value'] / coarse['optimum']['value'] - 1):+.2f} %, the start's by "
+             f"{100 * (fine['start_value'] / coarse['start_value'] - 1):+.2f} %.")
+    write_section(page, BEGIN, END, lines + ["", moved, ""])
 
 
 if __name__ == "__main__":
