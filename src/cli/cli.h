@@ -66,10 +66,11 @@ int process_rank();
 nlohmann::json write_volume_mesh(const geometry::SurfaceMesh& surface, double mesh_size_m,
                                  const std::filesystem::path& path);
 
-/// `optimize --score fem-sds`: study::fem_sds_scorer on MPI_COMM_WORLD with
-/// the default FEM-SDS settings, each body's loop status appended to `statuses`.
+/// `optimize --score fem-sds` (`continuum`) or `fem-sds-template`:
+/// study::fem_sds_scorer on MPI_COMM_WORLD with the default FEM-SDS
+/// settings, each body's loop status appended to `statuses`.
 std::function<double(const geometry::BodySpec&)> fem_sds_family_scorer(
-    std::shared_ptr<std::vector<std::string>> statuses);
+    bool continuum, std::shared_ptr<std::vector<std::string>> statuses);
 
 /// Registers what runs when `sub` was the parsed subcommand. The runner returns
 /// the exit code (0 success); it may throw InputError (exit 2) or

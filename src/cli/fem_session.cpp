@@ -121,8 +121,11 @@ nlohmann::json write_volume_mesh(const geometry::SurfaceMesh& surface, double me
 }
 
 std::function<double(const geometry::BodySpec&)> fem_sds_family_scorer(
-    std::shared_ptr<std::vector<std::string>> statuses)
+    bool continuum, std::shared_ptr<std::vector<std::string>> statuses)
 {
-  return study::loop_scores::fem_sds_scorer(MPI_COMM_WORLD, study::loop_scores::FemSdsSettings{}, std::move(statuses));
+  using study::loop_scores::FemSdsValue;
+  return study::loop_scores::fem_sds_scorer(MPI_COMM_WORLD, study::loop_scores::FemSdsSettings{},
+                                            continuum ? FemSdsValue::continuum : FemSdsValue::face_template,
+                                            std::move(statuses));
 }
 } // namespace rollcheck::cli

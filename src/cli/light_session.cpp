@@ -64,7 +64,8 @@ nlohmann::json write_volume_mesh(const geometry::SurfaceMesh&, double, const std
   throw ComputationError("gmsh volume meshes are written by rollcheck-fem");
 }
 
-std::function<double(const geometry::BodySpec&)> fem_sds_family_scorer(std::shared_ptr<std::vector<std::string>>)
+std::function<double(const geometry::BodySpec&)> fem_sds_family_scorer(bool,
+                                                                       std::shared_ptr<std::vector<std::string>>)
 {
   throw ComputationError("optimize --score fem-sds runs in rollcheck-fem");
 }

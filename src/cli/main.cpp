@@ -95,7 +95,9 @@ bool launched_by_mpi()
 bool fast_command(const std::vector<std::string>& args)
 {
   static const std::set<std::string> fast = {"mesh", "oracle", "search", "report", "audit", "optimize", "robustness"};
-  const bool fem_score = std::ranges::find(args, "fem-sds") != args.end();
+  const bool fem_score = std::ranges::any_of(args, [](const std::string& a) {
+    return a == "fem-sds" || a == "fem-sds-template";
+  });
   return fast.contains(subcommand_in(args)) && !fem_score && !launched_by_mpi();
 }
 } // namespace rollcheck::cli

@@ -42,14 +42,15 @@ void add_method_parameters(Schema& s)
 {
   using S = FamilySearchSettings;
   s.choice("score", "--score", &S::score,
-           "Score minimised: cds, sds (oracle approx or rigid), uniformity (U of real rolling) or fem-sds (FEM-SDS "
-           "over one loop of real rolling, converged; a body that cannot roll a whole loop scores +inf), the last "
-           "two with oracle rolling",
+           "Score minimised: cds, sds (oracle approx or rigid), uniformity (U of real rolling), fem-sds (FEM-SDS "
+           "over one loop of real rolling, its continuum value on the exact surface, resolution-free; a body that "
+           "cannot roll a whole loop scores +inf) or fem-sds-template (the same loop by the preprint's per-face "
+           "template, which falls about as faces^-2), the last three with oracle rolling",
            study::optimize::family_score_names())
       .choice("oracle", "--oracle", &S::oracle,
               "approx: the approximate oracle (deterministic); rigid: the rigid-body oracle (chaotic: each score the "
               "mean of --replicates runs at genomes moved by --resolution); rolling: real rolling (for --score "
-              "uniformity and fem-sds)",
+              "uniformity, fem-sds and fem-sds-template)",
               {{"approx", study::body_scores::Oracle::approximate},
                {"rigid", study::body_scores::Oracle::rigid},
                {"rolling", study::body_scores::Oracle::rolling}})
@@ -125,11 +126,12 @@ nlohmann::json run_optimize(const io::Parameters& params)
   // The FEM-SDS loops' convergence, one status per body scored (a score is
   // reported with its convergence).
   auto fem_sds_statuses = std::make_shared<std::vector<std::string>>();
-  if (settings.score == study::optimize::FamilyScore::fem_sds)
-    settings.fem_sds_score = fem_sds_family_scorer(fem_sds_statuses);
+  if (study::optimize::is_fem_sds(settings.score))
+    settings.fem_sds_score
+        = fem_sds_family_scorer(settings.score == study::optimize::FamilyScore::fem_sds, fem_sds_statuses);
   const study::optimize::FamilySearchResult result = study::optimize::optimize_family(settings);
   nlohmann::json j = to_json(result);
-  if (settings.score == study::optimize::FamilyScore::fem_sds)
+  if (study::optimize::is_fem_sds(settings.score))
   {
     const study::optimize::LoopStatusCounts loops = study::optimize::count_loop_statuses(*fem_sds_statuses);
     j["fem_sds_loops"] = loops;

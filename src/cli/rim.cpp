@@ -7,6 +7,7 @@
 #include "cli/scenes.h"
 #include "fem/scenes/rim_end_contact.h"
 #include "study/rims/rim_end_json.h"
+#include "study/rims/oblique_end.h"
 #include "study/rims/rim_loop.h"
 #include "study/rims/rim_report.h"
 #include <functional>
@@ -23,6 +24,7 @@ namespace
 struct RimCommand : study::rims::RimLoopSettings
 {
   RimCommand() { loop.body.body.clear(); }
+  bool oblique_study = false; ///< with --body: its loop's most oblique end, obliquely and perpendicular
 };
 using RimSchema = io::BoundSchema<RimCommand>;
 using fem::RimEndSettings;
@@ -48,6 +50,10 @@ void add_loop_options(RimSchema& s)
       .integer("samples_per_loop", "--samples-per-loop", [](RimCommand& c) -> long& { return c.loop.samples_per_loop; }, "",
                "With --body: samples of the rolling loop, every one scored", io::loop_samples)
       .former("samples")
+      .flag("oblique_study", "--oblique-study", &RimCommand::oblique_study,
+            "With --body: instead of the loop, its most oblique rim end (study/rims/oblique_end.h) solved with the "
+            "edge crossing the ruling at its real angle and by the perpendicular reduction at the dihedral angle, at "
+            "the end options' q, R, material and levels")
       .real("normal_load_n", "--load", [](RimCommand& c) -> double& { return c.loop.normal_load_n; }, "N",
             "With --body: force F pressing the body onto the counter-face through its centre of mass (the preprint's; "
             "its fatigue load is 5000 N)",
@@ -99,6 +105,12 @@ void add_end_options(RimSchema& s)
             "it an acute rim, towards 180 the other face rises gently; measured normal to the edge, which is square to "
             "the ruling (with --body each end's dihedral angle normal to its rim)",
             io::Bounds{60, 180, false, true}, degree)
+      .real("crossing_angle_deg", "--crossing-angle", end(&RimEndSettings::crossing_angle_rad), "deg",
+            "One end: c, the angle in the contact plane between the ruling and the rim's edge; 90 the edge square to "
+            "the ruling (--interior-angle then normal to it), below 90 an oblique end: --interior-angle is the "
+            "section in the ruling's vertical plane, the wedge's angle the dihedral normal to the edge, both sides of "
+            "the ruling modelled (sharp edge, rigid plane, gmsh mesh; --length above 1 + cot c)",
+            io::Bounds{0, 90, true, false}, degree)
       .real("edge_radius_m", "--edge-radius", end(&RimEndSettings::edge_radius_m), "m",
             "r_e of the edge's fillet, the way a part is finished; 0: the sharp edge of the ideal hull. With --body "
             "the part is the hull rounded by a ball of r_e rolled inside it: no radius of its surface is below r_e, so "
@@ -173,6 +185,15 @@ nlohmann::json run_rim(const io::Parameters& p)
   if (command.loop.body.body.empty())
   {
     const fem::RimEndStudy study = fem::solve_rim_end(MPI_COMM_WORLD, command.end);
+    print_summary(study::rims::report(study));
+    return study::rims::to_json(study);
+  }
+  if (command.oblique_study)
+  {
+    study::rims::ObliqueEndSettings settings;
+    settings.body = command.loop.body;
+    settings.end = command.end;
+    const study::rims::ObliqueEndStudy study = study::rims::oblique_end_study(MPI_COMM_WORLD, settings);
     print_summary(study::rims::report(study));
     return study::rims::to_json(study);
   }

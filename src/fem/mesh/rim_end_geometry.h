@@ -3,6 +3,8 @@
 // the scene and its tags), shared by the builders of the rim end, the rim
 // end on a block and the structured grid, and by the solid they cut.
 
+#include <numbers>
+
 namespace rollcheck::fem
 {
 /// The largest fillet against the rim end's block, r_e / H: the fillet (at
@@ -25,19 +27,30 @@ struct RimEndGeometry
   /// for gmsh to mesh (R / H = 3400 failed); flattened, the geometry errs by
   /// H^2 / (2 R) at y = H, far from the contact.
   bool flat_sheet = false;
+  /// c: the angle in the contact plane between the ruling and the edge
+  /// (fem/mesh/oblique_end_angle.h), in (0, 90] deg; 90: the edge square to
+  /// the ruling, the y >= 0 half by symmetry. Otherwise interior_angle_rad
+  /// stays the section in the ruling's vertical plane, the other face turns
+  /// about z with the edge, and the block covers both sides of the ruling
+  /// (y in [-H, H]: no plane of symmetry at y = 0) and reaches H beyond the
+  /// edge's farthest point, x = H (1 + cot c).
+  double crossing_angle_rad = std::numbers::pi / 2;
 };
 
 /// Element size min(far, edge + growth d_edge, contact + growth d_strip),
 /// d_edge the distance from the band |x - edge_x_m| <= edge_band_m on z = 0
 /// for y < edge_zone_m (the sharp edge at x = 0 with no band, or where a
 /// fillet leaves the sheet with the band its peak lies in), d_strip from the
-/// strip y < contact_zone_m along the ruling.
+/// strip y < contact_zone_m along the ruling. An oblique edge
+/// (crossing_angle_rad, RimEndGeometry's) has x measured normal to it and y
+/// as |y| (fem/mesh/oblique_end_angle.h oblique_edge_frame).
 struct RimEndSizes
 {
   double edge_m = 0, edge_zone_m = 0, edge_x_m = 0, edge_band_m = 0;
   double contact_m = 0, contact_zone_m = 0;
   double growth = 0.3;
   double far_m = 0;
+  double crossing_angle_rad = std::numbers::pi / 2;
 };
 
 /// The size at the point x (m) of the rim end scene.

@@ -1,6 +1,7 @@
 // The rim end's mesh (fem/mesh/rim_end_mesh.h).
 #include "fem/mesh/rim_end_mesh.h"
 #include "core/error.h"
+#include "fem/mesh/oblique_end_angle.h"
 #include "fem/mesh/rim_end_distribute.h"
 #include "fem/mesh/rim_end_solid.h"
 #include <algorithm>
@@ -30,7 +31,8 @@ SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& g, const RimEn
                                  largest_edge_radius_over_depth, g.edge_radius_m, g.radius_m, H));
   // OpenCASCADE's tolerances are absolute (1e-7): the geometry is built with
   // H as the unit and the mesh scaled back.
-  const RimEndGeometry unit{g.radius_m / H, g.interior_angle_rad, g.edge_radius_m / H, 1.0, L / H, g.flat_sheet};
+  const RimEndGeometry unit{
+      g.radius_m / H, g.interior_angle_rad, g.edge_radius_m / H, 1.0, L / H, g.flat_sheet, g.crossing_angle_rad};
   SceneMesh scene = distribute_quietly(comm, 3, [&] { return mesh_rim_end(unit, sizes, H, false); });
   const double tol = 1e-9 * H;
   tag_rim_end(
@@ -38,7 +40,8 @@ SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& g, const RimEn
       [=](double x, double y, double z) {
         return std::abs(x + L) < tol || std::abs(x - H) < tol || std::abs(y) < tol || std::abs(y - H) < tol
                || std::abs(z - H) < tol;
-      });
+      },
+      crosses_obliquely(g.crossing_angle_rad));
   scene.wall_s = seconds_since(start);
   return scene;
 }

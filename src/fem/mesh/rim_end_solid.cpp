@@ -2,6 +2,7 @@
 #include "fem/mesh/rim_end_solid.h"
 #include "core/error.h"
 #include "fem/mesh/gmsh_scene.h"
+#include "fem/mesh/oblique_end_angle.h"
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -14,31 +15,58 @@ namespace
 {
 /// The rim end's solid (build_rim_end_mesh): the block x in [-L, H],
 /// y in [0, H], z <= H, inside the cylinder of radius R about the line
-/// (x, 0, R), cut by the other face's half-space, its edge filleted.
+/// (x, 0, R), cut by the other face's half-space, its edge filleted; an
+/// oblique edge's block x in [-L, H (1 + cot c)], y in [-H, H], sharp.
 void add_rim_end(const RimEndGeometry& g)
 {
   namespace occ = gmsh::model::occ;
   const double H = g.depth_m, L = g.length_m, R = g.radius_m;
+  // An oblique edge: both sides of the ruling, and H beyond the edge's
+  // farthest point (fem/mesh/oblique_end_angle.h).
+  const bool oblique = crosses_obliquely(g.crossing_angle_rad);
+  const double y0 = oblique ? -H : 0, extra = oblique ? H / std::tan(g.crossing_angle_rad) : 0;
   gmsh::vectorpair body, cut;
   std::vector<gmsh::vectorpair> map;
   if (g.flat_sheet)
-    body = {{3, occ::addBox(-L, 0, 0, L + H, H, H)}};
+    body = {{3, occ::addBox(-L, y0, 0, L + H + extra, H - y0, H)}};
   else
   {
     // The box overlaps the tangent plane z = 0 instead of touching it.
-    const int box = occ::addBox(-L, 0, -0.1 * H, L + H, H, 1.1 * H);
-    const int cylinder = occ::addCylinder(-L - H, 0, R, L + 3 * H, 0, 0, R);
+    const int box = occ::addBox(-L, y0, -0.1 * H, L + H + extra, H - y0, 1.1 * H);
+    const int cylinder = occ::addCylinder(-L - H, 0, R, L + 3 * H + extra, 0, 0, R);
     occ::intersect({{3, box}}, {{3, cylinder}}, body, map);
   }
   // Beyond the other face: n . p > 0, n = (sin a, 0, cos a) for the interior
-  // angle a, which is +x (a square end) turned about y by a - 90 deg.
-  const double span = 10 * (L + H);
+  // angle a, which is +x (a square end) turned about y by a - 90 deg; an
+  // oblique edge's at its dihedral angle, then turned about z with the edge.
+  const double span = 10 * (L + H + extra);
   const int half_space = occ::addBox(0, -span, -span, span, 2 * span, 2 * span);
-  occ::rotate({{3, half_space}}, 0, 0, 0, 0, 1, 0, g.interior_angle_rad - std::numbers::pi / 2);
+  occ::rotate({{3, half_space}}, 0, 0, 0, 0, 1, 0,
+              oblique_dihedral_angle(g.interior_angle_rad, g.crossing_angle_rad) - std::numbers::pi / 2);
+  if (oblique)
+    occ::rotate({{3, half_space}}, 0, 0, 0, 0, 0, 1, g.crossing_angle_rad - std::numbers::pi / 2);
   occ::cut(body, {{3, half_space}}, cut, map);
   occ::synchronize();
   if (cut.size() != 1)
     throw ComputationError(fmt::format("rim end: the cut left {} volumes, not one", cut.size()));
+  if (oblique)
+  {
+    if (g.edge_radius_m > 0)
+      throw InputError("rim end: an edge crossing the ruling obliquely is modelled sharp only");
+    // The ruling's centre line on the sheet, where the pressures along the
+    // ruling are read, as a line of mesh nodes: the sheet's face split along
+    // it from the far side to the edge (one volume; two volumes split at
+    // y = 0 would be meshed with twin nodes on their shared face, apart).
+    const int centre_line = occ::addLine(occ::addPoint(-L, 0, 0), occ::addPoint(0, 0, 0));
+    gmsh::vectorpair split;
+    occ::fragment(cut, {{1, centre_line}}, split, map);
+    occ::synchronize();
+    gmsh::vectorpair volumes;
+    gmsh::model::getEntities(volumes, 3);
+    if (volumes.size() != 1)
+      throw ComputationError(fmt::format("rim end: the centre line left {} volumes, not one", volumes.size()));
+    return;
+  }
   if (!(g.edge_radius_m > 0))
     return;
   // The edge: the one curve from the origin across the block in y. On the
@@ -103,7 +131,8 @@ SceneParts rim_end_planes(double L, double tol)
   return parts;
 }
 
-void tag_rim_end(SceneMesh& scene, double H, double L, const Predicate& curved, const Predicate& in_plane)
+void tag_rim_end(SceneMesh& scene, double H, double L, const Predicate& curved, const Predicate& in_plane,
+                 bool full_width)
 {
   const double tol = 1e-9 * H;
   SceneParts parts = rim_end_planes(L, tol);
@@ -112,6 +141,7 @@ void tag_rim_end(SceneMesh& scene, double H, double L, const Predicate& curved, 
   parts.in_plane = in_plane;
   parts.facing_plane_only = true;
   tag_parts(scene, parts);
-  scene.symmetry_multiplicity = 2;
+  // An oblique end covers both sides of the ruling: no face at y = 0.
+  scene.symmetry_multiplicity = full_width ? 1 : 2;
 }
 } // namespace rollcheck::fem::scene_build

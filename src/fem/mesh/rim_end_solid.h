@@ -20,6 +20,8 @@ SceneParts rim_end_planes(double L, double tol);
 
 /// Tags the rim end alone (fem/mesh/rim_end_mesh.h): its planes of symmetry,
 /// the top z = H, and as contact the facets on `curved` off `in_plane` that
-/// face the plane; symmetry multiplicity 2.
-void tag_rim_end(SceneMesh& scene, double H, double L, const Predicate& curved, const Predicate& in_plane);
+/// face the plane; symmetry multiplicity 2, or 1 for an oblique end's
+/// `full_width` (both sides of the ruling, no face at y = 0).
+void tag_rim_end(SceneMesh& scene, double H, double L, const Predicate& curved, const Predicate& in_plane,
+                 bool full_width = false);
 } // namespace rollcheck::fem::scene_build

@@ -10,6 +10,7 @@
 #include "fem/nodal_fields.h"
 #include "fem/penalty_contact.h"
 #include "fem/petsc_session.h"
+#include "fem/mesh/oblique_end_angle.h"
 #include "fem/mesh/scene_mesh.h"
 #include "fem/write_fields.h"
 #include <algorithm>
@@ -54,6 +55,14 @@ void validate(const RimEndSettings& s)
                                  "rigid plane",
                                  max_grid_end_lean_rad * 180 / std::numbers::pi,
                                  max_grid_end_lean_rad * 180 / std::numbers::pi));
+  if (crosses_obliquely(s.crossing_angle_rad)
+      && (!(s.crossing_angle_rad > 0 && s.crossing_angle_rad < std::numbers::pi / 2) || s.edge_radius_m != 0
+          || s.counter_face != CounterFace::rigid || s.mesh != RimEndMesh::delaunay
+          || !(s.length_over_depth > 1 + 1 / std::tan(s.crossing_angle_rad))))
+    throw InputError(fmt::format("rim: crossing_angle_deg must lie in (0, 90]; below 90 the end model is a sharp "
+                                 "edge (edge_radius_m 0) on the rigid plane, end_mesh gmsh, with length_over_depth "
+                                 "above 1 + cot c (got crossing {} deg, length_over_depth {})",
+                                 s.crossing_angle_rad * 180 / std::numbers::pi, s.length_over_depth));
   if (!s.xdmf_path.empty())
   {
     if (s.xdmf_path.extension() != ".xdmf")
@@ -96,14 +105,15 @@ Sample centre_line_mean(const std::vector<CentreLineNode>& line, double from, do
 /// The line load carried by the far side's first depth H, x in [-L, -L + H]:
 ///   q_far = 2 sum_i p_i A_i w(x_i) / int w dx,
 /// w = 1 on [-L, -L + H / 2], falling linearly to 0 at -L + H (int w dx =
-/// 3 H / 4), over the y >= 0 half's contact nodes. p_i A_i is node i's share
+/// 3 H / 4), over the y >= 0 half's contact nodes (`halves` 2; an oblique
+/// end's both sides, 1). p_i A_i is node i's share
 /// of the contact force (the pairs' forces; the recovered pressure times its
 /// lumped area on the rigid plane), so the sum is the force weighted by w's
 /// P1 interpolant: exact for the penalty's own pressure up to w's two kinks,
 /// where a trapezoid of p across one section, over the contact edge's
 /// square root, missed by a few per cent and differently on each mesh
 /// (docs/notes/rims-log.md#speed).
-double far_line_load(const std::vector<SurfacePressureNode>& nodes, double far_x, double depth_m)
+double far_line_load(const std::vector<SurfacePressureNode>& nodes, double far_x, double depth_m, double halves)
 {
   double force = 0;
   for (const SurfacePressureNode& n : nodes)
@@ -112,7 +122,7 @@ double far_line_load(const std::vector<SurfacePressureNode>& nodes, double far_x
     const double w = into <= depth_m / 2 ? 1.0 : std::max(0.0, 2 * (1 - into / depth_m));
     force += n.pressure_pa * n.weight * w;
   }
-  return 2 * force / (0.75 * depth_m);
+  return halves * force / (0.75 * depth_m);
 }
 
 /// The end's b and its block's depth H = (H / b) b and length L = (L / H) H (m).
@@ -164,6 +174,7 @@ RimEndSizes level_sizes(const RimEndStudy& study, double edge_element_m)
   // the edge's elements cover +-2 s about that line (sharp: s = 0, the line).
   sizes.edge_band_m = 2 * study.boundary_layer_m;
   sizes.far_m = block.depth_m / 4;
+  sizes.crossing_angle_rad = s.crossing_angle_rad;
   return sizes;
 }
 
@@ -174,7 +185,8 @@ SceneMesh level_mesh(MPI_Comm comm, const RimEndStudy& study, const RimEndSizes&
   const RimEndSettings& s = study.setup;
   const BlockSize block = block_size(study);
   const RimEndGeometry geometry{
-      s.radius_m, s.interior_angle_rad, s.edge_radius_m, block.depth_m, block.length_m, study.flat_sheet};
+      s.radius_m, s.interior_angle_rad, s.edge_radius_m, block.depth_m, block.length_m, study.flat_sheet,
+      s.crossing_angle_rad};
   if (s.counter_face == CounterFace::block)
     return build_rim_block_mesh(comm, geometry, sizes);
   return s.mesh == RimEndMesh::grid ? build_square_end_grid_mesh(comm, geometry, sizes)
@@ -264,7 +276,7 @@ void load_to_line_load(MPI_Comm comm, PenaltyContact& problem, const RimEndStudy
       = continue_to_force(problem, s.load_n_per_m, line.exponent, 2e-3,
                           world_rank() == 0 ? spdlog::level::info : spdlog::level::debug, [&] {
                             return far_line_load(contact_face_pressures(comm, problem, on_block), -block.length_m,
-                                                 block.depth_m);
+                                                 block.depth_m, crosses_obliquely(s.crossing_angle_rad) ? 1 : 2);
                           });
   state = problem.displacement();
   level.approach_m = report.approach_m;
@@ -302,13 +314,13 @@ void read_contact_face(const RimEndStudy& study, const std::vector<SurfacePressu
     if (std::abs(n.x[1]) < tol)
       level.centre_line.push_back({n.x[0], n.pressure_pa});
     // A sharp edge at y: on the sheet, z_e = R - sqrt(R^2 - y^2) (0 flat),
-    // and on the other face, x_e = -z_e cot a.
+    // and on the other face, x_e = -z_e cot a (oblique: oblique_edge_x).
     const double z_edge = study.flat_sheet ? 0.0 : sheet_height(s.radius_m, n.x[1]);
-    const double x_edge = -z_edge / std::tan(s.interior_angle_rad);
+    const double x_edge = oblique_edge_x(s.interior_angle_rad, s.crossing_angle_rad, n.x[1], z_edge);
     // The structured grid puts a node at y = b / 2 exactly: the tolerance
     // keeps it in whatever the last bit of b (the edge pressure moved by 1 %
     // between two runs whose q differed in its last bits).
-    if (!(s.edge_radius_m > 0) && n.x[1] <= 0.5 * b * (1 + 1e-9)
+    if (!(s.edge_radius_m > 0) && std::abs(n.x[1]) <= 0.5 * b * (1 + 1e-9)
         && std::hypot(n.x[0] - x_edge, n.x[2] - z_edge) < 1e-3 * edge_element_m)
     {
       edge_sum += n.pressure_pa;
@@ -546,9 +558,10 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
   study.fillet_start_m = fillet_start_distance(setup.edge_radius_m, setup.interior_angle_rad);
   study.boundary_layer_m = 4 * study.hertz_peak_pa * setup.edge_radius_m / (std::numbers::pi * study.effective_modulus_pa);
   const double E = setup.youngs_modulus_pa, nu = setup.poisson_ratio;
+  study.dihedral_angle_rad = oblique_dihedral_angle(setup.interior_angle_rad, setup.crossing_angle_rad);
   study.wedge_exponent = !sharp ? 0.0
-                         : block ? contact::edge_on_elastic_block_exponent(setup.interior_angle_rad, E, nu, E, nu)
-                                 : contact::edge_on_rigid_plane_exponent(setup.interior_angle_rad);
+                         : block ? contact::edge_on_elastic_block_exponent(study.dihedral_angle_rad, E, nu, E, nu)
+                                 : contact::edge_on_rigid_plane_exponent(study.dihedral_angle_rad);
   study.singular = study.wedge_exponent < 0;
   int rank = 0;
   MPI_Comm_rank(comm, &rank);

@@ -116,6 +116,14 @@ struct RimEndSettings
   /// square end, below it an acute (undercut) rim.
   double interior_angle_rad = std::numbers::pi / 2;
   double edge_radius_m = 0;          ///< r_e; 0: sharp
+  /// c, the angle in the contact plane between the ruling and the edge, (0,
+  /// 90] deg (fem/mesh/rim_end_geometry.h RimEndGeometry::crossing_angle_rad):
+  /// 90 the edge square to the ruling (the y >= 0 half by symmetry); below,
+  /// interior_angle_rad is the section in the ruling's vertical plane, the
+  /// wedge's angle the dihedral normal to the edge (fem/mesh/oblique_end_angle.h),
+  /// and the model covers both sides of the ruling: sharp edges on the
+  /// rigid plane, gmsh's mesh, L / H > 1 + cot c.
+  double crossing_angle_rad = std::numbers::pi / 2;
   CounterFace counter_face = CounterFace::rigid;
   double youngs_modulus_pa = 200e9;  ///< steel (the preprint's)
   double poisson_ratio = 0.3;        ///< steel (the preprint's)
@@ -200,7 +208,10 @@ struct RimEndStudy
   double effective_modulus_pa = 0;   ///< E* = E / (1 - nu^2)
   double half_width_m = 0;           ///< b of line Hertz
   double hertz_peak_pa = 0;          ///< p0 of line Hertz
-  /// lambda - 1 of the mirrored wedge (0: not singular; rounded edges 0).
+  /// The wedge's angle normal to the edge: interior_angle_rad where the edge
+  /// is square to the ruling, else the dihedral (fem/mesh/oblique_end_angle.h).
+  double dihedral_angle_rad = 0;
+  /// lambda - 1 of the mirrored wedge at dihedral_angle_rad (0: not singular; rounded edges 0).
   double wedge_exponent = 0;
   bool singular = false;             ///< a sharp edge with a > 90 deg
   double fillet_start_m = 0;         ///< x_t: the fillet leaves the sheet at x = -x_t (0 sharp)

@@ -107,16 +107,21 @@ std::string number(const std::optional<double>& v) { return v ? fmt::format("{:.
 } // namespace
 
 std::function<double(const geometry::BodySpec&)> fem_sds_scorer(MPI_Comm comm, const FemSdsSettings& base,
+                                                                FemSdsValue value,
                                                                 std::shared_ptr<std::vector<std::string>> statuses)
 {
   fem::ensure_petsc();
   auto table = std::make_shared<fem::SliceScaling>(slice_settings(base), base.table_nodes_per_decade);
-  return [comm, base, table, statuses](const geometry::BodySpec& body) {
+  return [comm, base, value, table, statuses](const geometry::BodySpec& body) {
     std::string why_not;
     const BodyLoop loop = whole_loop(comm, body, base, *table, why_not);
     if (statuses)
       statuses->push_back(why_not.empty() ? loop.loop.status() : why_not);
-    return why_not.empty() && loop.loop.fem.value ? *loop.loop.fem.value : std::numeric_limits<double>::infinity();
+    if (!why_not.empty())
+      return std::numeric_limits<double>::infinity();
+    if (value == FemSdsValue::continuum)
+      return loop.continuum ? loop.continuum->fem : std::numeric_limits<double>::infinity();
+    return loop.loop.fem.value ? *loop.loop.fem.value : std::numeric_limits<double>::infinity();
   };
 }
 

@@ -58,18 +58,30 @@ struct FamilyResult
   double wall_s = 0;
 };
 
+/// Which FEM-SDS a scorer returns: the continuum value on the exact surface
+/// (fem_sds_continuum.h: resolution-free, `fem_sds_continuum` in JSON), or
+/// the preprint's per-face template, which falls about as the face count^-2
+/// and so moves with a genome's face count at fixed points per circle.
+enum class FemSdsValue
+{
+  continuum,
+  face_template
+};
+
 /// FEM-SDS of a body over one loop of real rolling, for a search that scores
 /// many bodies (study/optimize/optimize_family.h BodyScore): `base`'s settings with
 /// the body replaced, one FEM table shared by every call (a body only adds
 /// the load ratios no body before it reached). +infinity for a body the
 /// line-contact model cannot follow over a whole loop (a rim lifts) or that
-/// cannot roll over its potential barrier: it has no whole loop to score.
+/// cannot roll over its potential barrier: it has no whole loop to score
+/// (and, for the continuum value, a loop without one).
 /// Collective on `comm` at every call. Each call's loop status (LoopSds::status:
 /// "converged", "not converged (...)", "singular (...)", or why there is no
 /// loop) is appended to `statuses`, if given, so that the search can report
 /// how many of the bodies it scored were converged.
 std::function<double(const geometry::BodySpec&)> fem_sds_scorer(
-    MPI_Comm comm, const FemSdsSettings& base, std::shared_ptr<std::vector<std::string>> statuses = {});
+    MPI_Comm comm, const FemSdsSettings& base, FemSdsValue value,
+    std::shared_ptr<std::vector<std::string>> statuses = {});
 
 /// Collective on `comm`; every rank gets the result. InputError for bad
 /// settings; a body that cannot roll a loop is a row, not an error.

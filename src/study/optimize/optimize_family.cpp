@@ -81,7 +81,7 @@ public:
       }
     std::vector<double> values(missing.size());
     // FEM-SDS solves are collective over the MPI ranks: one body at a time.
-    const unsigned threads = s_.score == FamilyScore::fem_sds ? 1u : s_.threads;
+    const unsigned threads = is_fem_sds(s_.score) ? 1u : s_.threads;
     oracle::parallel_for(missing.size(), threads, [&](std::size_t k) {
       const auto& [x, r] = missing[k];
       try
@@ -245,10 +245,11 @@ std::string nuisance_text(const FamilySearchSettings& s)
                               "the run, so the replicates also sample the oracle's chaotic spread; each score is the "
                               "mean of {} replicates",
                               s.replicates);
-  if (s.score == FamilyScore::fem_sds)
-    return move + "; and meshed with 2, -2, 4, -4, ... more points per circle (FEM-SDS moves by up to a third "
-                  "between meshes of one genome: the true oloid at 96 to 104 points per circle scored 1.28e-05 to "
-                  "1.97e-05); the oracle is deterministic: each score is one evaluation";
+  if (is_fem_sds(s.score))
+    return move + "; and meshed with 2, -2, 4, -4, ... more points per circle (FEM-SDS's template moves by up to a "
+                  "third between meshes of one genome: the true oloid at 96 to 104 points per circle scored 1.28e-05 "
+                  "to 1.97e-05; the continuum value's share of that is its own mesh noise); the oracle is "
+                  "deterministic: each score is one evaluation";
   return move + "; the oracle is deterministic: each score is one evaluation";
 }
 } // namespace
@@ -259,9 +260,12 @@ const std::vector<std::pair<std::string, FamilyScore>>& family_score_names()
       {"cds", FamilyScore::cds},
       {"sds", FamilyScore::sds},
       {"uniformity", FamilyScore::uniformity},
-      {"fem-sds", FamilyScore::fem_sds}};
+      {"fem-sds", FamilyScore::fem_sds},
+      {"fem-sds-template", FamilyScore::fem_sds_template}};
   return names;
 }
+
+bool is_fem_sds(FamilyScore score) { return score == FamilyScore::fem_sds || score == FamilyScore::fem_sds_template; }
 
 void validate(const FamilySearchSettings& s)
 {
@@ -281,11 +285,11 @@ void validate(const FamilySearchSettings& s)
       throw InputError(fmt::format("optimize: {} = {} lies outside [{} = {}, {} = {}]", n.start, a.start, n.min,
                                    a.min, n.max, a.max));
   }
-  const bool rolls = s.score == FamilyScore::uniformity || s.score == FamilyScore::fem_sds;
+  const bool rolls = s.score == FamilyScore::uniformity || is_fem_sds(s.score);
   if (rolls != (s.oracle == body_scores::Oracle::rolling))
-    throw InputError("optimize: the scores uniformity and fem-sds need oracle rolling, and cds or sds the approx or "
-                     "rigid oracle");
-  if (s.score == FamilyScore::fem_sds && !s.fem_sds_score)
+    throw InputError("optimize: the scores uniformity, fem-sds and fem-sds-template need oracle rolling, and cds or "
+                     "sds the approx or rigid oracle");
+  if (is_fem_sds(s.score) && !s.fem_sds_score)
     throw InputError("optimize: the score fem-sds is computed by rollcheck-fem (study/loop_scores/fem_sds_family.h)");
   if (s.replicates < 2)
     throw InputError(fmt::format("optimize: replicates must be at least 2 for a noise estimate, got {}", s.replicates));
@@ -407,7 +411,7 @@ std::vector<double> replicate_genome(const FamilySearchSettings& s, std::span<co
 
 int replicate_mesh_offset(const FamilySearchSettings& s, int replicate)
 {
-  if (s.score != FamilyScore::fem_sds || replicate == 0)
+  if (!is_fem_sds(s.score) || replicate == 0)
     return 0;
   const int step = 2 * ((replicate + 1) / 2);
   return replicate % 2 == 1 ? step : -step;
@@ -424,7 +428,7 @@ double replicate_score(const FamilySearchSettings& s, FamilyMeshes& meshes, std:
   b.convergence_every = 0;
   const std::vector<double> p = replicate_genome(s, x, replicate);
   b.body = family_body(s, p, std::max(3, meshes.points(p) + replicate_mesh_offset(s, replicate)));
-  if (s.score == FamilyScore::fem_sds)
+  if (is_fem_sds(s.score))
     return s.fem_sds_score(b.body);
   return score_of(body_scores::score_body(b), s.score, p);
 }

@@ -31,14 +31,24 @@ enum class FamilyScore
   cds,       ///< the preprint's contact distribution score (approximate or rigid oracle)
   sds,       ///< the preprint's stress distribution score (approximate or rigid oracle)
   uniformity, ///< U of real rolling (oracle rolling)
-  fem_sds     ///< FEM-SDS over one loop of real rolling (oracle rolling; fem_sds_score)
+  /// FEM-SDS over one loop of real rolling, its continuum value on the exact
+  /// surface (oracle rolling; fem_sds_score): resolution-free, so genomes of
+  /// different face counts compare.
+  fem_sds,
+  /// The same loop's FEM-SDS by the preprint's per-face template: about
+  /// faces^-2, so at fixed points per circle it ranks genomes by their face
+  /// count (the paper-compatible value).
+  fem_sds_template
 };
+
+/// fem_sds or fem_sds_template: computed by fem_sds_score, one body at a time.
+bool is_fem_sds(FamilyScore score);
 
 /// A body's score computed outside this library (FEM-SDS lives in
 /// rollcheck_study_fem: study/loop_scores/fem_sds_family.h fem_sds_scorer).
 using BodyScore = std::function<double(const geometry::BodySpec&)>;
 
-/// cds, sds, uniformity, fem-sds (for io::BoundSchema::choice).
+/// cds, sds, uniformity, fem-sds, fem-sds-template (for io::BoundSchema::choice).
 const std::vector<std::pair<std::string, FamilyScore>>& family_score_names();
 
 /// One finished run of body_scores::score_body: the genome, the replicate, the value.
@@ -102,7 +112,7 @@ struct FamilySearchSettings
   double pilot_step = 0.05; ///< balanced_steps' pilots, fraction of each box width
   int sweep_points = 9; ///< per axis, from min to max through the start
   unsigned threads = 0; ///< evaluations in parallel (0: one per core)
-  /// score fem_sds: the body's FEM-SDS. It is called on the calling thread,
+  /// score fem_sds or fem_sds_template: the body's FEM-SDS of that kind. It is called on the calling thread,
   /// one body at a time (its FEM is collective over the MPI ranks).
   BodyScore fem_sds_score;
   /// Finished runs kept across interrupted searches: asked before each run, told after each phase.

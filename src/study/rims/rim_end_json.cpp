@@ -71,6 +71,8 @@ nlohmann::json to_json(const fem::RimEndStudy& study)
   nlohmann::json j = verdict_json(study);
   j.update({{"counter_face", counter_face_name(setup.counter_face)},
             {"interior_angle_deg", setup.interior_angle_rad * 180 / std::numbers::pi},
+            {"crossing_angle_deg", setup.crossing_angle_rad * 180 / std::numbers::pi},
+            {"dihedral_angle_deg", study.dihedral_angle_rad * 180 / std::numbers::pi},
             {"edge_radius_m", setup.edge_radius_m},
             {"effective_modulus_pa", study.effective_modulus_pa},
             // What a block of the body's own material would make of a sharp

@@ -9,6 +9,7 @@
 #include "study/rims/flat_rim_contact.h"
 #include "study/rims/flat_rim_table.h"
 #include "study/rims/flattest_loop_ends.h"
+#include "study/rims/oblique_end.h"
 #include "study/rims/rim_end_json.h"
 #include "study/rims/rim_loop.h"
 #include "study/rims/rim_report.h"

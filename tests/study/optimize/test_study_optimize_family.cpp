@@ -20,6 +20,7 @@
 #include <iostream>
 #include "study/optimize/family_search_fixture.h"
 #include <gtest/gtest.h>
+#include <map>
 #include <numbers>
 
 using namespace rollcheck;
@@ -323,22 +324,42 @@ TEST(OptimizeFamily, FemSdsReplicatesAlsoChangeTheMesh)
   FamilySearchSettings s = cheap_family_search();
   for (int r = 0; r < 5; ++r)
     EXPECT_EQ(replicate_mesh_offset(s, r), 0);
-  s.score = FamilyScore::fem_sds;
-  s.oracle = Oracle::rolling;
-  const std::vector<int> offsets{0, 2, -2, 4, -4};
-  std::vector<int> seen;
-  s.fem_sds_score = [&](const geometry::BodySpec& body) {
-    seen.push_back(body.points);
-    return 1.0;
-  };
-  FamilyMeshes meshes(s);
-  const std::vector<double> start{90, 1, 1};
-  for (int r = 0; r < 5; ++r)
+  // Both FEM-SDS values, the continuum's (fem-sds) and the per-face
+  // template's (fem-sds-template), are scored through the hook.
+  for (const FamilyScore score : {FamilyScore::fem_sds, FamilyScore::fem_sds_template})
   {
-    EXPECT_EQ(replicate_mesh_offset(s, r), offsets[r]);
-    replicate_score(s, meshes, start, r);
-    EXPECT_EQ(seen.back(), s.points + offsets[r]);
+    s.score = score;
+    s.oracle = Oracle::rolling;
+    const std::vector<int> offsets{0, 2, -2, 4, -4};
+    std::vector<int> seen;
+    s.fem_sds_score = [&](const geometry::BodySpec& body) {
+      seen.push_back(body.points);
+      return 1.0;
+    };
+    FamilyMeshes meshes(s);
+    const std::vector<double> start{90, 1, 1};
+    for (int r = 0; r < 5; ++r)
+    {
+      EXPECT_EQ(replicate_mesh_offset(s, r), offsets[r]);
+      replicate_score(s, meshes, start, r);
+      EXPECT_EQ(seen.back(), s.points + offsets[r]);
+    }
   }
+}
+
+TEST(OptimizeFamily, FemSdsNamesTheContinuumAndTheTemplate)
+{
+  // One name per quantity: fem-sds ranks by the continuum value, the
+  // paper-compatible per-face template is fem-sds-template.
+  std::map<std::string, FamilyScore> names(family_score_names().begin(), family_score_names().end());
+  EXPECT_EQ(names.at("fem-sds"), FamilyScore::fem_sds);
+  EXPECT_EQ(names.at("fem-sds-template"), FamilyScore::fem_sds_template);
+  EXPECT_TRUE(is_fem_sds(FamilyScore::fem_sds_template));
+  EXPECT_FALSE(is_fem_sds(FamilyScore::uniformity));
+  FamilySearchSettings s = cheap_family_search();
+  s.score = FamilyScore::fem_sds_template;
+  s.oracle = Oracle::rolling;
+  EXPECT_THROW(validate(s), InputError); // no hook: rollcheck-fem computes it
 }
 
 TEST(OptimizeFamily, TheLogLineSaysWhatTheJsonSays)

@@ -1,0 +1,83 @@
+#pragma once
+// The rim crossing the ruling obliquely (docs/methods/rims.md#an-oblique-end):
+// the loop's most oblique rim end, solved with its edge at the real crossing
+// angle (fem/scenes/rim_end_contact.h RimEndSettings::crossing_angle_rad:
+// the section angle in the ruling's vertical plane, both sides of the
+// ruling) and by the perpendicular reduction the rim loop uses (the edge
+// square to the ruling at the dihedral angle normal to the rim,
+// study/rims/rim_loop.h), at the same edge mesh levels and the same q and R.
+//
+// The comparison: at each level the sharp edge's nodal pressure over the far
+// side's (the end-to-interior ratio of a singular edge, which grows with the
+// mesh as h_e^(lambda - 1)), the oblique model's over the reduction's less
+// 1 (`ratio_difference`), and its change from level to level (the
+// difference's mesh convergence); and each model's fitted edge exponent
+// against the wedge equation at the dihedral angle (contact/wedge_exponent.h,
+// Williams 1952), both models' `wedge_exponent`.
+//
+// The most oblique end: over `samples` rulings of the body's contact loop
+// (oracle/rolling_dynamics.h trace_contact_loop) every end, loaded or not,
+// away from the vertex, where the ruling runs along the rim (|t . b| > 0.97,
+// as tests/contact/test_rim_dihedral_angle.cpp); the one whose sharp edge's
+// exponent on the rigid plane rises most from the section angle to the
+// dihedral angle. Its crossing angle c (ruling to rim, in the contact plane)
+// is 90 deg less phi, phi the angle between the ruling and the rim's normal
+// t x u (contact/rim_dihedral_angle.h: tan S = sin(c) tan D).
+#include "fem/scenes/rim_end_contact.h"
+#include "geometry/body.h"
+#include <cstddef>
+#include <mpi.h>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace rollcheck::study::rims
+{
+/// A rim end of the contact loop.
+struct LoopRimEnd
+{
+  double section_angle_rad = 0;  ///< in the ruling's vertical plane (90 deg + the rim's lean)
+  double dihedral_angle_rad = 0; ///< normal to the rim
+  double crossing_angle_rad = 0; ///< c, in (0, 90] deg
+  double exponent_shift = 0;     ///< the sharp edge's exponent on the rigid plane, dihedral less section
+  std::size_t sample = 0;        ///< the ruling's index along the loop
+  int end = 0;                   ///< 0: the ruling's start, 1: its end
+};
+
+/// The most oblique end of a two-circle body's loop (the oloid, a roller;
+/// InputError for other bodies), over `samples` rulings.
+LoopRimEnd most_oblique_end(const geometry::BodySpec& body, std::size_t samples);
+
+struct ObliqueEndSettings
+{
+  geometry::BodySpec body;   ///< whose loop's most oblique end is solved
+  std::size_t samples = 2048; ///< rulings of its loop searched
+  /// Both models' q, R, material, mesh and levels (its angles are the end's).
+  fem::RimEndSettings end;
+};
+
+/// One edge level of both models.
+struct ObliqueEndLevel
+{
+  double edge_element_m = 0;
+  double oblique_ratio = 0, perpendicular_ratio = 0; ///< edge nodal pressure over the far side's
+  double ratio_difference = 0;                       ///< oblique / perpendicular - 1
+};
+
+struct ObliqueEndStudy
+{
+  LoopRimEnd end;
+  fem::RimEndStudy oblique, perpendicular;
+  std::vector<ObliqueEndLevel> levels;
+  double wall_s = 0;
+};
+
+/// Collective on `comm`: every rank gets the study. InputError for bad
+/// settings (rounded edges and the steel block are not modelled obliquely).
+ObliqueEndStudy oblique_end_study(MPI_Comm comm, const ObliqueEndSettings& settings);
+
+nlohmann::json to_json(const ObliqueEndStudy& study);
+
+/// The comparison as a Markdown table under a line naming the end.
+std::string report(const ObliqueEndStudy& study);
+} // namespace rollcheck::study::rims
