@@ -24,7 +24,7 @@ BODIES = [
     ("oloid", ["--body", "oloid"]),
     ("paper-oloid", ["--body", "paper-oloid"]),
     ("cylinder", ["--body", "cylinder"]),
-    ("FEM-SDS optimum (112.7, 1.000, 0.999)",
+    ("FEM-SDS template optimum (112.7, 1.000, 0.999)",
      ["--body", "roller", "--family", "centre-line", "--theta", "112.7", "--offset", "1.000", "--ratio", "0.999"]),
     ("U optimum (74.1, 0.757, 1.071)",
      ["--body", "roller", "--family", "centre-line", "--theta", "74.1", "--offset", "0.757", "--ratio", "1.071"]),

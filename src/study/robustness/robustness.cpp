@@ -322,7 +322,7 @@ std::vector<NamedBody> default_bodies()
           {"cylinder", cylinder},
           {"paper-oloid", paper},
           {"u-optimum", roller(74.1, 0.757, 1.071)},
-          {"fem-sds-optimum", roller(112.7, 1.000, 0.999)}};
+          {"fem-sds-optimum", roller(62.8, 0.996, 0.982)}};
 }
 
 std::vector<Choice> default_grid()

@@ -25,8 +25,9 @@
 // The bodies are exact: the true oloid, the cylinder (r, L = 2r), the
 // preprint's body (the paper family's (90, 1, 1) hull) and the two
 // centre-line optima of the family (the U optimum (74.1, 0.757, 1.071) and
-// the FEM-SDS optimum (112.7, 1.000, 0.999)). Each is rolled once per energy
-// (oracle/rolling_study.h); every other choice re-scores the same loop.
+// the continuum FEM-SDS optimum (62.8, 0.996, 0.982): docs/results/optimize.md).
+// Each is rolled once per energy (oracle/rolling_study.h); every other choice
+// re-scores the same loop.
 //
 // The family: every genome of the preprint's quick grid is scored over the
 // grid too, by the accumulated line-Hertz pressure over the whole surface

@@ -290,7 +290,7 @@ TEST(FlatRimContact, ABalanceStepThatLoadsTheWindowBeyondFShortensIt)
   EXPECT_LT(r.after_over_half_width, study::rims::FlatRimSettings{}.after_over_half_width);
 }
 
-// The FEM-SDS optimum (112.7, 1.000, 0.999) at its 160 deg end walked
+// The FEM-SDS template optimum (112.7, 1.000, 0.999) at its 160 deg end walked
 // backwards: the hull beyond that end lies on segments from its rim circle
 // more than 0.15 rad from the end, where the surface's search once stopped
 // ("the hull's surface was not found over the window"), refusing rim
