@@ -1,16 +1,17 @@
-# Precompiled headers (ROLLCHECK_PCH, off by default until a clean build
-# measures them: scripts/bench/bench_build.sh): the third-party headers
-# that most translation units parse (the standard library, fmt, spdlog,
-# nlohmann/json, Eigen; in the FEM libraries DOLFINx, PETSc and MPI; in the
-# tests GoogleTest) are parsed once per library instead of once per file.
-# Each library with several files gets its own; the tests, one file each,
-# share one of two (those that link the fem layer and those that do not),
-# built by a stub target with the tests' flags. scripts/bench/bench_build.sh
-# measures a clean build with and without.
+# Precompiled headers (ROLLCHECK_PCH, on by default): the third-party
+# headers that most translation units parse (the standard library, fmt,
+# spdlog, nlohmann/json, Eigen; in the FEM libraries DOLFINx, PETSc and MPI;
+# in the tests GoogleTest) are parsed once instead of once per file.
+# The tests, one file and one executable each, share one of two headers
+# (those that link the fem layer, with its flags, and those that do not),
+# built by a stub target with the tests' flags. A library gets its own only without unity
+# batches (cmake/unity_build.cmake): with them it has a few translation
+# units, so a header of its own has little to save.
+# scripts/bench/bench_build.sh measures a clean build.
 #
 # ccache caches compilations that use a precompiled header only with
 # sloppiness pch_defines and time_macros; the compiler launcher sets them.
-option(ROLLCHECK_PCH "Precompile the common third-party headers" OFF)
+option(ROLLCHECK_PCH "Precompile the common third-party headers" ON)
 
 set(rollcheck_pch_light
     <algorithm> <array> <chrono> <cmath> <filesystem> <fstream> <functional> <limits> <map> <memory> <numbers>
@@ -57,8 +58,11 @@ function(rollcheck_test_pch_stubs)
     add_library(rollcheck_test_pch_${kind} OBJECT ${stub})
     target_compile_options(rollcheck_test_pch_${kind} PRIVATE ${ARGN})
     if(kind STREQUAL fem)
+      # Without DOLFINx: its common/Scatterer.h says `using namespace dolfinx`
+      # at global scope, so in a test that says `using namespace rollcheck`
+      # and includes no DOLFINx header `fem::` would become ambiguous.
       target_link_libraries(rollcheck_test_pch_${kind} PRIVATE rollcheck_fem GTest::gtest)
-      rollcheck_precompile(rollcheck_test_pch_${kind} light eigen fem)
+      rollcheck_precompile(rollcheck_test_pch_${kind} light eigen)
     else()
       target_link_libraries(rollcheck_test_pch_${kind} PRIVATE rollcheck_geometry GTest::gtest)
       rollcheck_precompile(rollcheck_test_pch_${kind} light eigen)

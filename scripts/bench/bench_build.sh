@@ -1,58 +1,76 @@
 #!/usr/bin/env bash
-# Benchmark (not a test) of a clean build: the tree as it is, configured
-# into two new build folders without ccache, once without the precompiled
-# headers (-DROLLCHECK_PCH=OFF, the build as it was before them) and once
-# with them (-DROLLCHECK_PCH=ON), one after the other in the same run; prints both
-# wall times and their ratio (the goal: at most 0.5), and the slowest
-# translation units of each build from ninja's log.
+# Benchmark (not a test) of a clean build: the tree as it is against a base
+# commit (BASE, default 691141b: the last commit before the unity batches
+# and the tests' precompiled headers), checked out with `git worktree add`
+# into a temporary folder. Both are configured with their defaults into new
+# build folders and built one after the other in the same run, without
+# ccache, with the same -j. Prints for each the wall time, the processor time
+# of the whole build (user + system, of ninja and every compiler and linker
+# it started: what the machine's load moves least), the sum of ninja's step
+# times from .ninja_log, its steps and its slowest steps; and the ratios new /
+# base (the goal: at most 0.5).
 #   bash scripts/bench/bench_build.sh [JOBS [TARGET...]]
-#   OBJECTS=REGEX bash scripts/bench/bench_build.sh [JOBS]
-# JOBS defaults to 2 (the CI machine's cores); TARGETs default to everything.
-# OBJECTS builds the object files whose path matches REGEX, e.g.
-# 'rollcheck_fem.dir/scenes/', with what they need first: the precompiled
-# headers they use and, through CMake's order-only dependencies, the
-# libraries their target links (a part of the build, not one folder alone).
+#   BASE=COMMIT bash scripts/bench/bench_build.sh [JOBS [TARGET...]]
+# JOBS defaults to 2 (the CI machine's cores); TARGETs default to everything
+# (give targets both trees have, e.g. rollcheck rollcheck-fem).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
 jobs=${1:-2}
 shift || true
+base=${BASE:-691141b}
 tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-export CCACHE_DISABLE=1
-build() { # NAME PCH: configure and build into $tmp/NAME, its wall seconds in $tmp/NAME.s
-  local name=$1 pch=$2 start end
-  cmake -S "$here" -B "$tmp/$name" -G Ninja -DCMAKE_BUILD_TYPE=Release -DROLLCHECK_PCH="$pch" > /dev/null
-  local targets=("$@")
-  if [ -n "${OBJECTS:-}" ]; then
-    mapfile -t targets < <(ninja -C "$tmp/$name" -t targets all | cut -d: -f1 | grep -E '\.o$' | grep -E "$OBJECTS")
-  fi
-  start=$(date +%s.%N)
-  ninja -C "$tmp/$name" -j "$jobs" "${targets[@]}" > "$tmp/$name.log" 2>&1 || { tail -30 "$tmp/$name.log"; exit 1; }
-  end=$(date +%s.%N)
-  echo "$end - $start" | bc -l > "$tmp/$name.s"
+cleanup() {
+  git -C "$here" worktree remove --force "$tmp/base-src" 2> /dev/null || true
+  rm -rf "$tmp"
 }
-build without OFF "$@"
-build with ON "$@"
-# -Winvalid-pch (set by CMake) reports a header the compiler refused to use.
-refused=$(grep -c "not using\|not used because" "$tmp/with.log" || true)
-/usr/bin/python3 - "$tmp" "$jobs" "${OBJECTS:+objects matching $OBJECTS}${*}" "$refused" <<'PY'
+trap cleanup EXIT
+git -C "$here" worktree add --detach "$tmp/base-src" "$base" > /dev/null 2>&1
+export CCACHE_DISABLE=1
+build() { # NAME SOURCE [TARGET...]: configure SOURCE into $tmp/NAME and build it
+  local name=$1 source=$2
+  shift 2
+  cmake -S "$source" -B "$tmp/$name" -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
+  # RUSAGE_CHILDREN of the python process holds ninja's and, since each
+  # process waits for its own, every compiler's and linker's times.
+  /usr/bin/python3 - "$tmp/$name" "$jobs" "$@" > "$tmp/$name.times" 2> "$tmp/$name.log" <<'PY' ||
+import resource, subprocess, sys, time
+folder, jobs, targets = sys.argv[1], sys.argv[2], sys.argv[3:]
+start = time.monotonic()
+status = subprocess.run(["ninja", "-C", folder, "-j", jobs, *targets], stdout=sys.stderr).returncode
+wall = time.monotonic() - start
+usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+print(wall, usage.ru_utime + usage.ru_stime)
+sys.exit(status)
+PY
+    { tail -30 "$tmp/$name.log"; exit 1; }
+}
+build base "$tmp/base-src" "$@"
+build new "$here" "$@"
+# -Winvalid-pch (set by CMake) reports a precompiled header the compiler refused.
+refused=$(grep -c "not using\|not used because" "$tmp/new.log" || true)
+/usr/bin/python3 - "$tmp" "$jobs" "$base" "${*:-everything}" "$refused" <<'PY'
 import sys
-tmp, jobs, targets, refused = sys.argv[1], sys.argv[2], sys.argv[3] or "everything", sys.argv[4]
-def slowest(name, n=5):
-    rows = []
+tmp, jobs, base, targets, refused = sys.argv[1:6]
+def profile(name):
+    last = {}  # output -> seconds (the last record of each output)
     for line in open(f"{tmp}/{name}/.ninja_log"):
         if line.startswith("#"):
             continue
         start, end, _, out, _ = line.rstrip("\n").split("\t")
-        rows.append(((int(end) - int(start)) / 1000, out))
-    rows.sort(reverse=True)
-    return len(rows), rows[:n]
-without, with_pch = (float(open(f"{tmp}/{n}.s").read()) for n in ("without", "with"))
-print(f"clean build of {targets}, -j {jobs}, no ccache")
-print(f"  without precompiled headers: {without:.0f} s")
-print(f"  with precompiled headers:    {with_pch:.0f} s")
-print(f"  ratio with / without: {with_pch / without:.2f} (goal <= 0.50); precompiled headers refused: {refused}")
-for name in ("without", "with"):
-    steps, top = slowest(name)
-    print(f"  {name}: {steps} steps; slowest: " + ", ".join(f"{out.split('/')[-1]} {s:.0f} s" for s, out in top))
+        last[out] = (int(end) - int(start)) / 1000
+    wall, cpu = (float(x) for x in open(f"{tmp}/{name}.times").read().split())
+    compile_s = sum(s for out, s in last.items() if out.endswith(".o") or out.endswith(".gch"))
+    steps = sum(last.values())
+    top = sorted(((s, out) for out, s in last.items()), reverse=True)[:6]
+    return dict(wall=wall, cpu=cpu, steps=steps, compile=compile_s, count=len(last), top=top)
+b, n = profile("base"), profile("new")
+print(f"clean build of {targets}, -j {jobs}, no ccache; base {base} against the tree as it is")
+print(f"{'':28}{'base':>10}{'new':>10}{'new/base':>10}")
+for key, label in (("wall", "wall s"), ("cpu", "processor s (user+sys)"), ("steps", "sum of ninja step s"),
+                   ("compile", "  of which compiling s")):
+    print(f"{label:28}{b[key]:10.0f}{n[key]:10.0f}{n[key] / b[key]:10.2f}")
+print(f"{'ninja steps':28}{b['count']:10d}{n['count']:10d}")
+print(f"goal: new/base at most 0.50; precompiled headers refused in the new build: {refused}")
+for name, p in (("base", b), ("new", n)):
+    print(f"  {name} slowest: " + ", ".join(f"{out.split('/')[-1]} {s:.0f} s" for s, out in p["top"]))
 PY
