@@ -11,12 +11,14 @@ mkdir -p results
 # The audit of the preprint's claims first (its quick mode: the full audit,
 # `bash scripts/studies/audit.sh`, takes minutes), so that the report shows
 # its table after the verdicts of the default cases. Its commands' outputs are
-# kept: the report's ranges over the modelling choices are those of its
-# `rollcheck robustness` command, not computed a second time.
+# kept: the report's ranges over the modelling choices and its fatigue-life
+# section are those of its `rollcheck robustness` and `rollcheck life`
+# commands, not computed a second time.
 mkdir -p results/audit
 build/src/cli/rollcheck audit --quick --json results/audit/audit.json --markdown results/audit/audit.md \
   --outputs results/audit/commands > /dev/null
-robustness=$(jq -r '[.commands[] | select(.command | startswith("rollcheck robustness "))][0].id' results/audit/audit.json)
+kept() { jq -r --arg c "rollcheck $1 " '[.commands[] | select(.command | startswith($c))][0].id' results/audit/audit.json; }
 build/src/cli/rollcheck validate --out results --audit results/audit/audit.json \
-  --robustness "results/audit/commands/$robustness.json" --json results/validate.json "$@"
+  --robustness "results/audit/commands/$(kept robustness).json" --life "results/audit/commands/$(kept life).json" \
+  --json results/validate.json "$@"
 echo "summary: $here/results/validate.json"

@@ -33,9 +33,9 @@ bool written_by_validate(const std::filesystem::path& path)
 /// runs: validation.json (replaced only if rollcheck wrote it), report/ (a
 /// folder output) and the audit and robustness JSON the report reads.
 void check_validate_outputs(const std::filesystem::path& out, const std::string& audit_json,
-                            const std::string& robustness_json)
+                            const std::string& robustness_json, const std::string& life_json)
 {
-  io::require_report_json_inputs({{}, audit_json, robustness_json}, "validate");
+  io::require_report_json_inputs({{}, audit_json, robustness_json, life_json}, "validate");
   check_output_location(out, "validate --out");
   if (!written_by_validate(out / validation_name))
     check_output_entries(out, {validation_name}, "validate --out");
@@ -46,7 +46,7 @@ void check_validate_outputs(const std::filesystem::path& out, const std::string&
 
 void add_validate_command(CLI::App& app)
 {
-  static std::string audit_json, robustness_json;
+  static std::string audit_json, robustness_json, life_json;
   static io::BatchSettings options = [] {
     io::BatchSettings o;
     o.cases = {(data_folder() / "cases" / "default").string()};
@@ -59,7 +59,7 @@ void add_validate_command(CLI::App& app)
   }();
   CLI::App* sub = add_command(
       app, "validate", "The main job: run the default cases (cases/default) as a batch and write the report", [] {
-        check_validate_outputs(options.out, audit_json, robustness_json);
+        check_validate_outputs(options.out, audit_json, robustness_json, life_json);
         const io::BatchResult batch = run_scene_batch(options);
         if (!batch.coordinator)
           return CommandResult{};
@@ -77,7 +77,7 @@ void add_validate_command(CLI::App& app)
         {
           const io::ReportFiles report = io::write_report(batch.store, options.out / "report",
                                                           io::default_scripts_folder(), "/usr/bin/python3",
-                                                          validation_file, audit_json, robustness_json);
+                                                          validation_file, audit_json, robustness_json, life_json);
           summary["report"] = {{"html", report.html.string()}, {"markdown", report.markdown.string()}};
           print_summary(fmt::format("report: {}\nmarkdown: {}\n", report.html.string(), report.markdown.string()));
         }
@@ -90,6 +90,9 @@ void add_validate_command(CLI::App& app)
       ->check(CLI::Range(0, 1024));
   sub->add_option("--robustness", robustness_json,
                   "JSON of `rollcheck robustness --json PATH`, the headline's ranges in the report (default: none)")
+      ->check(CLI::ExistingFile);
+  sub->add_option("--life", life_json,
+                  "JSON of `rollcheck life --json PATH`, the fatigue-life section of the report (default: none)")
       ->check(CLI::ExistingFile);
   sub->add_option("--audit", audit_json,
                   "JSON of `rollcheck audit --json PATH`, shown in the report after the verdicts (default: none)")
