@@ -26,8 +26,9 @@ check_json "oloid vs cylinder U flips near energy excess 0.36" \
     | .value | (. > 0.3 and . < 0.42)] | (length > 0 and all)' "$tmp/r.json"
 # The family: its five best at the reference cell, judged against the rest,
 # and the best of them against the oloid under every score.
-check_json "the family names its five best and its reference cell" \
-  '(.family.best | length) == 5 and .family.grid == "quick" and (.family.genomes | length) == 45
+check_json "the family names its five best and its reference cell, one body of each mirror pair (theta, 180 - theta)" \
+  '(.family.best | length) == 5 and .family.grid == "quick" and (.family.genomes | length) == 27 and .family.mirrors_merged == 18
+   and ([.family.genomes[] as $a | .family.genomes[] | select(.theta_deg + $a.theta_deg == 180 and .theta_deg != 90 and .offset == $a.offset and .ratio == $a.ratio)] | length == 0)
    and .family.reference_cell == {"rolling_energy":"0.1","contact_width":"geometric","load_rule":"dynamic","end_margin":"0.05"}' \
   "$tmp/r.json"
 check_json "the five best are judged against the rest" \
