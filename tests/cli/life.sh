@@ -48,7 +48,7 @@ grep -q '^| oloid | 100 | ' "$tmp/l.md" || { echo "FAIL: no Markdown row of the 
 "$bin" -q life --markdown /nonexistent/l.md > /dev/null 2> "$tmp/err.txt"; code=$?
 [[ $code -eq 2 ]] || { echo "FAIL: bad --markdown path gave exit $code"; fail=1; }
 grep -q -- '--markdown' "$tmp/err.txt" || { echo "FAIL: the message does not name --markdown"; fail=1; }
-refuses life '--samples-per-loop 10:samples-per-loop' '--refines 20:refines' '--end-ratios /nonexistent.json:end-ratios'
+refuses life '--samples-per-loop 1:samples-per-loop' '--refines 20:refines' '--end-ratios /nonexistent.json:end-ratios'
 "$bin" -q life --edge-radii 0.04 0.01 > /dev/null 2> "$tmp/err2.txt"; code=$?
 [[ $code -eq 2 ]] && grep -q -- '--edge-radii' "$tmp/err2.txt" || { echo "FAIL: descending --edge-radii gave exit $code"; fail=1; }
 exit $fail
