@@ -2,6 +2,8 @@
 // every write; results are whole or absent; bad paths are refused up front.
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/output_manifest.h"
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -244,4 +246,44 @@ TEST(OutputFile, DevicesAndFifosAreRefusedUpFront)
   const fs::path dir = fresh_dir("fifo");
   ASSERT_EQ(mkfifo((dir / "pipe").c_str(), 0600), 0);
   EXPECT_THROW(check_output_file(dir / "pipe", "--json"), InputError);
+}
+
+namespace
+{
+/// A report folder with the plain-text marker of a rollcheck before manifests
+/// and a user's file older than it, as a file moved in with its time kept.
+fs::path legacy_folder(const std::string& name)
+{
+  const fs::path dir = fresh_dir(name);
+  fs::create_directories(dir / "report");
+  write(dir / "report" / output_marker, "rollcheck output\n");
+  write(dir / "report" / "notes.txt", "the user's");
+  fs::last_write_time(dir / "report" / "notes.txt",
+                      fs::last_write_time(dir / "report" / output_marker) - std::chrono::hours(24 * 365));
+  return dir;
+}
+} // namespace
+
+// A plain-text marker lists nothing: a user's file there is never removed,
+// however old its time stamp, and a name the run would write is refused.
+TEST(OutputManifest, APlainTextMarkerListsNothing)
+{
+  const fs::path dir = legacy_folder("lists");
+  const std::optional<OutputManifest> manifest = read_output_manifest(dir / "report");
+  ASSERT_TRUE(manifest);
+  EXPECT_TRUE(manifest->entries.empty());
+}
+
+TEST(OutputManifest, AnOldUserFileInAPlainTextMarkedFolderSurvivesAReport)
+{
+  const fs::path dir = legacy_folder("survives");
+  write_folder_atomically(dir / "report", "report --out",
+                          [](const fs::path& tmp) { std::ofstream(tmp / "report.html") << "<html/>"; });
+  EXPECT_TRUE(fs::exists(dir / "report" / "notes.txt"));
+  EXPECT_TRUE(fs::exists(dir / "report" / "report.html"));
+  // A name the run would write that the old marker cannot vouch for: refused, kept.
+  EXPECT_THROW(write_folder_atomically(dir / "report", "report --out",
+                                       [](const fs::path& tmp) { std::ofstream(tmp / "notes.txt") << "ours"; }),
+               InputError);
+  EXPECT_EQ(read(dir / "report" / "notes.txt"), "the user's");
 }
