@@ -148,8 +148,8 @@ void add_rolling_and_contact(ClaimCommands& c, bool quick)
   // The rim study's quickest loop: one orientation solved directly, two edge
   // levels (singular or not follows from the wedge's exponent at each end's
   // interior angle; the levels measure the growth). The quick audit solves
-  // one level: the rule reads which ends are singular, and that count does
-  // not depend on the levels.
+  // one level: its verdict rests on which ends are singular, a count that
+  // does not depend on the levels.
   const std::string rim_levels = quick ? "1" : "2";
   c.rims = {{"rim", "--body", "oloid", "--orientations", "1", "--levels", rim_levels},
             {"rim", "--body", "cylinder", "--orientations", "1", "--levels", rim_levels}};
