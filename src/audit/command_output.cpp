@@ -8,8 +8,8 @@ namespace rollcheck::audit
 {
 std::string command_line(const CommandArgs& args) { return fmt::format("rollcheck {} --json -", fmt::join(args, " ")); }
 
-CommandOutput::CommandOutput(std::string command, nlohmann::json json)
-    : command_(std::move(command)), json_(std::move(json))
+CommandOutput::CommandOutput(std::string command, nlohmann::json json, CommandCost cost)
+    : command_(std::move(command)), cost_(cost), json_(std::move(json))
 {
 }
 

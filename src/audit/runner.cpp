@@ -12,6 +12,7 @@
 #include <mutex>
 #include <numeric>
 #include <spdlog/spdlog.h>
+#include <sys/resource.h>
 #include <thread>
 
 namespace rollcheck::audit
@@ -20,20 +21,69 @@ std::string command_id(std::size_t i) { return fmt::format("c{}", i + 1); }
 
 namespace
 {
+/// The CPU time (user + system) of this process's children that have ended
+/// and been reaped, and of their own reaped children.
+double reaped_children_cpu_s()
+{
+  rusage usage{};
+  getrusage(RUSAGE_CHILDREN, &usage);
+  auto seconds = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
+/// Runs `argv` to its end, stdout and stderr captured, and measures it. The
+/// kernel adds a child's CPU time to reaped_children_cpu_s() when it is
+/// reaped; every reap of the audit happens under one lock, between two
+/// readings, so the difference is this child's alone whatever the other
+/// workers' children do.
+std::pair<process::ExitStatus, std::string> run_measured(const std::vector<std::string>& argv, CommandCost& cost)
+{
+  static std::mutex reaping;
+  process::ChildProcess child(argv, {});
+  for (;;)
+  {
+    {
+      std::lock_guard lock(reaping);
+      const double before = reaped_children_cpu_s();
+      if (const std::optional<process::ExitStatus> status = child.poll())
+      {
+        cost = {child.elapsed_s(), reaped_children_cpu_s() - before};
+        return {*status, child.captured_stderr()};
+      }
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
 /// Runs one command with its JSON written to `json_path` (not to stdout:
 /// `search` prints its table there too); the error text when it failed.
 std::string run_one(const CommandArgs& args, const std::filesystem::path& rollcheck,
-                    const std::filesystem::path& json_path, nlohmann::json& output)
+                    const std::filesystem::path& json_path, nlohmann::json& output, CommandCost& cost)
 {
   std::vector<std::string> argv = {rollcheck.string(), "-q"};
   argv.insert(argv.end(), args.begin(), args.end());
   argv.insert(argv.end(), {"--json", json_path.string()});
-  const process::RunResult run = process::run(argv);
-  if (!run.status.success())
-    return fmt::format("{}: {}", run.status.describe(), run.err);
+  const auto [status, err] = run_measured(argv, cost);
+  if (!status.success())
+    return fmt::format("{}: {}", status.describe(), err);
   std::ifstream in(json_path);
   output = nlohmann::json::parse(in, nullptr, false);
   return output.is_discarded() ? fmt::format("unreadable JSON output in {}", json_path.string()) : "";
+}
+
+/// The `count` costliest commands by CPU time, on the log: where the audit's time goes.
+void log_costliest(const std::vector<CommandArgs>& commands, const std::vector<CommandCost>& costs, std::size_t count)
+{
+  std::vector<std::size_t> order(commands.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return costs[a].cpu_s > costs[b].cpu_s; });
+  double cpu_s = 0;
+  for (const CommandCost& c : costs)
+    cpu_s += c.cpu_s;
+  spdlog::info("audit: the commands' CPU time {:.1f} s; the costliest:", cpu_s);
+  for (std::size_t k = 0; k < std::min(count, order.size()); ++k)
+    spdlog::info("  {:7.1f} s CPU {:7.1f} s wall  {} {}", costs[order[k]].cpu_s, costs[order[k]].wall_s,
+                 command_id(order[k]), command_line(commands[order[k]]));
 }
 
 /// Subcommands that run for tens of seconds (FEM loops, searches over rolling
@@ -132,6 +182,7 @@ std::vector<CommandOutput> run_commands(const std::vector<CommandArgs>& commands
   const ScratchFolder scratch;
   std::vector<nlohmann::json> outputs(commands.size());
   std::vector<std::string> errors(commands.size());
+  std::vector<CommandCost> costs(commands.size());
   const std::vector<std::size_t> order = start_order(commands);
   std::atomic<std::size_t> next{0};
   std::mutex log_mutex;
@@ -140,18 +191,17 @@ std::vector<CommandOutput> run_commands(const std::vector<CommandArgs>& commands
     for (std::size_t k = next++; k < commands.size(); k = next++)
     {
       const std::size_t i = order[k];
-      const auto start = std::chrono::steady_clock::now();
       try
       {
-        errors[i] = run_one(commands[i], rollcheck, scratch.path / (command_id(i) + ".json"), outputs[i]);
+        errors[i] = run_one(commands[i], rollcheck, scratch.path / (command_id(i) + ".json"), outputs[i], costs[i]);
       }
       catch (const std::exception& e) // a child that cannot start: reported with the others, not thrown from a thread
       {
         errors[i] = e.what();
       }
       std::lock_guard lock(log_mutex);
-      spdlog::info("audit [{}/{}] {} {} ({:.1f} s)", ++done, commands.size(), command_id(i), command_line(commands[i]),
-                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      spdlog::info("audit [{}/{}] {} {} ({:.1f} s, {:.1f} s CPU)", ++done, commands.size(), command_id(i),
+                   command_line(commands[i]), costs[i].wall_s, costs[i].cpu_s);
     }
   };
   std::vector<std::thread> pool;
@@ -159,13 +209,14 @@ std::vector<CommandOutput> run_commands(const std::vector<CommandArgs>& commands
     pool.emplace_back(worker);
   for (std::thread& t : pool)
     t.join();
+  log_costliest(commands, costs, 10);
   std::vector<CommandOutput> read;
   for (std::size_t i = 0; i < commands.size(); ++i)
   {
     if (!errors[i].empty())
       throw ComputationError(
           fmt::format("audit command {} `{}` failed: {}", command_id(i), command_line(commands[i]), errors[i]));
-    read.emplace_back(command_line(commands[i]), std::move(outputs[i]));
+    read.emplace_back(command_line(commands[i]), std::move(outputs[i]), costs[i]);
   }
   return read;
 }
@@ -217,7 +268,8 @@ AuditTable decide_claims(const std::vector<Claim>& claims, std::vector<CommandOu
     table.claims.push_back(std::move(decided));
   }
   for (std::size_t i = 0; i < commands.size(); ++i)
-    table.commands.push_back({command_id(i), outputs[i].command(), outputs[i].reads()});
+    table.commands.push_back({command_id(i), outputs[i].command(), outputs[i].reads(), outputs[i].cost().wall_s,
+                              outputs[i].cost().cpu_s});
   return table;
 }
 

@@ -36,8 +36,9 @@ std::vector<CommandArgs> distinct_commands(const std::vector<Claim>& claims);
 /// `rollcheck`, `threads` at a time (the long subcommands, optimize, rim,
 /// robustness, fem-sds, search and hertz, started first; the outputs stay in
 /// the commands' order), FILE in a scratch folder removed after, and parses
-/// FILE (the JSON the listed `--json -` prints). A command that
-/// fails or writes no JSON is a ComputationError naming it, with its stderr.
+/// FILE (the JSON the listed `--json -` prints), each output with its
+/// command's wall and CPU time (the ten costliest go to the log). A command
+/// that fails or writes no JSON is a ComputationError naming it, with its stderr.
 std::vector<CommandOutput> run_commands(const std::vector<CommandArgs>& commands,
                                         const std::filesystem::path& rollcheck, unsigned threads);
 

@@ -178,7 +178,7 @@ void to_json(nlohmann::json& j, const AuditCommand& c)
   nlohmann::json reads = nlohmann::json::object();
   for (const auto& [pointer, value] : c.reads)
     reads[pointer] = json_number(value);
-  j = {{"id", c.id}, {"command", c.command}, {"reads", reads}};
+  j = {{"id", c.id}, {"command", c.command}, {"reads", reads}, {"wall_s", c.wall_s}, {"cpu_s", c.cpu_s}};
 }
 
 nlohmann::json to_json(const AuditTable& table)

@@ -15,13 +15,15 @@
 
 namespace rollcheck::audit
 {
-/// One `rollcheck ...` command line and the values read from its JSON output,
-/// keyed by JSON pointer (e.g. "/cds", "/convergence/cds/0/1").
+/// One `rollcheck ...` command line, the values read from its JSON output,
+/// keyed by JSON pointer (e.g. "/cds", "/convergence/cds/0/1"), and what it cost.
 struct AuditCommand
 {
   std::string id;      ///< "c1", "c2", ... as cited in the table
   std::string command; ///< the full command line, ending in `--json -`
   std::map<std::string, double> reads;
+  double wall_s = 0; ///< its run's wall time
+  double cpu_s = 0;  ///< its run's CPU time, user + system, its child processes' included
 };
 
 enum class Verdict

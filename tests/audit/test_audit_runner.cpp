@@ -4,6 +4,9 @@
 // log is the start order: the long subcommands first, in the order of
 // their cost, the others in the order they are cited; the outputs come
 // back in the commands' order all the same, and a failing command is named.
+// Each command's CPU time is its own: a command that burns 0.3 s of CPU in a
+// child of its own, run beside one that sleeps until it has ended (so the
+// burner is reaped while the sleeper runs), gets it, and the sleeper does not.
 // --claims: the claims named, in the table's order; an unknown id refused.
 #include "core/error.h"
 #include "audit/runner.h"
@@ -25,10 +28,15 @@ fs::path stand_in(const std::string& name)
   const fs::path dir = fs::path(ROLLCHECK_TEST_TMP) / ("audit_runner_" + name + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
-  // Arguments: -q SUBCOMMAND ARGUMENT --json FILE; the subcommand `fail` fails.
+  // Arguments: -q SUBCOMMAND ARGUMENT --json FILE; the subcommand `fail` fails,
+  // `burn` spends 0.3 s of CPU in a child, `wait` sleeps until `burn` is done.
   std::ofstream(dir / "rollcheck") << "#!/bin/sh\n"
                                    << "echo \"$2\" >> '" << (dir / "starts.log").string() << "'\n"
                                    << "[ \"$2\" = fail ] && { echo broken >&2; exit 1; }\n"
+                                   << "[ \"$2\" = burn ] && /usr/bin/python3 -c 'import time\n"
+                                   << "while time.process_time() < 0.3: pass' && touch '" << (dir / "burnt").string() << "'\n"
+                                   << "[ \"$2\" = wait ] && while [ ! -e '" << (dir / "burnt").string()
+                                   << "' ]; do sleep 0.2; done\n"
                                    << "printf '{\"subcommand\": \"%s\", \"argument\": %s}' \"$2\" \"$3\" > \"$5\"\n";
   fs::permissions(dir / "rollcheck", fs::perms::owner_all);
   return dir;
@@ -72,6 +80,18 @@ TEST(AuditRunner, AFailedCommandIsNamedWithItsIdAndStderr)
     EXPECT_NE(what.find("c2 `rollcheck fail 2 --json -`"), std::string::npos) << what;
     EXPECT_NE(what.find("broken"), std::string::npos) << what;
   }
+}
+
+TEST(AuditRunner, EachCommandGetsItsOwnCpuTime)
+{
+  const fs::path dir = stand_in("cost");
+  std::vector<CommandOutput> outputs = run_commands({{"wait", "1"}, {"burn", "2"}}, dir / "rollcheck", 2);
+  ASSERT_EQ(outputs.size(), 2u);
+  const CommandCost &sleeper = outputs[0].cost(), &burner = outputs[1].cost();
+  EXPECT_GE(burner.cpu_s, 0.3);
+  EXPECT_LT(burner.cpu_s, 0.6); // the sleeper's share not added
+  EXPECT_GE(burner.wall_s, burner.cpu_s); // one thread
+  EXPECT_LT(sleeper.cpu_s, 0.1); // the burner's 0.3 s, reaped while it slept, not counted here
 }
 
 TEST(AuditRunner, SelectsClaimsInTheTablesOrderAndRefusesAnUnknownId)
