@@ -5,8 +5,9 @@
 # static, dynamic and uniform load rules in one run (`rollcheck rim --body B
 # --load-rule static --each-load-rule`, two ranks; the tables shared by the
 # rules), then the page's section between its markers
-# (scripts/studies/rim_load_rules_page.py). Each body's settings are the
-# cheapest whose end-aware status the page reports; OLOID and CYLINDER
+# (scripts/studies/rim_load_rules_page.py). Each body's settings are cheap
+# ones (coarse edge elements, 1024 samples, one orientation, one column of
+# the end table) whose end-aware status the page reports; OLOID and CYLINDER
 # override them.
 # Usage: scripts/studies/rim_load_rules.sh [ROLLCHECK_BINARY] [OUT_DIR]
 set -euo pipefail
@@ -16,8 +17,8 @@ out=${2:-$here/results/rim_load_rules}
 mkdir -p "$out"
 common="--radius 0.01 --load 800 --edge-radius 4e-4 --load-rule static --each-load-rule"
 declare -A settings=(
-  [oloid]=${OLOID:---samples-per-loop 4096 --orientations 1 --levels 2 --edge-element 0.0625 --end-table-step 45 --end-table-acute-step 15 --end-table-radius-step 4}
-  [cylinder]=${CYLINDER:---samples-per-loop 4096 --orientations 1 --levels 2 --edge-element 0.015625 --end-table-step 30 --end-table-radius-step 0})
+  [oloid]=${OLOID:---samples-per-loop 1024 --orientations 1 --levels 2 --edge-element 0.125 --end-table-step 60 --end-table-radius-step 0}
+  [cylinder]=${CYLINDER:---samples-per-loop 1024 --orientations 1 --levels 2 --edge-element 0.03125 --end-table-step 30 --end-table-radius-step 0})
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
 for body in oloid cylinder; do
   start=$(date +%s)
