@@ -65,8 +65,8 @@ void add_loop_options(RimSchema& s)
             "With --body: also score the loop under the two other load rules (the JSON's load_rules), sharing the "
             "interior's FEM and the end and flat-rim tables, whose nodes then cover every rule's ends")
       .real("normal_load_n", "--load", [](RimCommand& c) -> double& { return c.loop.normal_load_n; }, "N",
-            "With --body: force F pressing the body onto the counter-face through its centre of mass (the preprint's; "
-            "its fatigue load is 5000 N)",
+            "With --body: force F pressing the body onto the counter-face (the preprint's; its fatigue load is "
+            "5000 N), spread along each ruling by --load-rule",
             io::positive);
 }
 
