@@ -5,6 +5,7 @@
 // (study/rims/rim_loop.h). Its tables are the rims wing's (study/rims/rim_report.h).
 #include "cli/cli.h"
 #include "cli/scenes.h"
+#include "contact/continuum_loop_scores.h"
 #include "fem/scenes/rim_end_contact.h"
 #include "study/rims/rim_end_json.h"
 #include "study/rims/oblique_end.h"
@@ -54,9 +55,18 @@ void add_loop_options(RimSchema& s)
             "With --body: instead of the loop, its most oblique rim end (study/rims/oblique_end.h) solved with the "
             "edge crossing the ruling at its real angle and by the perpendicular reduction at the dihedral angle, at "
             "the end options' q, R, material and levels")
+      .choice("load_rule", "--load-rule", [](RimCommand& c) -> contact::LoadRule& { return c.loop.load_rule; },
+              "With --body: the load on each ruling of the loop, which sets each loaded end's line load and the "
+              "interior's: dynamic (the normal force and centre of pressure of the same rolling motion, scaled to "
+              "--load), static (--load through the centre of mass) or uniform (--load / L along the ruling), as "
+              "fem-sds's (docs/methods/rims.md)",
+              contact::load_rule_names())
+      .flag("each_load_rule", "--each-load-rule", [](RimCommand& c) -> bool& { return c.each_load_rule; },
+            "With --body: also score the loop under the two other load rules (the JSON's load_rules), sharing the "
+            "interior's FEM and the end and flat-rim tables, whose nodes then cover every rule's ends")
       .real("normal_load_n", "--load", [](RimCommand& c) -> double& { return c.loop.normal_load_n; }, "N",
-            "With --body: force F pressing the body onto the counter-face through its centre of mass (the preprint's; "
-            "its fatigue load is 5000 N)",
+            "With --body: force F pressing the body onto the counter-face (the preprint's; its fatigue load is "
+            "5000 N), spread along each ruling by --load-rule",
             io::positive);
 }
 

@@ -8,8 +8,11 @@ namespace rollcheck::study::rims
 std::optional<double> EndRatios::operator()(int stride, const loop_scores::LoadedEnd& end) const
 {
   if (!flat_table.empty() && end.interior_angle_rad >= flat_from_rad)
-    return flat_rim_peak(flat_table, static_cast<int>(own_stride(stride, flat_table.size())), end.interior_angle_rad)
-           / end.line_hertz_pa;
+  {
+    const int flat_stride = static_cast<int>(own_stride(stride, flat_table.size()));
+    return flat_rim_own_load ? flat_rim_peak(flat_table, flat_stride, end.interior_angle_rad) / end.line_hertz_pa
+                             : flat_rim_ratio(flat_table, flat_stride, end.interior_angle_rad);
+  }
   // The end table's angle is the wedge's, normal to the rim; the flat-rim
   // table's is the section's (its nodes are the loop's own ends).
   return end_table_ratio(table, stride, singular_from_rad,

@@ -31,11 +31,11 @@ std::vector<std::span<const EndTableNode>> table_columns(const std::vector<EndTa
 }
 } // namespace
 
-double sharp_edge_exponent(const fem::RimEndSettings& end, double interior_angle_rad)
+double sharp_edge_exponent(const fem::RimEndSettings& end, double wedge_angle_rad)
 {
   return end.counter_face == fem::CounterFace::rigid
-             ? contact::edge_on_rigid_plane_exponent(interior_angle_rad)
-             : contact::edge_on_elastic_block_exponent(interior_angle_rad, end.youngs_modulus_pa, end.poisson_ratio,
+             ? contact::edge_on_rigid_plane_exponent(wedge_angle_rad)
+             : contact::edge_on_elastic_block_exponent(wedge_angle_rad, end.youngs_modulus_pa, end.poisson_ratio,
                                                        end.youngs_modulus_pa, end.poisson_ratio);
 }
 
@@ -86,7 +86,7 @@ struct ColumnRead
   std::vector<std::pair<std::size_t, double>> nodes;
 };
 
-std::vector<ColumnRead> table_reads(const std::vector<EndTableNode>& table, int stride, double interior_angle_rad,
+std::vector<ColumnRead> table_reads(const std::vector<EndTableNode>& table, int stride, double dihedral_angle_rad,
                                     double radius_m)
 {
   if (table.empty())
@@ -104,10 +104,10 @@ std::vector<ColumnRead> table_reads(const std::vector<EndTableNode>& table, int 
     const std::span<const EndTableNode> column = columns[c];
     std::vector<double> angles;
     for (const EndTableNode& n : column)
-      angles.push_back(n.interior_angle_rad);
+      angles.push_back(n.dihedral_angle_rad);
     ColumnRead read{weight, {}};
     const auto first = static_cast<std::size_t>(&column.front() - table.data());
-    for (const auto& [k, node_weight] : held_bracket(angles, own_stride(stride, column.size()), interior_angle_rad))
+    for (const auto& [k, node_weight] : held_bracket(angles, own_stride(stride, column.size()), dihedral_angle_rad))
       read.nodes.emplace_back(first + k, node_weight);
     reads.push_back(std::move(read));
   }
@@ -116,16 +116,16 @@ std::vector<ColumnRead> table_reads(const std::vector<EndTableNode>& table, int 
 } // namespace
 
 std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, int stride, double singular_from_rad,
-                                      double interior_angle_rad, double radius_m)
+                                      double dihedral_angle_rad, double radius_m)
 {
-  if (interior_angle_rad > singular_from_rad)
+  if (dihedral_angle_rad > singular_from_rad)
     return std::nullopt;
   // Summed as interpolate_held sums: (1 - t) left + t right, a held node alone.
   auto weighted = [](const std::vector<std::pair<double, double>>& terms) {
     return terms.size() == 1 ? terms[0].second : terms[0].first * terms[0].second + terms[1].first * terms[1].second;
   };
   std::vector<std::pair<double, double>> across;
-  for (const ColumnRead& read : table_reads(table, stride, interior_angle_rad, radius_m))
+  for (const ColumnRead& read : table_reads(table, stride, dihedral_angle_rad, radius_m))
   {
     std::vector<std::pair<double, double>> along;
     for (const auto& [k, weight] : read.nodes)
@@ -134,12 +134,12 @@ std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, in
       if (!n.reached)
         throw ComputationError(fmt::format("rim loop: the end table's node at {:.2f} deg, R = {:.4g} m was left "
                                            "unsolved, but a look-up at {:.2f} deg, R = {:.4g} m reads it",
-                                           n.interior_angle_rad / degree, n.sheet_radius_m,
-                                           interior_angle_rad / degree, radius_m));
+                                           n.dihedral_angle_rad / degree, n.sheet_radius_m,
+                                           dihedral_angle_rad / degree, radius_m));
       if (!n.study.end_to_interior)
         throw ComputationError(fmt::format("rim loop: the end table's node at {:.2f} deg, R = {:.4g} m has no "
                                            "end/interior ratio (its rounded edge is not resolved)",
-                                           n.interior_angle_rad / degree, n.sheet_radius_m));
+                                           n.dihedral_angle_rad / degree, n.sheet_radius_m));
       along.emplace_back(weight, *n.study.end_to_interior);
     }
     across.emplace_back(read.weight, weighted(along));
@@ -148,12 +148,12 @@ std::optional<double> end_table_ratio(const std::vector<EndTableNode>& table, in
 }
 
 std::vector<std::size_t> end_table_nodes_read(const std::vector<EndTableNode>& table, int stride,
-                                              double singular_from_rad, double interior_angle_rad, double radius_m)
+                                              double singular_from_rad, double dihedral_angle_rad, double radius_m)
 {
   std::vector<std::size_t> nodes;
-  if (interior_angle_rad > singular_from_rad)
+  if (dihedral_angle_rad > singular_from_rad)
     return nodes;
-  for (const ColumnRead& read : table_reads(table, stride, interior_angle_rad, radius_m))
+  for (const ColumnRead& read : table_reads(table, stride, dihedral_angle_rad, radius_m))
     for (const auto& [k, weight] : read.nodes)
       nodes.push_back(k);
   return nodes;

@@ -124,7 +124,7 @@ FlatRimTable flat_rim_table(MPI_Comm comm, const FlatRimSettings& setup, std::sp
   for (const std::vector<LoopEnd>& node_ends : ends)
   {
     FlatRimNode& node = table.emplace_back();
-    node.interior_angle_rad = node_ends.front().interior_angle_rad;
+    node.section_angle_rad = node_ends.front().interior_angle_rad;
     node.dihedral_angle_rad = node_ends.front().dihedral_angle_rad();
     bool failed = false;
     double slope = 0;
@@ -136,8 +136,8 @@ FlatRimTable flat_rim_table(MPI_Comm comm, const FlatRimSettings& setup, std::sp
     }
     refused.push_back(failed || slope > largest_slope);
     if (refused.back())
-      refused_angles.push_back(failed ? fmt::format("{:.2f} deg (its solve failed)", node.interior_angle_rad / degree)
-                                      : fmt::format("{:.2f} deg (slope {:.3f})", node.interior_angle_rad / degree,
+      refused_angles.push_back(failed ? fmt::format("{:.2f} deg (its solve failed)", node.section_angle_rad / degree)
+                                      : fmt::format("{:.2f} deg (slope {:.3f})", node.section_angle_rad / degree,
                                                     slope));
   }
   if (refused_angles.empty())
@@ -150,7 +150,7 @@ FlatRimTable flat_rim_table(MPI_Comm comm, const FlatRimSettings& setup, std::sp
     throw ComputationError(why);
   table.erase(table.begin(), table.begin() + static_cast<std::ptrdiff_t>(*start));
   std::string refused_nodes = fmt::format("{}; the table starts at {:.2f} deg, the FEM end table takes the ends below",
-                                          why, table.front().interior_angle_rad / degree);
+                                          why, table.front().section_angle_rad / degree);
   return {std::move(table), std::move(refused_nodes)};
 }
 
@@ -167,12 +167,27 @@ std::optional<std::size_t> flat_rim_table_start(const std::vector<bool>& refused
   return start;
 }
 
-double flat_rim_peak(const std::vector<FlatRimNode>& table, int stride, double interior_angle_rad)
+namespace
+{
+/// `value` of every `stride`-th node, linear in the angle, held at the ends.
+template <typename Value>
+double interpolate_nodes(const std::vector<FlatRimNode>& table, int stride, double section_angle_rad, Value value)
 {
   std::vector<std::pair<double, double>> nodes;
   for (std::size_t k = 0; k < table.size(); k += static_cast<std::size_t>(stride))
-    nodes.emplace_back(table[k].interior_angle_rad, table[k].peak_pa());
-  return interpolate_held(nodes, interior_angle_rad);
+    nodes.emplace_back(table[k].section_angle_rad, value(table[k]));
+  return interpolate_held(nodes, section_angle_rad);
+}
+} // namespace
+
+double flat_rim_peak(const std::vector<FlatRimNode>& table, int stride, double section_angle_rad)
+{
+  return interpolate_nodes(table, stride, section_angle_rad, [](const FlatRimNode& n) { return n.peak_pa(); });
+}
+
+double flat_rim_ratio(const std::vector<FlatRimNode>& table, int stride, double section_angle_rad)
+{
+  return interpolate_nodes(table, stride, section_angle_rad, [](const FlatRimNode& n) { return n.ratio(); });
 }
 
 double FlatRimNode::peak_pa() const

@@ -53,7 +53,7 @@ struct FlatRimSide
 /// are mirror images: the same c and R within 1e-6).
 struct FlatRimNode
 {
-  double interior_angle_rad = 0;
+  double section_angle_rad = 0;     ///< in the ruling's vertical plane: the loop's ends' own angle
   /// Normal to the rim (contact/rim_dihedral_angle.h), the first side's.
   double dihedral_angle_rad = 0;
   std::vector<FlatRimSide> sides;
@@ -99,9 +99,14 @@ FlatRimTable flat_rim_table(MPI_Comm comm, const FlatRimSettings& setup, std::sp
 /// ascending angle.
 std::optional<std::size_t> flat_rim_table_start(const std::vector<bool>& refused);
 
-/// The table's peak (Pa) at `interior_angle_rad` by every `stride`-th node,
+/// The table's peak (Pa) at the section angle `section_angle_rad` by every `stride`-th node,
 /// linear in the angle, held at its ends.
-double flat_rim_peak(const std::vector<FlatRimNode>& table, int stride, double interior_angle_rad);
+double flat_rim_peak(const std::vector<FlatRimNode>& table, int stride, double section_angle_rad);
+
+/// The table's ratio (FlatRimNode::ratio, its largest peak over line Hertz
+/// at the table's own load) at `section_angle_rad` by every `stride`-th
+/// node, linear in the angle, held at its ends.
+double flat_rim_ratio(const std::vector<FlatRimNode>& table, int stride, double section_angle_rad);
 
 // Defined in study/rims/rim_loop_json.cpp with the loop's other records.
 nlohmann::json to_json(const FlatRimSide& side);

@@ -5,6 +5,7 @@
 #include "contact/hertz.h"
 #include "contact/rim_dihedral_angle.h"
 #include "core/error.h"
+#include "core/named_values.h"
 #include "fem/mesh/scene_mesh.h"
 #include "fem/petsc_session.h"
 #include "fem/scenes/slice_scaling.h"
@@ -121,14 +122,14 @@ std::function<void(int, double)> level_beat(ProgressBeat& beat, const std::strin
 /// `approach_over_estimate` (the end before's); outside the model (no
 /// solve) where b / R is too large for line contact.
 RimLoopEnd direct_end(MPI_Comm comm, const RimLoopSettings& s, std::span<const oracle::Circle> circles,
-                      const loop_scores::FemSdsOrientation& r, int end, double q, double approach_over_estimate,
-                      const std::function<void(int, double)>& on_level)
+                      const loop_scores::FemSdsOrientation& r, int end, double q, bool static_load,
+                      double approach_over_estimate, const std::function<void(int, double)>& on_level)
 {
   const oracle::Ruling& ruling = *r.locus.ruling;
   RimLoopEnd e;
   e.orientation = r.index;
   e.end = end;
-  e.interior_angle_rad = std::numbers::pi / 2 + r.rim_overhang_rad[static_cast<std::size_t>(end)];
+  e.section_angle_rad = std::numbers::pi / 2 + r.rim_overhang_rad[static_cast<std::size_t>(end)];
   e.dihedral_angle_rad = contact::rim_dihedral_angle(circles, r.locus.support.circles[0], r.locus.support.circles[1],
                                                      ruling)[static_cast<std::size_t>(end)];
   // A rounded part's finish leaves no radius below r_e (study/loop_scores/loop_sds.h loop_scores::end_aware_scores).
@@ -148,15 +149,33 @@ RimLoopEnd direct_end(MPI_Comm comm, const RimLoopSettings& s, std::span<const o
     return e;
   }
   e.study = fem::solve_rim_end(comm, settings);
-  e.interior_peak_pa = r.fem_peak_pa;
+  e.interior_peak_pa = static_load ? r.fem_peak_pa : 0.0;
   if (e.study.end_to_interior && e.study.resolved && !e.study.singular)
     e.end_peak_pa = *e.study.end_to_interior * e.study.levels.back().far_peak_pa;
   return e;
 }
 
+/// The line load at end `end` (0 its start, 1 its end) of an orientation's
+/// ruling under the load rule: F through the centre of mass (`loads`
+/// empty: the static rule, as fem-sds solved it) or the sample's own load
+/// (rule_loop_samples.h); 0 where the rule leaves that end unloaded or the
+/// load falls outside the ruling.
+double end_line_load(const RimLoopSettings& s, const loop_scores::FemSdsOrientation& r, int end,
+                     std::span<const RulingLoad> loads)
+{
+  const oracle::Ruling& ruling = *r.locus.ruling;
+  if (loads.empty())
+    return r.solved && (end == 0 ? r.locus.loaded_from == 0 : r.locus.loaded_to == 1)
+               ? oracle::line_load(s.loop.normal_load_n, r.locus.centre_of_pressure, ruling.length_m, end)
+               : 0.0;
+  const RulingLoad& load = loads[r.locus.sample];
+  const double c = (load.through_m - ruling.start_m).dot(ruling.axis) / ruling.length_m;
+  return r.solved && c > 0 && c < 1 ? oracle::line_load(load.force_n, c, ruling.length_m, end) : 0.0;
+}
+
 /// The end models at every loaded end of the directly solved orientations.
 std::vector<RimLoopEnd> direct_ends(MPI_Comm comm, const RimLoopSettings& s, const loop_scores::FemSdsResult& interior,
-                                    ProgressBeat& beat)
+                                    std::span<const RulingLoad> loads, ProgressBeat& beat)
 {
   struct Loaded
   {
@@ -167,14 +186,9 @@ std::vector<RimLoopEnd> direct_ends(MPI_Comm comm, const RimLoopSettings& s, con
   std::vector<Loaded> loaded;
   for (const loop_scores::FemSdsOrientation& r : interior.orientations)
     for (const int end : {0, 1})
-    {
-      if (!r.solved || !(end == 0 ? r.locus.loaded_from == 0 : r.locus.loaded_to == 1))
-        continue;
-      const double q
-          = oracle::line_load(s.loop.normal_load_n, r.locus.centre_of_pressure, r.locus.ruling->length_m, end);
-      if (q > 0)
-        loaded.push_back({&r, end, q});
-    }
+      if (r.solved)
+        if (const double q = end_line_load(s, r, end, loads); q > 0)
+          loaded.push_back({&r, end, q});
   std::vector<RimLoopEnd> ends;
   // Each end's load control starts from the end before's converged approach
   // over its estimate, as the end table's nodes do: the estimate overshoots
@@ -185,7 +199,7 @@ std::vector<RimLoopEnd> direct_ends(MPI_Comm comm, const RimLoopSettings& s, con
     const std::string what = fmt::format("direct end {} of {} (orientation {}, its {})", ends.size() + 1,
                                          loaded.size(), l.orientation->index, l.end == 0 ? "start" : "end");
     beat.step(what);
-    ends.push_back(direct_end(comm, s, interior.circles, *l.orientation, l.end, l.load_n_per_m,
+    ends.push_back(direct_end(comm, s, interior.circles, *l.orientation, l.end, l.load_n_per_m, loads.empty(),
                               approach_over_estimate, level_beat(beat, what)));
     if (ends.back().outside_model.empty())
       approach_over_estimate = ends.back().study.approach_over_estimate();
@@ -198,7 +212,7 @@ void log_flat_rim_node(const FlatRimNode& node)
   for (const FlatRimSide& side : node.sides)
     spdlog::info("rim loop: flat-rim at {:.2f} deg (c = {:.4f}, q = {:.5g} N/m, hull's R = {:.4g} m): peak {:.5g} "
                  "Pa, {:.4f} times line Hertz ({}: {:+.2f} % last level, {}; {:.0f} s)",
-                 node.interior_angle_rad / degree, side.centre_of_pressure, side.end_line_load_n_per_m,
+                 node.section_angle_rad / degree, side.centre_of_pressure, side.end_line_load_n_per_m,
                  side.end_radius_m, side.peak_pressure_pa, side.peak_pressure_pa / side.line_hertz_peak_pa,
                  side.converged ? "converged" : "NOT converged", 100 * side.last_change,
                  side.whole_ruling ? fmt::format("the whole ruling, where the shortened window gave {:.5g} Pa",
@@ -223,7 +237,7 @@ void add_flat_rim_table(MPI_Comm comm, const RimLoopSettings& s, RimLoopResult& 
     result.flat_table = std::move(flat.nodes);
     result.flat_rim_refused = std::move(flat.refused);
     result.flat_from_rad
-        = result.flat_rim_refused.empty() ? s.flat_rim_from_rad : result.flat_table.front().interior_angle_rad;
+        = result.flat_rim_refused.empty() ? s.flat_rim_from_rad : result.flat_table.front().section_angle_rad;
     if (!result.flat_rim_refused.empty() && rank == 0)
       spdlog::warn("rim loop: {}", result.flat_rim_refused);
   }
@@ -258,7 +272,7 @@ std::optional<std::pair<double, double>> dihedral_range(MPI_Comm comm, const loo
     for (const loop_scores::LoadedEnd& end : ruling.ends)
       add(end.interior_angle_rad, end.dihedral_angle_rad);
   for (const RimLoopEnd& e : direct)
-    add(e.interior_angle_rad, e.dihedral_angle_rad);
+    add(e.section_angle_rad, e.dihedral_angle_rad);
   MPI_Allreduce(MPI_IN_PLACE, &lo, 1, MPI_DOUBLE, MPI_MIN, comm);
   MPI_Allreduce(MPI_IN_PLACE, &hi, 1, MPI_DOUBLE, MPI_MAX, comm);
   if (!(hi >= lo))
@@ -308,7 +322,7 @@ std::optional<std::pair<double, double>> sheet_radius_range(MPI_Comm comm, const
         add(end.radius_m);
     }
   for (const RimLoopEnd& e : direct)
-    if (e.outside_model.empty() && e.interior_angle_rad < flat_from_rad)
+    if (e.outside_model.empty() && e.section_angle_rad < flat_from_rad)
       add(e.study.setup.radius_m);
   MPI_Allreduce(MPI_IN_PLACE, &lo, 1, MPI_DOUBLE, MPI_MIN, comm);
   MPI_Allreduce(MPI_IN_PLACE, &hi, 1, MPI_DOUBLE, MPI_MAX, comm);
@@ -320,7 +334,8 @@ std::optional<std::pair<double, double>> sheet_radius_range(MPI_Comm comm, const
 /// The end table's q and R from the direct ends (their medians), and its
 /// columns' R: that R alone, or with a rounded edge and a radius step
 /// geometrically across the range of R at the loop's ends.
-std::vector<double> end_table_columns(MPI_Comm comm, const RimLoopSettings& s, RimLoopResult& result)
+std::vector<double> end_table_columns(MPI_Comm comm, const RimLoopSettings& s, const loop_scores::LoopSamples& covered,
+                                      RimLoopResult& result)
 {
   std::vector<double> loads, radii;
   for (const RimLoopEnd& e : result.ends)
@@ -336,7 +351,7 @@ std::vector<double> end_table_columns(MPI_Comm comm, const RimLoopSettings& s, R
   result.reference_load_n_per_m = median(loads);
   result.reference_radius_m = median(radii);
   const auto range = s.end.edge_radius_m > 0 && s.end_table_radius_step > 0
-                         ? sheet_radius_range(comm, result.fem_sds.loop_samples, result.ends, s.end.edge_radius_m,
+                         ? sheet_radius_range(comm, covered, result.ends, s.end.edge_radius_m,
                                               result.flat_from_rad)
                          : std::nullopt;
   if (!range)
@@ -354,8 +369,8 @@ std::vector<double> end_table_columns(MPI_Comm comm, const RimLoopSettings& s, R
 /// other (EndRatios, check_tables_against_direct_ends), and where the two
 /// tables meet (RimLoopResult::flat_rim_seam). A node none reads is left
 /// unsolved: no score, check or ratio of the loop depends on it.
-void mark_reached_nodes(MPI_Comm comm, const RimLoopSettings& s, const RimLoopResult& result,
-                        std::vector<EndTableNode>& table)
+void mark_reached_nodes(MPI_Comm comm, const RimLoopSettings& s, const loop_scores::LoopSamples& covered,
+                        const RimLoopResult& result, std::vector<EndTableNode>& table)
 {
   std::vector<int> reached(table.size(), 0);
   auto reach = [&](double angle, double radius) {
@@ -364,7 +379,7 @@ void mark_reached_nodes(MPI_Comm comm, const RimLoopSettings& s, const RimLoopRe
         reached[k] = 1;
   };
   const bool flat = !result.flat_table.empty();
-  for (const loop_scores::RulingSample& ruling : result.fem_sds.loop_samples.rulings)
+  for (const loop_scores::RulingSample& ruling : covered.rulings)
     for (const loop_scores::LoadedEnd& hull_end : ruling.ends)
     {
       const loop_scores::LoadedEnd end = loop_scores::finished_end(hull_end, s.end.edge_radius_m);
@@ -373,10 +388,10 @@ void mark_reached_nodes(MPI_Comm comm, const RimLoopSettings& s, const RimLoopRe
               end.radius_m);
     }
   for (const RimLoopEnd& e : result.ends)
-    if (!flat || e.interior_angle_rad < result.flat_from_rad)
+    if (!flat || e.section_angle_rad < result.flat_from_rad)
       reach(e.modelled_angle_rad, e.study.setup.radius_m);
   if (flat)
-    reach(result.flat_from_rad, result.flat_rim_seam_radius());
+    reach(result.flat_rim_seam_dihedral(), result.flat_rim_seam_radius());
   MPI_Allreduce(MPI_IN_PLACE, reached.data(), static_cast<int>(reached.size()), MPI_INT, MPI_MAX, comm);
   for (std::size_t k = 0; k < table.size(); ++k)
     table[k].reached = reached[k] != 0;
@@ -386,12 +401,13 @@ void mark_reached_nodes(MPI_Comm comm, const RimLoopSettings& s, const RimLoopRe
 /// angles from the smallest the end model takes to the last below the
 /// singular angle, where the end model still finds a (square) edge, or to
 /// where the flat-rim table takes over.
-void add_end_table(MPI_Comm comm, const RimLoopSettings& s, RimLoopResult& result, ProgressBeat& beat)
+void add_end_table(MPI_Comm comm, const RimLoopSettings& s, const loop_scores::LoopSamples& covered,
+                   RimLoopResult& result, ProgressBeat& beat)
 {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   // The dihedral angles of the ends the end table stands for: those below the flat-rim table's section angle.
-  const auto range = dihedral_range(comm, result.fem_sds.loop_samples, result.ends,
+  const auto range = dihedral_range(comm, covered, result.ends,
                                     result.flat_table.empty() ? std::numeric_limits<double>::infinity()
                                                               : result.flat_from_rad);
   const auto [lowest, highest]
@@ -399,7 +415,7 @@ void add_end_table(MPI_Comm comm, const RimLoopSettings& s, RimLoopResult& resul
   const double lo = std::max(lowest, smallest_modelled_angle_rad);
   const double hi = std::min({highest, result.singular_from_rad - 10 * singular_angle_tolerance_rad,
                               largest_modelled_angle(s.end)});
-  const std::vector<double> columns = end_table_columns(comm, s, result);
+  const std::vector<double> columns = end_table_columns(comm, s, covered, result);
   // Each node's load control starts from the node before's converged
   // approach over its estimate (neighbours differ in angle or R only): one
   // load step fewer than from the estimate, which overshoots by about 20 %;
@@ -414,7 +430,7 @@ void add_end_table(MPI_Comm comm, const RimLoopSettings& s, RimLoopResult& resul
   for (const double radius : columns)
     for (const double angle : angles)
       table.push_back({angle, radius});
-  mark_reached_nodes(comm, s, result, table);
+  mark_reached_nodes(comm, s, covered, result, table);
   const auto reached = std::count_if(table.begin(), table.end(), [](const EndTableNode& n) { return n.reached; });
   if (rank == 0)
     spdlog::info("rim loop: the loop's ends read {} of the end table's {} nodes; the others are not solved", reached,
@@ -424,7 +440,7 @@ void add_end_table(MPI_Comm comm, const RimLoopSettings& s, RimLoopResult& resul
   {
     if (!node.reached)
       continue;
-    const double angle = node.interior_angle_rad, radius = node.sheet_radius_m;
+    const double angle = node.dihedral_angle_rad, radius = node.sheet_radius_m;
     const std::string what = fmt::format("end table node {} of {} ({:.2f} deg, R = {:.4g} m)", ++solved, reached,
                                          angle / degree, radius);
     beat.step(what);
@@ -447,13 +463,15 @@ void add_end_table(MPI_Comm comm, const RimLoopSettings& s, RimLoopResult& resul
 /// difference from the direct ends' own ratios.
 void check_tables_against_direct_ends(RimLoopResult& result)
 {
+  const bool own_load = result.load_rule == contact::LoadRule::static_through_centre_of_mass;
   for (RimLoopEnd& e : result.ends)
   {
-    if (!result.flat_table.empty() && e.interior_angle_rad >= result.flat_from_rad)
+    if (!result.flat_table.empty() && e.section_angle_rad >= result.flat_from_rad)
     {
       // Not a check of the end table: the flat-rim table stands for it.
       if (e.study.hertz_peak_pa > 0)
-        e.table_ratio = flat_rim_peak(result.flat_table, 1, e.interior_angle_rad) / e.study.hertz_peak_pa;
+        e.table_ratio = own_load ? flat_rim_peak(result.flat_table, 1, e.section_angle_rad) / e.study.hertz_peak_pa
+                                 : flat_rim_ratio(result.flat_table, 1, e.section_angle_rad);
       continue;
     }
     e.table_ratio
@@ -465,6 +483,29 @@ void check_tables_against_direct_ends(RimLoopResult& result)
           = std::max(result.table_vs_direct.value_or(0.0),
                      std::abs(*e.table_ratio - *e.study.end_to_interior) / std::max(*e.study.end_to_interior, 1.0));
   }
+}
+/// The load rules scored: the settings' first, then with each_load_rule the others.
+std::vector<contact::LoadRule> scored_rules(const RimLoopSettings& s)
+{
+  std::vector<contact::LoadRule> rules = {s.loop.load_rule};
+  if (s.each_load_rule)
+    for (const auto& [name, rule] : contact::load_rule_names())
+      if (rule != s.loop.load_rule)
+        rules.push_back(rule);
+  return rules;
+}
+
+/// This rank's ruling samples' loaded ends under every rule (the rulings
+/// without their mapped points): what the end table's range and reached
+/// nodes cover.
+loop_scores::LoopSamples loaded_ends_of(const std::vector<RuleSamples>& rules)
+{
+  loop_scores::LoopSamples covered;
+  for (const RuleSamples& rule : rules)
+    for (const loop_scores::RulingSample& ruling : rule.samples.rulings)
+      if (!ruling.ends.empty())
+        covered.rulings.push_back({{}, ruling.ends, ruling.even});
+  return covered;
 }
 } // namespace
 
@@ -480,39 +521,64 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
   beat.step(fmt::format("the interior (fem-sds; orientations solved directly: {})", s.loop.orientations));
   fem::SliceScaling slices(loop_scores::slice_settings(s.loop), s.loop.table_nodes_per_decade);
   result.fem_sds = loop_scores::run_fem_sds(comm, s.loop, slices);
-  result.ends = direct_ends(comm, s, result.fem_sds, beat);
+  result.load_rule = s.loop.load_rule;
+  beat.step("the loop's samples under each load rule scored");
+  std::vector<RuleSamples> rules = rule_loop_samples(comm, s.loop, result.fem_sds, scored_rules(s));
+  // The interior under each rule (the static rule's is fem-sds's own).
+  std::vector<RuleLoop> loops;
+  for (const RuleSamples& rule : rules)
+    loops.push_back({rule.rule, loop_scores::loop_sds(comm, rule.samples, slices, loop_scores::loop_settings(s.loop)),
+                     std::nullopt});
+  result.ends = direct_ends(comm, s, result.fem_sds, rules.front().loads, beat);
   result.end_setup = end_settings(s, s.end.radius_m, s.end.load_n_per_m, s.end.interior_angle_rad);
   result.singular_from_rad = singular_from_angle(result.end_setup);
 
-  const loop_scores::LoopSds& interior = result.fem_sds.loop;
-  if (const auto range = dihedral_range(comm, result.fem_sds.loop_samples, result.ends,
-                                        std::numeric_limits<double>::infinity()))
+  // What the tables cover: every scored rule's loaded ends.
+  const loop_scores::LoopSamples covered = loaded_ends_of(rules);
+  const bool loaded = std::ranges::any_of(loops, [](const RuleLoop& l) { return l.loop.loaded_ends > 0; });
+  if (const auto range = dihedral_range(comm, covered, result.ends, std::numeric_limits<double>::infinity()))
     std::tie(result.loaded_end_dihedral_min_rad, result.loaded_end_dihedral_max_rad) = *range;
   std::tie(result.exponent_shift_mean, result.exponent_shift_max)
-      = exponent_shift(comm, result.fem_sds.loop_samples, result.end_setup);
-  if (s.end.edge_radius_m > 0 && interior.loaded_ends > 0 && interior.loaded_end_angle_max_rad >= s.flat_rim_from_rad
-      && result.fem_sds.circles.size() == 2)
+      = exponent_shift(comm, rules.front().samples, result.end_setup);
+  if (s.end.edge_radius_m > 0 && result.fem_sds.circles.size() == 2
+      && std::ranges::any_of(loops, [&](const RuleLoop& l) {
+           return l.loop.loaded_ends > 0 && l.loop.loaded_end_angle_max_rad >= s.flat_rim_from_rad;
+         }))
   {
     beat.step("the flat-rim table (the loop's flattest ends, half-space theory)");
     add_flat_rim_table(comm, s, result, beat);
   }
-  std::vector<loop_scores::EndFactor> factors;
-  if (interior.loaded_ends > 0 && result.loaded_end_dihedral_min_rad <= result.singular_from_rad)
+  const bool with_tables = loaded && result.loaded_end_dihedral_min_rad <= result.singular_from_rad;
+  if (with_tables)
   {
-    add_end_table(comm, s, result, beat);
+    add_end_table(comm, s, covered, result, beat);
     check_tables_against_direct_ends(result);
-    factors = EndRatios{result.table, result.flat_table, result.flat_from_rad, result.singular_from_rad,
-                        largest_modelled_angle(s.end)}
-                  .factors();
   }
-  else if (interior.loaded_ends > 0)
-    factors.push_back([](const loop_scores::LoadedEnd&) { return std::optional<double>(); }); // every loaded end singular
-  // The interior's scores with the ends', from the samples it mapped.
   beat.step("the end-aware scores over the loop's samples");
-  result.loop = result.fem_sds.loop;
-  result.loop.end_aware = loop_scores::end_aware_scores(comm, result.fem_sds.loop_samples, slices,
-                                                        loop_scores::loop_settings(s.loop), factors,
-                                                        s.end.edge_radius_m);
+  for (std::size_t k = 0; k < rules.size(); ++k)
+  {
+    std::vector<loop_scores::EndFactor> factors;
+    if (with_tables)
+    {
+      const EndRatios ratios{result.table,
+                             result.flat_table,
+                             result.flat_from_rad,
+                             result.singular_from_rad,
+                             largest_modelled_angle(s.end),
+                             rules[k].rule == contact::LoadRule::static_through_centre_of_mass};
+      factors = ratios.factors();
+      loops[k].largest_end = loop_largest_end(comm, rules[k].samples, rules[k].ruling_sample, rules[k].times_s,
+                                              ratios, s.end.edge_radius_m, result.fem_sds.effective_modulus_pa);
+    }
+    else if (loops[k].loop.loaded_ends > 0) // every loaded end singular
+      factors.push_back([](const loop_scores::LoadedEnd&) { return std::optional<double>(); });
+    loops[k].loop.end_aware = loop_scores::end_aware_scores(comm, rules[k].samples, slices,
+                                                            loop_scores::loop_settings(s.loop), factors,
+                                                            s.end.edge_radius_m);
+  }
+  result.loop = std::move(loops.front().loop);
+  result.largest_end = loops.front().largest_end;
+  result.other_rules.assign(std::make_move_iterator(loops.begin() + 1), std::make_move_iterator(loops.end()));
   result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

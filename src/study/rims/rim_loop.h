@@ -32,7 +32,7 @@
 // when its nodes halve). A sharp edge's singular ends make the end-aware
 // scores singular: reported as such, with the number of loaded ends that are.
 //
-// A rounded edge's flattest ends (interior angle from flat_rim_from_rad,
+// A rounded edge's flattest ends (section angle from flat_rim_from_rad,
 // 160 deg, on; where half-space theory is refused at some nodes, from
 // flat_rim_table_start's) take the flat-rim table instead
 // (study/rims/flat_rim_table.h): the loop's own
@@ -63,6 +63,8 @@
 #include "study/rims/end_ratios.h"
 #include "study/rims/end_table.h"
 #include "study/rims/flat_rim_table.h"
+#include "study/rims/loop_largest_end.h"
+#include "study/rims/rule_loop_samples.h"
 #include <cstddef>
 #include <mpi.h>
 #include <nlohmann/json.hpp>
@@ -75,7 +77,10 @@ namespace rollcheck::study::rims
 struct RimLoopSettings
 {
   /// The body, its loop, the K orientations solved directly (6: the ends
-  /// of 12 loaded rulings), F and the material (which the end models share).
+  /// of 12 loaded rulings), F and the material (which the end models share),
+  /// and the load rule (loop.load_rule, study/rims/rule_loop_samples.h): how
+  /// F is spread along each sample's ruling, which sets each loaded end's q
+  /// and the interior's pressures alike.
   loop_scores::FemSdsSettings loop = [] {
     loop_scores::FemSdsSettings s;
     s.orientations = 6;
@@ -92,7 +97,7 @@ struct RimLoopSettings
   /// ratio depends on it (docs/results/rim-ends.md#the-blocks-depth: 8 % higher at
   /// 4 r_e than at 10.5 r_e at 66.7 deg, R = r_e).
   double depth_over_edge_radius = 10.5;
-  /// Largest spacing of the end table's nodes over the interior angle.
+  /// Largest spacing of the end table's nodes over the dihedral angle.
   double end_table_step_rad = 10 * std::numbers::pi / 180;
   /// Below the square end (90 deg), if positive, the largest spacing there
   /// instead, with a node at 90 deg: an acute rounded end's ratio rises
@@ -105,7 +110,7 @@ struct RimLoopSettings
   /// and R (the reduction that put the preprint's body's table 4.7 % from its
   /// direct ends, docs/methods/rims.md).
   double end_table_radius_step = 2;
-  /// A rounded edge's ends of at least this interior angle are solved in 3D
+  /// A rounded edge's ends of at least this section angle are solved in 3D
   /// on the body's own loop by half-space theory (flat-rim: its surface, its
   /// load along the ruling, its balance), nodes at most flat_rim_step_rad
   /// apart up to the loop's flattest end; the FEM end table stops there. pi:
@@ -113,6 +118,21 @@ struct RimLoopSettings
   /// and 170 deg (docs/methods/flat-rim.md).
   double flat_rim_from_rad = 160 * std::numbers::pi / 180;
   double flat_rim_step_rad = 2.5 * std::numbers::pi / 180;
+  /// Also score the loop under the two other load rules (in the order of
+  /// contact::load_rule_names), sharing the interior's FEM, the flat-rim
+  /// table and the end table (whose range and reached nodes then cover every
+  /// rule's ends); the direct ends, the end table's q and its check are
+  /// loop.load_rule's.
+  bool each_load_rule = false;
+};
+
+/// The loop under one load rule: its samples' scores with the end-aware
+/// ones, and where its largest end pressure sits.
+struct RuleLoop
+{
+  contact::LoadRule rule = contact::LoadRule::dynamic;
+  loop_scores::LoopSds loop;
+  std::optional<LoopLargestEnd> largest_end;
 };
 
 /// One loaded ruling end of a directly solved orientation.
@@ -120,7 +140,7 @@ struct RimLoopEnd
 {
   std::size_t orientation = 0;       ///< loop_scores::FemSdsOrientation::index
   int end = 0;                       ///< 0 the ruling's start, 1 its end
-  double interior_angle_rad = 0;     ///< the section in the ruling's vertical plane: 90 deg + the rim's lean
+  double section_angle_rad = 0;      ///< the section in the ruling's vertical plane: 90 deg + the rim's lean
   /// Normal to the rim (contact/rim_dihedral_angle.h): the wedge's angle,
   /// which the end model (its edge square to the ruling) and the end table take.
   double dihedral_angle_rad = 0;
@@ -130,7 +150,9 @@ struct RimLoopEnd
   /// beyond fem::largest_half_width_over_radius, where the ruling ends near
   /// the apex of its sheet and the contact there is no line contact.
   std::string outside_model;
-  double interior_peak_pa = 0;       ///< the orientation's FEM peak along the ruling (slices)
+  /// The orientation's FEM peak along the ruling (fem-sds's slices, under
+  /// the static load); 0 under another load rule, whose ruling fem-sds did not solve.
+  double interior_peak_pa = 0;
   /// end_to_interior times the end model's interior pressure (none: singular or not converged).
   std::optional<double> end_peak_pa;
   std::optional<double> table_ratio; ///< the end table's ratio at this angle (none: singular)
@@ -140,6 +162,7 @@ struct RimLoopResult
 {
   fem::RimEndSettings end_setup;     ///< the settings' end models (counter-face, edge, material)
   loop_scores::FemSdsResult fem_sds;              ///< the interior: loop scores and the K orientations
+  contact::LoadRule load_rule = contact::LoadRule::dynamic; ///< the settings' loop.load_rule
   std::vector<RimLoopEnd> ends;
   /// The directly modelled ends' median q and R: the end table's q, and
   /// its R when it has one column.
@@ -153,10 +176,11 @@ struct RimLoopResult
   /// sharp_edge_exponent): how much too negative the section made it, on
   /// average and at most.
   double exponent_shift_mean = 0, exponent_shift_max = 0;
-  /// Over the loop's non-singular loaded ends' angles below flat_from_rad,
-  /// column by column (ascending R), each over the angles.
+  /// Over the dihedral angles of the loop's non-singular loaded ends whose
+  /// section angle lies below flat_from_rad, column by column (ascending R),
+  /// each over the angles.
   std::vector<EndTableNode> table;
-  /// Ends from this angle on take the flat-rim table's ratio (pi: none do).
+  /// Ends of this section angle on take the flat-rim table's ratio (pi: none do).
   double flat_from_rad = std::numbers::pi;
   std::vector<FlatRimNode> flat_table;
   /// Why the flat-rim table does not start at flat_rim_from_rad although
@@ -167,13 +191,25 @@ struct RimLoopResult
   /// with one, over the larger of the direct ratio and 1 (the interior).
   std::optional<double> table_vs_direct;
   bool table_converged = true;       ///< every node's end model converged (the flat-rim table's too)
-  /// The loop's scores (fem_sds.loop's) with the end-aware ones: [0] the
-  /// table, [1] every other node (absent with fewer than 3 nodes).
+  /// Where the largest end pressure over the loop sits (none without an
+  /// end that has one).
+  std::optional<LoopLargestEnd> largest_end;
+  /// The loop's scores under the load rule (fem_sds.loop's for the static
+  /// rule) with the end-aware ones: [0] the table, [1] every other node
+  /// (absent with fewer than 3 nodes).
   loop_scores::LoopSds loop;
   double wall_s = 0;
 
   /// Largest end/interior peak over the directly modelled ends that have one.
   std::optional<double> worst_end_to_interior() const;
+  /// The loop under the other load rules (RimLoopSettings::each_load_rule;
+  /// empty without it).
+  std::vector<RuleLoop> other_rules;
+  /// The accessors below for the loop under another rule: `of` a RuleLoop's loop.
+  std::optional<double> loop_end_to_interior(const loop_scores::LoopSds& of) const;
+  std::optional<double> covered_end_to_interior(const loop_scores::LoopSds& of) const;
+  std::optional<double> covered_limit_change(const loop_scores::LoopSds& of) const;
+  std::string end_aware_status(const loop_scores::LoopSds& of) const;
   /// Over every sample of the loop: the largest end pressure (the table's)
   /// over the largest interior pressure (FEM-SDS's mapped points); none when
   /// an end is singular or outside the model, or no sample loads a rim.
@@ -189,11 +225,14 @@ struct RimLoopResult
   /// In words: singular, converged, or not converged and why.
   std::string end_aware_status() const;
   /// Where the two tables meet (none without both, or without the end
-  /// table's last ratio): the FEM end model (a straight rim under a uniform
-  /// load) against the body's own end (flat-rim) at flat_from_rad, at the R
-  /// of the first flat-rim node's side with the largest ratio (held to r_e).
+  /// table's ratios there): the FEM end model (a straight rim under a
+  /// uniform load) against the body's own end (flat-rim) at its first node,
+  /// of section angle flat_from_rad: the end table read at that node's
+  /// dihedral angle (flat_rim_seam_dihedral), at the R of its side with the
+  /// largest ratio (held to r_e).
   struct FlatRimSeam
   {
+    double dihedral_angle_rad = 0;
     double sheet_radius_m = 0;
     double end_table_ratio = 0;
     double flat_rim_ratio = 0;
@@ -201,6 +240,9 @@ struct RimLoopResult
   std::optional<FlatRimSeam> flat_rim_seam() const;
   /// The seam's R (with a flat-rim table).
   double flat_rim_seam_radius() const;
+  /// The seam's angle in the end table (with a flat-rim table): the first
+  /// flat-rim node's dihedral angle, held to the end model's range.
+  double flat_rim_seam_dihedral() const;
 };
 
 /// Collective on `comm` (every rank gets the result). The end's counter-face

@@ -2,6 +2,7 @@
 // declared beside its struct.
 #include "study/rims/rim_loop.h"
 #include "core/json_number.h"
+#include "core/named_values.h"
 #include "study/rims/rim_end_json.h"
 #include <numbers>
 
@@ -27,6 +28,7 @@ nlohmann::json seam_json(const RimLoopResult& r)
   if (!seam)
     return nullptr;
   return {{"interior_angle_deg", r.flat_from_rad / degree},
+          {"dihedral_angle_deg", seam->dihedral_angle_rad / degree},
           {"sheet_radius_m", seam->sheet_radius_m},
           {"end_table_ratio", seam->end_table_ratio},
           {"flat_rim_ratio", seam->flat_rim_ratio}};
@@ -38,7 +40,7 @@ nlohmann::json to_json(const EndTableNode& node)
   // A node no look-up of the loop reads is not solved: its place alone.
   nlohmann::json j = node.reached ? end_model_json(node.study)
                                   : nlohmann::json{{"sheet_radius_m", node.sheet_radius_m}};
-  j["interior_angle_deg"] = node.interior_angle_rad / degree;
+  j["dihedral_angle_deg"] = node.dihedral_angle_rad / degree;
   j["reached"] = node.reached;
   return j;
 }
@@ -62,7 +64,7 @@ nlohmann::json to_json(const FlatRimSide& side)
 
 nlohmann::json to_json(const FlatRimNode& node)
 {
-  return {{"interior_angle_deg", node.interior_angle_rad / degree},
+  return {{"interior_angle_deg", node.section_angle_rad / degree},
           {"dihedral_angle_deg", node.dihedral_angle_rad / degree},
           {"peak_pressure_pa", node.peak_pa()},
           {"ratio", node.ratio()},
@@ -75,28 +77,56 @@ nlohmann::json to_json(const RimLoopEnd& e)
   nlohmann::json j = end_model_json(e.study);
   j["orientation"] = e.orientation;
   j["end"] = e.end == 0 ? "start" : "end";
-  j["interior_angle_deg"] = e.interior_angle_rad / degree;
+  j["interior_angle_deg"] = e.section_angle_rad / degree;
   j["dihedral_angle_deg"] = e.dihedral_angle_rad / degree;
   j["modelled_angle_deg"] = e.modelled_angle_rad / degree;
   // A sharp edge's wedge equation at the angle normal to the rim (the
   // end's) and at the section's (the reduction that was used before).
   j["dihedral_wedge_exponent"] = sharp_edge_exponent(e.study.setup, e.dihedral_angle_rad);
-  j["section_wedge_exponent"] = sharp_edge_exponent(e.study.setup, e.interior_angle_rad);
+  j["section_wedge_exponent"] = sharp_edge_exponent(e.study.setup, e.section_angle_rad);
   j["interior_peak_pa"] = e.interior_peak_pa;
   j["end_peak_pa"] = json_number(e.end_peak_pa);
   j["end_peak_over_interior_peak"]
-      = e.end_peak_pa ? json_number(*e.end_peak_pa / e.interior_peak_pa) : nlohmann::json(nullptr);
+      = e.end_peak_pa && e.interior_peak_pa > 0 ? json_number(*e.end_peak_pa / e.interior_peak_pa)
+                                                : nlohmann::json(nullptr);
   j["table_ratio"] = json_number(e.table_ratio);
   j["outside_model"] = e.outside_model.empty() ? nlohmann::json(nullptr) : nlohmann::json(e.outside_model);
   return j;
 }
 
+namespace
+{
+/// The loop under one load rule in brief: its largest end pressure over its
+/// largest interior pressure, where it sits, and its FEM-SDS with and
+/// without the ends.
+nlohmann::json rule_json(const RimLoopResult& r, contact::LoadRule rule, const loop_scores::LoopSds& loop,
+                         const std::optional<LoopLargestEnd>& largest_end)
+{
+  const bool end_aware = !loop.end_aware.empty();
+  return {{"load_rule", name_of(contact::load_rule_names(), rule, "load rule")},
+          {"loop_end_to_interior", json_number(r.loop_end_to_interior(loop))},
+          {"covered_end_to_interior", json_number(r.covered_end_to_interior(loop))},
+          {"largest_end", largest_end ? to_json(*largest_end) : nlohmann::json(nullptr)},
+          {"end_peak_pa", end_aware ? json_number(loop.end_aware[0].peak_pa) : nlohmann::json(nullptr)},
+          {"interior_peak_pa", loop.fem_peak_pa},
+          {"end_aware_fem_sds", end_aware ? json_number(loop.end_aware[0].sds.value) : nlohmann::json(nullptr)},
+          {"interior_fem_sds", json_number(loop.fem_rulings.value)},
+          {"loaded_ends", loop.loaded_ends},
+          {"outside_model_ends", end_aware ? loop.end_aware[0].outside_model_ends : 0},
+          {"end_aware_status", r.end_aware_status(loop)}};
+}
+} // namespace
+
 nlohmann::json to_json(const RimLoopResult& r)
 {
+  nlohmann::json rules = nlohmann::json::array({rule_json(r, r.load_rule, r.loop, r.largest_end)});
+  for (const RuleLoop& other : r.other_rules)
+    rules.push_back(rule_json(r, other.rule, other.loop, other.largest_end));
   const bool end_aware = !r.loop.end_aware.empty();
   return {{"body", r.fem_sds.body},
           {"loop", r.fem_sds.source},
           {"counter_face", counter_face_name(r.end_setup.counter_face)},
+          {"load_rule", name_of(contact::load_rule_names(), r.load_rule, "load rule")},
           {"edge_radius_m", r.end_setup.edge_radius_m},
           {"singular_from_deg", r.singular_from_rad / degree},
           {"loaded_end_dihedral_min_deg", r.loaded_end_dihedral_min_rad / degree},
@@ -108,6 +138,7 @@ nlohmann::json to_json(const RimLoopResult& r)
           {"loop_end_to_interior", json_number(r.loop_end_to_interior())},
           {"covered_end_to_interior", json_number(r.covered_end_to_interior())},
           {"covered_limit_change", json_number(r.covered_limit_change())},
+          {"largest_end", r.largest_end ? to_json(*r.largest_end) : nlohmann::json(nullptr)},
           {"outside_model_ends", end_aware ? r.loop.end_aware[0].outside_model_ends : 0},
           {"outside_model_samples", end_aware ? r.loop.end_aware[0].outside_model_samples : 0},
           {"finished_ends", end_aware ? r.loop.end_aware[0].finished_ends : 0},
@@ -123,6 +154,7 @@ nlohmann::json to_json(const RimLoopResult& r)
           {"end_table_vs_direct", json_number(r.table_vs_direct)},
           {"end_aware_status", r.end_aware_status()},
           {"loop_scores", to_json(r.loop)},
+          {"load_rules", rules},
           {"interior", to_json(r.fem_sds)},
           {"wall_s", r.wall_s}};
 }

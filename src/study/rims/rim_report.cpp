@@ -1,5 +1,6 @@
 // The rim command's text reports (study/rims/rim_report.h).
 #include "study/rims/rim_report.h"
+#include "core/named_values.h"
 #include "study/rims/rim_end_json.h"
 #include <algorithm>
 #include <cmath>
@@ -43,7 +44,7 @@ std::string ends_table(const RimLoopResult& r)
                      "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const RimLoopEnd& e : r.ends)
     ends += fmt::format("| {} | {} | {:.1f} / {:.1f}{} | {:.4g} | {:.3g} | {:.3g} | {:.3f} | {} | {} | {} | {:.0f} |\n",
-                        e.orientation, e.end == 0 ? "start" : "end", e.interior_angle_rad / degree,
+                        e.orientation, e.end == 0 ? "start" : "end", e.section_angle_rad / degree,
                         e.dihedral_angle_rad / degree, e.modelled_angle_rad != e.dihedral_angle_rad
                             ? fmt::format(" (modelled {:.1f})", e.modelled_angle_rad / degree)
                             : "",
@@ -75,7 +76,7 @@ std::string flat_table_text(const RimLoopResult& r)
                                  "peak / line Hertz:",
                                  r.flat_from_rad / degree);
   for (const FlatRimNode& n : r.flat_table)
-    flat += fmt::format(" {:.3f} at {:.1f}{}", n.ratio(), n.interior_angle_rad / degree,
+    flat += fmt::format(" {:.3f} at {:.1f}{}", n.ratio(), n.section_angle_rad / degree,
                         n.converged() ? "" : " (NOT converged)");
   if (const auto seam = r.flat_rim_seam())
     flat += fmt::format(" deg; where the tables meet the end table gives {:.3f}", seam->end_table_ratio);
@@ -142,10 +143,22 @@ std::string scores_text(const RimLoopResult& r)
   // A missing score: a singular end, or an end outside the model (undefined).
   const std::string missing
       = loop.end_aware[0].singular_ends == 0 && loop.end_aware[0].outside_model_ends > 0 ? "undefined" : "singular";
-  return scores + fmt::format("\nwith the ends:  FEM-SDS {}, FEM-FDS {}; {}\nover the loop: largest end pressure / "
-                              "largest interior pressure {}",
-                              score_text(loop.end_aware[0].sds, missing), score_text(loop.end_aware[0].fds, missing),
-                              r.end_aware_status(), loop_ratio_text(r));
+  scores += fmt::format("\nwith the ends:  FEM-SDS {}, FEM-FDS {}; {}\nover the loop ({} load rule): largest end "
+                        "pressure / largest interior pressure {}",
+                        score_text(loop.end_aware[0].sds, missing), score_text(loop.end_aware[0].fds, missing),
+                        r.end_aware_status(), name_of(contact::load_rule_names(), r.load_rule, "load rule"),
+                        loop_ratio_text(r));
+  for (const RuleLoop& other : r.other_rules)
+  {
+    const auto ratio = r.loop_end_to_interior(other.loop);
+    const auto& sds = other.loop.end_aware.empty() ? loop_scores::ConvergedScore{} : other.loop.end_aware[0].sds;
+    scores += fmt::format("\nunder the {} load rule: largest end / largest interior pressure {}, FEM-SDS with the "
+                          "ends {} (interior {}); {}",
+                          name_of(contact::load_rule_names(), other.rule, "load rule"),
+                          ratio ? fmt::format("{:.3f}", *ratio) : "none", score_text(sds, "none"),
+                          score_text(other.loop.fem_rulings, "none"), r.end_aware_status(other.loop));
+  }
+  return scores;
 }
 } // namespace
 

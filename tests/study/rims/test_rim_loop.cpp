@@ -18,7 +18,7 @@ constexpr double degree = std::numbers::pi / 180;
 study::rims::EndTableNode node(double angle_deg, std::optional<double> end_to_interior, double sheet_radius_m = 0.01)
 {
   study::rims::EndTableNode n;
-  n.interior_angle_rad = angle_deg * degree;
+  n.dihedral_angle_rad = angle_deg * degree;
   n.sheet_radius_m = sheet_radius_m;
   n.study.end_to_interior = end_to_interior;
   return n;
@@ -190,7 +190,7 @@ TEST(RimLoop, EndRatiosReadTheEndTableAtTheDihedralAngle)
   EXPECT_FALSE(ratios(1, acute).has_value());
   // From flat_from_rad on, by the section: the flat-rim table's single node.
   study::rims::FlatRimNode flat;
-  flat.interior_angle_rad = 160 * degree;
+  flat.section_angle_rad = 160 * degree;
   flat.sides = {{0.3, 1e5, 1e-3, 3e9, 2e9, 0, 0, true, 1}};
   ratios.flat_table = {flat};
   ratios.flat_from_rad = 160 * degree;
@@ -263,7 +263,7 @@ TEST(RimLoop, FlatRimTableTakesOverFromItsFirstAngle)
   for (const auto& [angle, peak_gpa] : {std::pair{160.0, 4.0}, {165.0, 3.6}, {170.0, 3.0}, {175.0, 2.4}, {180.0, 2.2}})
   {
     study::rims::FlatRimNode n;
-    n.interior_angle_rad = angle * degree;
+    n.section_angle_rad = angle * degree;
     // Two sides that are not mirror images: the larger peak counts.
     n.sides = {{0.3, 1e5, 1e-3, peak_gpa * 1e9, 2e9, 0, 0, true, 1},
                {0.3, 1e5, 1e-3, 0.5 * peak_gpa * 1e9, 2e9, 0, 0, true, 1}};
