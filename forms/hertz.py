@@ -80,12 +80,18 @@ def stress3(eps, E, nu):
 
 def lumped_mass_forms(tag):
     """Row sums of the P1 mass matrices, volume and contact surface, used by the
-    nodal (lumped L2) recovery of stress and contact pressure."""
+    nodal (lumped L2) recovery of stress and contact pressure; and the contact
+    surface's consistent P1 mass matrix, for the consistent recovery of the
+    pressure (src/fem/consistent_pressure.h), integrated exactly (degree 2, 3
+    with the axisymmetric weight: Gauss degree 4)."""
     cell = cells[tag]
     x = SpatialCoordinate(cell)
     weight = 2 * math.pi * x[0] if tag == "axi" else 1.0
-    q = TestFunction(FiniteElement("Lagrange", cell, 1))
-    return {f"volume_mass_{tag}": q * weight * dx}
+    element = FiniteElement("Lagrange", cell, 1)
+    q = TestFunction(element)
+    ds_exact = ds(CONTACT_SURFACE, metadata={"quadrature_degree": 4})
+    return {f"volume_mass_{tag}": q * weight * dx,
+            f"contact_mass_matrix_{tag}": TrialFunction(element) * q * weight * ds_exact}
 
 
 def contact_forms(tag, degree):

@@ -5,7 +5,8 @@ convergence: |relative error| of p0 and of the contact size (a or b) against
 wall time, log-log, one curve per model and degree (speed against error).
 penalty: the same errors against penalty_c, one curve per model.
 pointwise (hertz_pointwise.csv): |relative error| of the largest nodal
-pressure and the profile's RMS error against wall time.
+pressure and the profile's RMS error against wall time, one curve per model,
+degree and pressure recovery.
 
 usage: hertz_study_plot.py STUDY.csv OUT.png   (Debian's /usr/bin/python3)
 """
@@ -39,7 +40,8 @@ def main(csv_path, png_path):
                (axes[1], "profile_rms_error", "pressure profile (RMS / p0)")) if pointwise else
               ((axes[0], "p0_error", "peak pressure p0"), (axes[1], "size_error", "contact size a or b")))
     for ax, column, label in panels:
-        groups = curves(rows, lambda r: f"{r['model']} P{r['degree']}")
+        groups = curves(rows, lambda r: f"{r['model']} P{r['degree']}"
+                        + (f" {r['pressure_recovery']}" if pointwise else ""))
         x_column, x_label = (("penalty_c", "penalty c (kappa = c E / h)") if penalty
                              else ("wall_s", "wall time (s)"))
         for name, group in sorted(groups.items()):

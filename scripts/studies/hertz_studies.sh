@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Reproduces the Hertz FEM studies of the README ("Hertz FEM"): the penalty
-# study (penalty_c 0.1..1000 on each model's default mesh) and the
-# convergence study (refine levels of every model and degree), each a CSV and
-# a PNG under OUT (default results/hertz). Runs on RANKS MPI ranks (default 1,
+# study (penalty_c 0.1..1000 on each model's default mesh), the
+# convergence study (refine levels of every model and degree) and the
+# pointwise study (3D cost against the pointwise errors, lumped and
+# consistent pressure recovery), each a CSV, a PNG and the runs' JSON under
+# OUT (default results/hertz). Runs on RANKS MPI ranks (default 1,
 # so that the wall times of all models compare; the 2D models use MUMPS, 3D
 # GMRES + GAMG). About 5 minutes on an idle 2-core machine.
 #   scripts/studies/hertz_studies.sh [OUT] [RANKS]
@@ -18,4 +20,5 @@ run=("$bin")
 mkdir -p "$out"
 "${run[@]}" hertz --study penalty --out "$out" --json "$out/hertz_penalty.json"
 "${run[@]}" hertz --study convergence --out "$out" --json "$out/hertz_convergence.json"
-echo "written: $out/hertz_penalty.{csv,png} $out/hertz_convergence.{csv,png}"
+"${run[@]}" hertz --study pointwise --out "$out" --json "$out/hertz_pointwise.json"
+echo "written: $out/hertz_penalty.{csv,png} $out/hertz_convergence.{csv,png} $out/hertz_pointwise.{csv,png}"

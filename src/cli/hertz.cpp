@@ -50,6 +50,11 @@ const SceneSchema<fem::HertzSettings>& hertz_schema()
                  "(axi/plane-strain P1: 4, P2: 2; 3d P1: 2, P2: 0)",
                  refine_range)
         .include(penalty_schema(), &HertzSettings::penalty_c)
+        .choice("pressure_recovery", "--pressure-recovery", &HertzSettings::pressure_recovery,
+                "Nodal contact pressure from the nodal contact forces: consistent (the contact patch's mass-matrix "
+                "system, exact for a linear pressure) or lumped (force over tributary area: the more accurate "
+                "on the default meshes)",
+                {{"lumped", fem::PressureRecovery::lumped}, {"consistent", fem::PressureRecovery::consistent}})
         .flag("elastic_plane", "--elastic-plane", &HertzSettings::elastic_plane,
               "Compare with two identical elastic bodies, E* = E / (2 (1 - nu^2)), as the preprint did (flagged)")
         .real("contact_element_size_m", "--contact-element-size", &HertzSettings::contact_element_size_m, "m",
@@ -115,6 +120,7 @@ nlohmann::json run_hertz_study(const StudyChoice& choice, const io::Parameters& 
     models.push_back(fem::parse_model(name, "option --study-models"));
   const fem::HertzStudy study = fem::run_study(MPI_COMM_WORLD, choice.name,
                                                choice.name == "convergence" ? fem::convergence_study(base, models)
+                                               : choice.name == "pointwise" ? fem::pointwise_study(base)
                                                                             : fem::penalty_study(base, models));
   if (fem::world_rank() == 0)
   {
@@ -143,8 +149,9 @@ void add_hertz_command(CLI::App& app)
   declare_outputs(hertz_schema().schema(), {{"xdmf", OutputKind::file}});
   sub->add_option("--study", study.name,
                   "Run a study instead of one case: convergence (refine levels of every model and degree) or "
-                  "penalty (penalty_c from 0.1 to 1000); writes a CSV and a PNG to --out")
-      ->check(CLI::IsMember({"convergence", "penalty"}));
+                  "penalty (penalty_c from 0.1 to 1000) or pointwise (3d cost against the largest nodal pressure's "
+                  "and the profile's error, both pressure recoveries); writes a CSV and a PNG to --out")
+      ->check(CLI::IsMember({"convergence", "penalty", "pointwise"}));
   sub->add_option("--out", study.out, "Folder for the study's CSV and PNG (default: results/hertz)");
   sub->add_option("--study-models", study.models, "Models the study covers (default: axi plane-strain 3d)")
       ->check(CLI::IsMember({"axi", "plane-strain", "3d"}));

@@ -17,6 +17,7 @@ expect 2 "xdmf" -- "$bin" hertz --xdmf "$tmp/fields.vtk" --json "$tmp/bad6.json"
 expect 2 "unknown key 'wibble'" -- "$bin" run "$here/cases/hertz_cylinder.toml" --set wibble=1
 expect 2 "refine.*13" -- "$bin" hertz --refine 13 --json "$tmp/bad7.json"
 expect 2 "force_rtol.*0.5" -- "$bin" hertz --force-rtol 0.5 --json "$tmp/bad8.json"
+expect 2 "pressure-recovery|pressure_recovery" -- "$bin" hertz --pressure-recovery smooth --json "$tmp/bad14.json"
 # One spelling per quantity: the old --E and --nu are gone.
 expect 2 "unknown option '--nu'" -- "$bin" hertz --nu 0.3 --json "$tmp/bad9.json"
 expect 2 "unknown option '--E'" -- "$bin" hertz --E 200e9 --json "$tmp/bad10.json"
@@ -35,7 +36,8 @@ j = json.load(open(sys.argv[1]))
 keys = ["a_m", "a_hertz_m", "p0_pa", "p0_hertz_pa", "force_n", "dofs", "newton_its", "wall_s", "krylov_its",
         "cells", "mesh_s", "assembly_s", "solve_s", "peak_memory_mb", "approach_m", "approach_hertz_m",
         "max_shear_pa", "max_shear_depth_m", "max_von_mises_pa", "max_von_mises_depth_m", "profile", "flags",
-        "p0_source", "p_max_nodal_pa", "p_max_nodal_error", "profile_rms_error"]
+        "p0_source", "p_max_nodal_pa", "p_max_nodal_error", "profile_rms_error", "profile_rms_error_interior",
+        "pressure_recovery"]
 missing = [k for k in keys if k not in j]
 assert not missing, f"missing keys {missing}"
 for k, v in j.items():
@@ -49,6 +51,10 @@ p0 = j["p0_hertz_pa"]
 rows = list(zip(j["profile"]["p_pa"], j["profile"]["p_hertz_pa"]))
 rms = math.sqrt(sum(((p - h) / p0) ** 2 for p, h in rows) / len(rows))
 assert abs(rms - j["profile_rms_error"]) < 1e-12, (rms, j["profile_rms_error"])
+inner = [((p - h) / p0) ** 2 for r, p, h in zip(j["profile"]["r_m"], j["profile"]["p_pa"], j["profile"]["p_hertz_pa"])
+         if r < 0.9 * j["a_hertz_m"]]
+assert abs(math.sqrt(sum(inner) / len(inner)) - j["profile_rms_error_interior"]) < 1e-12
+assert j["pressure_recovery"] == "lumped"
 assert max(p for p, _ in rows) == j["p_max_nodal_pa"], j["p_max_nodal_pa"]
 assert abs(j["p_max_nodal_error"] - (j["p_max_nodal_pa"] / p0 - 1)) < 1e-12
 PY

@@ -79,6 +79,8 @@ void add_contact(nlohmann::json& j, const HertzResult& r)
   }
   j["profile"] = {{line ? "x_m" : "r_m", s_m}, {"p_pa", p_pa}, {"p_hertz_pa", p_hertz}};
   j["profile_rms_error"] = r.profile_rms_error;
+  j["profile_rms_error_interior"] = r.profile_rms_error_interior;
+  j["pressure_recovery"] = recovery_name(s.pressure_recovery);
   j["touching_nodes"] = r.touching_nodes;
   j["penalty_error_estimate"] = r.penalty_error_estimate;
   j["discretisation_error_estimate"] = r.discretisation_error_estimate;

@@ -20,6 +20,11 @@ int default_refine(Model model, int degree)
   return 0;
 }
 
+std::string recovery_name(PressureRecovery recovery)
+{
+  return recovery == PressureRecovery::consistent ? "consistent" : "lumped";
+}
+
 void validate(const HertzSettings& s)
 {
   auto positive = [](double value, const char* what) {

@@ -11,6 +11,15 @@
 
 namespace rollcheck::fem
 {
+/// How the nodal contact pressure is recovered from the nodal contact forces
+/// F_i: lumped, F_i / A_i (fem/nodal_fields.h), or consistent, the contact
+/// patch's mass-matrix system M p = F (fem/consistent_pressure.h).
+enum class PressureRecovery
+{
+  lumped,
+  consistent
+};
+
 struct HertzSettings
 {
   Model model = Model::axisymmetric;
@@ -38,6 +47,11 @@ struct HertzSettings
   /// hard cases: a fixed mesh under a varying load).
   double contact_element_size_m = 0.0;
   double force_rtol = 1e-6;           ///< load control: |F_h - F| / F at the end
+  /// Nodal pressure recovery. Lumped: consistent recovery, exact for a
+  /// pressure linear over a node's patch, amplifies the nodal forces' own
+  /// scatter and is the less accurate on every model's default mesh
+  /// (docs/methods/hertz-fem.md#pointwise-accuracy-in-3d-open).
+  PressureRecovery pressure_recovery = PressureRecovery::lumped;
   /// Extra PETSc options, e.g. "-hertz_ksp_type gmres"; the solver's prefix is "hertz_".
   std::string petsc_options;
   /// Progress lines (meshing, size, load control) at info level; else at debug (-v).
@@ -52,6 +66,9 @@ struct HertzSettings
 /// meets the model's tolerances with a 2x margin (docs/results/hertz.md#convergence-study-speed-against-error);
 /// plane strain, within them from level 0, takes the axisymmetric level.
 int default_refine(Model model, int degree);
+
+/// "lumped" or "consistent".
+std::string recovery_name(PressureRecovery recovery);
 
 /// InputError naming the bad field; called by solve_hertz.
 void validate(const HertzSettings& setup);

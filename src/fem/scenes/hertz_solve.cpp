@@ -1,6 +1,7 @@
 #include "fem/scenes/hertz_solve.h"
 #include "contact/hertz.h"
 #include "fem/all_gather.h"
+#include "fem/consistent_pressure.h"
 #include "fem/load_control.h"
 #include "fem/nodal_fields.h"
 #include "fem/petsc_session.h"
@@ -71,6 +72,15 @@ double penalty_stiffness(const HertzResult& result)
   return result.setup.penalty_c * result.hertz.body_modulus_pa / result.grading.contact_size_m;
 }
 
+/// The nodal fields, the contact pressure by the setup's recovery.
+NodalFields hertz_fields(const PenaltyContact& problem, PressureRecovery recovery)
+{
+  NodalFields fields = recover_nodal_fields(problem);
+  if (recovery == PressureRecovery::consistent)
+    static_cast<ContactPressure&>(fields) = consistent_contact_pressure(problem);
+  return fields;
+}
+
 /// The scene's mesh, graded towards the contact.
 SceneMesh mesh_hertz_scene(MPI_Comm comm, HertzResult& result, spdlog::level::level_enum progress, int rank)
 {
@@ -105,7 +115,7 @@ void reach_hertz_load(PenaltyContact& problem, HertzResult& result, spdlog::leve
     spdlog::log(progress, "hertz {} P{}: load control to {:.6g} {} (Newton iterations with -v)", model_name(setup.model),
                 setup.degree, ref.load, line ? "N/m" : "N");
   int step = 0;
-  const auto write_step = [&](double) { series->write(recover_nodal_fields(problem), ++step); };
+  const auto write_step = [&](double) { series->write(hertz_fields(problem, setup.pressure_recovery), ++step); };
   const LoadControlReport load = reach_force(problem, ref.load, first_approach, edge_height, exponent,
                                              setup.force_rtol, rank == 0 ? progress : spdlog::level::debug, {},
                                              series ? std::function<void(double)>(write_step) : nullptr);
@@ -180,15 +190,22 @@ void measure_contact(const std::vector<double>& surface, HertzResult& result)
   result.contact_edge_m = contact_edge(nodes);
 
   std::sort(nodes.begin(), nodes.end(), [](const auto& a, const auto& b) { return a.s < b.s; });
-  double squares = 0;
+  double squares = 0, interior_squares = 0;
+  std::size_t interior = 0;
   for (const SurfaceNode& node : nodes)
     if (node.s < 1.5 * c_H)
     {
       result.profile.push_back(node);
       const double d = (node.pressure - contact::pressure_profile(ref.peak_pressure_pa, c_H, node.s)) / ref.peak_pressure_pa;
       squares += d * d;
+      if (node.s < 0.9 * c_H)
+      {
+        interior_squares += d * d;
+        ++interior;
+      }
     }
   result.profile_rms_error = std::sqrt(squares / std::max<std::size_t>(1, result.profile.size()));
+  result.profile_rms_error_interior = std::sqrt(interior_squares / std::max<std::size_t>(1, interior));
 }
 
 /// The largest maximum shear and von Mises stress on the axis and their
@@ -269,7 +286,7 @@ HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
 
   // Post-processing against Hertz, then the fields.
   const auto post_start = Clock::now();
-  const NodalFields fields = recover_nodal_fields(problem);
+  const NodalFields fields = hertz_fields(problem, setup.pressure_recovery);
   const GatheredNodes gathered = gather_surface_and_axis(comm, fields, result);
   measure_contact(gathered.surface, result);
   measure_axis_maxima(gathered.axis, result);

@@ -28,6 +28,7 @@ struct HertzResult
   DepthMaximum max_von_mises;
   std::vector<SurfaceNode> profile; ///< contact-surface nodes with s < 1.5 c_H, by s
   double profile_rms_error = 0;     ///< RMS of (p - p_Hertz(s)) / p0_Hertz over `profile`
+  double profile_rms_error_interior = 0; ///< the same over the nodes of `profile` with s < 0.9 c_H
   int touching_nodes = 0;           ///< contact-surface nodes with a negative gap
   double elements_across_contact = 0; ///< c_H / h_c
   /// Estimated relative error of the contact size due to the penalty alone

@@ -41,11 +41,21 @@ std::vector<HertzSettings> convergence_study(const HertzSettings& base, const st
 
 std::vector<HertzSettings> pointwise_study(const HertzSettings& base)
 {
-  std::vector<HertzSettings> setups{study_setup(base, Model::axisymmetric, 1, -1)};
+  std::vector<HertzSettings> setups;
+  const auto add = [&](Model model, int degree, int refine, double penalty_c) {
+    for (PressureRecovery recovery : {PressureRecovery::lumped, PressureRecovery::consistent})
+    {
+      HertzSettings s = study_setup(base, model, degree, refine);
+      s.pressure_recovery = recovery;
+      s.penalty_c = penalty_c;
+      setups.push_back(s);
+    }
+  };
+  add(Model::axisymmetric, 1, -1, base.penalty_c);
   for (int refine = 0; refine <= 3; ++refine)
-    setups.push_back(study_setup(base, Model::solid, 1, refine));
-  for (int refine = 0; refine <= 1; ++refine)
-    setups.push_back(study_setup(base, Model::solid, 2, refine));
+    add(Model::solid, 1, refine, base.penalty_c);
+  add(Model::solid, 1, -1, 10 * base.penalty_c);
+  add(Model::solid, 2, 0, base.penalty_c);
   return setups;
 }
 
@@ -89,19 +99,20 @@ HertzStudy run_study(MPI_Comm comm, const std::string& name, const std::vector<H
 
 std::string to_csv(const HertzStudy& study)
 {
-  std::string csv = "model,degree,refine,penalty_c,elements_across_contact,dofs,cells,ranks,newton_its,krylov_its,"
+  std::string csv = "model,degree,refine,penalty_c,pressure_recovery,elements_across_contact,dofs,cells,ranks,newton_its,krylov_its,"
                     "wall_s,solve_s,size_error,p0_error,p_max_nodal_error,max_shear_error,max_shear_depth_error,"
                     "max_von_mises_error,max_von_mises_depth_error,force_error,profile_rms_error,"
-                    "penalty_error_estimate,discretisation_error_estimate,flags,status\n";
+                    "profile_rms_error_interior,penalty_error_estimate,discretisation_error_estimate,flags,status\n";
   for (const HertzStudyRun& run : study.runs)
   {
     const HertzSettings& s = run.setup;
-    csv += fmt::format("{},{},{},{},", model_name(s.model), s.degree, resolved_refine(s), s.penalty_c);
+    csv += fmt::format("{},{},{},{},{},", model_name(s.model), s.degree, resolved_refine(s), s.penalty_c,
+                       recovery_name(s.pressure_recovery));
     if (!run.result)
     {
       std::string message = run.failure;
       std::replace(message.begin(), message.end(), ',', ';');
-      csv += std::string(20, ',') + "failed: " + message + "\n";
+      csv += std::string(21, ',') + "failed: " + message + "\n";
       continue;
     }
     const HertzResult& r = *run.result;
@@ -109,7 +120,7 @@ std::string to_csv(const HertzStudy& study)
     const HertzReference& h = r.hertz;
     csv += fmt::format(
         "{:.6g},{},{},{},{},{},{:.6g},{:.6g},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},"
-        "{:.6e},{:.6e},{:.6e},{},ok\n",
+        "{:.6e},{:.6e},{:.6e},{:.6e},{},ok\n",
         r.elements_across_contact, r.dofs, r.cells, r.ranks, r.newton_iterations, r.krylov_iterations, r.wall_s,
         r.solve_s, relative_error(r.contact_size_m, h.contact_size_m),
         relative_error(r.peak_pressure_pa, h.peak_pressure_pa),
@@ -117,7 +128,8 @@ std::string to_csv(const HertzStudy& study)
         relative_error(r.max_shear.value, h.max_shear_pa), relative_error(r.max_shear.depth_m, h.max_shear_depth_m),
         relative_error(r.max_von_mises.value, h.max_von_mises_pa),
         relative_error(r.max_von_mises.depth_m, h.max_von_mises_depth_m),
-        relative_error(r.load_reaction * length, s.force_n), r.profile_rms_error, r.penalty_error_estimate,
+        relative_error(r.load_reaction * length, s.force_n), r.profile_rms_error, r.profile_rms_error_interior,
+        r.penalty_error_estimate,
         r.discretisation_error_estimate, fmt::join(r.flags, " "));
   }
   return csv;
@@ -134,6 +146,7 @@ nlohmann::json to_json(const HertzStudy& study)
                                                {"degree", s.degree},
                                                {"refine", resolved_refine(s)},
                                                {"penalty_c", s.penalty_c},
+                                               {"pressure_recovery", recovery_name(s.pressure_recovery)},
                                                {"failed", run.failure}});
   }
   return {{"study", study.name}, {"runs", runs}};

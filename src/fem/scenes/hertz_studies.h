@@ -22,8 +22,10 @@ namespace rollcheck::fem
 std::vector<HertzSettings> convergence_study(const HertzSettings& base, const std::vector<Model>& models);
 
 /// Cost against pointwise error (the largest nodal pressure and the
-/// profile's RMS, besides the fitted a and p0): the axisymmetric P1 default
-/// as the reference, then 3D P1 refine 0..3 and 3D P2 refine 0..1.
+/// profile's RMS, besides the fitted a and p0), each setup with the lumped
+/// and the consistent pressure recovery: the axisymmetric P1 default as the
+/// reference, then 3D P1 refine 0..3, 3D P1 at the default refine with 10x
+/// the base's penalty_c, and 3D P2 refine 0.
 std::vector<HertzSettings> pointwise_study(const HertzSettings& base);
 
 /// penalty_c in {0.1, 0.3, 1, 3, 10, 30, 100, 300, 1000}, P1, default mesh.
