@@ -84,12 +84,16 @@ void join_collections(const std::filesystem::path& xdmf)
   write_file_atomically(xdmf, text.str());
 }
 
+/// How long a rank whose write failed waits for the others to finish the
+/// same step of DOLFINx's writer before it ends every rank (fem/first_failure.h).
+constexpr std::chrono::seconds write_patience{30};
+
 /// Every rank's failure becomes every rank's (fem/first_failure.h): a
 /// collective step that failed on one rank must not leave the others waiting
 /// in the next one. `failure`: this rank's message, empty if it succeeded.
 void agree(MPI_Comm comm, const std::string& failure)
 {
-  if (const std::optional<RankFailure> first = first_failure(comm, failure.empty() ? 0 : 1, failure))
+  if (const std::optional<RankFailure> first = first_failure(comm, failure.empty() ? 0 : 1, failure, write_patience))
     throw ComputationError(first->rank == 0 ? first->message
                                             : fmt::format("{} (on rank {})", first->message, first->rank));
 }
@@ -170,6 +174,11 @@ void FieldSeries::call_collectively(const std::function<void()>& call)
   catch (const std::exception& e)
   {
     failure = write_failure(target_, e);
+    // The other ranks may be held inside the writer, and the agreement end
+    // every rank: the temporary folder goes first (a shared file system
+    // shows it to every rank; elsewhere there is nothing to remove).
+    std::error_code ignored;
+    std::filesystem::remove_all(folder_, ignored);
   }
   try
   {

@@ -28,7 +28,10 @@
 // a file-size limit): every step of the writer is collective, so the ranks
 // agree on each one's outcome (fem/first_failure.h) and every rank throws
 // the failing rank's message, instead of the others waiting for ever in the
-// writer's next collective call.
+// writer's next collective call. Where the others are held inside the step
+// (HDF5 reduces over the ranks within a dataset write), the failed rank
+// removes the temporary folder, names the file and, after 30 s, ends every
+// rank (MPI_Abort, exit 1).
 #include "fem/nodal_fields.h"
 #include <dolfinx/io/XDMFFile.h>
 #include <filesystem>
