@@ -11,6 +11,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rollcheck::geometry
@@ -60,6 +61,15 @@ void insert_petsc_options(std::vector<std::string> options);
 
 /// This process's MPI rank: 0 outside MPI, and always in rollcheck.
 int process_rank();
+
+/// The command's outcome on every rank: this rank's exit code and error line,
+/// or, when another rank failed, the lowest failing rank's (fem/first_failure.h),
+/// so that a write that failed on one rank ends every rank with its exit code
+/// and the file named. Collective in rollcheck-fem under MPI (every rank calls
+/// it at the same point: where main() maps errors to exit codes, after a
+/// write of rank 0 between collective steps); the identity in rollcheck and
+/// without MPI.
+std::pair<int, std::string> shared_outcome(int exit_code, const std::string& error);
 
 /// `mesh --out FILE.msh`: the gmsh tetrahedral mesh of `surface`, written to
 /// `path` ({"nodes", "tetrahedra"} returned).

@@ -3,6 +3,7 @@
 // it, PETSc's options and its end, and the FEM subcommands.
 #include "cli/cli.h"
 #include "core/error.h"
+#include "fem/first_failure.h"
 #include "fem/petsc_session.h"
 #include "geometry/tetrahedralize.h"
 #include "study/loop_scores/fem_sds_family.h"
@@ -18,6 +19,10 @@ namespace rollcheck::cli
 {
 namespace
 {
+/// The ranks' own communicator for shared_outcome(): a failed rank's last
+/// collective call must not match a call the others make inside a solver.
+MPI_Comm outcome_comm = MPI_COMM_NULL;
+
 /// A PETSc option given (after `--` or in --petsc-options) that no solver
 /// read is named, on rank 0: a misspelt option must not pass silently.
 void warn_unused_petsc_options()
@@ -53,6 +58,7 @@ ProcessSession::ProcessSession(int& argc, char**& argv, const std::vector<std::s
     return;
   int provided;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  MPI_Comm_dup(MPI_COMM_WORLD, &outcome_comm);
 }
 
 ProcessSession::~ProcessSession()
@@ -61,6 +67,8 @@ ProcessSession::~ProcessSession()
   MPI_Initialized(&initialized);
   if (!initialized)
     return;
+  if (outcome_comm != MPI_COMM_NULL)
+    MPI_Comm_free(&outcome_comm);
   PetscBool petsc_running = PETSC_FALSE;
   PetscInitialized(&petsc_running);
   if (petsc_running)
@@ -111,6 +119,16 @@ int process_rank()
   if (initialized)
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   return rank;
+}
+
+std::pair<int, std::string> shared_outcome(int exit_code, const std::string& error)
+{
+  if (outcome_comm == MPI_COMM_NULL)
+    return {exit_code, error};
+  const std::optional<fem::RankFailure> first = fem::first_failure(outcome_comm, exit_code, error);
+  if (!first || first->rank == process_rank())
+    return {exit_code, error};
+  return {first->exit_code, first->message.empty() ? "" : fmt::format("{} (on rank {})", first->message, first->rank)};
 }
 
 nlohmann::json write_volume_mesh(const geometry::SurfaceMesh& surface, double mesh_size_m,

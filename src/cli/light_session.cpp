@@ -58,6 +58,8 @@ void insert_petsc_options(std::vector<std::string> options)
 
 int process_rank() { return 0; }
 
+std::pair<int, std::string> shared_outcome(int exit_code, const std::string& error) { return {exit_code, error}; }
+
 // ProcessSession hands the command lines that reach these to rollcheck-fem.
 nlohmann::json write_volume_mesh(const geometry::SurfaceMesh&, double, const std::filesystem::path&)
 {

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <set>
+#include <tuple>
 #include <cctype>
 #include <fmt/format.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
@@ -33,28 +34,36 @@ bool looks_like_petsc_option(const std::string& arg)
          && arg.find('_') != std::string::npos && arg.find(' ') == std::string::npos;
 }
 
-/// The subcommand's exit code; InputError -> 2, ComputationError -> 1.
+/// The subcommand's exit code; InputError -> 2, ComputationError -> 1. Under
+/// MPI every rank ends with the first failing rank's code and message
+/// (cli.h shared_outcome): a write that failed on one rank is named on all.
 int run_guarded(const std::function<int()>& run)
 {
+  int code = 0;
+  std::string error;
   try
   {
-    return run();
+    code = run();
   }
   catch (const InputError& e)
   {
-    spdlog::error("{}", e.what());
-    return 2;
+    code = 2;
+    error = e.what();
   }
   catch (const ComputationError& e)
   {
-    spdlog::error("computation failed: {}", e.what());
-    return 1;
+    code = 1;
+    error = fmt::format("computation failed: {}", e.what());
   }
   catch (const std::exception& e)
   {
-    spdlog::error("internal error: {}", e.what());
-    return 1;
+    code = 1;
+    error = fmt::format("internal error: {}", e.what());
   }
+  std::tie(code, error) = cli::shared_outcome(code, error);
+  if (!error.empty())
+    spdlog::error("{}", error);
+  return code;
 }
 /// The exit code of a failed parse, its message on stderr: a PETSc option
 /// before `--` and an unknown subcommand are named; --help and --version are

@@ -1,6 +1,7 @@
 #include "cli/optimize_runs.h"
 #include "cli/cli.h"
 #include "core/atomic_file.h"
+#include "core/error.h"
 #include "io/case_hash.h"
 #include <spdlog/spdlog.h>
 #include <string>
@@ -51,8 +52,20 @@ std::shared_ptr<io::EvaluationCache> keep_runs(const std::filesystem::path& out,
   settings.run_store.record = [cache, saves](std::span<const study::optimize::OracleRun> runs) {
     for (const study::optimize::OracleRun& run : runs)
       cache->add(run.x, run.replicate, run.value);
+    // Rank 0 alone saves, between collective evaluations: its failure (a
+    // full disk) must end every rank here, not leave them in the next one.
+    std::string failure;
     if (saves)
-      cache->save();
+      try
+      {
+        cache->save();
+      }
+      catch (const std::exception& e)
+      {
+        failure = e.what();
+      }
+    if (const auto [code, error] = shared_outcome(failure.empty() ? 0 : 1, failure); code != 0)
+      throw ComputationError(error);
   };
   return cache;
 }

@@ -1,6 +1,7 @@
 #include "fem/write_fields.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "fem/first_failure.h"
 #include <dolfinx/fem/FunctionSpace.h>
 #include <dolfinx/mesh/Mesh.h>
 #include <fmt/format.h>
@@ -83,22 +84,26 @@ void join_collections(const std::filesystem::path& xdmf)
   write_file_atomically(xdmf, text.str());
 }
 
-/// Every rank's failure becomes every rank's: a collective step that failed
-/// on one rank must not leave the others waiting.
-void agree(MPI_Comm comm, bool failed, const std::string& what)
+/// How long a rank whose write failed waits for the others to finish the
+/// same step of DOLFINx's writer before it ends every rank (fem/first_failure.h).
+constexpr std::chrono::seconds write_patience{30};
+
+/// Every rank's failure becomes every rank's (fem/first_failure.h): a
+/// collective step that failed on one rank must not leave the others waiting
+/// in the next one. `failure`: this rank's message, empty if it succeeded.
+void agree(MPI_Comm comm, const std::string& failure)
 {
-  int any = failed ? 1 : 0;
-  MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_MAX, comm);
-  if (any)
-    throw ComputationError(fmt::format("writing fields: {}", what));
+  if (const std::optional<RankFailure> first = first_failure(comm, failure.empty() ? 0 : 1, failure, write_patience))
+    throw ComputationError(first->rank == 0 ? first->message
+                                            : fmt::format("{} (on rank {})", first->message, first->rank));
 }
 
 /// What DOLFINx's writer threw (std::runtime_error "Failed to create HDF5
-/// file.", from HDF5 on a full disk or a vanished folder) as a failed
-/// computation naming the file.
-ComputationError write_failure(const std::filesystem::path& target, const std::exception& e)
+/// file.", from HDF5 on a full disk or a vanished folder) as a message
+/// naming the file.
+std::string write_failure(const std::filesystem::path& target, const std::exception& e)
 {
-  return ComputationError(fmt::format("cannot write the fields '{}': {}", target.string(), e.what()));
+  return fmt::format("cannot write the fields '{}': {}", target.string(), e.what());
 }
 } // namespace
 
@@ -115,15 +120,18 @@ FieldSeries::FieldSeries(MPI_Comm comm, const std::filesystem::path& xdmf_path) 
   std::error_code error;
   if (rank == 0)
     std::filesystem::create_directories(folder_, error);
-  agree(comm, static_cast<bool>(error), fmt::format("cannot create '{}': {}", folder_.string(), error.message()));
+  agree(comm, error ? fmt::format("writing fields: cannot create '{}': {}", folder_.string(), error.message()) : "");
   try
   {
-    file_ = std::make_unique<dolfinx::io::XDMFFile>(comm, folder_ / target_.filename(), "w");
+    call_collectively([&] { file_ = std::make_unique<dolfinx::io::XDMFFile>(comm, folder_ / target_.filename(), "w"); });
   }
-  catch (const std::exception& e)
+  catch (const ComputationError&)
   {
+    // Where the file was opened, closing it is a collective call the rank
+    // that failed does not make: abandoned, as after a failed write.
+    static_cast<void>(file_.release());
     remove_folder();
-    throw write_failure(target_, e);
+    throw;
   }
 }
 
@@ -156,37 +164,50 @@ void FieldSeries::remove_folder()
     std::filesystem::remove_all(folder_, ignored);
 }
 
-void FieldSeries::write(const NodalFields& fields, int step)
+void FieldSeries::call_collectively(const std::function<void()>& call)
 {
+  std::string failure;
   try
   {
-    if (!mesh_written_)
-    {
-      file_->write_mesh(*fields.pressure->function_space()->mesh());
-      mesh_written_ = true;
-    }
-    for (const auto& field : {fields.displacement, stress_in_mesh_axes(*fields.stress), fields.von_mises,
-                              fields.max_shear, fields.pressure})
-      file_->write_function(*field, step);
+    call();
   }
   catch (const std::exception& e)
   {
-    failed_ = true;
-    throw write_failure(target_, e);
+    failure = write_failure(target_, e);
+    // The other ranks may be held inside the writer, and the agreement end
+    // every rank: the temporary folder goes first (a shared file system
+    // shows it to every rank; elsewhere there is nothing to remove).
+    std::error_code ignored;
+    std::filesystem::remove_all(folder_, ignored);
   }
+  try
+  {
+    agree(comm_, failure);
+  }
+  catch (const ComputationError&)
+  {
+    // Closing the file would be a collective call the failed rank may not
+    // make: the writer is abandoned on every rank alike.
+    failed_ = true;
+    throw;
+  }
+}
+
+void FieldSeries::write(const NodalFields& fields, int step)
+{
+  if (!mesh_written_)
+  {
+    call_collectively([&] { file_->write_mesh(*fields.pressure->function_space()->mesh()); });
+    mesh_written_ = true;
+  }
+  for (const auto& field : {fields.displacement, stress_in_mesh_axes(*fields.stress), fields.von_mises,
+                            fields.max_shear, fields.pressure})
+    call_collectively([&] { file_->write_function(*field, step); });
 }
 
 void FieldSeries::close()
 {
-  try
-  {
-    file_->close(); // HDF5 writes what it buffered here: a full disk fails here
-  }
-  catch (const std::exception& e)
-  {
-    failed_ = true;
-    throw write_failure(target_, e);
-  }
+  call_collectively([&] { file_->close(); }); // HDF5 writes what it buffered here: a full disk fails here
   file_.reset();
   int rank = 0;
   MPI_Comm_rank(comm_, &rank);
@@ -204,10 +225,10 @@ void FieldSeries::close()
     }
     catch (const std::exception& e)
     {
-      message = e.what();
+      message = fmt::format("writing fields: cannot move the fields to '{}': {}", target_.string(), e.what());
     }
   }
-  agree(comm_, !message.empty(), fmt::format("cannot move the fields to '{}': {}", target_.string(), message));
+  agree(comm_, message);
 }
 
 void write_fields(const std::filesystem::path& xdmf_path, const NodalFields& fields)

@@ -23,10 +23,19 @@
 // target's folder was checked before any computation by the scene's setup
 // (fem::validate). A write that fails (a full disk, the folder gone) is a
 // ComputationError naming the target (exit 1); the temporary folder is
-// removed and a previous NAME.xdmf / NAME.h5 stay as they were.
+// removed and a previous NAME.xdmf / NAME.h5 stay as they were. Under MPI
+// a write can fail on one rank only (its part of NAME.h5 meets a full disk or
+// a file-size limit): every step of the writer is collective, so the ranks
+// agree on each one's outcome (fem/first_failure.h) and every rank throws
+// the failing rank's message, instead of the others waiting for ever in the
+// writer's next collective call. Where the others are held inside the step
+// (HDF5 reduces over the ranks within a dataset write), the failed rank
+// removes the temporary folder, names the file and, after 30 s, ends every
+// rank (MPI_Abort, exit 1).
 #include "fem/nodal_fields.h"
 #include <dolfinx/io/XDMFFile.h>
 #include <filesystem>
+#include <functional>
 #include <memory>
 
 namespace rollcheck::fem
@@ -49,13 +58,14 @@ public:
 
 private:
   void remove_folder();
+  /// One collective call of DOLFINx's writer; a failure on any rank is thrown on every rank.
+  void call_collectively(const std::function<void()>& call);
 
   MPI_Comm comm_;
   std::filesystem::path target_, folder_;
   std::unique_ptr<dolfinx::io::XDMFFile> file_;
   bool mesh_written_ = false;
   bool failed_ = false; ///< a write or the close failed: the writer cannot be closed again
-
 };
 
 /// The fields of one state, as a series of one step.
