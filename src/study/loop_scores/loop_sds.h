@@ -219,6 +219,12 @@ struct LoopSds
   double load_ratio_min = 0, load_ratio_max = 0; ///< lambda over the mapped points
   /// Largest pressure over the loop's mapped points (inside the crease margins).
   double line_hertz_peak_pa = 0, fem_peak_pa = 0;
+  /// Per face, summed over the ruling samples as fem_rulings and
+  /// fem_fds_rulings score them (the interior points, the full table): the
+  /// largest FEM pressure each sample puts on the face (Pa), and its Miner
+  /// damage (contact/fatigue.h, dimensionless). Zero on every face when the
+  /// loop has no ruling sample.
+  Eigen::VectorXd accumulated_fem_pressure_pa, accumulated_fem_fatigue_damage;
   /// Mapped points of the ruling samples, and those whose load ratio lies
   /// below the table's least (fem::SliceScaling::smallest_load_ratio), given g there.
   std::size_t mapped_points = 0, points_below_table = 0;
