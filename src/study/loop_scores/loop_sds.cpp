@@ -2,6 +2,7 @@
 #include "study/loop_scores/loop_sds.h"
 #include "contact/fatigue.h"
 #include "contact/load_ratio.h"
+#include "contact/ruling_load.h"
 #include "contact/rim_dihedral_angle.h"
 #include "contact/rim_overhang.h"
 #include "core/error.h"
@@ -80,7 +81,7 @@ RulingSample map_ruling(std::span<const oracle::Circle> circles, const contact::
   sample.even = even;
   for (std::size_t k = 0; k < along.size(); ++k)
   {
-    const double f = held_fraction(along[k], locus.loaded_from, locus.loaded_to, s.crease_margin);
+    const double f = contact::held_fraction(along[k], locus.loaded_from, locus.loaded_to, s.crease_margin);
     const double q = load_at(f);
     if (!(q > 0) || !(radius_at(f) > 0))
       throw ComputationError("loop SDS: a mapping point inside the loaded ruling has no load or no radius");
@@ -323,12 +324,6 @@ double line_hertz_peak(double force_n, double centre_of_pressure, const oracle::
   const double q = oracle::line_load(force_n, centre_of_pressure, ruling.length_m, f);
   const double radius = (1 - f) * ruling.start_radius_m + f * ruling.end_radius_m;
   return q > 0 ? std::sqrt(q * effective_modulus_pa / (std::numbers::pi * radius)) : 0.0;
-}
-
-double held_fraction(double f, double loaded_from, double loaded_to, double crease_margin)
-{
-  const double lo = loaded_from + crease_margin, hi = loaded_to - crease_margin;
-  return lo <= hi ? std::clamp(f, lo, hi) : 0.5 * (loaded_from + loaded_to);
 }
 
 LoopSamples map_loop_samples(MPI_Comm comm, const LoopSource& source, const oracle::RollingBody& body,

@@ -272,11 +272,6 @@ std::vector<double> mapping_fractions(double loaded_from, double loaded_to, int 
 double line_hertz_peak(double force_n, double centre_of_pressure, const oracle::Ruling& ruling,
                        double effective_modulus_pa, double f);
 
-/// Where a mapping point's pressure is taken: `f` held inside
-/// [loaded_from + margin, loaded_to - margin] (the middle of the loaded part
-/// when that is empty).
-double held_fraction(double f, double loaded_from, double loaded_to, double crease_margin);
-
 nlohmann::json to_json(const LoopSds& loop);
 /// The loop's headline under the keys of every record of a whole loop
 /// (FEM-SDS's, the family table's rows): samples, singular_samples,
