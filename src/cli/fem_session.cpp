@@ -104,15 +104,6 @@ void insert_petsc_options(std::vector<std::string> options)
     throw InputError(fmt::format("cannot read the PETSc options after `--`: {}", fmt::join(options, " ")));
 }
 
-int process_rank()
-{
-  int initialized = 0, rank = 0;
-  MPI_Initialized(&initialized);
-  if (initialized)
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  return rank;
-}
-
 nlohmann::json write_volume_mesh(const geometry::SurfaceMesh& surface, double mesh_size_m,
                                  const std::filesystem::path& path)
 {

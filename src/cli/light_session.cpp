@@ -56,8 +56,6 @@ void insert_petsc_options(std::vector<std::string> options)
     throw InputError("PETSc options are read by rollcheck-fem");
 }
 
-int process_rank() { return 0; }
-
 // ProcessSession hands the command lines that reach these to rollcheck-fem.
 nlohmann::json write_volume_mesh(const geometry::SurfaceMesh&, double, const std::filesystem::path&)
 {
