@@ -49,7 +49,7 @@ const SceneSchema<FemSdsSettings>& fem_sds_schema()
                  io::Bounds{1, 10000})
         .integer("seed", "--seed", &FemSdsSettings::seed, "",
                  "Seed of the stratified sampling (the same seed, the same picks)", io::non_negative)
-        .real("rolling_energy", "--rolling-energy", &FemSdsSettings::barrier_energy_excess, "",
+        .real("rolling_energy", "--rolling-energy", &FemSdsSettings::rolling_energy, "",
               "Rolling oracle: initial kinetic energy / potential barrier - 1 (docs/results/real-rolling.md#u-against-the-rolling-speed-rollcheck-oracle---oracle-rolling)",
               io::non_negative)
         .former("barrier_energy_excess")
@@ -67,7 +67,7 @@ const SceneSchema<FemSdsSettings>& fem_sds_schema()
         .integer("fem_slices", "--fem-slices", &FemSdsSettings::fem_slices, "",
                  "Plane-strain FEM slices per orientation, evenly spread over the loaded ruling away from its ends",
                  io::Bounds{2, 1000})
-        .real("end_margin", "--end-margin", &FemSdsSettings::crease_margin, "",
+        .real("end_margin", "--end-margin", &FemSdsSettings::end_margin, "",
               "Fraction of the ruling kept clear of each end of the loaded contact: the FEM peaks are taken inside, "
               "away from the creases (end effects decay within a few contact widths b, and b / L < 1e-3 here); "
               "the continuum value holds the pressure there too",

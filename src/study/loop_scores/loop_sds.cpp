@@ -81,7 +81,7 @@ RulingSample map_ruling(std::span<const oracle::Circle> circles, const contact::
   sample.even = even;
   for (std::size_t k = 0; k < along.size(); ++k)
   {
-    const double f = contact::held_fraction(along[k], locus.loaded_from, locus.loaded_to, s.crease_margin);
+    const double f = contact::held_fraction(along[k], locus.loaded_from, locus.loaded_to, s.end_margin);
     const double q = load_at(f);
     if (!(q > 0) || !(radius_at(f) > 0))
       throw ComputationError("loop SDS: a mapping point inside the loaded ruling has no load or no radius");

@@ -1,7 +1,7 @@
 // The whole-body check's JSON (study/whole_body/whole_body_check.h): one
 // to_json per record, the check's assembled from them.
 #include "core/json_number.h"
-#include "study/whole_body/load_rules.h"
+#include "study/whole_body/share_rules.h"
 #include "study/whole_body/whole_body_check.h"
 #include <numbers>
 
@@ -203,7 +203,7 @@ nlohmann::json to_json(const WholeBodyCheck& r)
           {"ruling", ruling},
           {"mesh", mesh_json(r)},
           {"whole_body", whole_body_json(r.fem, L)},
-          {"load_rule", std::string(load_rule_strategy(s.load_rule).name)},
+          {"share_rule", std::string(share_rule_strategy(s.share_rule).name)},
           {"section_load_rule", r.section_rule ? to_json(*r.section_rule) : nlohmann::json()},
           {"coarse_body_load_rule", r.coarse_body ? coarse_body_json(*r.coarse_body, L) : nlohmann::json()},
           {"stations", array_json(r.stations)},
