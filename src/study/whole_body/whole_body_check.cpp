@@ -5,6 +5,7 @@
 // check_stages.h; the orientations: whole_body_orientation.cpp; the JSON and
 // the tables: whole_body_json.cpp, whole_body_report.cpp.
 #include "study/whole_body/whole_body_check.h"
+#include "core/degree.h"
 #include "core/error.h"
 #include "fem/all_gather.h"
 #include "fem/petsc_session.h"
@@ -14,15 +15,12 @@
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
-#include <numbers>
 #include <spdlog/spdlog.h>
 
 namespace rollcheck::study::whole_body
 {
 namespace
 {
-constexpr double deg = std::numbers::pi / 180;
-
 /// InputError for settings out of range or a body without a whole-body mesh.
 void check_settings(const WholeBodyCheckSettings& s)
 {
@@ -88,7 +86,7 @@ void log_ruling(const CheckContext& context, const WholeBodyCheck& r)
   spdlog::info("whole-body check, {}: ruling L = {:.5g} m, R = {:.5g}..{:.5g} m, c = {:.4f}, loaded {:.3f}..{:.3f}, "
                "rim leans {:.2f}, {:.2f} deg, b = {:.4g} m (b / L = {:.3g})",
                r.body, L, o.ruling.start_radius_m, o.ruling.end_radius_m, o.centre_of_pressure, o.loaded_from,
-               o.loaded_to, o.rim_overhang_rad[0] / deg, o.rim_overhang_rad[1] / deg, r.half_width_m,
+               o.loaded_to, o.rim_overhang_rad[0] / degree, o.rim_overhang_rad[1] / degree, r.half_width_m,
                r.half_width_m / L);
 }
 } // namespace
