@@ -7,6 +7,7 @@
 // the check ran (its verdict is in the output), 1 when a solve failed.
 #include "cli/cli.h"
 #include "cli/scenes.h"
+#include "core/error.h"
 #include "fem/petsc_session.h"
 #include "study/whole_body/whole_body_check.h"
 #include <mpi.h>
