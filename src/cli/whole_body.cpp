@@ -7,7 +7,6 @@
 // the check ran (its verdict is in the output), 1 when a solve failed.
 #include "cli/cli.h"
 #include "cli/scenes.h"
-#include "core/error.h"
 #include "fem/petsc_session.h"
 #include "study/whole_body/whole_body_check.h"
 #include <mpi.h>
@@ -161,8 +160,10 @@ void add_whole_body_command(CLI::App& app)
   // The option's former name, refused as the case key's is (io::BoundSchema::former):
   // elsewhere --load-rule is the load each ruling carries, another quantity.
   sub->add_option_function<std::string>("--load-rule", [](const std::string&) {
-       throw InputError("whole-body: --load-rule is now --share-rule (how the reduced models share F along the "
-                        "ruling; --load-rule of oracle and fem-sds is the load each ruling carries)");
+       // A parse error: exit 2 with the message, as for any refused option.
+       throw CLI::ValidationError("whole-body: --load-rule is now --share-rule (how the reduced models share F "
+                                  "along the ruling; --load-rule of oracle and fem-sds is the load each ruling "
+                                  "carries)");
      })->group("");
 }
 } // namespace rollcheck::cli

@@ -30,7 +30,7 @@ check '[[ ! -e $tmp/sphere.json && ! -e $tmp/negative.json ]]' "a refused scan l
 # name is refused naming the new one, as an option and as a case key.
 "$bin" -q whole-body --share-rule sections --scan-directions 90 --json "$tmp/share.json" > "$tmp/share.log" 2>&1 \
   || { echo "FAIL: --share-rule sections"; cat "$tmp/share.log"; fail=1; }
-expect 2 "--load-rule is now --share-rule" -- "$bin" whole-body --load-rule sections --scan-directions 90 \
+expect 2 "load-rule is now --share-rule" -- "$bin" whole-body --load-rule sections --scan-directions 90 \
   --json "$tmp/former.json"
 printf '[scene]\nkind = "whole-body"\nload_rule = "sections"\nscan_directions_deg = 90\n' > "$tmp/former.toml"
 expect 2 "key 'load_rule' is now 'share_rule'" -- "$bin" run "$tmp/former.toml"
