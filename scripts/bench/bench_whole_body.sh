@@ -5,7 +5,7 @@
 # body's DOFs, and the ratio to the budget; beside them the largest
 # differences along the ruling and at the ends, against 3 %.
 #   bash scripts/bench/bench_whole_body.sh [ROLLCHECK] [-- extra whole-body options]
-# (e.g. -- --load-rule coarse-body: the load rule's own time is its column).
+# (e.g. -- --share-rule coarse-body: the load rule's own time is its column).
 # The 10 mm cylinder and the 10 mm oloid at --direction 67.5, its ends
 # nearest square (F = 100 N, steel).
 set -euo pipefail
@@ -31,7 +31,7 @@ for name in ["cylinder", "oloid"]:
     if r["worst_end"] is None and compared:
         end += " (the compared ends)"
     rule = r.get("coarse_body_load_rule") or r.get("section_load_rule") or {"wall_s": 0.0}
-    print(f"| {name} | {r['load_rule']} | {m['dofs']} | {m['node_planes']} x {m['section_nodes']} | {rule['wall_s']:.1f} "
+    print(f"| {name} | {r['share_rule']} | {m['dofs']} | {m['node_planes']} x {m['section_nodes']} | {rule['wall_s']:.1f} "
           f"| {w['slices']:.1f} | {w['end_models']:.1f} "
           f"| {w['whole_body']:.1f} | {total:.1f} | {total / budget:.2f} | {100 * r['worst_along']:.2f} % | {end} "
           f"| {r['outcome']} |")

@@ -11,7 +11,7 @@ pressure interpolated at d (both levels, as the check does at d_m), times
 the slice at the coarse body's q at d, taken as the run's slice at d_m
 scaled by sqrt(q(d) / q(d_m)) (line Hertz at fixed R: an approximation
 away from d_m; exact at d = d_m, where it reproduces the check), against
-the whole body's reading. Needs `rollcheck whole-body --load-rule
+the whole body's reading. Needs `rollcheck whole-body --share-rule
 coarse-body --json CHECK.json` (docs/methods/whole-body.md).
 """
 import json
@@ -33,7 +33,7 @@ def main():
     check = json.load(open(sys.argv[1]))
     rule = check.get("coarse_body_load_rule")
     if not rule:
-        raise SystemExit(f"{sys.argv[1]}: not a run of --load-rule coarse-body")
+        raise SystemExit(f"{sys.argv[1]}: not a run of --share-rule coarse-body")
     distances = [float(d) for d in sys.argv[2:]] or [2, 3, 4, 6, 8, 16, 32]
     planes = rule["planes_x_m_peak_pa_load_n_per_m"]
     length = check["ruling"]["length_m"]

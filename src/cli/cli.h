@@ -2,6 +2,7 @@
 // Layer: cli. Owns the `rollcheck` executable: one file per subcommand, each
 // exposing add_<name>_command(). Subcommands parse options, call the layers
 // below and write results; they hold no physics of their own.
+#include "core/process_rank.h"
 #include "io/batch_run.h"
 #include "io/parameters.h"
 #include <cstdio>
@@ -57,10 +58,7 @@ void insert_petsc_options(std::vector<std::string> options);
 
 // What the fast subcommands reach only in rollcheck-fem. Each has a
 // definition for either executable: rollcheck's refuses (it hands such
-// command lines to rollcheck-fem before they get here) or has no MPI.
-
-/// This process's MPI rank: 0 outside MPI, and always in rollcheck.
-int process_rank();
+// command lines to rollcheck-fem before they get here).
 
 /// The command's outcome on every rank: this rank's exit code and error line,
 /// or, when another rank failed, the lowest failing rank's (fem/first_failure.h),

@@ -49,7 +49,7 @@ const SceneSchema<FemSdsSettings>& fem_sds_schema()
                  io::Bounds{1, 10000})
         .integer("seed", "--seed", &FemSdsSettings::seed, "",
                  "Seed of the stratified sampling (the same seed, the same picks)", io::non_negative)
-        .real("rolling_energy", "--rolling-energy", &FemSdsSettings::barrier_energy_excess, "",
+        .real("rolling_energy", "--rolling-energy", &FemSdsSettings::rolling_energy, "",
               "Rolling oracle: initial kinetic energy / potential barrier - 1 (docs/results/real-rolling.md#u-against-the-rolling-speed-rollcheck-oracle---oracle-rolling)",
               io::non_negative)
         .former("barrier_energy_excess")
@@ -67,7 +67,7 @@ const SceneSchema<FemSdsSettings>& fem_sds_schema()
         .integer("fem_slices", "--fem-slices", &FemSdsSettings::fem_slices, "",
                  "Plane-strain FEM slices per orientation, evenly spread over the loaded ruling away from its ends",
                  io::Bounds{2, 1000})
-        .real("end_margin", "--end-margin", &FemSdsSettings::crease_margin, "",
+        .real("end_margin", "--end-margin", &FemSdsSettings::end_margin, "",
               "Fraction of the ruling kept clear of each end of the loaded contact: the FEM peaks are taken inside, "
               "away from the creases (end effects decay within a few contact widths b, and b / L < 1e-3 here); "
               "the continuum value holds the pressure there too",
@@ -113,22 +113,27 @@ const SceneSchema<FemSdsSettings>& fem_sds_schema()
         .unbound({"python", "--python", std::string("/usr/bin/python3"), "",
                   "Python with matplotlib for the plots (Debian's)"})
         .unbound({"vtu_file", "--vtu", std::string(), "",
-                  "Write the body with its per-face loop sums (point-Hertz and line-Hertz pressure accumulated over "
-                  "every sample, face areas) as named cell data to this .vtu (ParaView, meshio); empty: none",
+                  "Write the body with its per-face loop sums (point-Hertz, line-Hertz and FEM pressure accumulated "
+                  "over the samples, FEM fatigue damage, face areas) as named cell data to this .vtu (ParaView, "
+                  "meshio); empty: none",
                   {}, {}, true});
   });
 }
 
 /// The loop's per-face sums (every rank's, study/loop_scores/loop_sds.h
-/// LoopSamples) on the body's faces as a VTU's cell data (io/surface_vtu.h):
-/// the accumulated pressures whose spread over the faces the SDS scores.
+/// LoopSamples and LoopSds) on the body's faces as a VTU's cell data
+/// (io/surface_vtu.h): the accumulated pressures (Pa) whose spread over the
+/// faces the SDS scores, and the FEM's Miner damage FEM-FDS scores.
 void write_face_sums(const std::string& path, const FemSdsSettings& settings,
-                     const study::loop_scores::LoopSamples& samples)
+                     const study::loop_scores::FemSdsResult& result)
 {
+  const study::loop_scores::LoopSamples& samples = result.loop_samples;
   io::write_surface_vtu(path, geometry::make_body(settings.body),
                         {{"face_areas_m2", samples.face_areas},
                          {"accumulated_point_hertz_pressure_pa", samples.point_all},
-                         {"accumulated_line_hertz_pressure_pa", samples.line_all}});
+                         {"accumulated_line_hertz_pressure_pa", samples.line_all},
+                         {"accumulated_fem_pressure_pa", result.loop.accumulated_fem_pressure_pa},
+                         {"accumulated_fem_fatigue_damage", result.loop.accumulated_fem_fatigue_damage}});
 }
 
 nlohmann::json run_fem_sds(const io::Parameters& params)
@@ -139,7 +144,7 @@ nlohmann::json run_fem_sds(const io::Parameters& params)
     return j;
   print_summary(study::loop_scores::report(result));
   if (const std::string& vtu = params.text("vtu_file"); !vtu.empty())
-    write_face_sums(vtu, fem_sds_schema().bind(params), result.loop_samples);
+    write_face_sums(vtu, fem_sds_schema().bind(params), result);
   if (const std::string& out = params.text("out"); !out.empty())
     io::draw_folder(out, params.text("python"), io::default_scripts_folder() / "plot_fem_orientations.py", {},
                     "plot.log", [&](const std::filesystem::path& folder) {

@@ -112,15 +112,6 @@ void insert_petsc_options(std::vector<std::string> options)
     throw InputError(fmt::format("cannot read the PETSc options after `--`: {}", fmt::join(options, " ")));
 }
 
-int process_rank()
-{
-  int initialized = 0, rank = 0;
-  MPI_Initialized(&initialized);
-  if (initialized)
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  return rank;
-}
-
 std::pair<int, std::string> shared_outcome(int exit_code, const std::string& error)
 {
   if (outcome_comm == MPI_COMM_NULL)

@@ -56,8 +56,6 @@ void insert_petsc_options(std::vector<std::string> options)
     throw InputError("PETSc options are read by rollcheck-fem");
 }
 
-int process_rank() { return 0; }
-
 std::pair<int, std::string> shared_outcome(int exit_code, const std::string& error) { return {exit_code, error}; }
 
 // ProcessSession hands the command lines that reach these to rollcheck-fem.

@@ -51,15 +51,16 @@ void add_reduced_model_options(WholeBodySchema& s)
   s.integer("stations", "--stations", &WholeBodyCheckSettings::stations, "",
             "Plane-strain slices along the loaded ruling, compared with the whole body's peak there",
             io::Bounds{2, 200})
-      .choice("load_rule", "--load-rule", &WholeBodyCheckSettings::load_rule,
+      .choice("share_rule", "--share-rule", &WholeBodyCheckSettings::share_rule,
               "How the slices and end models share F along the ruling: locus (the contact locus's no-tension "
               "linear rule, fem-sds's), sections (each section across the ruling in plane strain under one "
               "rigid approach and tilt of the held cut, balanced for F and its moment; both ends loaded) or "
               "coarse-body (the whole body meshed coarsely, its line load on each node plane). Under sections "
               "and coarse-body an end model is matched to the rule near the edge (--end-match)",
-              {{"locus", study::whole_body::LoadRule::locus},
-               {"sections", study::whole_body::LoadRule::sections},
-               {"coarse-body", study::whole_body::LoadRule::coarse_body}})
+              {{"locus", study::whole_body::ShareRule::locus},
+               {"sections", study::whole_body::ShareRule::sections},
+               {"coarse-body", study::whole_body::ShareRule::coarse_body}})
+      .former("load_rule")
       .integer("rule_stations", "--rule-stations", &WholeBodyCheckSettings::rule_stations, "",
                "Sections of the sections' load rule (midpoint rule along the ruling)", io::Bounds{4, 200})
       .integer("rule_contact_elements", "--rule-contact-elements",
@@ -74,7 +75,7 @@ void add_reduced_model_options(WholeBodySchema& s)
             "locus's at the end) from the edge, their reading over their own pressure there times the slice at "
             "the rule's q there",
             io::Bounds{1, 100})
-      .real("end_margin", "--end-margin", &WholeBodyCheckSettings::crease_margin, "",
+      .real("end_margin", "--end-margin", &WholeBodyCheckSettings::end_margin, "",
             "Fraction of the ruling kept clear inside each loaded end for the stations (fem-sds's 5 %)",
             io::Bounds{0, 0.25, true, true})
       .former("crease_margin")
@@ -153,5 +154,16 @@ nlohmann::json run_whole_body(const io::Parameters& p)
 }
 } // namespace
 
-void add_whole_body_command(CLI::App& app) { add_scene_command(app, whole_body_schema(), run_whole_body); }
+void add_whole_body_command(CLI::App& app)
+{
+  CLI::App* sub = add_scene_command(app, whole_body_schema(), run_whole_body);
+  // The option's former name, refused as the case key's is (io::BoundSchema::former):
+  // elsewhere --load-rule is the load each ruling carries, another quantity.
+  sub->add_option_function<std::string>("--load-rule", [](const std::string&) {
+       // A parse error: exit 2 with the message, as for any refused option.
+       throw CLI::ValidationError("whole-body: --load-rule is now --share-rule (how the reduced models share F "
+                                  "along the ruling; --load-rule of oracle and fem-sds is the load each ruling "
+                                  "carries)");
+     })->group("");
+}
 } // namespace rollcheck::cli

@@ -1,7 +1,7 @@
 #include "contact/continuum_loop_scores.h"
 #include "core/error.h"
+#include "contact/ruling_load.h"
 #include "core/named_values.h"
-#include "oracle/line_load.h"
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -33,53 +33,6 @@ struct Rates
     return *this;
   }
 };
-
-/// The load of one ruling under the rule: total N, centre of pressure c.
-struct RulingLoad
-{
-  double normal_n = 0;
-  double centre = 0.5;
-  bool uniform = false;
-  double from = 0, to = 1; ///< the loaded part of the ruling (no-tension rule)
-};
-
-RulingLoad ruling_load(const oracle::RollingSample& sample, const RollingBodyMass& body,
-                       const ContinuumLoopSettings& s)
-{
-  RulingLoad load;
-  const double length = (sample.contact_end_m - sample.contact_start_m).norm();
-  switch (s.load_rule)
-  {
-  case LoadRule::uniform:
-    load.normal_n = s.normal_load_n;
-    load.uniform = true;
-    return load;
-  case LoadRule::static_through_centre_of_mass:
-    load.normal_n = s.normal_load_n;
-    load.centre = (body.centre_of_mass_m - sample.contact_start_m).dot(sample.contact_end_m - sample.contact_start_m)
-                  / (length * length);
-    break;
-  case LoadRule::dynamic:
-    load.normal_n = s.normal_load_n * sample.normal_force_n / (body.mass_kg * body.gravity_m_s2);
-    load.centre = sample.centre_of_pressure;
-    break;
-  }
-  if (!(load.centre > 0 && load.centre < 1) || !(load.normal_n > 0))
-  {
-    load.normal_n = 0; // standing on a rim point: no ruling load (a singular end, study/rims)
-    return load;
-  }
-  load.from = load.centre > 2.0 / 3 ? 1 - 3 * (1 - load.centre) : 0;
-  load.to = load.centre < 1.0 / 3 ? 3 * load.centre : 1;
-  return load;
-}
-
-double line_load_at(const RulingLoad& load, double length_m, double s)
-{
-  if (load.uniform)
-    return load.normal_n / length_m;
-  return oracle::line_load(load.normal_n, load.centre, length_m, s);
-}
 
 /// integral_0^1 ds / R(s) for R linear from r0 to r1.
 double mean_reciprocal_radius(double r0, double r1)
@@ -135,7 +88,7 @@ Rates sample_rates(const oracle::RollingSample& sample, double rate, const Rolli
   const double e_star = s.effective_modulus_pa;
   const bool hertz = s.width == oracle::ContactWidthModel::hertz;
   r.swept = length * rate * (r0 + r1) / 2;
-  const RulingLoad load = ruling_load(sample, body, s);
+  const RulingLoad load = ruling_load(sample, s.load_rule, s.normal_load_n, body);
   if (!(load.normal_n > 0))
     return r;
   // Contact time: the second moment and the touched area in closed form.
@@ -151,7 +104,7 @@ Rates sample_rates(const oracle::RollingSample& sample, double rate, const Rolli
   }
   const double lo = load.from + s.end_margin, hi = load.to - s.end_margin;
   const bool held_ends = lo <= hi;
-  auto held = [&](double f) { return held_ends ? std::clamp(f, lo, hi) : 0.5 * (load.from + load.to); };
+  auto held = [&](double f) { return held_fraction(f, load.from, load.to, s.end_margin); };
   // The loaded part in three parts, split where the held ends start, so
   // that each part's integrand is smooth; pieces in proportion to length.
   const std::array<double, 4> cuts
@@ -170,7 +123,7 @@ Rates sample_rates(const oracle::RollingSample& sample, double rate, const Rolli
       double accumulated_squared = 0; // K^2 at the piece's Gauss points, averaged
       for (const double f : {s0 + h / 2 - offset, s0 + h / 2 + offset})
       {
-        const double q = line_load_at(load, length, f);
+        const double q = load.line_load(length, f);
         const double weight = h / 2 * length * radius(f) * rate; // dA / dt of this Gauss point
         if (!(q > 0))
           continue;
@@ -182,7 +135,7 @@ Rates sample_rates(const oracle::RollingSample& sample, double rate, const Rolli
         }
         else
           r.max[0] = std::max(r.max[0], 1 / (rate * radius(f)));
-        const double q_held = line_load_at(load, length, held(f));
+        const double q_held = load.line_load(length, held(f));
         const double load_ratio = q_held / (e_star * radius(held(f)));
         r.load_ratio_min = std::min(r.load_ratio_min, load_ratio);
         r.load_ratio_max = std::max(r.load_ratio_max, load_ratio);
@@ -239,14 +192,6 @@ void validate(const oracle::RollingTrajectory& trajectory, double begin_s, doubl
     throw InputError(fmt::format("pieces along the ruling must be at least 1, got {}", s.pieces));
 }
 } // namespace
-
-const NamedValues<LoadRule>& load_rule_names()
-{
-  static const NamedValues<LoadRule> names = {{"static", LoadRule::static_through_centre_of_mass},
-                                              {"dynamic", LoadRule::dynamic},
-                                              {"uniform", LoadRule::uniform}};
-  return names;
-}
 
 const NamedValues<TimeLaw>& time_law_names()
 {

@@ -42,18 +42,15 @@
 //    limit still rank by damage; V is scale-free, so the strength does not
 //    enter.
 //
-// Load rules (the normal force N of the ruling, its centre of pressure c):
-//  - static through the centre of mass: N = F, c at the centre of mass's foot
-//    on the ruling, spread by the no-tension linear rule (oracle/line_load.h);
-//  - dynamic: N and c of the rolling motion itself (Newton-Euler,
-//    oracle/rolling_dynamics.h), N scaled by F / (m g), the same rule;
-//  - uniform: q = F / L along the whole ruling.
+// Load rules (static through the centre of mass, the motion's own dynamic
+// load, uniform) and the held ends: contact/ruling_load.h.
 // Time laws: the free rolling of the trajectory, or a uniform rate (sigma'
 // constant, the loop in the same time): the limit of a fast roll.
 //
 // Quadrature: the trapezoid rule between the trajectory's samples, and
 // two-point Gauss-Legendre on `pieces` equal pieces along each ruling.
 #include "contact/contact_parameters.h"
+#include "contact/ruling_load.h"
 #include "core/named_values.h"
 #include "oracle/contact_density.h"
 #include "oracle/rolling_dynamics.h"
@@ -63,16 +60,6 @@
 
 namespace rollcheck::contact
 {
-enum class LoadRule
-{
-  static_through_centre_of_mass,
-  dynamic,
-  uniform
-};
-/// The rules' names ("static", "dynamic", "uniform"), read with
-/// core/named_values.h's name_of and parse_named.
-const NamedValues<LoadRule>& load_rule_names();
-
 enum class TimeLaw
 {
   free_rolling,
@@ -116,14 +103,6 @@ struct ContinuumLoopScores
   /// Least and largest lambda = q / (E* R) at which a peak pressure was taken
   /// (the range a pressure factor must cover).
   double load_ratio_min = 0, load_ratio_max = 0;
-};
-
-/// The body's mass properties the static rule needs.
-struct RollingBodyMass
-{
-  Eigen::Vector3d centre_of_mass_m = Eigen::Vector3d::Zero(); ///< body frame
-  double mass_kg = 1;
-  double gravity_m_s2 = 9.81;
 };
 
 /// The scores of the loop [begin_s, end_s] of a line-contact trajectory on a

@@ -3,7 +3,8 @@
 # (no solve): the cylinder's every direction is the same generator under
 # uniform line Hertz; the oloid's scan reaches its vertex (180 deg at c =
 # 1/4 from the loaded end) and its --direction 67.5 is the nearest-square
-# orientation docs/methods/whole-body.md checks; bodies without a ruling exit 2.
+# orientation docs/methods/whole-body.md checks; bodies without a ruling exit 2;
+# the former --load-rule is refused naming --share-rule.
 set -u
 source "$(dirname "$0")/lib.sh"
 bin=$1; here=$2; tmp=$3
@@ -24,4 +25,14 @@ check_json "oloid: c within [1/4, 3/4], a loaded end at the vertex (180 deg)" \
 expect 2 "sphere not in" -- "$bin" whole-body --body sphere --scan-directions 10 --json "$tmp/sphere.json"
 expect 2 "scan_directions_deg" -- "$bin" whole-body --scan-directions -1 --json "$tmp/negative.json"
 check '[[ ! -e $tmp/sphere.json && ! -e $tmp/negative.json ]]' "a refused scan left no output"
+# --share-rule (how the reduced models share F along the ruling) is not the
+# other subcommands' --load-rule (the load each ruling carries): the former
+# name is refused naming the new one, as an option and as a case key.
+"$bin" -q whole-body --share-rule sections --scan-directions 90 --json "$tmp/share.json" > "$tmp/share.log" 2>&1 \
+  || { echo "FAIL: --share-rule sections"; cat "$tmp/share.log"; fail=1; }
+expect 2 "load-rule is now --share-rule" -- "$bin" whole-body --load-rule sections --scan-directions 90 \
+  --json "$tmp/former.json"
+printf '[scene]\nkind = "whole-body"\nload_rule = "sections"\nscan_directions_deg = 90\n' > "$tmp/former.toml"
+expect 2 "key 'load_rule' is now 'share_rule'" -- "$bin" run "$tmp/former.toml"
+check '[[ ! -e $tmp/former.json ]]' "a refused former option left no output"
 exit $fail

@@ -1,6 +1,6 @@
 #include "study/life/loop_life.h"
+#include "contact/ruling_load.h"
 #include "core/error.h"
-#include "oracle/line_load.h"
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -10,24 +10,6 @@ namespace rollcheck::study::life
 {
 namespace
 {
-/// The normal force of a ruling and its centre of pressure (fraction from
-/// its start) under the rule; a force of 0 where the centre leaves the
-/// ruling (the body stands on a rim point).
-std::pair<double, double> ruling_force(const oracle::RollingSample& sample, const oracle::RealRolling& run,
-                                       const LoopLifeSettings& s)
-{
-  const Eigen::Vector3d along = sample.contact_end_m - sample.contact_start_m;
-  double force = s.normal_load_n, centre = 0.5;
-  if (s.load_rule == contact::LoadRule::static_through_centre_of_mass)
-    centre = (run.mass.centre_of_mass_m - sample.contact_start_m).dot(along) / along.squaredNorm();
-  else if (s.load_rule == contact::LoadRule::dynamic)
-  {
-    force = s.normal_load_n * sample.normal_force_n / (run.mass.mass_kg * 9.81);
-    centre = sample.centre_of_pressure;
-  }
-  return centre > 0 && centre < 1 && force > 0 ? std::pair{force, centre} : std::pair{0.0, centre};
-}
-
 void validate(const LoopLifeSettings& s)
 {
   if (!(s.normal_load_n > 0) || !std::isfinite(s.normal_load_n))
@@ -41,15 +23,15 @@ void validate(const LoopLifeSettings& s)
 
 namespace
 {
-/// One loaded ruling of the loop: its sample, its weight in sigma, and the
-/// loaded part [from, to] of it (fractions from its start).
+/// One loaded ruling of the loop: its sample, its weight in sigma, its
+/// length and its load under the rule (contact/ruling_load.h).
 struct LoadedRuling
 {
   const oracle::RollingSample& sample;
-  double dsigma, length, force, centre, from, to;
-  bool uniform;
+  double dsigma, length;
+  contact::RulingLoad rule;
   double radius(double f) const { return (1 - f) * sample.start_radius_m + f * sample.end_radius_m; }
-  double load(double f) const { return uniform ? force / length : oracle::line_load(force, centre, length, f); }
+  double load(double f) const { return rule.line_load(length, f); }
 };
 
 void for_each_loaded_ruling(const oracle::RealRolling& run, const LoopLifeSettings& s,
@@ -69,16 +51,15 @@ void for_each_loaded_ruling(const oracle::RealRolling& run, const LoopLifeSettin
     const double half = std::abs(samples[k + 1].turning_angle_rad - samples[k].turning_angle_rad) * inside / 2;
     weight[k] += half, weight[k + 1] += half;
   }
-  const bool uniform = s.load_rule == contact::LoadRule::uniform;
+  // The rolling study's gravity (RollingBodyMass's default), as the robustness grid's.
+  const contact::RollingBodyMass mass{run.mass.centre_of_mass_m, run.mass.mass_kg};
   for (std::size_t k = 0; k < samples.size(); ++k)
   {
     const oracle::RollingSample& x = samples[k];
-    const auto [force, centre] = ruling_force(x, run, s);
-    if (!(force > 0) || !(weight[k] > 0))
+    const contact::RulingLoad load = contact::ruling_load(x, s.load_rule, s.normal_load_n, mass);
+    if (!(load.normal_n > 0) || !(weight[k] > 0))
       continue;
-    const double from = uniform || centre <= 2.0 / 3 ? 0 : 1 - 3 * (1 - centre);
-    const double to = uniform || centre >= 1.0 / 3 ? 1 : 3 * centre;
-    visit({x, weight[k], (x.contact_end_m - x.contact_start_m).norm(), force, centre, from, to, uniform});
+    visit({x, weight[k], (x.contact_end_m - x.contact_start_m).norm(), load});
   }
 }
 
@@ -94,13 +75,11 @@ void for_each_loaded_element(const oracle::RealRolling& run, const LoopLifeSetti
                              const std::function<void(const LoadedElement&)>& visit)
 {
   for_each_loaded_ruling(run, s, [&](const LoadedRuling& u) {
-    const double lo = std::min(u.from + s.end_margin, (u.from + u.to) / 2);
-    const double hi = std::max(u.to - s.end_margin, (u.from + u.to) / 2);
-    const double h = (u.to - u.from) / s.pieces, offset = h / (2 * std::sqrt(3.0));
+    const double from = u.rule.from, h = (u.rule.to - from) / s.pieces, offset = h / (2 * std::sqrt(3.0));
     for (int piece = 0; piece < s.pieces; ++piece)
-      for (const double f : {u.from + (piece + 0.5) * h - offset, u.from + (piece + 0.5) * h + offset})
+      for (const double f : {from + (piece + 0.5) * h - offset, from + (piece + 0.5) * h + offset})
       {
-        const double held = std::clamp(f, lo, hi), q = u.load(held);
+        const double held = contact::held_fraction(f, from, u.rule.to, s.end_margin), q = u.load(held);
         if (q > 0)
           visit(line_hertz(u.dsigma * u.length * u.radius(f) * h / 2, q, u.radius(held), s.effective_modulus_pa));
       }
@@ -118,7 +97,7 @@ void for_each_loaded_end(const oracle::RealRolling& run, const LoopLifeSettings&
     for (const double f : {0.0, 1.0})
     {
       const double q = u.load(f);
-      if ((f == 0 && u.from > 0) || (f == 1 && u.to < 1) || !(q > 0))
+      if ((f == 0 && u.rule.from > 0) || (f == 1 && u.rule.to < 1) || !(q > 0))
         continue; // this end carries no load
       const double sheet = u.radius(f) / ends.edge_radius_m, r = std::max(u.radius(f), ends.edge_radius_m);
       LoadedElement e = line_hertz(0, q, r, s.effective_modulus_pa, (*ends.ratios)(sheet));

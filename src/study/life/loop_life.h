@@ -8,15 +8,15 @@
 // peak p0 of the ruling's line load q(s) there (Johnson eqs. 4.43, 4.45):
 //     b = sqrt(4 q R / (pi E*)),  p0 = sqrt(q E* / (pi R)),
 // and the element dA = L R dsigma ds. The line load follows the robustness
-// study's load rules (contact/continuum_loop_scores.h: static through the
-// centre of mass, the motion's own dynamic load, uniform) and its end
+// study's load rules (contact/ruling_load.h: static through the centre of
+// mass, the motion's own dynamic load, uniform) and its end
 // margin: within `end_margin` of a loaded end of the ruling q and R are held
 // at their values there (the rim's own singular stress is not this model's:
 // study/rims; with a rounded edge, for_each_loaded_end adds them). Quadrature: the trapezoid rule in sigma between the
 // trajectory's samples, two-point Gauss-Legendre on `pieces` equal pieces of
 // the loaded part of each ruling. A pass's life does not depend on how fast
 // it rolls, so the rolling energy enters only through the dynamic load.
-#include "contact/continuum_loop_scores.h"
+#include "contact/ruling_load.h"
 #include "oracle/rolling_study.h"
 #include "study/life/rounded_end_ratios.h"
 #include "study/life/stress_volume.h"

@@ -66,7 +66,7 @@ LoopSource rolling_source(const FemSdsSettings& s, const geometry::SurfaceMesh& 
                           std::optional<double>* uniformity, std::optional<oracle::RealRolling>& kept_run)
 {
   oracle::RollingStudyParameters rp;
-  rp.barrier_energy_excess = s.barrier_energy_excess;
+  rp.barrier_energy_excess = s.rolling_energy;
   rp.samples_per_loop = s.samples_per_loop;
   const oracle::RealRolling& run = kept_run.emplace(oracle::real_rolling(s.body, rp));
   LoopSource source{run.circles, run.mass.centre_of_mass_m, {}, {}, {}, ""};
@@ -201,7 +201,7 @@ FemSdsOrientation evaluate_orientation(MPI_Comm comm, const LoopSource& source, 
   r.rim_overhang_rad = contact::rim_overhang(source.circles, r.locus.support.circles[0], r.locus.support.circles[1],
                                              *r.locus.ruling);
   const std::vector<double> fractions
-      = slice_fractions(r.locus.loaded_from, r.locus.loaded_to, s.crease_margin, s.fem_slices);
+      = slice_fractions(r.locus.loaded_from, r.locus.loaded_to, s.end_margin, s.fem_slices);
   solve_slices_along(comm, r, s, m, fractions);
   return r;
 }
@@ -331,9 +331,9 @@ const char* support_name(oracle::CircleSupportKind kind)
   return names[static_cast<int>(kind)];
 }
 
-std::vector<double> slice_fractions(double loaded_from, double loaded_to, double crease_margin, int slices)
+std::vector<double> slice_fractions(double loaded_from, double loaded_to, double end_margin, int slices)
 {
-  const double lo = loaded_from + crease_margin, hi = loaded_to - crease_margin;
+  const double lo = loaded_from + end_margin, hi = loaded_to - end_margin;
   std::vector<double> fractions;
   for (int k = 0; k < slices; ++k)
     fractions.push_back(lo + (hi - lo) * k / (slices - 1));
@@ -436,7 +436,7 @@ LoopSdsSettings loop_settings(const FemSdsSettings& s)
 {
   LoopSdsSettings loop;
   loop.normal_load_n = s.normal_load_n;
-  loop.crease_margin = s.crease_margin;
+  loop.end_margin = s.end_margin;
   loop.map_points = s.map_points;
   loop.locus = models_of(s).locus;
   loop.tolerance = s.tolerance;
@@ -448,7 +448,7 @@ contact::ContinuumLoopSettings continuum_settings(const FemSdsSettings& s)
   return {.load_rule = s.load_rule,
           .time_law = s.time_law,
           .width = s.contact_width,
-          .end_margin = s.crease_margin, // the template's points are held there too
+          .end_margin = s.end_margin, // the template's points are held there too
           .normal_load_n = s.normal_load_n,
           .effective_modulus_pa = models_of(s).effective_modulus_pa,
           .pieces = s.continuum_pieces};

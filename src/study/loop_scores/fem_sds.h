@@ -53,7 +53,7 @@ struct FemSdsSettings
   /// stratum of the loop: the check of the table, and the per-orientation table.
   std::size_t orientations = 2;
   std::uint64_t seed = 1;          ///< of the stratified sampling
-  double barrier_energy_excess = 0.1; ///< rolling oracle: kinetic energy / potential barrier - 1
+  double rolling_energy = 0.1;     ///< rolling oracle: kinetic energy / potential barrier - 1
   int runs = 3;                    ///< rigid oracle: runs with the reference's first initial spins
   /// eps: the faces the preprint's SDS counts at an orientation.
   double contact_threshold_m = contact::LocusSettings{}.contact_threshold_m;
@@ -67,7 +67,7 @@ struct FemSdsSettings
   int fem_slices = 9;              ///< plane-strain slices per orientation, over the loaded ruling
   /// Fraction of the ruling kept clear at each end of the loaded contact: the
   /// FEM peaks are taken away from the creases.
-  double crease_margin = 0.05;
+  double end_margin = 0.05;
   int map_points = 64;             ///< points along each ruling mapped onto the faces
   int refine = fem::SliceSettings{}.refine;       ///< the slices' level; the error estimate runs one finer
   double penalty_c = fem::SliceSettings{}.penalty_c;
@@ -174,7 +174,7 @@ fem::SliceSettings slice_settings(const FemSdsSettings& settings);
 /// The loop's scoring settings of `settings`: what its samples are mapped
 /// and scored with (end_aware_scores of FemSdsResult::loop_samples too).
 LoopSdsSettings loop_settings(const FemSdsSettings& settings);
-/// The continuum value's settings of `settings` (its end margin is the crease margin).
+/// The continuum value's settings of `settings` (its end margin is end_margin).
 contact::ContinuumLoopSettings continuum_settings(const FemSdsSettings& settings);
 
 /// Runs the method on the ranks of `comm` (every rank gets the whole result
@@ -204,6 +204,6 @@ const char* support_name(oracle::CircleSupportKind kind);
 
 /// Fractions of the ruling where the slices go: `slices` evenly from
 /// loaded_from + margin to loaded_to - margin, both included.
-std::vector<double> slice_fractions(double loaded_from, double loaded_to, double crease_margin, int slices);
+std::vector<double> slice_fractions(double loaded_from, double loaded_to, double end_margin, int slices);
 
 } // namespace rollcheck::study::loop_scores

@@ -2,6 +2,7 @@
 #include "study/loop_scores/loop_sds.h"
 #include "contact/fatigue.h"
 #include "contact/load_ratio.h"
+#include "contact/ruling_load.h"
 #include "contact/rim_dihedral_angle.h"
 #include "contact/rim_overhang.h"
 #include "core/error.h"
@@ -80,7 +81,7 @@ RulingSample map_ruling(std::span<const oracle::Circle> circles, const contact::
   sample.even = even;
   for (std::size_t k = 0; k < along.size(); ++k)
   {
-    const double f = held_fraction(along[k], locus.loaded_from, locus.loaded_to, s.crease_margin);
+    const double f = contact::held_fraction(along[k], locus.loaded_from, locus.loaded_to, s.end_margin);
     const double q = load_at(f);
     if (!(q > 0) || !(radius_at(f) > 0))
       throw ComputationError("loop SDS: a mapping point inside the loaded ruling has no load or no radius");
@@ -170,23 +171,22 @@ ConvergedScore score_sums(const Eigen::VectorXd& all, const Eigen::VectorXd& eve
   return {oracle::distribution_score(all, areas), oracle::distribution_score(even, areas)};
 }
 
-/// The SDS of an accumulator pair summed over the ranks.
-ConvergedScore score_pair(MPI_Comm comm, Eigen::VectorXd all, Eigen::VectorXd even, const Eigen::VectorXd& areas,
-                          bool any)
-{
-  sum_over_ranks(comm, all);
-  sum_over_ranks(comm, even);
-  return score_sums(all, even, areas, any);
-}
-
 /// The load ratio the table is read at: held at its least (slice_scaling.h).
 double tabulated(double load_ratio) { return std::max(load_ratio, fem::SliceScaling::smallest_load_ratio); }
+
+/// fem_scores' result: the scores and the per-face sums over every sample
+/// they score, summed over the ranks.
+struct FemFaceScores
+{
+  EndAwareScores scores;
+  Eigen::VectorXd pressure_pa, fatigue_damage;
+};
 
 /// FEM-SDS and FEM-FDS over the ruling samples with the table of `stride`,
 /// and with their loaded ends' pressures if `end_factor` is given: the load
 /// ratio of an end held within the range the table covers for the points,
 /// an end sharper across than `edge_radius_m` taken at it (end_aware_scores).
-EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::SliceScaling& table, int stride,
+FemFaceScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::SliceScaling& table, int stride,
                           const LoopSdsSettings& s, const EndFactor* end_factor, double edge_radius_m = 0)
 {
   const Eigen::VectorXd& areas = samples.face_areas;
@@ -247,9 +247,11 @@ EndAwareScores fem_scores(MPI_Comm comm, const LoopSamples& samples, const fem::
   }
   // An end with no pressure leaves the scores undefined, not smaller.
   const bool defined = out.singular_ends == 0 && out.outside_model_ends == 0;
-  out.sds = score_pair(comm, std::move(sds_all), std::move(sds_even), areas, defined);
-  out.fds = score_pair(comm, std::move(fds_all), std::move(fds_even), areas, defined);
-  return out;
+  for (Eigen::VectorXd* sums : {&sds_all, &sds_even, &fds_all, &fds_even})
+    sum_over_ranks(comm, *sums);
+  out.sds = score_sums(sds_all, sds_even, areas, defined);
+  out.fds = score_sums(fds_all, fds_even, areas, defined);
+  return {out, std::move(sds_all), std::move(fds_all)};
 }
 
 /// Nodes of the table with stride `stride` that interpolation over [lo, hi] uses.
@@ -324,12 +326,6 @@ double line_hertz_peak(double force_n, double centre_of_pressure, const oracle::
   return q > 0 ? std::sqrt(q * effective_modulus_pa / (std::numbers::pi * radius)) : 0.0;
 }
 
-double held_fraction(double f, double loaded_from, double loaded_to, double crease_margin)
-{
-  const double lo = loaded_from + crease_margin, hi = loaded_to - crease_margin;
-  return lo <= hi ? std::clamp(f, lo, hi) : 0.5 * (loaded_from + loaded_to);
-}
-
 LoopSamples map_loop_samples(MPI_Comm comm, const LoopSource& source, const oracle::RollingBody& body,
                              const Eigen::VectorXd& face_peak_pressure_pa, const oracle::FaceCones& cones,
                              double effective_modulus_pa, const LoopSdsSettings& s)
@@ -364,6 +360,7 @@ LoopSds loop_sds(MPI_Comm comm, const LoopSamples& samples, fem::SliceScaling& t
   r.point_hertz = score_sums(samples.point_all, samples.point_even, areas, true);
   r.line_hertz_rulings = score_sums(samples.line_all, samples.line_even, areas, rulings > 0);
   r.samples_wall_s = samples.wall_s;
+  r.accumulated_fem_pressure_pa = r.accumulated_fem_fatigue_damage = Eigen::VectorXd::Zero(areas.size());
   if (rulings > 0)
   {
     r.load_ratio_min = samples.load_ratio_min;
@@ -371,10 +368,12 @@ LoopSds loop_sds(MPI_Comm comm, const LoopSamples& samples, fem::SliceScaling& t
     while (true)
     {
       table.cover(comm, tabulated(samples.load_ratio_min), tabulated(samples.load_ratio_max));
-      const EndAwareScores interior = fem_scores(comm, samples, table, 1, s, nullptr);
-      r.fem_rulings = interior.sds;
-      r.fem_fds_rulings = interior.fds;
-      r.fem_half_table = fem_scores(comm, samples, table, 2, s, nullptr).sds.value;
+      FemFaceScores interior = fem_scores(comm, samples, table, 1, s, nullptr);
+      r.fem_rulings = interior.scores.sds;
+      r.fem_fds_rulings = interior.scores.fds;
+      r.accumulated_fem_pressure_pa = std::move(interior.pressure_pa);
+      r.accumulated_fem_fatigue_damage = std::move(interior.fatigue_damage);
+      r.fem_half_table = fem_scores(comm, samples, table, 2, s, nullptr).scores.sds.value;
       if (std::abs(r.table_change()) < s.tolerance || 2 * table.nodes_per_decade() > s.max_nodes_per_decade)
         break;
       table.double_nodes();
@@ -432,7 +431,7 @@ std::vector<EndAwareScores> end_aware_scores(MPI_Comm comm, const LoopSamples& s
   if (samples.ruling_count() == 0)
     return scores;
   for (const EndFactor& factor : end_factors)
-    scores.push_back(fem_scores(comm, samples, table, 1, s, &factor, edge_radius_m));
+    scores.push_back(fem_scores(comm, samples, table, 1, s, &factor, edge_radius_m).scores);
   return scores;
 }
 

@@ -9,7 +9,7 @@
 //    loaded by F through the centre of mass (no-tension linear rule); at
 //    `map_points` points along its loaded part the plane-strain peak
 //    p_hertz = sqrt(q E* / (pi R)) (Johnson 1985, eq. 4.45) is taken, held at
-//    its value `crease_margin` of the ruling inside each loaded end (the
+//    its value `end_margin` of the ruling inside each loaded end (the
 //    slices stop short of the creases), and each face holding points adds
 //    the largest of them;
 //  - FEM: the same points with p_fem = p_hertz g(lambda), lambda = q / (E* R),
@@ -90,7 +90,7 @@ struct LoopSource
 struct LoopSdsSettings
 {
   double normal_load_n = 100.0;        ///< F, through the centre of mass (the preprint's)
-  double crease_margin = 0.05;         ///< fraction of the ruling held at each loaded end
+  double end_margin = 0.05;         ///< fraction of the ruling held at each loaded end
   int map_points = 64;                 ///< points along each ruling mapped onto the faces
   contact::LocusSettings locus;
   double tolerance = 0.01;             ///< relative change that counts as converged
@@ -217,8 +217,14 @@ struct LoopSds
   std::size_t fem_solves_half_table = 0; ///< K
   int nodes_per_decade = 0;
   double load_ratio_min = 0, load_ratio_max = 0; ///< lambda over the mapped points
-  /// Largest pressure over the loop's mapped points (inside the crease margins).
+  /// Largest pressure over the loop's mapped points (inside the end margins).
   double line_hertz_peak_pa = 0, fem_peak_pa = 0;
+  /// Per face, summed over the ruling samples as fem_rulings and
+  /// fem_fds_rulings score them (the interior points, the full table): the
+  /// largest FEM pressure each sample puts on the face (Pa), and its Miner
+  /// damage (contact/fatigue.h, dimensionless). Zero on every face when the
+  /// loop has no ruling sample.
+  Eigen::VectorXd accumulated_fem_pressure_pa, accumulated_fem_fatigue_damage;
   /// Mapped points of the ruling samples, and those whose load ratio lies
   /// below the table's least (fem::SliceScaling::smallest_load_ratio), given g there.
   std::size_t mapped_points = 0, points_below_table = 0;
@@ -265,11 +271,6 @@ std::vector<double> mapping_fractions(double loaded_from, double loaded_to, int 
 /// `force_n` with centre of pressure c (oracle::line_load); 0 where unloaded.
 double line_hertz_peak(double force_n, double centre_of_pressure, const oracle::Ruling& ruling,
                        double effective_modulus_pa, double f);
-
-/// Where a mapping point's pressure is taken: `f` held inside
-/// [loaded_from + margin, loaded_to - margin] (the middle of the loaded part
-/// when that is empty).
-double held_fraction(double f, double loaded_from, double loaded_to, double crease_margin);
 
 nlohmann::json to_json(const LoopSds& loop);
 /// The loop's headline under the keys of every record of a whole loop

@@ -1,6 +1,5 @@
 // A long phase's progress on a thread of its own (study/rims/progress_beat.h).
 #include "study/rims/progress_beat.h"
-#include <mpi.h>
 #include <spdlog/spdlog.h>
 
 namespace rollcheck::study::rims
@@ -46,17 +45,5 @@ double ProgressBeat::elapsed_s() const
 void ProgressBeat::log_locked() const
 {
   spdlog::info("{}: {} ({:.0f} s)", phase_, step_.empty() ? "running" : step_, elapsed_s());
-}
-
-bool logging_rank()
-{
-  int initialised = 0, finalised = 0;
-  MPI_Initialized(&initialised);
-  MPI_Finalized(&finalised);
-  if (!initialised || finalised)
-    return true;
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  return rank == 0;
 }
 } // namespace rollcheck::study::rims

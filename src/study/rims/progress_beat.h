@@ -44,8 +44,4 @@ private:
   bool stop_ = false;
   std::thread thread_;
 };
-
-/// True on the process that logs: rank 0 of MPI_COMM_WORLD, or any process
-/// where MPI is not initialised.
-bool logging_rank();
 } // namespace rollcheck::study::rims

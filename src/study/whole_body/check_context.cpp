@@ -68,7 +68,7 @@ CheckContext::CheckContext(MPI_Comm comm, const WholeBodyCheckSettings& settings
     : comm(comm), settings(settings), orientation(orientation),
       effective_modulus_pa(contact::effective_modulus(settings.youngs_modulus_pa, settings.poisson_ratio, false)),
       log(fem::world_rank() == 0),
-      fractions(loop_scores::slice_fractions(orientation.loaded_from, orientation.loaded_to, settings.crease_margin,
+      fractions(loop_scores::slice_fractions(orientation.loaded_from, orientation.loaded_to, settings.end_margin,
                                              settings.stations)),
       end_fractions{orientation.loaded_from, orientation.loaded_to}
 {
@@ -105,7 +105,7 @@ fem::MappedBodyPose mapped_pose(const CheckContext& context)
   pose.reference_radius_m = s.body.radius_m;
   pose.radius_m = {ruling.start_radius_m, ruling.end_radius_m};
   pose.end_overhang_rad = context.orientation.rim_overhang_rad;
-  pose.end_zone_m = s.crease_margin * ruling.length_m;
+  pose.end_zone_m = s.end_margin * ruling.length_m;
   pose.chord = [hull](const Eigen::Vector3d& p, const Eigen::Vector3d& d) { return geometry::line_chord(*hull, p, d); };
   return pose;
 }

@@ -1,21 +1,19 @@
 // The end models of a whole-body check at its loaded ends
 // (study/whole_body/check_stages.h solve_end_model_stage, EndComparison).
 #include "study/whole_body/check_stages.h"
+#include "core/degree.h"
 #include "contact/wedge_exponent.h"
 #include "fem/mesh/scene_mesh.h"
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <functional>
-#include <numbers>
 #include <spdlog/spdlog.h>
 
 namespace rollcheck::study::whole_body
 {
 namespace
 {
-constexpr double deg = std::numbers::pi / 180;
-
 struct RatioOverLevels
 {
   double last, change;
@@ -45,7 +43,7 @@ EndComparison end_under_rule(const CheckContext& context, const LineLoad& load_a
   end.radius_m = context.radius_at(context.end_fractions[e]);
   end.load_n_per_m = load_at(slices.read_at_fraction[e]);
   end.half_width_m = line_half_width(end.load_n_per_m, end.radius_m, context.effective_modulus_pa);
-  end.interior_angle_deg = 90 + context.orientation.rim_overhang_rad[e] / deg;
+  end.interior_angle_deg = 90 + context.orientation.rim_overhang_rad[e] / degree;
   end.slice_peak_pa = slices.slices[slices.stations + k].peak_pressure_pa;
   return end;
 }
@@ -57,7 +55,7 @@ fem::RimEndSettings end_model_settings(const CheckContext& context, const EndCom
   fem::RimEndSettings rim;
   rim.radius_m = end.radius_m;
   rim.load_n_per_m = end.load_n_per_m;
-  rim.interior_angle_rad = end.interior_angle_deg * deg;
+  rim.interior_angle_rad = end.interior_angle_deg * degree;
   rim.youngs_modulus_pa = s.youngs_modulus_pa;
   rim.poisson_ratio = s.poisson_ratio;
   rim.levels = s.end_levels;
@@ -83,7 +81,7 @@ fem::RimEndSettings end_model_settings(const CheckContext& context, const EndCom
   }
   // Square and near-square ends on the structured grid (sheared): gmsh's
   // Delaunay end at the body's depth has about 1e6 DOFs a level.
-  if (std::abs(end.interior_angle_deg - 90) * deg <= fem::max_grid_end_lean_rad)
+  if (std::abs(end.interior_angle_deg - 90) * degree <= fem::max_grid_end_lean_rad)
     rim.mesh = fem::RimEndMesh::grid;
   return rim;
 }

@@ -1,28 +1,26 @@
 // Issue 14's whole-body check (study/whole_body/whole_body_check.h): the
 // orchestrator of its stages (the orientation, the load rule, the slices, the
 // end models, the whole body, the comparison) and the outcome. The stages:
-// check_context.h (shared inputs, the whole body's solve), load_rules.h,
+// check_context.h (shared inputs, the whole body's solve), share_rules.h,
 // check_stages.h; the orientations: whole_body_orientation.cpp; the JSON and
 // the tables: whole_body_json.cpp, whole_body_report.cpp.
 #include "study/whole_body/whole_body_check.h"
+#include "core/degree.h"
 #include "core/error.h"
 #include "fem/all_gather.h"
 #include "fem/petsc_session.h"
 #include "study/whole_body/check_stages.h"
-#include "study/whole_body/load_rules.h"
+#include "study/whole_body/share_rules.h"
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
-#include <numbers>
 #include <spdlog/spdlog.h>
 
 namespace rollcheck::study::whole_body
 {
 namespace
 {
-constexpr double deg = std::numbers::pi / 180;
-
 /// InputError for settings out of range or a body without a whole-body mesh.
 void check_settings(const WholeBodyCheckSettings& s)
 {
@@ -57,7 +55,7 @@ void check_settings(const WholeBodyCheckSettings& s)
   require(s.rule_end_layer > 0 && s.rule_end_layer <= 1, "rule_end_layer must lie in (0, 1]");
   require(s.end_match_over_half_width >= 1 && s.end_match_over_half_width <= 100,
           "end_match_over_half_width must lie in [1, 100]");
-  require(s.crease_margin > 0 && s.crease_margin < 0.25, "crease_margin must lie in (0, 0.25)");
+  require(s.end_margin > 0 && s.end_margin < 0.25, "end_margin must lie in (0, 0.25)");
   require(s.end_levels >= 1 && s.end_levels <= 6, "end_levels must lie in [1, 6]");
   require(s.end_edge_element > 0 && s.end_edge_element <= 1, "end_edge_element must lie in (0, 1]");
   require(s.end_contact_elements >= 2 && s.end_contact_elements <= 40, "end_contact_elements must lie in [2, 40]");
@@ -88,7 +86,7 @@ void log_ruling(const CheckContext& context, const WholeBodyCheck& r)
   spdlog::info("whole-body check, {}: ruling L = {:.5g} m, R = {:.5g}..{:.5g} m, c = {:.4f}, loaded {:.3f}..{:.3f}, "
                "rim leans {:.2f}, {:.2f} deg, b = {:.4g} m (b / L = {:.3g})",
                r.body, L, o.ruling.start_radius_m, o.ruling.end_radius_m, o.centre_of_pressure, o.loaded_from,
-               o.loaded_to, o.rim_overhang_rad[0] / deg, o.rim_overhang_rad[1] / deg, r.half_width_m,
+               o.loaded_to, o.rim_overhang_rad[0] / degree, o.rim_overhang_rad[1] / degree, r.half_width_m,
                r.half_width_m / L);
 }
 } // namespace
@@ -107,7 +105,7 @@ WholeBodyCheck run_whole_body_check(MPI_Comm comm, const WholeBodyCheckSettings&
   r.sizes = context.sizing.sizes;
 
   // The load rule, chosen once: its q(f) for the slices and end models.
-  const LoadRuleStrategy& rule = load_rule_strategy(s.load_rule);
+  const ShareRuleStrategy& rule = share_rule_strategy(s.share_rule);
   require_rule_applies(rule, context);
   const LineLoad load_at = rule.solve(context, r);
   const double c = context.centre_of_pressure();

@@ -4,12 +4,12 @@
 // whole and pressed on the rigid plane in 3D (fem/mesh/whole_body_mesh.h,
 // fem/scenes/whole_body_contact.h), against the reduced models fem-sds and rim use:
 //  - along the ruling: the plane-strain slices (fem/scenes/slice_contact.h) at
-//    stations between the crease margins, each under the load rule's line
+//    stations between the end margins, each under the load rule's line
 //    load q(s) and radius R(s): the contact locus's (contact/contact_locus.h:
 //    F through the centre of mass, the no-tension linear rule; fem-sds's,
 //    the default), the body's own sections' (study/whole_body/section_load_rule.h,
-//    LoadRule::sections) or the whole body's at a coarse mesh
-//    (LoadRule::coarse_body); the end models under the rule's q at the
+//    ShareRule::sections) or the whole body's at a coarse mesh
+//    (ShareRule::coarse_body); the end models under the rule's q at the
 //    ends, or d_m inside them where the rule softens the ends itself
 //    (EndComparison); the whole body is meshed from the locus's b under
 //    every rule; its peak across the ruling at each station (its node
@@ -81,8 +81,8 @@ enum class EndModelDepth
 /// compliance is then off by its coarse strip, nearly uniformly along the
 /// ruling, which the load's distribution hardly feels (docs/results/whole-body.md
 /// has the measured difference from the fine body's line load). Each rule
-/// is one strategy, chosen once per check (study/whole_body/load_rules.h).
-enum class LoadRule
+/// is one strategy, chosen once per check (study/whole_body/share_rules.h).
+enum class ShareRule
 {
   locus,
   sections,
@@ -93,7 +93,7 @@ enum class LoadRule
 /// own does (the sections', the coarse body's): an end model under it is
 /// matched to the rule near the edge, not at its far side, so that the
 /// end's softening is not counted twice (EndComparison).
-bool softens_ends(LoadRule rule);
+bool softens_ends(ShareRule rule);
 
 struct WholeBodyCheckSettings
 {
@@ -121,12 +121,12 @@ struct WholeBodyCheckSettings
   int layers_across_length = 24;    ///< the largest layer is L / this
   double penalty_c = 100;           ///< the whole body's kappa = c E / h_c (the slices' c)
   int stations = 9;                 ///< slices along the ruling
-  LoadRule load_rule = LoadRule::locus; ///< the slices' and end models' q(s)
+  ShareRule share_rule = ShareRule::locus; ///< the slices' and end models' q(s)
   int rule_stations = 16;           ///< the sections' load rule's N
   int rule_contact_elements = 2;    ///< the coarse body's elements across b (the fine body's: contact_elements)
   double rule_end_layer = 0.5;      ///< the coarse body's end layers, h / b (the fine body's: body_end_layer)
   double end_match_over_half_width = 4; ///< d_m / b, where an end model meets a rule that softens the ends
-  double crease_margin = 0.05;      ///< stations this fraction of the ruling inside its loaded ends (fem-sds's)
+  double end_margin = 0.05;      ///< stations this fraction of the ruling inside its loaded ends (fem-sds's)
   int slice_refine = -1;            ///< the slices' level (SliceSettings::refine)
   /// The end models' block: as deep as the whole body's held section (the
   /// cut through the centre of mass, e.g. 588 b for the 10 mm cylinder), or
@@ -286,8 +286,8 @@ struct WholeBodyCheck
   std::size_t node_planes = 0;
   double gmsh_s = 0;
   fem::WholeBodyFem fem;
-  std::optional<SectionLoadRule> section_rule; ///< with LoadRule::sections
-  /// With LoadRule::coarse_body: its mesh and solve (its q on each node plane).
+  std::optional<SectionLoadRule> section_rule; ///< with ShareRule::sections
+  /// With ShareRule::coarse_body: its mesh and solve (its q on each node plane).
   struct CoarseBody
   {
     fem::WholeBodySizes sizes;

@@ -1,16 +1,14 @@
 // The whole-body check's JSON (study/whole_body/whole_body_check.h): one
 // to_json per record, the check's assembled from them.
 #include "core/json_number.h"
-#include "study/whole_body/load_rules.h"
+#include "core/degree.h"
+#include "study/whole_body/share_rules.h"
 #include "study/whole_body/whole_body_check.h"
-#include <numbers>
 
 namespace rollcheck::study::whole_body
 {
 namespace
 {
-constexpr double deg = std::numbers::pi / 180;
-
 /// [x, peak, q] on each node plane.
 nlohmann::json planes_json(const fem::WholeBodyFem& fem)
 {
@@ -134,7 +132,7 @@ nlohmann::json to_json(const WholeBodyOrientation& o)
           {"in_equilibrium", o.in_equilibrium},
           {"loaded_from", o.loaded_from},
           {"loaded_to", o.loaded_to},
-          {"rim_overhang_deg", {o.rim_overhang_rad[0] / deg, o.rim_overhang_rad[1] / deg}},
+          {"rim_overhang_deg", {o.rim_overhang_rad[0] / degree, o.rim_overhang_rad[1] / degree}},
           {"interior_angle_deg", {o.interior_angle_deg(0), o.interior_angle_deg(1)}},
           {"end_load_n_per_m", o.end_load_n_per_m},
           {"end_half_width_m", o.end_half_width_m}};
@@ -203,7 +201,7 @@ nlohmann::json to_json(const WholeBodyCheck& r)
           {"ruling", ruling},
           {"mesh", mesh_json(r)},
           {"whole_body", whole_body_json(r.fem, L)},
-          {"load_rule", std::string(load_rule_strategy(s.load_rule).name)},
+          {"share_rule", std::string(share_rule_strategy(s.share_rule).name)},
           {"section_load_rule", r.section_rule ? to_json(*r.section_rule) : nlohmann::json()},
           {"coarse_body_load_rule", r.coarse_body ? coarse_body_json(*r.coarse_body, L) : nlohmann::json()},
           {"stations", array_json(r.stations)},

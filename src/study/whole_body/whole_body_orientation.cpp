@@ -2,6 +2,7 @@
 // WholeBodyOrientation): the ruling nearest a direction, the locus's centre
 // of pressure and loaded part, the rims' leans and the loaded ends' q and b.
 #include "study/whole_body/whole_body_check.h"
+#include "core/degree.h"
 #include "contact/hertz.h"
 #include "contact/rim_overhang.h"
 #include "core/error.h"
@@ -12,14 +13,11 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
-#include <numbers>
 
 namespace rollcheck::study::whole_body
 {
 namespace
 {
-constexpr double deg = std::numbers::pi / 180;
-
 /// What every orientation of one body shares: its circles and centre of mass.
 struct OrientedBody
 {
@@ -40,7 +38,7 @@ WholeBodyOrientation orientation_of(const OrientedBody& body, const WholeBodyChe
   const oracle::TwoCircleBody& two = body.two;
   WholeBodyOrientation o;
   o.direction_deg = direction_deg;
-  const Eigen::Vector3d hint(std::cos(direction_deg * deg), std::sin(direction_deg * deg), 0.0);
+  const Eigen::Vector3d hint(std::cos(direction_deg * degree), std::sin(direction_deg * degree), 0.0);
   o.ruling = oracle::ruling_at(two, oracle::contact_curve_point(two, hint));
   const Eigen::Vector3d& G = body.centre_of_mass_m;
   const double L = o.ruling.length_m, c = (G - o.ruling.start_m).dot(o.ruling.axis) / L;
@@ -68,7 +66,7 @@ WholeBodyOrientation orientation_of(const OrientedBody& body, const WholeBodyChe
 
 double WholeBodyOrientation::interior_angle_deg(int end) const
 {
-  return 90 + rim_overhang_rad[static_cast<std::size_t>(end)] / deg;
+  return 90 + rim_overhang_rad[static_cast<std::size_t>(end)] / degree;
 }
 
 WholeBodyOrientation whole_body_orientation(const WholeBodyCheckSettings& s, double direction_deg)

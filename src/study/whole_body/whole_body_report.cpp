@@ -1,17 +1,15 @@
 // The whole-body check's tables and text reports (study/whole_body/whole_body_check.h),
 // which `rollcheck whole-body` prints.
 #include "study/whole_body/whole_body_check.h"
+#include "core/degree.h"
 #include "contact/wedge_exponent.h"
 #include <algorithm>
 #include <fmt/format.h>
-#include <numbers>
 
 namespace rollcheck::study::whole_body
 {
 namespace
 {
-constexpr double deg = std::numbers::pi / 180;
-
 /// The end table's "end model" cell: what was compared and whether it converged.
 std::string end_model_state(const EndComparison& e)
 {
@@ -40,7 +38,7 @@ std::string orientation_table(std::span<const WholeBodyOrientation> orientations
         // At 180 deg (the oloid's vertex) the rim is flat: no wedge.
         exponents += fmt::format("{}{}: {}", exponents.empty() ? "" : ", ", e == 0 ? "start" : "end",
                                  angle < 180 - 1e-6
-                                     ? fmt::format("{:.3f}", contact::edge_on_rigid_plane_exponent(angle * deg))
+                                     ? fmt::format("{:.3f}", contact::edge_on_rigid_plane_exponent(angle * degree))
                                      : "flat, no wedge");
     t += fmt::format("| {:.2f} | {:.4f} | {} | {:.3f}, {:.3f} | {:.2f}, {:.2f} | {:.4g}, {:.4g} | {:.3f}, {:.3f} | {} "
                      "|\n",

@@ -5,7 +5,7 @@
 // WholeBodyCheckQuick suite (refusals, arithmetic) runs in the default suite.
 #include "core/error.h"
 #include "fem/petsc_session.h"
-#include "study/whole_body/load_rules.h"
+#include "study/whole_body/share_rules.h"
 #include "study/whole_body/whole_body_check.h"
 #include <cmath>
 #include <gtest/gtest.h>
@@ -32,11 +32,11 @@ study::whole_body::WholeBodyCheckSettings oloid_settings(double direction_deg)
 
 /// The oloid at --direction 67.5 (OloidAgreesWith...'s orientation) checked
 /// under `rule`, with the settings it ran.
-std::pair<study::whole_body::WholeBodyCheckSettings, study::whole_body::WholeBodyCheck> oloid_check_under(study::whole_body::LoadRule rule)
+std::pair<study::whole_body::WholeBodyCheckSettings, study::whole_body::WholeBodyCheck> oloid_check_under(study::whole_body::ShareRule rule)
 {
   fem::ensure_petsc();
   study::whole_body::WholeBodyCheckSettings s = oloid_settings(67.5);
-  s.load_rule = rule;
+  s.share_rule = rule;
   return {s, study::whole_body::run_whole_body_check(MPI_COMM_WORLD, s)};
 }
 
@@ -238,18 +238,18 @@ TEST(WholeBodyCheckQuick, ScanOfTheOloidLoadsTheNearerEndAndReachesItsVertex)
   EXPECT_NEAR(c_from_flattest_end, 0.25, 1e-3);
 }
 
-// The load rule is one strategy, chosen once by LoadRule: its name is the
-// option's spelling (the JSON's load_rule), and the locus's q is the
+// The share rule is one strategy, chosen once by ShareRule: its name is the
+// option's spelling (the JSON's share_rule), and the locus's q is the
 // no-tension rule's: F / L along the cylinder, balanced at c = 1/2.
-TEST(WholeBodyCheckQuick, EachLoadRuleIsOneStrategyNamedAsItsOption)
+TEST(WholeBodyCheckQuick, EachShareRuleIsOneStrategyNamedAsItsOption)
 {
-  using study::whole_body::LoadRule;
+  using study::whole_body::ShareRule;
   for (const auto& [rule, name, softens] :
-       {std::tuple{LoadRule::locus, std::string_view("locus"), false},
-        std::tuple{LoadRule::sections, std::string_view("sections"), true},
-        std::tuple{LoadRule::coarse_body, std::string_view("coarse-body"), true}})
+       {std::tuple{ShareRule::locus, std::string_view("locus"), false},
+        std::tuple{ShareRule::sections, std::string_view("sections"), true},
+        std::tuple{ShareRule::coarse_body, std::string_view("coarse-body"), true}})
   {
-    const study::whole_body::LoadRuleStrategy& strategy = study::whole_body::load_rule_strategy(rule);
+    const study::whole_body::ShareRuleStrategy& strategy = study::whole_body::share_rule_strategy(rule);
     EXPECT_EQ(strategy.name, name);
     EXPECT_EQ(strategy.softens_ends, softens) << name;
     EXPECT_EQ(study::whole_body::softens_ends(rule), softens) << name;
@@ -259,7 +259,7 @@ TEST(WholeBodyCheckQuick, EachLoadRuleIsOneStrategyNamedAsItsOption)
   study::whole_body::WholeBodyCheck check;
   check.orientation = study::whole_body::whole_body_orientation(s, 0);
   const study::whole_body::CheckContext context(MPI_COMM_WORLD, s, check.orientation);
-  const study::whole_body::LineLoad q = study::whole_body::load_rule_strategy(LoadRule::locus).solve(context, check);
+  const study::whole_body::LineLoad q = study::whole_body::share_rule_strategy(ShareRule::locus).solve(context, check);
   for (const double f : {0.0, 0.25, 0.5, 1.0})
     EXPECT_NEAR(q(f), s.normal_load_n / s.body.height_m, 1e-6 * s.normal_load_n / s.body.height_m) << "f = " << f;
   EXPECT_FALSE(check.section_rule.has_value());
@@ -301,7 +301,7 @@ TEST(WholeBodyCheckQuick, RefusesBadCoarseBodyRuleSettings)
 {
   fem::ensure_petsc();
   study::whole_body::WholeBodyCheckSettings s = oloid_settings(67.5);
-  s.load_rule = study::whole_body::LoadRule::coarse_body;
+  s.share_rule = study::whole_body::ShareRule::coarse_body;
   for (const auto& [elements, end_layer, setting] :
        {std::tuple{1, 0.5, "rule_contact_elements"}, std::tuple{2, 0.0, "rule_end_layer"},
         std::tuple{2, std::nan(""), "rule_end_layer"}})
@@ -320,11 +320,11 @@ TEST(WholeBodyCheckQuick, RefusesTheEndSofteningRulesOnAPartlyLoadedRuling)
   // ruling; the sections' and the coarse body's rules are matched to end
   // models at both rim ends of a ruling loaded end to end.
   fem::ensure_petsc();
-  for (const auto& [rule, name] : {std::pair{study::whole_body::LoadRule::sections, "load_rule sections"},
-                                   std::pair{study::whole_body::LoadRule::coarse_body, "load_rule coarse-body"}})
+  for (const auto& [rule, name] : {std::pair{study::whole_body::ShareRule::sections, "share_rule sections"},
+                                   std::pair{study::whole_body::ShareRule::coarse_body, "share_rule coarse-body"}})
   {
     study::whole_body::WholeBodyCheckSettings s = oloid_settings(22.5);
-    s.load_rule = rule;
+    s.share_rule = rule;
     SCOPED_TRACE(name);
     const std::string message = input_error_message(s);
     EXPECT_NE(message.find(name), std::string::npos) << message;
@@ -340,7 +340,7 @@ TEST(WholeBodyCheck, OloidSectionsRuleMeetsTheInteriorStationsWithinThreePercent
   // inside the ends the sections, without their neighbours' shear, are
   // softer than the whole body (docs/methods/whole-body.md), so those two are not
   // asserted.
-  const auto [s, check] = oloid_check_under(study::whole_body::LoadRule::sections);
+  const auto [s, check] = oloid_check_under(study::whole_body::ShareRule::sections);
   ASSERT_TRUE(check.section_rule.has_value());
   EXPECT_NEAR(check.section_rule->force_n, s.normal_load_n, 1e-3 * s.normal_load_n);
   EXPECT_NEAR(check.section_rule->centre_of_pressure_m / check.orientation.ruling.length_m, check.orientation.centre_of_pressure, 1e-3);
@@ -357,7 +357,7 @@ TEST(WholeBodyCheck, OloidCoarseBodyRuleMeetsEveryStationAndTheAcuteEndWithinThr
   // slices and end models take; the fine whole body is the reference. The
   // reduction itself is checked too: the coarse body's line load at every
   // station within 1 % of the fine body's.
-  const auto [s, check] = oloid_check_under(study::whole_body::LoadRule::coarse_body);
+  const auto [s, check] = oloid_check_under(study::whole_body::ShareRule::coarse_body);
   ASSERT_TRUE(check.coarse_body.has_value());
   EXPECT_NEAR(check.coarse_body->fem.reaction_n, s.normal_load_n, 1e-3 * s.normal_load_n);
   EXPECT_LT(check.coarse_body->fem.dofs, check.fem.dofs / 2);

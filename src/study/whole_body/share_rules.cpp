@@ -1,5 +1,5 @@
-// The whole-body check's load rules (study/whole_body/load_rules.h).
-#include "study/whole_body/load_rules.h"
+// The whole-body check's share rules (study/whole_body/share_rules.h).
+#include "study/whole_body/share_rules.h"
 #include "core/error.h"
 #include "fem/all_gather.h"
 #include <chrono>
@@ -68,32 +68,32 @@ LineLoad coarse_body_rule(const CheckContext& context, WholeBodyCheck& check)
 }
 } // namespace
 
-const LoadRuleStrategy& load_rule_strategy(LoadRule rule)
+const ShareRuleStrategy& share_rule_strategy(ShareRule rule)
 {
-  static const LoadRuleStrategy locus{"locus", false, locus_rule};
-  static const LoadRuleStrategy sections{"sections", true, sections_rule};
-  static const LoadRuleStrategy coarse_body{"coarse-body", true, coarse_body_rule};
+  static const ShareRuleStrategy locus{"locus", false, locus_rule};
+  static const ShareRuleStrategy sections{"sections", true, sections_rule};
+  static const ShareRuleStrategy coarse_body{"coarse-body", true, coarse_body_rule};
   switch (rule)
   {
-  case LoadRule::sections:
+  case ShareRule::sections:
     return sections;
-  case LoadRule::coarse_body:
+  case ShareRule::coarse_body:
     return coarse_body;
-  case LoadRule::locus:
+  case ShareRule::locus:
     break;
   }
   return locus;
 }
 
-void require_rule_applies(const LoadRuleStrategy& rule, const CheckContext& context)
+void require_rule_applies(const ShareRuleStrategy& rule, const CheckContext& context)
 {
   const WholeBodyOrientation& o = context.orientation;
   if (rule.softens_ends && (o.loaded_from > 0 || o.loaded_to < 1))
-    throw InputError(fmt::format("load_rule {}: direction {} deg loads only part of the ruling (c = {:.4f} outside "
+    throw InputError(fmt::format("share_rule {}: direction {} deg loads only part of the ruling (c = {:.4f} outside "
                                  "[1/3, 2/3]); the rule is matched to the end models at both rim ends, loaded end to "
                                  "end",
                                  rule.name, context.settings.direction_deg, o.centre_of_pressure));
 }
 
-bool softens_ends(LoadRule rule) { return load_rule_strategy(rule).softens_ends; }
+bool softens_ends(ShareRule rule) { return share_rule_strategy(rule).softens_ends; }
 } // namespace rollcheck::study::whole_body

@@ -1,7 +1,7 @@
 #pragma once
-// The whole-body check's load rules (LoadRule, study/whole_body/whole_body_check.h):
+// The whole-body check's share rules (ShareRule, study/whole_body/whole_body_check.h):
 // how F is spread along the ruling for the slices and the end models, each
-// a strategy chosen once per check (load_rule_strategy) that the stages
+// a strategy chosen once per check (share_rule_strategy) that the stages
 // read through its line load q(f) and whether it softens the ends:
 //  - locus: the contact locus's no-tension linear rule (oracle/line_load.h,
 //    fem-sds's): q(f) = line_load(F, c, L, f); solves nothing;
@@ -16,7 +16,7 @@
 
 namespace rollcheck::study::whole_body
 {
-struct LoadRuleStrategy
+struct ShareRuleStrategy
 {
   std::string_view name; ///< the option's and the JSON's spelling
   /// Its line load already falls towards the ends (softens_ends): the end
@@ -29,10 +29,10 @@ struct LoadRuleStrategy
   LineLoad (*solve)(const CheckContext& context, WholeBodyCheck& check);
 };
 
-const LoadRuleStrategy& load_rule_strategy(LoadRule rule);
+const ShareRuleStrategy& share_rule_strategy(ShareRule rule);
 
 /// InputError where `rule` softens the ends but the orientation loads only
 /// part of the ruling (c outside [1/3, 2/3]): such a rule is matched to the
 /// end models at both rim ends.
-void require_rule_applies(const LoadRuleStrategy& rule, const CheckContext& context);
+void require_rule_applies(const ShareRuleStrategy& rule, const CheckContext& context);
 } // namespace rollcheck::study::whole_body
