@@ -4,6 +4,7 @@
 // end of the body's rolling loop and the end-aware FEM-SDS and FEM-FDS
 // (study/rims/rim_loop.h). Its tables are the rims wing's (study/rims/rim_report.h).
 #include "cli/cli.h"
+#include "core/degree.h"
 #include "cli/scenes.h"
 #include "contact/continuum_loop_scores.h"
 #include "fem/scenes/rim_end_contact.h"
@@ -29,7 +30,6 @@ struct RimCommand : study::rims::RimLoopSettings
 };
 using RimSchema = io::BoundSchema<RimCommand>;
 using fem::RimEndSettings;
-constexpr double degree = std::numbers::pi / 180;
 
 /// A member of the end models' settings, bound through the command's `end`.
 template <typename Member>

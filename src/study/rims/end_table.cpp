@@ -1,5 +1,6 @@
 // The rim loop's FEM end table (study/rims/end_table.h).
 #include "study/rims/end_table.h"
+#include "core/degree.h"
 #include "contact/edge_on_elastic_block_exponent.h"
 #include "contact/wedge_exponent.h"
 #include "core/error.h"
@@ -13,7 +14,6 @@ namespace rollcheck::study::rims
 {
 namespace
 {
-constexpr double degree = std::numbers::pi / 180;
 
 /// The table's columns: its runs of nodes of one R.
 std::vector<std::span<const EndTableNode>> table_columns(const std::vector<EndTableNode>& table)

@@ -1,5 +1,6 @@
 // The rim loop's flat-rim table (study/rims/flat_rim_table.h).
 #include "study/rims/flat_rim_table.h"
+#include "core/degree.h"
 #include "core/error.h"
 #include "study/rims/flattest_loop_ends.h"
 #include "study/rims/table_nodes.h"
@@ -15,7 +16,6 @@ namespace rollcheck::study::rims
 {
 namespace
 {
-constexpr double degree = std::numbers::pi / 180;
 /// A side's solve travels between the ranks as these doubles (FlatRimSide's
 /// members in order, then the contact's largest slope, or -1 for a failed
 /// solve).

@@ -1,5 +1,6 @@
 // Where the rim loop's largest end pressure sits (study/rims/loop_largest_end.h).
 #include "study/rims/loop_largest_end.h"
+#include "core/degree.h"
 #include "fem/scenes/rim_end_contact.h"
 #include <numbers>
 #include <vector>
@@ -50,7 +51,6 @@ std::optional<LoopLargestEnd> loop_largest_end(MPI_Comm comm, const loop_scores:
 
 nlohmann::json to_json(const LoopLargestEnd& end)
 {
-  constexpr double degree = std::numbers::pi / 180;
   return {{"sample", end.sample},
           {"time_s", end.time_s},
           {"loop_fraction", end.loop_fraction},

@@ -1,6 +1,7 @@
 // The loop's most oblique rim end, solved obliquely and by the perpendicular
 // reduction (study/rims/oblique_end.h).
 #include "study/rims/oblique_end.h"
+#include "core/degree.h"
 #include "contact/rim_dihedral_angle.h"
 #include "contact/rim_overhang.h"
 #include "contact/wedge_exponent.h"
@@ -19,7 +20,6 @@ namespace rollcheck::study::rims
 {
 namespace
 {
-constexpr double degree = std::numbers::pi / 180;
 
 std::vector<oracle::Circle> body_circles(const geometry::BodySpec& body)
 {

@@ -2,6 +2,7 @@
 // (fem-sds), the direct ends, the flat-rim table, the FEM end table and the
 // end-aware scores, in that order.
 #include "study/rims/rim_loop.h"
+#include "core/degree.h"
 #include "contact/hertz.h"
 #include "contact/rim_dihedral_angle.h"
 #include "core/error.h"
@@ -27,7 +28,6 @@ namespace rollcheck::study::rims
 {
 namespace
 {
-constexpr double degree = std::numbers::pi / 180;
 
 double median(std::vector<double> values)
 {

@@ -1,6 +1,7 @@
 // The rim loop's JSON (study/rims/rim_loop.h): every record's to_json,
 // declared beside its struct.
 #include "study/rims/rim_loop.h"
+#include "core/degree.h"
 #include "core/json_number.h"
 #include "core/named_values.h"
 #include "study/rims/rim_end_json.h"
@@ -10,7 +11,6 @@ namespace rollcheck::study::rims
 {
 namespace
 {
-constexpr double degree = std::numbers::pi / 180;
 
 template <typename Record>
 nlohmann::json array_json(const std::vector<Record>& records)

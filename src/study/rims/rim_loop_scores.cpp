@@ -1,6 +1,7 @@
 // What the rim loop's result says of its end-aware scores
 // (study/rims/rim_loop.h RimLoopResult).
 #include "study/rims/rim_loop.h"
+#include "core/degree.h"
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -10,7 +11,6 @@ namespace rollcheck::study::rims
 {
 namespace
 {
-constexpr double degree = std::numbers::pi / 180;
 } // namespace
 
 std::optional<double> RimLoopResult::worst_end_to_interior() const

@@ -1,5 +1,6 @@
 // The rim command's text reports (study/rims/rim_report.h).
 #include "study/rims/rim_report.h"
+#include "core/degree.h"
 #include "core/named_values.h"
 #include "study/rims/rim_end_json.h"
 #include <algorithm>
@@ -11,7 +12,6 @@ namespace rollcheck::study::rims
 {
 namespace
 {
-constexpr double degree = std::numbers::pi / 180;
 
 std::string levels_table(const fem::RimEndStudy& study)
 {
