@@ -30,7 +30,7 @@ for name in ["cylinder", "oloid"]:
     end = f"{100 * max(compared):.2f} %" if compared else "-"
     if r["worst_end"] is None and compared:
         end += " (the compared ends)"
-    rule = r.get("coarse_body_load_rule") or r.get("section_load_rule") or {"wall_s": 0.0}
+    rule = r.get("coarse_body_share") or r.get("section_share") or {"wall_s": 0.0}
     print(f"| {name} | {r['share_rule']} | {m['dofs']} | {m['node_planes']} x {m['section_nodes']} | {rule['wall_s']:.1f} "
           f"| {w['slices']:.1f} | {w['end_models']:.1f} "
           f"| {w['whole_body']:.1f} | {total:.1f} | {total / budget:.2f} | {100 * r['worst_along']:.2f} % | {end} "

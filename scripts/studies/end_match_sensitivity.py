@@ -31,7 +31,7 @@ def main():
     if len(sys.argv) < 2:
         raise SystemExit(__doc__)
     check = json.load(open(sys.argv[1]))
-    rule = check.get("coarse_body_load_rule")
+    rule = check.get("coarse_body_share")
     if not rule:
         raise SystemExit(f"{sys.argv[1]}: not a run of --share-rule coarse-body")
     distances = [float(d) for d in sys.argv[2:]] or [2, 3, 4, 6, 8, 16, 32]

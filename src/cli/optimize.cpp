@@ -77,6 +77,9 @@ void add_method_parameters(Schema& s)
             io::Bounds{0, 0.5, true, true})
       .real("pilot_step", "--pilot-step", &S::pilot_step, "",
             "Pilot steps of the derivatives' step choice, fraction of each box width", io::Bounds{0, 0.25, true})
+      .choice("derivatives", "--derivatives", &S::derivatives,
+              "Where the gradient and Hessian are measured: both (the start and the optimum), start, or none (the "
+              "search and the sweeps alone)", study::optimize::derivatives_at_names())
       .integer("sweep_points", "--sweep-points", &S::sweep_points, "",
                "Points per axis of the sweeps through the start", io::Bounds{2, 1000})
       .integer("threads", "--threads", &S::threads, "", "Evaluations in parallel (0: one per core)",

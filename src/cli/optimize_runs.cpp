@@ -14,7 +14,8 @@ namespace
 /// The parameters that steer the search but change no run's value (a run is
 /// one genome and replicate): a rerun that changes only these reuses the runs.
 const std::vector<std::string> search_only_keys{"method",       "max_evaluations", "replicates", "pilot_step",
-                                                "sweep_points", "threads",         "out",        "python"};
+                                                "derivatives",  "sweep_points",    "threads",    "out",
+                                                "python"};
 
 /// What a run (genome, replicate) computes beyond the parameters: the genome a
 /// replicate moves to (study::optimize::replicate_genome) and the mesh it gets under

@@ -120,7 +120,7 @@ void add_rolling_parameters(Schema& s)
 {
   using P = oracle::RollingStudyParameters;
   s.include(io::BoundSchema<P>("rolling")
-                .real("rolling_energy", "--rolling-energy", &P::barrier_energy_excess, "",
+                .real("rolling_energy", "--rolling-energy", &P::rolling_energy, "",
                       "Rolling oracle: initial kinetic energy / potential barrier dV - 1 (0.1: over every barrier, "
                       "no rim lifts)", io::non_negative)
                 .former("barrier_energy_excess")

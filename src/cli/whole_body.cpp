@@ -62,7 +62,7 @@ void add_reduced_model_options(WholeBodySchema& s)
                {"coarse-body", study::whole_body::ShareRule::coarse_body}})
       .former("load_rule")
       .integer("rule_stations", "--rule-stations", &WholeBodyCheckSettings::rule_stations, "",
-               "Sections of the sections' load rule (midpoint rule along the ruling)", io::Bounds{4, 200})
+               "Sections of the sections' share rule (midpoint rule along the ruling)", io::Bounds{4, 200})
       .integer("rule_contact_elements", "--rule-contact-elements",
                &WholeBodyCheckSettings::rule_contact_elements, "",
                "The coarse-body load rule's elements across b (the whole body's: --contact-elements)",

@@ -21,7 +21,7 @@ void validate(const RollingStudyParameters& p)
     if (!std::isfinite(value) || value < 0)
       throw InputError(fmt::format("rolling study: {} must be finite and non-negative, got {}", what, value));
   };
-  require_non_negative(p.barrier_energy_excess, "barrier energy excess");
+  require_non_negative(p.rolling_energy, "barrier energy excess");
   require_non_negative(p.rolling_rate_rad_s, "rolling rate (rad/s)");
   require_non_negative(p.duration_s, "duration (s)");
   if (p.loops < 1)
@@ -154,7 +154,7 @@ RealRolling real_rolling(const geometry::BodySpec& spec, const RollingStudyParam
   if (p.rolling_rate_rad_s > 0)
     run.initial_rate_rad_s = p.rolling_rate_rad_s;
   else if (highest - lowest > 1e-9 * size)
-    run.initial_rate_rad_s = std::sqrt(2 * (1 + p.barrier_energy_excess) * mg * (highest - lowest) / inertia.front());
+    run.initial_rate_rad_s = std::sqrt(2 * (1 + p.rolling_energy) * mg * (highest - lowest) / inertia.front());
   else
     run.initial_rate_rad_s = std::sqrt(p.gravity_m_s2 / size);
 

@@ -14,7 +14,7 @@
 // Initial rate: the body's potential V varies along its contact loop by
 // dV = m g (max - min height of the centre of mass). To roll over every
 // barrier it needs a kinetic energy above dV at the stable ruling; it is given
-// (1 + barrier_energy_excess) dV. Faster starts make most rollers lift a rim off
+// (1 + rolling_energy) dV. Faster starts make most rollers lift a rim off
 // the plane (the centre of pressure leaves the ruling, reported as
 // contact_held = false), which this line-contact model does not follow. Bodies
 // with constant V (the cylinder; Stewart's roller, d = sqrt(2)) start at
@@ -29,7 +29,7 @@ struct RollingStudyParameters
 {
   double mass_kg = 1.0;                 ///< the preprint's m (scores do not depend on it)
   double gravity_m_s2 = 9.81;           ///< the preprint's g
-  double barrier_energy_excess = 0.1;   ///< initial kinetic energy / dV - 1 (see above)
+  double rolling_energy = 0.1;   ///< initial kinetic energy / dV - 1 (see above)
   double rolling_rate_rad_s = 0;        ///< > 0: this initial rate instead
   double rolling_resistance_n_m_s = 0;  ///< C; > 0 needs `duration_s`
   int loops = 1;                        ///< complete loops scored

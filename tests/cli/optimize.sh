@@ -52,14 +52,24 @@ assert faces == mesh["optimum"]["faces"], (faces, mesh)
 assert abs(faces - mesh["target_faces"]) <= 0.01 * mesh["target_faces"], (faces, mesh)
 print("matched optimum", mesh["optimum"], "target", mesh["target_faces"])
 PY
-# FEM-SDS: every body's loop status is counted (a score with its convergence).
+# --derivatives start: the gradient and Hessian at the start only, the optimum's skipped (with why), fewer scores.
+"$bin" -q optimize --points 60 --max-evaluations 12 --sweep-points 3 --threads 1 --derivatives start \
+  --json "$tmp/start.json" > "$tmp/start.log" 2>&1 || { echo "FAIL: optimize --derivatives start"; cat "$tmp/start.log"; exit 1; }
+[[ $(jq -r --slurpfile both "$tmp/optimize.json" '(.verdict_at_start | type) == "string"
+     and .derivatives_at_optimum.verdict == null and .derivatives_at_optimum.note == "not computed: --derivatives start"
+     and .score_evaluations < $both[0].score_evaluations' "$tmp/start.json") == true ]] \
+  || { echo "FAIL: --derivatives start: the start's verdict, none at the optimum, fewer scores than both"; fail=1; }
+# FEM-SDS: every body's loop status is counted (a score with its convergence); the search and sweeps alone.
 "$bin" -q optimize --score fem-sds --oracle rolling --family centre-line --points 60 --max-evaluations 3 \
-  --replicates 2 --sweep-points 2 --json "$tmp/fem.json" > "$tmp/fem.log" 2>&1 || { echo "FAIL: fem-sds optimize"; cat "$tmp/fem.log"; fail=1; }
-check_json "FEM-SDS loops counted by status, one per body scored" \
+  --replicates 2 --sweep-points 2 --derivatives none --json "$tmp/fem.json" > "$tmp/fem.log" 2>&1 \
+  || { echo "FAIL: fem-sds optimize"; cat "$tmp/fem.log"; fail=1; }
+check_json "FEM-SDS loops counted by status, one per body scored; no derivatives" \
   '.fem_sds_loops.scored > 0 and ([.fem_sds_loops.by_status[]] | add) == .fem_sds_loops.scored
-   and (.fem_sds_loops.by_status.converged // 0) > 0' "$tmp/fem.json"
+   and (.fem_sds_loops.by_status.converged // 0) > 0
+   and .derivatives_at_start.note == "not computed: --derivatives none"' "$tmp/fem.json"
 for args in "--theta-min 150:theta_min_deg" "--offset-max 0.6:offset_start" "--ratio-start 2:ratio_start" \
-            "--theta-min 0:theta_min_deg" "--replicates 1:replicates" "--score uniformity:uniformity"; do
+            "--theta-min 0:theta_min_deg" "--replicates 1:replicates" "--score uniformity:uniformity" \
+            "--derivatives some:--derivatives"; do
   "$bin" -q optimize ${args%%:*} > "$tmp/bad.log" 2>&1; rc=$?
   if [[ $rc -ne 2 ]] || ! grep -q -- "${args#*:}" "$tmp/bad.log"; then
     echo "FAIL: optimize ${args%%:*} gave exit $rc without '${args#*:}':"; cat "$tmp/bad.log"; fail=1

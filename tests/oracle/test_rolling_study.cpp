@@ -82,7 +82,7 @@ TEST(RollingStudy, FasterRollingSpreadsTheOloidsContact)
     for (double excess : {0.02, 0.1, 0.5, 1.0, 3.0})
     {
       RollingStudyParameters p;
-      p.barrier_energy_excess = excess;
+      p.rolling_energy = excess;
       const RealRolling run = real_rolling(spec, p);
       const RollingStudyResult r = score_real_rolling(run, geometry::make_body(spec), p);
       std::printf("| %-16s | %4.2f | %5.3f | %-3s | %4.2f | %6.3f | %5.3f..%5.3f |\n", name, excess,

@@ -148,7 +148,7 @@ WholeBodyMesh build_cylinder_body_mesh(MPI_Comm comm, const CylinderPose& pose, 
 WholeBodyMesh build_mapped_body_mesh(MPI_Comm comm, const MappedBodyPose& pose, const WholeBodySizes& sizes);
 
 /// The body's own section at station_m as a plane-strain slab (the
-/// sections' load rule, study/whole_body/section_load_rule.h): the reference segment
+/// sections' share rule, study/whole_body/section_share.h): the reference segment
 /// mapped onto the section as build_mapped_body_mesh maps its node plane
 /// there (frozen in the end zones the same way), one layer of thickness_m
 /// along x. Its two faces are symmetry_x_facets: u_x = 0 on every node is

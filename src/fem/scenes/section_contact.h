@@ -2,7 +2,7 @@
 // The body's own sections across its contact ruling, each in plane strain
 // at a prescribed approach: how much line load a section carries when the
 // held cut through the centre of mass moves down by delta there (the
-// sections' load rule, study/whole_body/section_load_rule.h).
+// sections' share rule, study/whole_body/section_share.h).
 //
 // A section at station a is the mapped reference segment of the whole body
 // (fem/mesh/whole_body_mesh.h build_mapped_section_mesh), one layer thick with

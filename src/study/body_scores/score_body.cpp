@@ -210,7 +210,7 @@ nlohmann::json rolling_json(const BodyScores& s)
           {"centre_of_pressure_min", json_number(r.centre_of_pressure_min)},
           {"centre_of_pressure_max", json_number(r.centre_of_pressure_max)},
           {"friction_ratio_max", json_number(r.friction_ratio_max)},
-          {"rolling_energy", p.barrier_energy_excess},
+          {"rolling_energy", p.rolling_energy},
           {"loops", p.loops},
           {"face_subdivisions", p.face_subdivisions},
           {"mass_points", p.mass_points},

@@ -46,7 +46,7 @@ Runs roll_every_body(const LifeSettings& s)
     for (const std::string& energy : energies)
     {
       oracle::RollingStudyParameters p;
-      p.barrier_energy_excess = std::stod(energy);
+      p.rolling_energy = std::stod(energy);
       p.samples_per_loop = s.samples_per_loop;
       runs[b].emplace(energy, oracle::real_rolling(s.bodies[b].spec, p));
     }
@@ -204,7 +204,7 @@ std::vector<QuadratureCheck> check_quadrature(const LifeSettings& s, const LifeR
   const std::string& energy = value_of(s.grid, cell, "rolling_energy");
   auto half_run = [&](std::size_t b) {
     oracle::RollingStudyParameters p;
-    p.barrier_energy_excess = std::stod(energy);
+    p.rolling_energy = std::stod(energy);
     p.samples_per_loop = std::max<long>(2, s.samples_per_loop / 2);
     return oracle::real_rolling(s.bodies[b].spec, p);
   };

@@ -66,7 +66,7 @@ LoopSource rolling_source(const FemSdsSettings& s, const geometry::SurfaceMesh& 
                           std::optional<double>* uniformity, std::optional<oracle::RealRolling>& kept_run)
 {
   oracle::RollingStudyParameters rp;
-  rp.barrier_energy_excess = s.rolling_energy;
+  rp.rolling_energy = s.rolling_energy;
   rp.samples_per_loop = s.samples_per_loop;
   const oracle::RealRolling& run = kept_run.emplace(oracle::real_rolling(s.body, rp));
   LoopSource source{run.circles, run.mass.centre_of_mass_m, {}, {}, {}, ""};

@@ -265,6 +265,13 @@ const std::vector<std::pair<std::string, FamilyScore>>& family_score_names()
   return names;
 }
 
+const std::vector<std::pair<std::string, DerivativesAt>>& derivatives_at_names()
+{
+  static const std::vector<std::pair<std::string, DerivativesAt>> names{
+      {"both", DerivativesAt::start_and_optimum}, {"start", DerivativesAt::start}, {"none", DerivativesAt::none}};
+  return names;
+}
+
 bool is_fem_sds(FamilyScore score) { return score == FamilyScore::fem_sds || score == FamilyScore::fem_sds_template; }
 
 void validate(const FamilySearchSettings& s)
@@ -467,11 +474,17 @@ FamilySearchResult optimize_family(const FamilySearchSettings& s)
   o.xtol = s.resolution;
   r.search = minimize(score, o);
 
-  if (const auto i = on_bound(start, r.box))
+  const std::string skipped = "not computed: --derivatives " + name_of(derivatives_at_names(), s.derivatives,
+                                                                      "derivatives");
+  if (s.derivatives == DerivativesAt::none)
+    r.start_derivatives_note = skipped;
+  else if (const auto i = on_bound(start, r.box))
     r.start_derivatives_note = fmt::format("not computed: {} lies on a bound of its box", axis_names[*i].parameter);
   else
     std::tie(r.start_steps, r.at_start) = derivatives_at(ev, score, start, r.box, fd_noise, s.pilot_step);
-  if (const auto i = on_bound(r.search.best_x, r.box))
+  if (s.derivatives != DerivativesAt::start_and_optimum)
+    r.best_derivatives_note = skipped;
+  else if (const auto i = on_bound(r.search.best_x, r.box))
     r.best_derivatives_note = fmt::format("not computed: {} lies on a bound of its box (a constrained optimum)",
                                           axis_names[*i].parameter);
   else

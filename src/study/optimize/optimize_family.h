@@ -41,6 +41,20 @@ enum class FamilyScore
   fem_sds_template
 };
 
+/// Where the gradient and Hessian are measured (each costs about 2n^2 + 1
+/// scores in n = 3 parameters, and pilots for its steps): at the start and
+/// at the optimum, at the start only (its verdict decides the title claim
+/// when the search finds nothing better), or nowhere (the search alone).
+enum class DerivativesAt
+{
+  start_and_optimum,
+  start,
+  none
+};
+
+/// both, start, none (for io::BoundSchema::choice).
+const std::vector<std::pair<std::string, DerivativesAt>>& derivatives_at_names();
+
 /// fem_sds or fem_sds_template: computed by fem_sds_score, one body at a time.
 bool is_fem_sds(FamilyScore score);
 
@@ -110,6 +124,7 @@ struct FamilySearchSettings
   /// deterministic oracles' noise is the score's spread over such moves.
   double resolution = 1e-3;
   double pilot_step = 0.05; ///< balanced_steps' pilots, fraction of each box width
+  DerivativesAt derivatives = DerivativesAt::start_and_optimum;
   int sweep_points = 9; ///< per axis, from min to max through the start
   unsigned threads = 0; ///< evaluations in parallel (0: one per core)
   /// score fem_sds or fem_sds_template: the body's FEM-SDS of that kind. It is called on the calling thread,

@@ -108,7 +108,7 @@ std::vector<RuleSamples> rule_loop_samples(MPI_Comm comm, const loop_scores::Fem
                      "motion)");
   // The loop fem-sds scored (study/loop_scores/fem_sds.cpp's rolling loop): the same run.
   oracle::RollingStudyParameters rolling;
-  rolling.barrier_energy_excess = settings.rolling_energy;
+  rolling.rolling_energy = settings.rolling_energy;
   rolling.samples_per_loop = settings.samples_per_loop;
   const oracle::RealRolling run = oracle::real_rolling(settings.body, rolling);
   loop_scores::LoopSource source{run.circles, run.mass.centre_of_mass_m, {}, {}, {}, "real rolling"};

@@ -69,7 +69,7 @@ public:
         return it->second;
     }
     oracle::RollingStudyParameters p;
-    p.barrier_energy_excess = energy_excess;
+    p.rolling_energy = energy_excess;
     p.samples_per_loop = samples_per_loop;
     oracle::RealRolling run = oracle::real_rolling(bodies_[body].spec, p);
     std::lock_guard lock(mutex_);
@@ -205,7 +205,7 @@ std::vector<double> genome_values(const geometry::BodySpec& spec, const std::vec
   for (const auto& [energy, at] : by_energy)
   {
     oracle::RollingStudyParameters p;
-    p.barrier_energy_excess = energy;
+    p.rolling_energy = energy;
     p.samples_per_loop = s.family_samples_per_loop;
     oracle::RealRolling run;
     try

@@ -29,15 +29,15 @@ LineLoad sections_rule(const CheckContext& context, WholeBodyCheck& check)
   section.penalty_c = s.penalty_c;
   const RigidStart rigid = rigid_start(context, context.locus_load_at(c));
   section.first_shift_m = rigid.shift_m;
-  SectionLoadRuleSettings rule;
+  SectionShareSettings rule;
   rule.stations = s.rule_stations;
   fem::WholeBodySizes interior = context.sizing.sizes;
   interior.edge_m = interior.edge_zone_m = 0;
   // The mapped body's pose, or for the extruded cylinder one built for its sections.
   const fem::MappedBodyPose pose = context.pose ? *context.pose : mapped_pose(context);
-  check.section_rule
-      = section_load_rule(context.comm, pose, s.normal_load_n, c * L, rigid.approach_m, interior, section, rule);
-  const SectionLoadRule& solved = *check.section_rule;
+  check.section_share
+      = section_share(context.comm, pose, s.normal_load_n, c * L, rigid.approach_m, interior, section, rule);
+  const SectionShare& solved = *check.section_share;
   if (context.log)
     spdlog::info("section load rule: {} sections of {} DOFs, {} passes, F {:.6g} N, centre of pressure {:.6f} L, "
                  "{:.1f} s",

@@ -6,7 +6,7 @@
 //  - locus: the contact locus's no-tension linear rule (oracle/line_load.h,
 //    fem-sds's): q(f) = line_load(F, c, L, f); solves nothing;
 //  - sections: the body's own sections under one rigid approach and tilt
-//    (study/whole_body/section_load_rule.h), linear between its stations;
+//    (study/whole_body/section_share.h), linear between its stations;
 //  - coarse-body: the whole body meshed coarsely (b_min / rule_contact_elements
 //    across the ruling, end layers rule_end_layer b_end, no refinement at
 //    the ends), its line load on each node plane, linear between them.
@@ -24,7 +24,7 @@ struct ShareRuleStrategy
   /// loaded end to end.
   bool softens_ends;
   /// Solves what the rule is read from (nothing, the sections, the coarse
-  /// body), records it in `check` (section_rule, coarse_body) and returns
+  /// body), records it in `check` (section_share, coarse_body) and returns
   /// its q(f).
   LineLoad (*solve)(const CheckContext& context, WholeBodyCheck& check);
 };

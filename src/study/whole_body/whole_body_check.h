@@ -7,7 +7,7 @@
 //    stations between the end margins, each under the load rule's line
 //    load q(s) and radius R(s): the contact locus's (contact/contact_locus.h:
 //    F through the centre of mass, the no-tension linear rule; fem-sds's,
-//    the default), the body's own sections' (study/whole_body/section_load_rule.h,
+//    the default), the body's own sections' (study/whole_body/section_share.h,
 //    ShareRule::sections) or the whole body's at a coarse mesh
 //    (ShareRule::coarse_body); the end models under the rule's q at the
 //    ends, or d_m inside them where the rule softens the ends itself
@@ -51,7 +51,7 @@
 #include "fem/scenes/rim_end_contact.h"
 #include "fem/scenes/slice_contact.h"
 #include "fem/scenes/whole_body_contact.h"
-#include "study/whole_body/section_load_rule.h"
+#include "study/whole_body/section_share.h"
 #include "geometry/body.h"
 #include "oracle/rolling_dynamics.h"
 #include <array>
@@ -73,7 +73,7 @@ enum class EndModelDepth
 
 /// How the reduced models share F along the ruling: the contact locus's
 /// no-tension linear rule (fem-sds's); each section's own compliance under
-/// one rigid approach and tilt (study/whole_body/section_load_rule.h); or the whole
+/// one rigid approach and tilt (study/whole_body/section_share.h); or the whole
 /// body meshed coarsely (b / rule_contact_elements across the ruling, end
 /// layers of rule_end_layer b, no refinement at the ends), its line load on
 /// each node plane: the body's 3D compliance, the sections coupled along the
@@ -122,7 +122,7 @@ struct WholeBodyCheckSettings
   double penalty_c = 100;           ///< the whole body's kappa = c E / h_c (the slices' c)
   int stations = 9;                 ///< slices along the ruling
   ShareRule share_rule = ShareRule::locus; ///< the slices' and end models' q(s)
-  int rule_stations = 16;           ///< the sections' load rule's N
+  int rule_stations = 16;           ///< the sections' share rule's N
   int rule_contact_elements = 2;    ///< the coarse body's elements across b (the fine body's: contact_elements)
   double rule_end_layer = 0.5;      ///< the coarse body's end layers, h / b (the fine body's: body_end_layer)
   double end_match_over_half_width = 4; ///< d_m / b, where an end model meets a rule that softens the ends
@@ -286,7 +286,7 @@ struct WholeBodyCheck
   std::size_t node_planes = 0;
   double gmsh_s = 0;
   fem::WholeBodyFem fem;
-  std::optional<SectionLoadRule> section_rule; ///< with ShareRule::sections
+  std::optional<SectionShare> section_share; ///< with ShareRule::sections
   /// With ShareRule::coarse_body: its mesh and solve (its q on each node plane).
   struct CoarseBody
   {

@@ -22,7 +22,7 @@ oracle::RealRolling roll(const std::string& body, double energy_excess, long sam
   geometry::BodySpec spec;
   spec.body = body;
   oracle::RollingStudyParameters p;
-  p.barrier_energy_excess = energy_excess;
+  p.rolling_energy = energy_excess;
   p.samples_per_loop = samples;
   return oracle::real_rolling(spec, p);
 }

@@ -262,7 +262,7 @@ TEST(WholeBodyCheckQuick, EachShareRuleIsOneStrategyNamedAsItsOption)
   const study::whole_body::LineLoad q = study::whole_body::share_rule_strategy(ShareRule::locus).solve(context, check);
   for (const double f : {0.0, 0.25, 0.5, 1.0})
     EXPECT_NEAR(q(f), s.normal_load_n / s.body.height_m, 1e-6 * s.normal_load_n / s.body.height_m) << "f = " << f;
-  EXPECT_FALSE(check.section_rule.has_value());
+  EXPECT_FALSE(check.section_share.has_value());
   EXPECT_FALSE(check.coarse_body.has_value());
 }
 
@@ -334,16 +334,16 @@ TEST(WholeBodyCheckQuick, RefusesTheEndSofteningRulesOnAPartlyLoadedRuling)
 
 TEST(WholeBodyCheck, OloidSectionsRuleMeetsTheInteriorStationsWithinThreePercent)
 {
-  // The sections' rule (study/whole_body/section_load_rule.h) at the orientation of
+  // The sections' rule (study/whole_body/section_share.h) at the orientation of
   // OloidAgreesWith...: away from the end zones the whole body's peaks meet
   // slices under the sections' q within the check's 3 %; at the stations 5 %
   // inside the ends the sections, without their neighbours' shear, are
   // softer than the whole body (docs/methods/whole-body.md), so those two are not
   // asserted.
   const auto [s, check] = oloid_check_under(study::whole_body::ShareRule::sections);
-  ASSERT_TRUE(check.section_rule.has_value());
-  EXPECT_NEAR(check.section_rule->force_n, s.normal_load_n, 1e-3 * s.normal_load_n);
-  EXPECT_NEAR(check.section_rule->centre_of_pressure_m / check.orientation.ruling.length_m, check.orientation.centre_of_pressure, 1e-3);
+  ASSERT_TRUE(check.section_share.has_value());
+  EXPECT_NEAR(check.section_share->force_n, s.normal_load_n, 1e-3 * s.normal_load_n);
+  EXPECT_NEAR(check.section_share->centre_of_pressure_m / check.orientation.ruling.length_m, check.orientation.centre_of_pressure, 1e-3);
   ASSERT_EQ(check.stations.size(), static_cast<std::size_t>(s.stations));
   for (std::size_t k = 1; k + 1 < check.stations.size(); ++k)
     EXPECT_LE(std::abs(check.stations[k].peak_difference()), s.tolerance) << "station " << k;

@@ -1,5 +1,5 @@
 #pragma once
-// The sections' load rule: how a body standing on its contact ruling shares
+// The sections' share of the load (`whole-body --share-rule sections`): how a body standing on its contact ruling shares
 // its load F along the ruling when each section across the ruling carries
 // what its own compliance gives (fem/scenes/section_contact.h), not what the
 // contact locus's no-tension linear rule of a rigid footing assigns
@@ -32,14 +32,14 @@
 
 namespace rollcheck::study::whole_body
 {
-struct SectionLoadRuleSettings
+struct SectionShareSettings
 {
   int stations = 16;       ///< N
   double tolerance = 1e-3; ///< largest |q solved / q predicted - 1| of the last pass
   int max_passes = 10;
 };
 
-struct SectionLoadRule
+struct SectionShare
 {
   std::vector<double> stations_m, load_n_per_m, approach_m, peak_pressure_pa;
   double approach_at_centre_of_mass_m = 0; ///< delta_0
@@ -58,10 +58,10 @@ struct SectionLoadRule
 /// Every rank gets the result. InputError for bad settings; ComputationError
 /// when a section fails or the iteration does not meet `tolerance` in
 /// max_passes.
-SectionLoadRule section_load_rule(MPI_Comm comm, const fem::MappedBodyPose& pose, double force_n,
+SectionShare section_share(MPI_Comm comm, const fem::MappedBodyPose& pose, double force_n,
                                   double centre_of_mass_along_m, double first_approach_m,
                                   const fem::WholeBodySizes& sizes, const fem::SectionSettings& section,
-                                  const SectionLoadRuleSettings& settings);
+                                  const SectionShareSettings& settings);
 
-nlohmann::json to_json(const SectionLoadRule& rule);
+nlohmann::json to_json(const SectionShare& rule);
 } // namespace rollcheck::study::whole_body

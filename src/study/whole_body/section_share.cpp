@@ -1,5 +1,5 @@
-// The sections' load rule (study/whole_body/section_load_rule.h).
-#include "study/whole_body/section_load_rule.h"
+// The sections' share of the load (study/whole_body/section_share.h).
+#include "study/whole_body/section_share.h"
 #include "core/error.h"
 #include "fem/all_gather.h"
 #include "fem/petsc_session.h"
@@ -62,7 +62,7 @@ Eigen::Vector2d balance(const std::vector<PowerLaw>& laws, const std::vector<dou
 }
 } // namespace
 
-double SectionLoadRule::load_at(double x_m) const
+double SectionShare::load_at(double x_m) const
 {
   const std::vector<double>& xs = stations_m;
   const std::vector<double>& qs = load_n_per_m;
@@ -74,10 +74,10 @@ double SectionLoadRule::load_at(double x_m) const
   return qs[i - 1] + f * (qs[i] - qs[i - 1]);
 }
 
-SectionLoadRule section_load_rule(MPI_Comm comm, const fem::MappedBodyPose& pose, double force_n,
+SectionShare section_share(MPI_Comm comm, const fem::MappedBodyPose& pose, double force_n,
                                   double centre_of_mass_along_m, double first_approach_m,
                                   const fem::WholeBodySizes& sizes, const fem::SectionSettings& section,
-                                  const SectionLoadRuleSettings& settings)
+                                  const SectionShareSettings& settings)
 {
   const double L = pose.length_m, x_G = centre_of_mass_along_m;
   if (!(settings.stations >= 4) || !(settings.tolerance > 0) || !(settings.max_passes >= 2))
@@ -93,7 +93,7 @@ SectionLoadRule section_load_rule(MPI_Comm comm, const fem::MappedBodyPose& pose
   const bool log = fem::world_rank() == 0;
   const std::size_t n = static_cast<std::size_t>(settings.stations);
   const double weight = L / static_cast<double>(n);
-  SectionLoadRule rule;
+  SectionShare rule;
   for (std::size_t k = 0; k < n; ++k)
     rule.stations_m.push_back((static_cast<double>(k) + 0.5) * weight);
   std::vector<PowerLaw> laws(n);
@@ -163,7 +163,7 @@ SectionLoadRule section_load_rule(MPI_Comm comm, const fem::MappedBodyPose& pose
   return rule;
 }
 
-nlohmann::json to_json(const SectionLoadRule& rule)
+nlohmann::json to_json(const SectionShare& rule)
 {
   nlohmann::json stations = nlohmann::json::array();
   for (std::size_t k = 0; k < rule.stations_m.size(); ++k)

@@ -1,5 +1,5 @@
 // The body's sections in plane strain (fem/scenes/section_contact.h) and the
-// sections' load rule (study/whole_body/section_load_rule.h) on a cylinder lying on
+// sections' share rule (study/whole_body/section_share.h) on a cylinder lying on
 // the plane, whose sections are all the half disc below its axis: each
 // section against the plane-strain slice of fem/scenes/slice_contact.h (an
 // independent mesh and load control of the same problem: the quarter disc
@@ -13,7 +13,7 @@
 #include "fem/scenes/section_contact.h"
 #include "fem/scenes/slice_contact.h"
 #include "oracle/contact_density.h"
-#include "study/whole_body/section_load_rule.h"
+#include "study/whole_body/section_share.h"
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
@@ -118,15 +118,15 @@ TEST(SectionContact, BadApproachesAndStationsAreInputErrors)
                InputError);
 }
 
-TEST(SectionLoadRule, IdenticalSectionsShareTheLoadAsARigidFooting)
+TEST(SectionShare, IdenticalSectionsShareTheLoadAsARigidFooting)
 {
   const double F = 100, q = F / length;
-  study::whole_body::SectionLoadRuleSettings settings;
+  study::whole_body::SectionShareSettings settings;
   settings.stations = 8;
   for (const double centre : {0.5, 0.45})
   {
     const double x_G = centre * length;
-    const study::whole_body::SectionLoadRule rule = study::whole_body::section_load_rule(
+    const study::whole_body::SectionShare rule = study::whole_body::section_share(
         MPI_COMM_WORLD, cylinder_pose(), F, x_G, 1.2e-7, section_sizes(q), section_settings(q), settings);
     // Balanced on the model, the solved loads within the 1e-3 tolerance of it.
     EXPECT_NEAR(rule.force_n / F, 1.0, settings.tolerance) << "x_G = " << centre << " L";
@@ -145,17 +145,17 @@ TEST(SectionLoadRule, IdenticalSectionsShareTheLoadAsARigidFooting)
   }
 }
 
-TEST(SectionLoadRule, BadSettingsAreInputErrors)
+TEST(SectionShare, BadSettingsAreInputErrors)
 {
-  study::whole_body::SectionLoadRuleSettings few;
+  study::whole_body::SectionShareSettings few;
   few.stations = 2;
-  EXPECT_THROW(study::whole_body::section_load_rule(MPI_COMM_WORLD, cylinder_pose(), 100, 0.01, 1e-7, section_sizes(5000), {},
+  EXPECT_THROW(study::whole_body::section_share(MPI_COMM_WORLD, cylinder_pose(), 100, 0.01, 1e-7, section_sizes(5000), {},
                                         few),
                InputError);
-  EXPECT_THROW(study::whole_body::section_load_rule(MPI_COMM_WORLD, cylinder_pose(), 100, 0.03, 1e-7, section_sizes(5000), {},
+  EXPECT_THROW(study::whole_body::section_share(MPI_COMM_WORLD, cylinder_pose(), 100, 0.03, 1e-7, section_sizes(5000), {},
                                         {}),
                InputError);
-  EXPECT_THROW(study::whole_body::section_load_rule(MPI_COMM_WORLD, cylinder_pose(), std::nan(""), 0.01, 1e-7,
+  EXPECT_THROW(study::whole_body::section_share(MPI_COMM_WORLD, cylinder_pose(), std::nan(""), 0.01, 1e-7,
                                         section_sizes(5000), {}, {}),
                InputError);
 }
