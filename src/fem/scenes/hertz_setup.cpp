@@ -107,4 +107,29 @@ MeshGrading mesh_grading(const HertzSettings& s, const HertzReference& ref)
                          s.radius_m);
 }
 
+ContactRefinement contact_refinement(const HertzSettings& s, const HertzReference& ref, const MeshGrading& g)
+{
+  ContactRefinement r;
+  if (s.model != Model::solid)
+    return r;
+  const double c_H = ref.contact_size_m;
+  const auto finer = [&](int levels) { return g.contact_size_m / std::pow(2.0, levels / 2.0); };
+  // The ball holds the nodes whose pressure is within 3 % of p0 (s < 0.25
+  // c_H), where the largest nodal pressure is found; the tube the nodes
+  // whose patches straddle the edge at the grading's h_c = c_H / 10.
+  constexpr double pole_radius = 0.25, edge_half_width = 0.1;
+  if (s.pole_refine > 0)
+  {
+    r.pole_size_m = finer(s.pole_refine);
+    r.pole_radius_m = pole_radius * c_H;
+  }
+  if (s.edge_refine > 0)
+  {
+    r.edge_size_m = finer(s.edge_refine);
+    r.edge_half_width_m = edge_half_width * c_H;
+    r.edge_radius_m = c_H;
+  }
+  return r;
+}
+
 } // namespace rollcheck::fem
