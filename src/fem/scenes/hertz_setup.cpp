@@ -3,6 +3,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include <cmath>
+#include <utility>
 #include <fmt/format.h>
 
 namespace rollcheck::fem
@@ -43,6 +44,15 @@ void validate(const HertzSettings& s)
     throw InputError(fmt::format("hertz: degree (--degree) must be 1 or 2, got {}", s.degree));
   if (s.refine > 12)
     throw InputError(fmt::format("hertz: refine (--refine) must be at most 12, got {}", s.refine));
+  for (const auto& [levels, what] : {std::pair{s.pole_refine, "pole_refine (--pole-refine)"},
+                                     std::pair{s.edge_refine, "edge_refine (--edge-refine)"}})
+  {
+    if (levels < 0 || levels > 6)
+      throw InputError(fmt::format("hertz: {} must lie in 0..6, got {}", what, levels));
+    if (levels > 0 && s.model != Model::solid)
+      throw InputError(fmt::format("hertz: {} refines the 3d model's contact; the {} model has none", what,
+                                   model_name(s.model)));
+  }
   if (!std::isfinite(s.contact_element_size_m) || s.contact_element_size_m < 0)
     throw InputError(fmt::format("hertz: contact_element_size_m (--contact-element-size) must be >= 0, got {}",
                                  s.contact_element_size_m));
