@@ -49,6 +49,10 @@ const SceneSchema<fem::HertzSettings>& hertz_schema()
                  "Mesh level: 10 * 2^(refine/2) elements across the Hertz contact radius; -1 = the model's default "
                  "(axi/plane-strain P1: 4, P2: 2; 3d P1: 2, P2: 0)",
                  refine_range)
+        .integer("pole_refine", "--pole-refine", &HertzSettings::pole_refine, "",
+                 "3d: extra refine levels about the first point of contact", io::Bounds{0, 6})
+        .integer("edge_refine", "--edge-refine", &HertzSettings::edge_refine, "",
+                 "3d: extra refine levels about the contact's edge circle (the Hertz radius)", io::Bounds{0, 6})
         .include(penalty_schema(), &HertzSettings::penalty_c)
         .choice("pressure_recovery", "--pressure-recovery", &HertzSettings::pressure_recovery,
                 "Nodal contact pressure from the nodal contact forces: consistent (the contact patch's mass-matrix "

@@ -18,6 +18,8 @@ expect 2 "unknown key 'wibble'" -- "$bin" run "$here/cases/hertz_cylinder.toml" 
 expect 2 "refine.*13" -- "$bin" hertz --refine 13 --json "$tmp/bad7.json"
 expect 2 "force_rtol.*0.5" -- "$bin" hertz --force-rtol 0.5 --json "$tmp/bad8.json"
 expect 2 "pressure-recovery|pressure_recovery" -- "$bin" hertz --pressure-recovery smooth --json "$tmp/bad14.json"
+expect 2 "edge_refine.*3d model.*axi" -- "$bin" hertz --model axi --edge-refine 2 --json "$tmp/bad15.json"
+expect 2 "pole.refine.*7" -- "$bin" hertz --model 3d --pole-refine 7 --json "$tmp/bad16.json"
 # One spelling per quantity: the old --E and --nu are gone.
 expect 2 "unknown option '--nu'" -- "$bin" hertz --nu 0.3 --json "$tmp/bad9.json"
 expect 2 "unknown option '--E'" -- "$bin" hertz --E 200e9 --json "$tmp/bad10.json"

@@ -16,6 +16,17 @@
 // the distance from the first point of contact (gmsh Distance + Threshold
 // fields, linear in between); see MeshGrading.
 //
+// Refinement of the solid model's contact (ContactRefinement, optional):
+// smaller elements in a ball about the first point of contact, where the
+// largest nodal pressure is read, and in a tube about the circle of the
+// contact's edge on the sphere (r = c, z = R - sqrt(R^2 - c^2)), where the
+// pressure p ~ sqrt(c^2 - r^2) has an unbounded slope and the lumped
+// recovery's average over a node's patch is off by O(p0 sqrt(h / c)). Each
+// is a gmsh Threshold field (sizes growing by the grading's rate away from
+// the ball or the tube), the sizes the smallest of these and the grading's
+// (a Min field). The tube's distance to the circle is a MathEval field,
+// sqrt((sqrt(x^2 + y^2) - c)^2 + (z - z_c)^2).
+//
 // Tags (SceneMesh): contact, the arc (the sphere's surface) off the planes;
 // top, the face z = R (in 2D the model's z is its second coordinate);
 // symmetry_x, x = 0 (the axis in the axisymmetric model); symmetry_y (solid
@@ -28,5 +39,17 @@
 
 namespace rollcheck::fem
 {
-SceneMesh build_scene_mesh(MPI_Comm comm, Model model, double radius_m, const MeshGrading& grading);
+/// Element sizes below the grading's contact size, solid model only; a size
+/// of 0 leaves that part to the grading.
+struct ContactRefinement
+{
+  double pole_size_m = 0;   ///< in the ball of radius pole_radius_m about the first point of contact
+  double pole_radius_m = 0;
+  double edge_size_m = 0;   ///< within edge_half_width_m of the contact's edge circle
+  double edge_half_width_m = 0;
+  double edge_radius_m = 0; ///< the circle's radius c
+};
+
+SceneMesh build_scene_mesh(MPI_Comm comm, Model model, double radius_m, const MeshGrading& grading,
+                           const ContactRefinement& refinement = {});
 } // namespace rollcheck::fem

@@ -3,6 +3,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include <cmath>
+#include <utility>
 #include <fmt/format.h>
 
 namespace rollcheck::fem
@@ -43,6 +44,15 @@ void validate(const HertzSettings& s)
     throw InputError(fmt::format("hertz: degree (--degree) must be 1 or 2, got {}", s.degree));
   if (s.refine > 12)
     throw InputError(fmt::format("hertz: refine (--refine) must be at most 12, got {}", s.refine));
+  for (const auto& [levels, what] : {std::pair{s.pole_refine, "pole_refine (--pole-refine)"},
+                                     std::pair{s.edge_refine, "edge_refine (--edge-refine)"}})
+  {
+    if (levels < 0 || levels > 6)
+      throw InputError(fmt::format("hertz: {} must lie in 0..6, got {}", what, levels));
+    if (levels > 0 && s.model != Model::solid)
+      throw InputError(fmt::format("hertz: {} refines the 3d model's contact; the {} model has none", what,
+                                   model_name(s.model)));
+  }
   if (!std::isfinite(s.contact_element_size_m) || s.contact_element_size_m < 0)
     throw InputError(fmt::format("hertz: contact_element_size_m (--contact-element-size) must be >= 0, got {}",
                                  s.contact_element_size_m));
@@ -105,6 +115,31 @@ MeshGrading mesh_grading(const HertzSettings& s, const HertzReference& ref)
                          s.contact_element_size_m > 0 ? s.contact_element_size_m
                                                       : contact_element_size(ref.contact_size_m, refine),
                          s.radius_m);
+}
+
+ContactRefinement contact_refinement(const HertzSettings& s, const HertzReference& ref, const MeshGrading& g)
+{
+  ContactRefinement r;
+  if (s.model != Model::solid)
+    return r;
+  const double c_H = ref.contact_size_m;
+  const auto finer = [&](int levels) { return g.contact_size_m / std::pow(2.0, levels / 2.0); };
+  // The ball holds the nodes whose pressure is within 3 % of p0 (s < 0.25
+  // c_H), where the largest nodal pressure is found; the tube the nodes
+  // whose patches straddle the edge at the grading's h_c = c_H / 10.
+  constexpr double pole_radius = 0.25, edge_half_width = 0.1;
+  if (s.pole_refine > 0)
+  {
+    r.pole_size_m = finer(s.pole_refine);
+    r.pole_radius_m = pole_radius * c_H;
+  }
+  if (s.edge_refine > 0)
+  {
+    r.edge_size_m = finer(s.edge_refine);
+    r.edge_half_width_m = edge_half_width * c_H;
+    r.edge_radius_m = c_H;
+  }
+  return r;
 }
 
 } // namespace rollcheck::fem

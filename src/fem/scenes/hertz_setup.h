@@ -3,6 +3,7 @@
 // the numerical choices, with the defaults that the penalty and convergence
 // studies justify (docs/methods/hertz-fem.md). Also the analytic reference the run
 // is compared with, and the mesh sizes derived from it.
+#include "fem/mesh/hertz_mesh.h"
 #include "fem/mesh/mesh_grading.h"
 #include "fem/model.h"
 #include <filesystem>
@@ -43,6 +44,12 @@ struct HertzSettings
   /// preprint's choice): the FEM body then gets the modulus E / 2 against the
   /// rigid plane, which is Hertz-equivalent for identical materials.
   bool elastic_plane = false;
+  /// 3D: extra refine levels (each a factor sqrt(2) smaller elements than
+  /// the contact zone's h_c) in a ball of radius pole_radius c_H about the
+  /// first point of contact, and within edge_half_width c_H of the contact's
+  /// edge circle r = c_H on the sphere (fem/mesh/hertz_mesh.h); 0: none.
+  int pole_refine = 0;
+  int edge_refine = 0;
   /// Contact-zone element size in m; overrides refine when > 0 (used by the
   /// hard cases: a fixed mesh under a varying load).
   double contact_element_size_m = 0.0;
@@ -90,5 +97,10 @@ struct HertzReference
 HertzReference hertz_reference(const HertzSettings& setup);
 
 MeshGrading mesh_grading(const HertzSettings& setup, const HertzReference& reference);
+
+/// The 3D contact's pole and edge refinement (pole_refine, edge_refine) for
+/// the grading; none in 2D.
+ContactRefinement contact_refinement(const HertzSettings& setup, const HertzReference& reference,
+                                     const MeshGrading& grading);
 
 } // namespace rollcheck::fem

@@ -88,7 +88,8 @@ SceneMesh mesh_hertz_scene(MPI_Comm comm, HertzResult& result, spdlog::level::le
   if (rank == 0)
     spdlog::log(progress, "hertz {} P{}: meshing with gmsh (h_c = {:.4g} m)", model_name(setup.model), setup.degree,
                 result.grading.contact_size_m);
-  SceneMesh scene = build_scene_mesh(comm, setup.model, setup.radius_m, result.grading);
+  SceneMesh scene = build_scene_mesh(comm, setup.model, setup.radius_m, result.grading,
+                                     contact_refinement(setup, result.hertz, result.grading));
   result.mesh_s = scene.wall_s;
   result.cells = scene.mesh->topology().index_map(scene.mesh->topology().dim())->size_global();
   return scene;
