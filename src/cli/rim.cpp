@@ -143,7 +143,8 @@ void add_end_model_options(RimSchema& s)
               "(a structured grid of tetrahedra built without gmsh, h_e across the edge and b / contact_elements along "
               "it, sheared for an end within 15 deg of square: an independent check of the sharp square or near-square "
               "end on the rigid plane, flat sheet)",
-              {{"gmsh", fem::RimEndMesh::delaunay}, {"grid", fem::RimEndMesh::grid}})
+              {{"gmsh", fem::RimEndMesh::delaunay}, {"grid", fem::RimEndMesh::grid},
+               {"extruded", fem::RimEndMesh::extruded}, {"auto", fem::RimEndMesh::automatic}})
       .integer("contact_elements", "--contact-elements", end(&RimEndSettings::contact_elements), "",
                "Elements across b along the contact strip", io::Bounds{2, 40})
       .real("edge_element_over_half_width", "--edge-element", end(&RimEndSettings::edge_element_over_half_width), "",
