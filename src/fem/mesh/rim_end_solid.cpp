@@ -4,7 +4,6 @@
 #include "fem/mesh/gmsh_scene.h"
 #include "fem/mesh/oblique_end_angle.h"
 #include <algorithm>
-#include <cstdlib>
 #include <cmath>
 #include <fmt/format.h>
 #include <gmsh.h>
@@ -117,13 +116,6 @@ RawMesh mesh_rim_end(const RimEndGeometry& unit, const RimEndSizes& sizes, doubl
       return rim_end_element_size(sizes, point) / H;
     });
     sizes_from_fields_alone();
-    if (const char* algo = std::getenv("RC_ALGO3D")) // TEMPORARY experiment
-    {
-      gmsh::option::setNumber("Mesh.Algorithm3D", std::atof(algo));
-      gmsh::option::setNumber("Mesh.MaxNumThreads3D", 2);
-    }
-    if (const char* opt = std::getenv("RC_OPTIMIZE")) // TEMPORARY experiment
-      gmsh::option::setNumber("Mesh.Optimize", std::atof(opt));
     return std::min(sizes.edge_m, sizes.contact_m) / H;
   });
   for (double& x : raw.x)
