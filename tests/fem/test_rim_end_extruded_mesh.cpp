@@ -6,6 +6,8 @@
 #include "fem/mesh/rim_end_extruded_mesh.h"
 #include "fem/petsc_session.h"
 #include "fem/scenes/rim_end_contact.h"
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <dolfinx/common/IndexMap.h>
@@ -17,6 +19,7 @@
 #include <mpi.h>
 #include <numbers>
 #include <utility>
+#include <vector>
 
 using rollcheck::InputError;
 
@@ -132,6 +135,80 @@ TEST(RimEndExtrudedMesh, SquareEndsBoundaryIsTheBlocksSurface)
   rollcheck::fem::SceneMesh scene = rollcheck::fem::build_rim_end_extruded_mesh(
       MPI_COMM_WORLD, {1.0, 90 * degree, 0, H, L, true}, coarse_sizes(b, H, 0));
   EXPECT_NEAR(boundary_area(*scene.mesh) / (2 * (2 * L * H + H * H)), 1.0, 1e-12);
+}
+
+TEST(RimEndExtrudedMesh, FarPartsCutsCarryThePlaneStrainFieldsAndAlternate)
+{
+  // Along the strip away from the edge (x < -L / 2, the far part) every
+  // tetrahedron must project onto (y, z) as a triangle of its rectangle's
+  // cut: at most three distinct points, so that a plane-strain field P1 on
+  // the (y, z) triangulation is P1 on it. And the cuts must alternate: as
+  // many triangles with the hypotenuse rising in z along y as falling (a
+  // mesh cut all one way leans the section's pressure with it).
+  rollcheck::fem::ensure_petsc();
+  const double b = 1e-4, H = 20 * b, L = 3 * H;
+  const rollcheck::fem::SceneMesh scene = rollcheck::fem::build_rim_end_extruded_mesh(
+      MPI_COMM_WORLD, {1.0, 120 * degree, 2 * b, H, L, true},
+      coarse_sizes(b, H, -rollcheck::fem::fillet_start_distance(2 * b, 120 * degree)));
+  const auto& x = scene.mesh->geometry().x();
+  const auto& dofs = scene.mesh->geometry().dofmap();
+  const std::int32_t cells = scene.mesh->topology().index_map(3)->size_local();
+  const double tol = 1e-9 * H;
+  long far_cells = 0, flat = 0, rising = 0, falling = 0;
+  for (std::int32_t c = 0; c < cells; ++c)
+  {
+    const auto v = dofs.links(c);
+    std::vector<std::array<double, 2>> yz;
+    bool far = true;
+    for (int i = 0; i < 4; ++i)
+    {
+      far = far && x[3 * v[i]] < -L / 2;
+      const std::array<double, 2> p{x[3 * v[i] + 1], x[3 * v[i] + 2]};
+      if (std::none_of(yz.begin(), yz.end(), [&](const auto& q) {
+            return std::abs(q[0] - p[0]) < tol && std::abs(q[1] - p[1]) < tol;
+          }))
+        yz.push_back(p);
+    }
+    if (!far)
+      continue;
+    ++far_cells;
+    if (yz.size() != 3)
+    {
+      ++flat; // four points: no plane-strain field but one linear over the rectangle
+      continue;
+    }
+    // The hypotenuse: the pair of points that differ in both y and z.
+    for (int i = 0; i < 3; ++i)
+    {
+      const auto& p = yz[i];
+      const auto& q = yz[(i + 1) % 3];
+      if (std::abs(p[0] - q[0]) > tol && std::abs(p[1] - q[1]) > tol)
+        ((p[0] - q[0]) * (p[1] - q[1]) > 0 ? rising : falling) += 1;
+    }
+  }
+  long all[4] = {far_cells, flat, rising, falling}, sum[4];
+  MPI_Allreduce(all, sum, 4, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
+  ASSERT_GT(sum[0], 1000);
+  EXPECT_EQ(sum[1], 0);
+  EXPECT_EQ(sum[2] + sum[3], sum[0]);
+  EXPECT_NEAR(static_cast<double>(sum[2]) / sum[0], 0.5, 0.1);
+}
+
+// Label long (tests/CMakeLists.txt, long_cases).
+TEST(RimEndExtrudedMesh, SquareEndsFarSideIsLineHertz)
+{
+  // Far from the edge the section is a plane-strain line contact on a block
+  // 10 b deep: its peak is line Hertz's p0, within the nodes' scatter (2 %,
+  // as the structured grid's: test_rim_end_contact.cpp,
+  // SquareEndAgreesOnAnIndependentGrid). One level of edge elements b / 8.
+  rollcheck::fem::RimEndSettings s;
+  s.mesh = rollcheck::fem::RimEndMesh::extruded;
+  s.levels = 1;
+  const rollcheck::fem::RimEndStudy study = rollcheck::fem::solve_rim_end(MPI_COMM_WORLD, s);
+  const rollcheck::fem::RimEndLevel& level = study.levels.back();
+  std::printf("far side %.4f p0, middle over far side %.4f (%ld dofs)\n", level.far_peak_pa / study.hertz_peak_pa,
+              level.mid_peak_pa / level.far_peak_pa, static_cast<long>(level.dofs));
+  EXPECT_NEAR(level.far_peak_pa / study.hertz_peak_pa, 1.0, 0.02);
 }
 
 TEST(RimEndExtrudedMesh, RefusesTheCylinderSheetAndAnObliqueEdge)
