@@ -102,8 +102,9 @@ enum class CounterFace
 /// contact_elements along it, and along the strip away from the edge
 /// elements growing with the distance from it), any angle, sharp or
 /// rounded, on the flat sheet against the rigid plane, the edge square to
-/// the ruling; not yet the default: at the strip's b / 6 its far side reads
-/// 7-10 % below gmsh's (docs/methods/rims.md, "Where a rounded loop's time
+/// the ruling; not yet the default: its far side reads line Hertz's p0,
+/// gmsh's 3 % above it at the strip's b / 6, so their end/interior ratios
+/// differ by that much (docs/methods/rims.md, "Where a rounded loop's time
 /// goes"). automatic: extruded where it applies, Delaunay elsewhere.
 enum class RimEndMesh
 {
