@@ -8,11 +8,11 @@
 #include "fem/mesh/rim_end_solid.h"
 #include <algorithm>
 #include <array>
-#include <numeric>
 #include <cmath>
 #include <fmt/format.h>
 #include <gmsh.h>
 #include <numbers>
+#include <numeric>
 #include <unordered_map>
 
 namespace rollcheck::fem
@@ -27,14 +27,14 @@ namespace geo = gmsh::model::geo;
 /// are b / (contact_elements sheet_refinement), growing by `growth` from
 /// the sheet. The far side is a plane-strain line contact, whose P1 section
 /// reads its peak below p0 until the first layer under the sheet is thin:
-/// the sharp square end's far side (union-jack cut, 6 elements across b in
-/// y) read 0.939 p0 with the layer b / 6, 0.962 with b / 24.
+/// the sharp square end's far side (6 elements across b, every (y, z) cut
+/// rising) read 0.935 p0 with the layer b / 6, 0.962 with b / 24.
 constexpr int sheet_refinement = 4;
 
 /// The layers along the edge (y) over the contact zone are b /
-/// (contact_elements along_edge_refinement): with the layer at the sheet b
-/// / 24, the square end's far side read 0.962 p0 at b / 6 along y, 1.010 at
-/// b / 12.
+/// (contact_elements along_edge_refinement): the square end's far side,
+/// with the layer under the sheet b / 24, read 0.962 p0 at b / 6 along y
+/// (cuts all rising), 1.010 at b / 12 (cuts as a union jack).
 constexpr int along_edge_refinement = 2;
 
 /// A transfinite curve from its fine end: `elements` elements whose sizes
@@ -204,7 +204,7 @@ void add_prism(const std::array<std::int64_t, 3>& bottom, const std::array<std::
 /// rectangle to the next. Cut all the same way, the (y, z) triangulation
 /// leans: the far side of the square end read 0.935 p0 with every cut
 /// rising in z along y, 1.087 p0 with every cut falling (6 elements across
-/// b; gmsh's own extrusion, which cuts by its node numbers, 0.928).
+/// b; gmsh's own extrusion, which cuts by its node numbers, 0.929).
 RawMesh extrude_section(const RawMesh& section, const std::vector<double>& layers)
 {
   const std::size_t nodes = section.x.size() / 2, ny = layers.size();
@@ -261,8 +261,8 @@ RawMesh mesh_extruded_section(const RimEndGeometry& unit, const RimEndSizes& siz
     gmsh::model::mesh::generate(2);
     return read_section();
   });
-  // Along the edge (y) the structured grid's layers: b / contact_elements
-  // over the contact zone, then growing.
+  // Along the edge (y) layers graded as the structured grid's, b /
+  // (contact_elements along_edge_refinement) over the contact zone, then growing.
   RawMesh raw = extrude_section(
       section, graded_nodes(1.0, in_h.contact_m / along_edge_refinement, in_h.contact_zone_m, in_h.growth, in_h.far_m));
   for (double& x : raw.x)
