@@ -149,11 +149,14 @@ void add_end_model_options(RimSchema& s)
               {{"auto", fem::SheetModel::automatic}, {"cylinder", fem::SheetModel::cylinder},
                {"flat", fem::SheetModel::flat}})
       .choice("end_mesh", "--end-mesh", end(&RimEndSettings::mesh),
-              "How the end is meshed: gmsh (Delaunay tetrahedra graded about the edge and the strip, any end) or grid "
+              "How the end is meshed: gmsh (Delaunay tetrahedra graded about the edge and the strip, any end), grid "
               "(a structured grid of tetrahedra built without gmsh, h_e across the edge and b / contact_elements along "
               "it, sheared for an end within 15 deg of square: an independent check of the sharp square or near-square "
-              "end on the rigid plane, flat sheet)",
-              {{"gmsh", fem::RimEndMesh::delaunay}, {"grid", fem::RimEndMesh::grid}})
+              "end on the rigid plane, flat sheet), extruded (the section meshed in 2D and extruded along the edge: "
+              "any angle, sharp or rounded, flat sheet, rigid plane, edge square to the ruling) or auto (extruded "
+              "where it applies, gmsh elsewhere)",
+              {{"gmsh", fem::RimEndMesh::delaunay}, {"grid", fem::RimEndMesh::grid},
+               {"extruded", fem::RimEndMesh::extruded}, {"auto", fem::RimEndMesh::automatic}})
       .integer("contact_elements", "--contact-elements", end(&RimEndSettings::contact_elements), "",
                "Elements across b along the contact strip", io::Bounds{2, 40})
       .real("edge_element_over_half_width", "--edge-element", end(&RimEndSettings::edge_element_over_half_width), "",

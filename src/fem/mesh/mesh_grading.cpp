@@ -23,4 +23,18 @@ MeshGrading contact_grading(double contact_size_m, double contact_element_m, dou
   g.far_size_m = body_size_m / 5;
   return g;
 }
+
+std::vector<double> graded_nodes(double length, double h_0, double fine, double growth, double h_max)
+{
+  std::vector<double> nodes{0.0};
+  while (nodes.back() < length)
+  {
+    const double d = nodes.back();
+    nodes.push_back(d + std::min(h_max, h_0 + growth * std::max(0.0, d - fine)));
+  }
+  if (nodes.size() > 2 && length - nodes[nodes.size() - 2] < 0.5 * (nodes.back() - nodes[nodes.size() - 2]))
+    nodes.pop_back();
+  nodes.back() = length;
+  return nodes;
+}
 } // namespace rollcheck::fem

@@ -1,6 +1,8 @@
 #pragma once
 // Element sizes of a scene mesh graded towards a contact of size c: h_c in a
-// ball about the first point of contact, growing linearly beyond it.
+// ball about the first point of contact, growing linearly beyond it; and the
+// 1D spacing a structured mesh is graded by.
+#include <vector>
 
 namespace rollcheck::fem
 {
@@ -20,4 +22,8 @@ double contact_element_size(double contact_size_m, int refine);
 /// The grading every scene uses about a contact of size c with contact
 /// elements h_c, in a body of size R (see mesh_grading's comments).
 MeshGrading contact_grading(double contact_size_m, double contact_element_m, double body_size_m);
+/// Nodes from 0 to `length`, spaced h(d) = min(h_max, h_0 + growth max(0,
+/// d - fine)) at the distance d from 0; a last gap under half its size is
+/// merged into the one before.
+std::vector<double> graded_nodes(double length, double h_0, double fine, double growth, double h_max);
 } // namespace rollcheck::fem

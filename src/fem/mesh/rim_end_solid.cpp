@@ -123,6 +123,32 @@ RawMesh mesh_rim_end(const RimEndGeometry& unit, const RimEndSizes& sizes, doubl
   return raw;
 }
 
+void check_rim_end_input(const RimEndGeometry& g, const RimEndSizes& sizes)
+{
+  const double H = g.depth_m, L = g.length_m;
+  for (double v : {g.radius_m, H, L, sizes.edge_m, sizes.contact_m, sizes.far_m, sizes.growth})
+    if (!std::isfinite(v) || v <= 0)
+      throw InputError(fmt::format("rim end: radius, depth, length and element sizes must be positive and finite "
+                                   "(R = {} m, H = {} m, L = {} m, sizes {} m, {} m, {} m, growth {})",
+                                   g.radius_m, H, L, sizes.edge_m, sizes.contact_m, sizes.far_m, sizes.growth));
+  if (!(g.interior_angle_rad >= std::numbers::pi / 3 && g.interior_angle_rad < std::numbers::pi))
+    throw InputError(fmt::format("rim end: the interior angle must lie in [60, 180) deg, got {} deg",
+                                 g.interior_angle_rad * 180 / std::numbers::pi));
+  if (!(g.edge_radius_m >= 0 && g.edge_radius_m < largest_edge_radius_over_depth * H) || (!g.flat_sheet && g.radius_m < H))
+    throw InputError(fmt::format("rim end: need 0 <= edge radius < {} H, and R >= H for the cylinder sheet (edge "
+                                 "radius {} m, R = {} m, H = {} m)",
+                                 largest_edge_radius_over_depth, g.edge_radius_m, g.radius_m, H));
+}
+
+Predicate rim_end_block_planes(double H, double L)
+{
+  const double tol = 1e-9 * H;
+  return [=](double x, double y, double z) {
+    return std::abs(x + L) < tol || std::abs(x - H) < tol || std::abs(y) < tol || std::abs(y - H) < tol
+           || std::abs(z - H) < tol;
+  };
+}
+
 SceneParts rim_end_planes(double L, double tol)
 {
   SceneParts parts;

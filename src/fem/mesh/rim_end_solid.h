@@ -15,6 +15,14 @@ namespace rollcheck::fem::scene_build
 /// interface z = 0.
 RawMesh mesh_rim_end(const RimEndGeometry& unit, const RimEndSizes& sizes, double H, bool with_block);
 
+/// InputError for a geometry outside build_rim_end_mesh's ranges
+/// (fem/mesh/rim_end_mesh.h) or sizes that are not positive and finite.
+void check_rim_end_input(const RimEndGeometry& geometry, const RimEndSizes& sizes);
+
+/// The block's planes x = -L, x = H, y = 0, y = H and z = H (within 1e-9 H):
+/// the rim end's faces that are not its sheet, fillet or other face.
+Predicate rim_end_block_planes(double H, double L);
+
 /// The rim end's planes of symmetry: the far side x = -L and y = 0.
 SceneParts rim_end_planes(double L, double tol);
 

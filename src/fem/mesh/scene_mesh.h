@@ -11,6 +11,7 @@
 // | build_slab_mesh | fem/mesh/slab_mesh.h | the slab of a contact ruling, the plane-strain section extruded |
 // | build_rim_end_mesh | fem/mesh/rim_end_mesh.h | one end of a ruling at the body's rim, sharp or filleted |
 // | build_square_end_grid_mesh | fem/mesh/square_end_grid_mesh.h | the sharp square end on a structured grid, without gmsh |
+// | build_rim_end_extruded_mesh | fem/mesh/rim_end_extruded_mesh.h | the rim end's section meshed in 2D and extruded along the edge |
 // | build_rim_block_mesh | fem/mesh/rim_block_mesh.h | the rim end on an elastic block, twins along the interface |
 // | build_line_block_mesh | fem/mesh/line_block_mesh.h | two bodies in plane strain, twins along the interface |
 //

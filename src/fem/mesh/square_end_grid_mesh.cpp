@@ -1,6 +1,7 @@
 // The structured grid of the sharp square end (fem/mesh/square_end_grid_mesh.h).
 #include "fem/mesh/square_end_grid_mesh.h"
 #include "core/error.h"
+#include "fem/mesh/mesh_grading.h"
 #include "fem/mesh/rim_end_solid.h"
 #include <algorithm>
 #include <array>
@@ -13,23 +14,6 @@ using namespace scene_build;
 
 namespace
 {
-/// Nodes from 0 to `length`, spaced h(d) = min(h_max, h_0 + growth max(0,
-/// d - fine)) at the distance d from 0; a last gap under half its size is
-/// merged into the one before.
-std::vector<double> graded_nodes(double length, double h_0, double fine, double growth, double h_max)
-{
-  std::vector<double> nodes{0.0};
-  while (nodes.back() < length)
-  {
-    const double d = nodes.back();
-    nodes.push_back(d + std::min(h_max, h_0 + growth * std::max(0.0, d - fine)));
-  }
-  if (nodes.size() > 2 && length - nodes[nodes.size() - 2] < 0.5 * (nodes.back() - nodes[nodes.size() - 2]))
-    nodes.pop_back();
-  nodes.back() = length;
-  return nodes;
-}
-
 /// The sheared grid (fem/mesh/square_end_grid_mesh.h) of the block x in
 /// [-L, 0], y and z in [0, H], its end face leaning by `lean`.
 RawMesh sheared_grid(double H, double L, double lean, const RimEndSizes& sizes)

@@ -11,6 +11,7 @@
 #include "fem/penalty_contact.h"
 #include "fem/petsc_session.h"
 #include "fem/mesh/oblique_end_angle.h"
+#include "fem/mesh/rim_end_extruded_mesh.h"
 #include "fem/mesh/scene_mesh.h"
 #include "fem/write_fields.h"
 #include <algorithm>
@@ -55,9 +56,12 @@ void validate(const RimEndSettings& s)
                                  "rigid plane",
                                  max_grid_end_lean_rad * 180 / std::numbers::pi,
                                  max_grid_end_lean_rad * 180 / std::numbers::pi));
+  if (s.mesh == RimEndMesh::extruded && (s.counter_face != CounterFace::rigid || s.sheet == SheetModel::cylinder))
+    throw InputError("rim: end_mesh = extruded models an end on the flat sheet against the rigid plane");
   if (crosses_obliquely(s.crossing_angle_rad)
       && (!(s.crossing_angle_rad > 0 && s.crossing_angle_rad < std::numbers::pi / 2) || s.edge_radius_m != 0
-          || s.counter_face != CounterFace::rigid || s.mesh != RimEndMesh::delaunay
+          || s.counter_face != CounterFace::rigid
+          || (s.mesh != RimEndMesh::delaunay && s.mesh != RimEndMesh::automatic)
           || !(s.length_over_depth > 1 + 1 / std::tan(s.crossing_angle_rad))))
     throw InputError(fmt::format("rim: crossing_angle_deg must lie in (0, 90]; below 90 the end model is a sharp "
                                  "edge (edge_radius_m 0) on the rigid plane, end_mesh gmsh, with length_over_depth "
@@ -179,7 +183,7 @@ RimEndSizes level_sizes(const RimEndStudy& study, double edge_element_m)
 }
 
 /// The level's mesh: the body and the block, or the body alone on the rigid
-/// plane (gmsh's, or the structured grid).
+/// plane (gmsh's, the structured grid, or the section extruded).
 SceneMesh level_mesh(MPI_Comm comm, const RimEndStudy& study, const RimEndSizes& sizes)
 {
   const RimEndSettings& s = study.setup;
@@ -189,6 +193,9 @@ SceneMesh level_mesh(MPI_Comm comm, const RimEndStudy& study, const RimEndSizes&
       s.crossing_angle_rad};
   if (s.counter_face == CounterFace::block)
     return build_rim_block_mesh(comm, geometry, sizes);
+  const bool extruded_applies = study.flat_sheet && !crosses_obliquely(s.crossing_angle_rad);
+  if (s.mesh == RimEndMesh::extruded || (s.mesh == RimEndMesh::automatic && extruded_applies))
+    return build_rim_end_extruded_mesh(comm, geometry, sizes);
   return s.mesh == RimEndMesh::grid ? build_square_end_grid_mesh(comm, geometry, sizes)
                                     : build_rim_end_mesh(comm, geometry, sizes);
 }
@@ -548,6 +555,10 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
   // cylinder only away from the contact strip (at y = H by H^2 / (2 R)).
   if (block && setup.sheet == SheetModel::cylinder)
     throw InputError("rim: the block counter-face needs the flat sheet (sheet cylinder)");
+  if (!study.flat_sheet && setup.mesh == RimEndMesh::extruded)
+    throw InputError(fmt::format("rim: end_mesh = extruded needs the flat sheet (R = {} m, H = {:.3g} m: the "
+                                 "cylinder's range, H <= R < 20 H)",
+                                 setup.radius_m, depth_m));
   if (!study.flat_sheet && setup.radius_m < depth_m)
     throw InputError(fmt::format("rim: the cylinder sheet needs R >= H (R = {} m, H = {:.3g} m): use the flat sheet",
                                  setup.radius_m, depth_m));

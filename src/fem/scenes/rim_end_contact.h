@@ -96,10 +96,22 @@ enum class CounterFace
 /// (fem/mesh/scene_mesh.h build_square_end_grid_mesh: a sharp square or
 /// near-square end, within 15 deg of 90, on the flat sheet against the rigid
 /// plane only), an independent discretisation to check the first by.
+///
+/// extruded: the section meshed by gmsh in 2D and extruded along the edge
+/// (fem/mesh/rim_end_extruded_mesh.h: elements h_e across the edge and b /
+/// contact_elements along it, and along the strip away from the edge
+/// elements growing with the distance from it), any angle, sharp or
+/// rounded, on the flat sheet against the rigid plane, the edge square to
+/// the ruling; not yet the default: its far side reads line Hertz's p0,
+/// gmsh's 3 % above it at the strip's b / 6, so their end/interior ratios
+/// differ by that much (docs/methods/rims.md, "Where a rounded loop's time
+/// goes"). automatic: extruded where it applies, Delaunay elsewhere.
 enum class RimEndMesh
 {
   delaunay,
-  grid
+  grid,
+  extruded,
+  automatic
 };
 
 /// The flat sheet is half-space theory's, for b << R: the largest b / R the
