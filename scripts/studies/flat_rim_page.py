@@ -55,7 +55,7 @@ def ends_section(out_dir):
            "`rollcheck flat-rim --end-angle A --json F`: the oloid's loop end of section angle A, at the vertex's",
            "settings (each a node of the rim loop's flat-rim table), one process:\n"]
     rows = []
-    for angle in (160, 165, 170, 175, 180):
+    for angle in (160, 170, 180):
         r = load(out_dir / (f"end_{angle}_rigid.json" if angle < 180 else "vertex_rigid.json"))
         rows.append([f"{r['end_interior_angle_deg']:.1f}" + (" (the vertex)" if angle == 180 else ""),
                      f"{r['centre_of_pressure']:.4f}", f"{r['end_line_load_n_per_m']:.0f}",

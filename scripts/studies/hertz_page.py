@@ -9,7 +9,7 @@ usage: hertz_page.py OUT_DIR "ROLLCHECK --version LINE" > docs/results/hertz.md
 import sys
 from pathlib import Path
 
-from results_page import header, load, num, pct, table
+from results_page import header, load, num, pct, signed, table
 
 MODEL_LABEL = {"axisymmetric": "axi", "plane-strain": "plane-strain", "3d": "3d"}
 
@@ -43,7 +43,7 @@ def penalty_section(study):
            "\"warning\" marks a run flagged `penalty_error_dominates` (the penalty's estimated error above the",
            "mesh's).\n"]
     rows = [[f"{label(r)} P{r['degree']} (refine {r['refine']})", num(r["penalty_c"], "g"), r["newton_its"],
-             num(r["wall_s"], ".2f"), pct(size_error(r)), pct(r["p0_error"]),
+             num(r["wall_s"], ".2f"), signed(size_error(r)), signed(r["p0_error"]),
              num(100 * r["penalty_error_estimate"], ".3f"), num(100 * r["discretisation_error_estimate"], ".3f"),
              "yes" if "penalty_error_dominates" in r["flags"] else ""] for r in runs]
     out += table(["model (mesh)", "c", "Newton its", "wall s", "a or b err %", "p0 err %", "penalty estimate %",
@@ -70,9 +70,9 @@ def convergence_section(study):
            "`hertz_convergence.png`: |error| of p0 and of a or b against wall time, one curve per model and",
            "degree). Same body and load, c = 100, one rank; depths are the subsurface maxima's.\n"]
     rows = [[label(r), f"P{r['degree']}", r["refine"], num(r["elements_across_contact"], ".1f"), r["dofs"],
-             f"{r['newton_its']} / {r['krylov_its']}", num(r["wall_s"], ".2f"), pct(size_error(r)),
-             pct(r["p0_error"]), pct(r["p_max_nodal_error"]), pct(r["max_shear_error"]),
-             pct(r["max_shear_depth_error"]), pct(r["max_von_mises_error"]), pct(r["max_von_mises_depth_error"])]
+             f"{r['newton_its']} / {r['krylov_its']}", num(r["wall_s"], ".2f"), signed(size_error(r)),
+             signed(r["p0_error"]), signed(r["p_max_nodal_error"]), signed(r["max_shear_error"]),
+             signed(r["max_shear_depth_error"]), signed(r["max_von_mises_error"]), signed(r["max_von_mises_depth_error"])]
             for r in ok_runs(study)]
     out += table(["model", "deg", "refine", "elements across", "DOFs", "Newton / Krylov its", "wall s",
                   "a or b err %", "p0 err %", "nodal p max err %", "tau_max err %", "its depth %", "von Mises err %",
@@ -92,7 +92,7 @@ def pointwise_section(study):
            "is 0.5 % in both pointwise columns.\n"]
     runs = ok_runs(study)
     rows = [[label(r), f"P{r['degree']}", r["refine"], num(r["penalty_c"], "g"), r["pressure_recovery"], r["dofs"],
-             num(r["wall_s"], ".1f"), pct(size_error(r), 3), pct(r["p0_error"], 3), pct(r["p_max_nodal_error"], 3),
+             num(r["wall_s"], ".1f"), signed(size_error(r), 3), signed(r["p0_error"], 3), signed(r["p_max_nodal_error"], 3),
              num(100 * r["profile_rms_error"], ".3f"), num(100 * r["profile_rms_error_interior"], ".3f")]
             for r in runs]
     out += table(["model", "deg", "refine", "c", "recovery", "DOFs", "wall s", "a err %", "p0 (fit) err %",

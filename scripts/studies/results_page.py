@@ -56,3 +56,8 @@ def kept_section(page, begin, end):
     if not (found and found_end):
         return [begin, end, ""]
     return [begin + inside + end, ""]
+
+
+def signed(x, digits=2):
+    """A relative error or change in per cent, signed, for a column headed '%'; '-' for none."""
+    return "-" if x is None else f"{100 * x:+.{digits}f}"

@@ -45,20 +45,13 @@ def ends_section(rows, out_dir):
     return out
 
 
-def rounded_r_q_section(out_dir):
-    full, half = load(out_dir / "rounded_r_q.json"), load(out_dir / "rounded_r_q_half.json")
-    out = ["## A rounded end's ratio against R and q\n",
-           "A rounded end's ratio depends on its boundary layer, s / b = 2 r_e / (pi R), far more than on q. At",
-           "the preprint's body's 91.9 deg end (the last two rows above), with b held, doubling R and halving q",
-           f"moves the converged ratio from {full['end_to_interior'] or float('nan'):.4f} to "
-           f"{half['end_to_interior'] or float('nan'):.4f}. Hence the loop's end table has columns over R. The",
-           "fuller tables (more R and q, down to R = r_e) were made by runs of 1-9 minutes each:",
-           "[notes](../notes/rim-ends-tables.md#a-rounded-ends-ratio-against-r-and-q).\n"]
-    return out
-
-
 def history_sections():
-    return ["## The block's depth\n",
+    return ["## A rounded end's ratio against R and q\n",
+            "A rounded end's ratio depends on its boundary layer, s / b = 2 r_e / (pi R), far more than on q; hence",
+            "the loop's end table has columns over R. The runs that measure it (the preprint's body's 91.9 and",
+            "87.5 deg ends over q and R, 1-9 minutes each) are in",
+            "[notes](../notes/rim-ends-tables.md#a-rounded-ends-ratio-against-r-and-q), with the commands verbatim.\n",
+            "## The block's depth\n",
             "A sharp square end's edge ratio falls as the block deepens (its top is held flat), and an acute",
             "rounded end's by several per cent between a block 10.5 r_e deep and one as deep as the body. The runs",
             "that measure it take 1-27 minutes each, too long for this page's script: their tables, with the",
@@ -78,7 +71,8 @@ def main(argv):
                    "`mpirun -n 2 rollcheck rim` per row; the oblique end's section by "
                    "`bash scripts/studies/oblique_end.sh`", "[rims](../methods/rims.md)")
     lines += ends_section(rows, out_dir)
-    lines += rounded_r_q_section(out_dir)
+    lines += ["Rounded ends at a bearing's load, on steel, on the structured grid and the line contact between",
+              "two steel bodies (1-7 minutes a row): [notes](../notes/rim-ends-tables.md#one-end-at-a-time).\n"]
     lines += history_sections()
     lines += ["## An oblique end\n",
               "The loop's end models put the edge square to the ruling at the rim's dihedral angle (the",
