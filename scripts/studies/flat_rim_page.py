@@ -73,9 +73,9 @@ def ends_section(out_dir):
 
 def history():
     return ["## Checked against fuller models\n",
-            "The flat-rim tables of whole loops on both counter-faces (from `rollcheck rim --body oloid`, 30-40",
-            "minutes a loop), the check against the FEM end model (5-7 minutes a row on 2 ranks) and the check",
-            "against the whole loaded ruling (2-18 minutes a row) do not fit this page's script: their tables,",
+            "The flat-rim tables of whole loops on both counter-faces (from `rollcheck rim --body oloid`), the",
+            "check against the FEM end model and the check against the whole loaded ruling are runs too long",
+            "for this page's script: their tables,",
             "with the commands verbatim and the versions that made them, are in",
             "[notes](../notes/flat-rim-tables.md) (not regenerated), the whole-ruling check under",
             "[checked against the whole ruling](../notes/flat-rim-tables.md#checked-against-the-whole-ruling-the-window-against-a-fuller-model).\n"]

@@ -27,21 +27,19 @@ def level_ratios(r):
 def ends_section(rows, out_dir):
     out = ["## One end at a time\n",
            "`b` is line Hertz's half-width, the interior the far side's mean centre-line pressure; the levels",
-           "halve the edge elements from the first (h_e = b/8 unless `--edge-element` says otherwise); \"s\" is",
-           "the run's wall time on 2 ranks (the levels' sum).\n"]
+           "halve the edge elements from the first (h_e = b/8 unless `--edge-element` says otherwise).\n"]
     body = []
     for name, what, command in rows:
         r = load(out_dir / f"{name}.json")
         levels = r["levels"]
-        wall = sum(level["wall_s"] for level in levels)
         b_um = 1e6 * r["half_width_m"]
-        case = (f"{what} (b = {b_um:.3g} um, p0 = {r['hertz_peak_pa'] / 1e9:.3g} GPa, r_e / b = "
-                f"{r['edge_radius_m'] / r['half_width_m']:.3g})")
+        edge = f"r_e / b = {r['edge_radius_m'] / r['half_width_m']:.3g}" if r["edge_radius_m"] > 0 else "sharp"
+        case = f"{what} (b = {b_um:.3g} um, p0 = {r['hertz_peak_pa'] / 1e9:.3g} GPa, {edge})"
         verdict = (f"{r['verdict']}; per level {level_ratios(r)} (h_e = b/{r['half_width_m'] / levels[0]['edge_element_m']:.0f}"
                    f" to b/{r['half_width_m'] / levels[-1]['edge_element_m']:.0f}, {levels[-1]['dofs']} DOFs at the last); "
                    f"far side in plane strain to {100 * r['plane_strain_change']:.2f} %")
-        body.append([case, f"`{command}`", verdict, f"{wall:.0f}"])
-    out += table(["case", "command", "verdict", "s"], body)
+        body.append([case, f"`{command.strip()}`", verdict])
+    out += table(["case", "command", "verdict"], body)
     return out
 
 
@@ -49,15 +47,15 @@ def history_sections():
     return ["## A rounded end's ratio against R and q\n",
             "A rounded end's ratio depends on its boundary layer, s / b = 2 r_e / (pi R), far more than on q; hence",
             "the loop's end table has columns over R. The runs that measure it (the preprint's body's 91.9 and",
-            "87.5 deg ends over q and R, 1-9 minutes each) are in",
+            "87.5 deg ends over q and R) are in",
             "[notes](../notes/rim-ends-tables.md#a-rounded-ends-ratio-against-r-and-q), with the commands verbatim.\n",
             "## The block's depth\n",
             "A sharp square end's edge ratio falls as the block deepens (its top is held flat), and an acute",
             "rounded end's by several per cent between a block 10.5 r_e deep and one as deep as the body. The runs",
-            "that measure it take 1-27 minutes each, too long for this page's script: their tables, with the",
+            "that measure it are too long for this page's script: their tables, with the",
             "commands verbatim, are in [notes](../notes/rim-ends-tables.md#the-blocks-depth).\n",
             "## The strip's elements\n",
-            "How the strip's element size across the contact moves the ratio: runs of 5-24 minutes, in",
+            "How the strip's element size across the contact moves the ratio: runs too long for this script, in",
             "[notes](../notes/rim-ends-tables.md#the-strips-elements).\n"]
 
 
@@ -72,7 +70,7 @@ def main(argv):
                    "`bash scripts/studies/oblique_end.sh`", "[rims](../methods/rims.md)")
     lines += ends_section(rows, out_dir)
     lines += ["Rounded ends at a bearing's load, on steel, on the structured grid and the line contact between",
-              "two steel bodies (1-7 minutes a row): [notes](../notes/rim-ends-tables.md#one-end-at-a-time).\n"]
+              "two steel bodies (runs too long for this script): [notes](../notes/rim-ends-tables.md#one-end-at-a-time).\n"]
     lines += history_sections()
     lines += ["## An oblique end\n",
               "The loop's end models put the edge square to the ruling at the rim's dihedral angle (the",

@@ -63,8 +63,8 @@ def sharp_sections(runs, options):
 def history():
     return ["## Finished rims, steel, other bodies\n",
             "The rounded rims' loops across bodies (the oloid, the cylinder, the preprint's body, the family's",
-            "optima; rigid plane and steel), the sharp rims on steel and the six-orientation end tables took",
-            "100-5800 s a run, beyond this page's script: their tables, with the commands verbatim and the",
+            "optima; rigid plane and steel), the sharp rims on steel and the six-orientation end tables are",
+            "runs too long for this page's script: their tables, with the commands verbatim and the",
             "versions that made them, are in [notes](../notes/rims-tables.md) (not regenerated).\n"]
 
 

@@ -60,8 +60,7 @@ def main(argv):
               f"whole body {t['whole_body']:.1f}).\n",
               "## The oloid, other meshes and load rules\n",
               "The oloid at `--direction 67.5` under each share rule (the locus's, `sections`, `coarse-body`) and",
-              "the cylinder with only its end layers thinned take 3-15 minutes a run on 2 idle cores, beyond this",
-              "page's script: their tables, with the commands verbatim and the versions that made them, are in",
+              "the cylinder with only its end layers thinned are runs too long for this page's script: their tables, with the commands verbatim and the versions that made them, are in",
               "[notes](../notes/whole-body-tables.md) (not regenerated)."]
     print("\n".join(lines))
 
