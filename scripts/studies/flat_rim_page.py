@@ -37,16 +37,17 @@ def vertex_section(out_dir):
                      f"{1e3 * last['contact_start_m']:.3f}", pct(last["window_load_change"], 1),
                      f"{last['balanced_end_line_load_n_per_m']:.0f}", gpa(r["line_hertz_peak_pa"]),
                      f"{r['peak_pressure_pa'] / r['line_hertz_peak_pa']:.3f}",
-                     "yes" if r["converged"] else "NO", f"{r['wall_s']:.1f}"])
+                     "yes" if r["converged"] else "NO"])
     out += table(["counter-face", "q(P) of the locus (N/m)", "b (um)", "peak (GPa) per level", "cells halved",
                   "window doubled", "peak at x' (mm)", "contact from x' (mm)", "window's load vs the locus's",
-                  "rule's q(P) after balance (N/m)", "line Hertz at P, R = r_e (GPa)", "peak / that", "converged",
-                  "s"], rows)
+                  "rule's q(P) after balance (N/m)", "line Hertz at P, R = r_e (GPa)", "peak / that", "converged"],
+                 rows)
     rigid = load(out_dir / "vertex_rigid.json")
     out += [f"At the window's far station the pressure is line Hertz's at its q and R within "
             f"{pct(rigid['far_line_hertz_error'])} (rigid). The finish lifts the apex off the ground "
-            f"({1e6 * rigid['end_lift_m']:.1f} um at P): the contact starts inside the ruling and the peak sits where "
-            "the rounded sheet's radius is about r_e.\n"]
+            f"({1e6 * rigid['end_lift_m']:.1f} um at P): the contact starts "
+            f"{1e3 * rigid['levels'][-1]['contact_start_m']:.2f} mm inside the ruling and the peak sits "
+            f"{1e3 * rigid['levels'][-1]['peak_along_m']:.2f} mm from P.\n"]
     return out
 
 
@@ -61,10 +62,10 @@ def ends_section(out_dir):
                      f"{r['centre_of_pressure']:.4f}", f"{r['end_line_load_n_per_m']:.0f}",
                      f"{1e3 * r['end_sheet_radius_m']:.3f}", gpa(r["peak_pressure_pa"]), gpa(r["line_hertz_peak_pa"]),
                      f"{r['peak_pressure_pa'] / r['line_hertz_peak_pa']:.3f}", pct(r["last_change"]),
-                     pct(r["window_change"]), "yes" if r["converged"] else "NO", f"{r['wall_s']:.0f}"])
+                     pct(r["window_change"]), "yes" if r["converged"] else "NO"])
     out += table(["interior angle (deg)", "c from the end", "q at the end (N/m)", "hull's R at the end (mm)",
                   "peak (GPa)", "line Hertz at R = max(R, r_e) (GPa)", "peak / line Hertz", "cells halved",
-                  "window doubled", "converged", "s"], rows)
+                  "window doubled", "converged"], rows)
     out += ["The peak grows towards the vertex: the vertex is the loop's largest end. Its ratio to line Hertz",
             "need not: line Hertz at R = max(R, r_e) has a kink where the hull's R passes r_e, so the loop's",
             "flat-rim table interpolates the peak, not the ratio.\n"]

@@ -122,7 +122,6 @@ def defaults_section(out_dir):
                 f"{r['solve_s']:.2f}), {r['peak_memory_mb']:.0f} MB on rank 0")
         rows.append([f"`{command}`", result, cost])
     out += table(["run", "result", "cost"], rows)
-    out += ["Wall times are one machine's: compare them with each other, not across machines.\n"]
     return out
 
 
@@ -133,6 +132,7 @@ def main(argv):
     lines = header("Hertz FEM: studies and measured defaults", "hertz.sh [ROLLCHECK] [OUT_DIR]", version,
                    "`rollcheck hertz --study penalty|convergence|pointwise` and the defaults' runs",
                    "[Hertz FEM](../methods/hertz-fem.md)")
+    lines += ["Wall times are one run's on one machine: compare them with each other, not across machines.\n"]
     lines += penalty_section(load(out_dir / "hertz_penalty.json"))
     lines += convergence_section(load(out_dir / "hertz_convergence.json"))
     lines += pointwise_section(load(out_dir / "hertz_pointwise.json"))
