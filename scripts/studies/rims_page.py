@@ -29,8 +29,8 @@ def summary_row(j):
 
 def ends_rows(j):
     return [[e["orientation"], e["end"], f"{e['interior_angle_deg']:.1f}", f"{e['dihedral_angle_deg']:.1f}",
-             f"{e['section_wedge_exponent']:.3f}", f"{e['dihedral_wedge_exponent']:.3f}", fem_column(e),
-             f"{e['wall_s']:.0f}"] for e in j["ends"]]
+             f"{e['section_wedge_exponent']:.3f}", f"{e['dihedral_wedge_exponent']:.3f}", fem_column(e)]
+            for e in j["ends"]]
 
 
 def sharp_sections(runs, options):
@@ -55,7 +55,7 @@ def sharp_sections(runs, options):
             "## Sharp edges, rigid plane: the cylinder's ends\n"
         out += [anchor, f"The directly solved ends of the same run (`{body}_rigid.json`):\n"]
         out += table(["orientation", "end", "section (deg)", "dihedral (deg)", "wedge exponent at the section",
-                      "at the dihedral", "FEM at the dihedral: exponent or end/interior", "run time (s)"],
+                      "at the dihedral", "FEM at the dihedral: exponent or end/interior"],
                      ends_rows(runs[body]))
     return out
 
