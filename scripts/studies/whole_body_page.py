@@ -44,7 +44,7 @@ def main(argv):
     if len(argv) != 3:
         sys.exit(__doc__)
     j, version = load(argv[1]), argv[2]
-    r, m, wb, t = j["ruling"], j["mesh"], j["whole_body"], j["wall_s"]
+    r, m, wb = j["ruling"], j["mesh"], j["whole_body"]
     lines = header("The whole-body check: results", "whole_body.sh [ROLLCHECK] [OUT_DIR]", version,
                    "`mpirun -n 2 rollcheck whole-body --json F`, the cylinder at the defaults",
                    "[whole body](../methods/whole-body.md). All runs on 2 ranks")
@@ -56,8 +56,6 @@ def main(argv):
               f"{wb['centre_of_pressure']:.6f} L. Share rule: `{j['share_rule']}`.\n"]
     lines += stations_section(j) + ends_section(j)
     lines += [f"**{j['outcome']}** (tolerance {100 * j['tolerance']:g} %): {j['verdict']}\n",
-              f"Time: {t['total']:.0f} s on 2 ranks (slices {t['slices']:.1f}, end models {t['end_models']:.1f}, "
-              f"whole body {t['whole_body']:.1f}).\n",
               "## The oloid, other meshes and load rules\n",
               "The oloid at `--direction 67.5` under each share rule (the locus's, `sections`, `coarse-body`) and",
               "the cylinder with only its end layers thinned are runs too long for this page's script: their tables, with the commands verbatim and the versions that made them, are in",
