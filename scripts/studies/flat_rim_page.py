@@ -7,9 +7,8 @@ plane, end_A_rigid.json).
 usage: flat_rim_page.py OUT_DIR "ROLLCHECK --version LINE" > docs/results/flat-rim.md
 """
 import sys
-from pathlib import Path
 
-from results_page import header, load, pct, table
+from results_page import load, page_main, pct, table
 
 
 def gpa(x):
@@ -83,15 +82,10 @@ def history():
 
 
 def main(argv):
-    if len(argv) != 3:
-        sys.exit(__doc__)
-    out_dir, version = Path(argv[1]), argv[2]
-    lines = header("Flat rims: results", "flat_rim.sh [ROLLCHECK] [OUT_DIR]", version,
-                   "`rollcheck flat-rim` at the vertex on both counter-faces and at the flattest ends",
-                   "[flat rim](../methods/flat-rim.md)")
-    lines += vertex_section(out_dir) + ends_section(out_dir) + history()
-    print("\n".join(lines).rstrip("\n"))
-
+    page_main(argv, __doc__, "Flat rims: results", "flat_rim.sh [ROLLCHECK] [OUT_DIR]",
+              "`rollcheck flat-rim` at the vertex on both counter-faces and at the flattest ends",
+              "[flat rim](../methods/flat-rim.md)",
+              lambda out_dir: vertex_section(out_dir) + ends_section(out_dir) + history())
 
 if __name__ == "__main__":
     main(sys.argv)

@@ -7,9 +7,8 @@ their commands in OUT/defaults.tsv).
 usage: hertz_page.py OUT_DIR "ROLLCHECK --version LINE" > docs/results/hertz.md
 """
 import sys
-from pathlib import Path
 
-from results_page import header, load, num, pct, signed, table
+from results_page import load, num, page_main, pct, signed, table
 
 MODEL_LABEL = {"axisymmetric": "axi", "plane-strain": "plane-strain", "3d": "3d"}
 
@@ -124,20 +123,17 @@ def defaults_section(out_dir):
     return out
 
 
-def main(argv):
-    if len(argv) != 3:
-        sys.exit(__doc__)
-    out_dir, version = Path(argv[1]), argv[2]
-    lines = header("Hertz FEM: studies and measured defaults", "hertz.sh [ROLLCHECK] [OUT_DIR]", version,
-                   "`rollcheck hertz --study penalty|convergence|pointwise` and the defaults' runs",
-                   "[Hertz FEM](../methods/hertz-fem.md)")
-    lines += ["Wall times are one run's on one machine: compare them with each other, not across machines.\n"]
-    lines += penalty_section(load(out_dir / "hertz_penalty.json"))
-    lines += convergence_section(load(out_dir / "hertz_convergence.json"))
-    lines += pointwise_section(load(out_dir / "hertz_pointwise.json"))
-    lines += defaults_section(out_dir)
-    print("\n".join(lines).rstrip("\n"))
+def body(out_dir):
+    return (["Wall times are one run's on one machine: compare them with each other, not across machines.\n"]
+            + penalty_section(load(out_dir / "hertz_penalty.json"))
+            + convergence_section(load(out_dir / "hertz_convergence.json"))
+            + pointwise_section(load(out_dir / "hertz_pointwise.json")) + defaults_section(out_dir))
 
+
+def main(argv):
+    page_main(argv, __doc__, "Hertz FEM: studies and measured defaults", "hertz.sh [ROLLCHECK] [OUT_DIR]",
+              "`rollcheck hertz --study penalty|convergence|pointwise` and the defaults' runs",
+              "[Hertz FEM](../methods/hertz-fem.md)", body)
 
 if __name__ == "__main__":
     main(sys.argv)

@@ -9,9 +9,8 @@ approx_B_grounded.json).
 usage: oracles_page.py OUT_DIR "ROLLCHECK --version LINE" > docs/results/oracles.md
 """
 import sys
-from pathlib import Path
 
-from results_page import header, load, table
+from results_page import load, page_main, table
 
 COLUMNS = ["CDS", "SDS", "TDS", "WDS_vol", "WDS_depth", "FDS", "mean_peak_pressure_pa"]
 HEADS = ["CDS", "SDS", "TDS", "WDS_vol", "WDS_depth", "FDS", "mean p0"]
@@ -125,19 +124,17 @@ def grounding_section(runs):
     return out
 
 
-def main(argv):
-    if len(argv) != 3:
-        sys.exit(__doc__)
-    d, version = Path(argv[1]), argv[2]
-    lines = header("The preprint's oracles: reproduction and quirks", "oracles.sh [ROLLCHECK] [OUT_DIR]", version,
-                   "`rollcheck search --grid quick --paper-compat [--matched-resolution]`, the quirk tables, the "
-                   "approximate oracle's grounding", "[oracles](../methods/oracles.md)")
-    lines += search_section(load(d / "search.json"), load(d / "search_matched.json"))
-    lines += quirk_section(load(d / "quirk_table_oloid.json"), load(d / "quirk_table_cylinder.json"))
-    lines += grounding_section({b: (load(d / f"approx_{b}.json"), load(d / f"approx_{b}_grounded.json"))
-                                for b in ("oloid", "cylinder")})
-    print("\n".join(lines).rstrip("\n"))
+def body(d):
+    return (search_section(load(d / "search.json"), load(d / "search_matched.json"))
+            + quirk_section(load(d / "quirk_table_oloid.json"), load(d / "quirk_table_cylinder.json"))
+            + grounding_section({b: (load(d / f"approx_{b}.json"), load(d / f"approx_{b}_grounded.json"))
+                                 for b in ("oloid", "cylinder")}))
 
+
+def main(argv):
+    page_main(argv, __doc__, "The preprint's oracles: reproduction and quirks", "oracles.sh [ROLLCHECK] [OUT_DIR]",
+              "`rollcheck search --grid quick --paper-compat [--matched-resolution]`, the quirk tables, the "
+              "approximate oracle's grounding", "[oracles](../methods/oracles.md)", body)
 
 if __name__ == "__main__":
     main(sys.argv)

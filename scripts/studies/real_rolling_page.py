@@ -6,9 +6,8 @@ one file per body, rolling energy and contact width: NAME_ENERGY_WIDTH.json).
 usage: real_rolling_page.py OUT_DIR "ROLLCHECK --version LINE" > docs/results/real-rolling.md
 """
 import sys
-from pathlib import Path
 
-from results_page import header, load, num, table
+from results_page import load, num, page_main, table
 
 LABELS = {"oloid": "true oloid", "cylinder": "cylinder", "paper-oloid": "paper-oloid",
           "c120_130_080": "(120, 1.30, 0.80) cand. #2", "c90_070_080": "(90, 0.70, 0.80) cand. #3",
@@ -102,15 +101,10 @@ def energy_section(runs):
 
 
 def main(argv):
-    if len(argv) != 3:
-        sys.exit(__doc__)
-    runs, version = Runs(Path(argv[1])), argv[2]
-    lines = header("Real rolling: the preprint's bodies", "real_rolling.sh [ROLLCHECK] [OUT_DIR]", version,
-                   "`rollcheck oracle --oracle rolling` per body, rolling energy and contact width",
-                   "[real rolling](../methods/real-rolling.md)")
-    lines += speed_section(runs) + bodies_section(runs) + energy_section(runs)
-    print("\n".join(lines))
-
+    page_main(argv, __doc__, "Real rolling: the preprint's bodies", "real_rolling.sh [ROLLCHECK] [OUT_DIR]",
+              "`rollcheck oracle --oracle rolling` per body, rolling energy and contact width",
+              "[real rolling](../methods/real-rolling.md)",
+              lambda folder: speed_section(Runs(folder)) + bodies_section(Runs(folder)) + energy_section(Runs(folder)))
 
 if __name__ == "__main__":
     main(sys.argv)

@@ -3,6 +3,7 @@ that regenerates it and the `rollcheck --version` that made it), the number
 formats and the reading of a study's JSON files."""
 import json
 import sys
+from pathlib import Path
 
 
 def load(path):
@@ -61,3 +62,12 @@ def kept_section(page, begin, end):
 def signed(x, digits=2):
     """A relative error or change in per cent, signed, for a column headed '%'; '-' for none."""
     return "-" if x is None else f"{100 * x:+.{digits}f}"
+
+
+def page_main(argv, usage, title, script, what, method, body):
+    """A generator's command line, `PAGE_py INPUT "ROLLCHECK --version LINE"`:
+    the page's header and body(INPUT) (its lines) printed to stdout."""
+    if len(argv) != 3:
+        sys.exit(usage)
+    version = argv[2]
+    print("\n".join(header(title, script, version, what, method) + body(Path(argv[1]))).rstrip("\n"))

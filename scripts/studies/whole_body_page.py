@@ -6,7 +6,7 @@ usage: whole_body_page.py CYLINDER.json "ROLLCHECK --version LINE" > docs/result
 """
 import sys
 
-from results_page import header, load, num, pct, table
+from results_page import load, num, page_main, pct, table
 
 
 def stations_section(j):
@@ -40,28 +40,28 @@ def ends_section(j):
     return out
 
 
-def main(argv):
-    if len(argv) != 3:
-        sys.exit(__doc__)
-    j, version = load(argv[1]), argv[2]
+def body(path):
+    j = load(path)
     r, m, wb = j["ruling"], j["mesh"], j["whole_body"]
-    lines = header("The whole-body check: results", "whole_body.sh [ROLLCHECK] [OUT_DIR]", version,
-                   "`mpirun -n 2 rollcheck whole-body --json F`, the cylinder at the defaults",
-                   "[whole body](../methods/whole-body.md). All runs on 2 ranks")
-    lines += [f"## The 10 mm cylinder (L = {1e3 * r['length_m']:.0f} mm, F = {j['normal_load_n']:g} N, steel, "
-              f"b = {1e6 * r['half_width_m']:.1f} um, b/L = {r['half_width_over_length']:.2g})\n",
-              f"Whole body mesh: {m['node_planes']} node planes x {m['section_nodes']} nodes, {m['dofs']} DOFs, "
-              f"contact elements {1e6 * m['contact_element_m']:.2f} um, end layers {1e6 * m['end_layer_m']:.2f} um; "
-              f"{wb['load_steps']} load steps, reaction {wb['reaction_n']:.3f} N, centre of pressure "
-              f"{wb['centre_of_pressure']:.6f} L. Share rule: `{j['share_rule']}`.\n"]
+    lines = [f"## The 10 mm cylinder (L = {1e3 * r['length_m']:.0f} mm, F = {j['normal_load_n']:g} N, steel, "
+             f"b = {1e6 * r['half_width_m']:.1f} um, b/L = {r['half_width_over_length']:.2g})\n",
+             f"Whole body mesh: {m['node_planes']} node planes x {m['section_nodes']} nodes, {m['dofs']} DOFs, "
+             f"contact elements {1e6 * m['contact_element_m']:.2f} um, end layers {1e6 * m['end_layer_m']:.2f} um; "
+             f"{wb['load_steps']} load steps, reaction {wb['reaction_n']:.3f} N, centre of pressure "
+             f"{wb['centre_of_pressure']:.6f} L. Share rule: `{j['share_rule']}`.\n"]
     lines += stations_section(j) + ends_section(j)
-    lines += [f"**{j['outcome']}** (tolerance {100 * j['tolerance']:g} %): {j['verdict']}\n",
-              "## The oloid, other meshes and load rules\n",
-              "The oloid at `--direction 67.5` under each share rule (the locus's, `sections`, `coarse-body`) and",
-              "the cylinder with only its end layers thinned are runs too long for this page's script: their tables, with the commands verbatim and the versions that made them, are in",
-              "[notes](../notes/whole-body-tables.md) (not regenerated)."]
-    print("\n".join(lines))
+    return lines + [f"**{j['outcome']}** (tolerance {100 * j['tolerance']:g} %): {j['verdict']}\n",
+                    "## The oloid, other meshes and load rules\n",
+                    "The oloid at `--direction 67.5` under each share rule (the locus's, `sections`, `coarse-body`)",
+                    "and the cylinder with only its end layers thinned are runs too long for this page's script:",
+                    "their tables, with the commands verbatim and the versions that made them, are in",
+                    "[notes](../notes/whole-body-tables.md) (not regenerated)."]
 
+
+def main(argv):
+    page_main(argv, __doc__, "The whole-body check: results", "whole_body.sh [ROLLCHECK] [OUT_DIR]",
+              "`mpirun -n 2 rollcheck whole-body --json F`, the cylinder at the defaults",
+              "[whole body](../methods/whole-body.md). All runs on 2 ranks", body)
 
 if __name__ == "__main__":
     main(sys.argv)
