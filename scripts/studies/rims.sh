@@ -3,8 +3,8 @@
 # rim --body B --orientations 1 --levels 2`, the audit's runs, on the rigid
 # plane) for the oloid and the cylinder, every JSON and log under OUT_DIR
 # (default results/rims); scripts/studies/rims_page.py writes the page from
-# them; then scripts/studies/rim_load_rules.sh (the rounded rims under each
-# load rule) writes its section between the page's markers.
+# them, keeping the load-rule section that scripts/studies/rim_load_rules.sh
+# writes between its markers (a run of its own, longer than this one).
 # Usage: scripts/studies/rims.sh [ROLLCHECK_BINARY] [OUT_DIR]
 set -euo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
@@ -22,4 +22,3 @@ for body in oloid cylinder; do
 done
 /usr/bin/python3 "$here/scripts/studies/rims_page.py" "$out" "$loop" "$("$bin" --version | head -1)" \
   "$here/docs/results/rims.md"
-bash "$here/scripts/studies/rim_load_rules.sh" "$bin" "$out/load_rules"
