@@ -155,8 +155,7 @@ void add_end_model_options(RimSchema& s)
               "end on the rigid plane, flat sheet), extruded (the section meshed in 2D and extruded along the edge: "
               "any angle, sharp or rounded, flat sheet, rigid plane, edge square to the ruling) or auto (extruded "
               "where it applies, gmsh elsewhere)",
-              {{"gmsh", fem::RimEndMesh::delaunay}, {"grid", fem::RimEndMesh::grid},
-               {"extruded", fem::RimEndMesh::extruded}, {"auto", fem::RimEndMesh::automatic}})
+              fem::rim_end_mesh_names())
       .integer("contact_elements", "--contact-elements", end(&RimEndSettings::contact_elements), "",
                "Elements across b along the contact strip", io::Bounds{2, 40})
       .real("edge_element_over_half_width", "--edge-element", end(&RimEndSettings::edge_element_over_half_width), "",

@@ -52,9 +52,4 @@ std::size_t half_across_cells(const RoundedEndSettings& s, const RoundedEndProbl
                                                  s.poisson_ratio).half_width_m);
   return cells_over(scale.across_scale * widest, cell);
 }
-
-double seconds_since(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 } // namespace rollcheck::contact

@@ -9,6 +9,7 @@
 // and the grid's half-width across: the widest line Hertz contact of the
 // ruling's load from a station on, 1.6 b(q(x'), R(x')), with room for a
 // balance raising it and the end's extra load near it.
+#include "core/seconds_since.h"
 #include "contact/ball_rounded_surface.h"
 #include "contact/half_space_contact.h"
 #include "contact/rounded_end_problem.h"
@@ -75,6 +76,4 @@ std::size_t half_across_cells(const RoundedEndSettings& settings, const RoundedE
 
 /// ceil(length / cell): the cells that cover a length.
 std::size_t cells_over(double length_m, double cell_m);
-
-double seconds_since(std::chrono::steady_clock::time_point start);
 } // namespace rollcheck::contact

@@ -2,6 +2,7 @@
 // Every rank's values of a distributed post-processing quantity, concatenated
 // in rank order on every rank (the scenes' surface and axis samples are
 // small), and the wall time of a collective step (its slowest rank's).
+#include "core/seconds_since.h"
 #include <chrono>
 #include <mpi.h>
 #include <vector>
@@ -25,7 +26,7 @@ inline std::vector<double> all_gather(MPI_Comm comm, const std::vector<double>& 
 /// Seconds since `start` on the slowest rank of `comm`.
 inline double wall_seconds_since(MPI_Comm comm, std::chrono::steady_clock::time_point start)
 {
-  double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  double wall = seconds_since(start);
   MPI_Allreduce(MPI_IN_PLACE, &wall, 1, MPI_DOUBLE, MPI_MAX, comm);
   return wall;
 }

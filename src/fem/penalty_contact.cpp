@@ -1,4 +1,5 @@
 #include "fem/penalty_contact.h"
+#include "core/seconds_since.h"
 #include "core/error.h"
 #include "fem/all_gather.h"
 #include "fem/interpolate_between_meshes.h"
@@ -30,11 +31,6 @@ constexpr int max_newton_iterations = 40;
 constexpr double newton_rtol = 1e-10;  ///< on ||du|| / ||u||
 constexpr double converged_residual = 1e-8; ///< ||F|| over the solve's largest after a full step
 constexpr int max_line_search_halvings = 12;
-
-double seconds_since(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 /// f's values at the points of a scalar space (DG0: cell midpoints, P1: vertices).
 void interpolate_scalar(dolfinx::fem::Function<double>& f, const std::function<double(const double* x)>& value)

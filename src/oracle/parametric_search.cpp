@@ -1,4 +1,5 @@
 #include "oracle/parametric_search.h"
+#include "core/seconds_since.h"
 #include "core/error.h"
 #include "oracle/contact_distribution.h"
 #include "oracle/parallel_for.h"
@@ -13,11 +14,6 @@ namespace rollcheck::oracle
 {
 namespace
 {
-double seconds_since(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 class ProgressReporter
 {
 public:

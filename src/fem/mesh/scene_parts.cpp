@@ -56,9 +56,4 @@ void upper_interface_facets(SceneMesh& scene, const Predicate& on, int up)
     if (mid[3 * i + up] > 0)
       scene.contact_facets.push_back(interface[i]);
 }
-
-double seconds_since(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 } // namespace rollcheck::fem::scene_build

@@ -3,6 +3,7 @@
 // mesh: the mesh gmsh made on rank 0 distributed as a SceneMesh, and its
 // boundary parts tagged from predicates on points. Not for the solvers: they
 // read the tags SceneMesh carries.
+#include "core/seconds_since.h"
 #include "fem/mesh/gmsh_raw_mesh.h"
 #include "fem/mesh/scene_facets.h"
 #include <chrono>
@@ -46,7 +47,4 @@ void tag_parts(SceneMesh& scene, const SceneParts& parts);
 /// the boundary facets `on` it whose cell lies above (coordinate `up` > 0);
 /// the lower body's twins lie at the same place, on cells below.
 void upper_interface_facets(SceneMesh& scene, const Predicate& on, int up);
-
-/// Wall seconds on this rank since `start`.
-double seconds_since(std::chrono::steady_clock::time_point start);
 } // namespace rollcheck::fem::scene_build

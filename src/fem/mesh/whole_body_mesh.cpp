@@ -84,7 +84,7 @@ WholeBodyMesh distribute_layers(MPI_Comm comm, double length_m, std::vector<doub
   result.planes_m = std::move(planes);
   const auto start = std::chrono::steady_clock::now();
   const RawMesh raw = on_rank_zero<RawMesh>(comm, make_raw);
-  result.gmsh_s = scene_build::seconds_since(start);
+  result.gmsh_s = seconds_since(start);
   MPI_Bcast(&result.gmsh_s, 1, MPI_DOUBLE, 0, comm);
   result.scene.mesh = distribute_raw_mesh(comm, 3, raw);
   result.scene.symmetry_multiplicity = 1;

@@ -1,4 +1,5 @@
 #include "fem/scenes/hertz_solve.h"
+#include "core/seconds_since.h"
 #include "contact/hertz.h"
 #include "fem/all_gather.h"
 #include "fem/consistent_pressure.h"
@@ -22,7 +23,6 @@ namespace rollcheck::fem
 namespace
 {
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 void flag(HertzResult& result, const std::string& name, const std::string& warning, int rank)
 {

@@ -193,11 +193,15 @@ SceneMesh level_mesh(MPI_Comm comm, const RimEndStudy& study, const RimEndSizes&
       s.crossing_angle_rad};
   if (s.counter_face == CounterFace::block)
     return build_rim_block_mesh(comm, geometry, sizes);
-  const bool extruded_applies = study.flat_sheet && !crosses_obliquely(s.crossing_angle_rad);
-  if (s.mesh == RimEndMesh::extruded || (s.mesh == RimEndMesh::automatic && extruded_applies))
+  switch (rim_end_mesh_used(study))
+  {
+  case RimEndMesh::extruded:
     return build_rim_end_extruded_mesh(comm, geometry, sizes);
-  return s.mesh == RimEndMesh::grid ? build_square_end_grid_mesh(comm, geometry, sizes)
-                                    : build_rim_end_mesh(comm, geometry, sizes);
+  case RimEndMesh::grid:
+    return build_square_end_grid_mesh(comm, geometry, sizes);
+  default:
+    return build_rim_end_mesh(comm, geometry, sizes);
+  }
 }
 
 /// kappa = c E / h(x) with the mesh's own size, over the strip's c E / h_c:
@@ -520,6 +524,25 @@ double rim_interface_tolerance(double depth_m, double edge_element_m, double edg
                                        "resolves (1e-13 of it)",
                                        edge_element_m, edge_radius_m, tol, depth_m));
   return tol;
+}
+
+const NamedValues<RimEndMesh>& rim_end_mesh_names()
+{
+  static const NamedValues<RimEndMesh> names = {{"gmsh", RimEndMesh::delaunay},
+                                                {"grid", RimEndMesh::grid},
+                                                {"extruded", RimEndMesh::extruded},
+                                                {"auto", RimEndMesh::automatic}};
+  return names;
+}
+
+RimEndMesh rim_end_mesh_used(const RimEndStudy& study)
+{
+  const RimEndSettings& s = study.setup;
+  if (s.counter_face == CounterFace::block)
+    return RimEndMesh::delaunay;
+  if (s.mesh == RimEndMesh::automatic)
+    return study.flat_sheet && !crosses_obliquely(s.crossing_angle_rad) ? RimEndMesh::extruded : RimEndMesh::delaunay;
+  return s.mesh;
 }
 
 RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)

@@ -62,6 +62,7 @@
 // above r_e / 16 would raise ComputationError. The block's top is graded
 // under the fillet's start as the body is. Runs on any number of processes
 // (pairs across them).
+#include "core/named_values.h"
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -290,6 +291,14 @@ double end_to_interior_change(const RimEndLevel& before, const RimEndLevel& last
 /// ComputationError below 1e-13 H: gmsh leaves the interface's own nodes up
 /// to 7e-15 H off the plane (the same test).
 double rim_interface_tolerance(double depth_m, double edge_element_m, double edge_radius_m);
+
+/// gmsh (Delaunay), grid, extruded, auto: the option's names, also the JSON's.
+const NamedValues<RimEndMesh>& rim_end_mesh_names();
+
+/// The mesh `study`'s levels are built on: `setup.mesh`, with automatic
+/// resolved (extruded on a flat sheet square to the ruling, Delaunay
+/// elsewhere) and the elastic block always gmsh's Delaunay.
+RimEndMesh rim_end_mesh_used(const RimEndStudy& study);
 
 /// Every rank gets the study. InputError for bad settings (naming the
 /// setting), ComputationError for a failed solve or an unresolved contact.

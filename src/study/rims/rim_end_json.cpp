@@ -83,7 +83,7 @@ nlohmann::json to_json(const fem::RimEndStudy& study)
                                            setup.interior_angle_rad, setup.youngs_modulus_pa, setup.poisson_ratio,
                                            setup.youngs_modulus_pa, setup.poisson_ratio))},
             {"sheet", study.flat_sheet ? "flat" : "cylinder"},
-            {"end_mesh", setup.mesh == fem::RimEndMesh::grid ? "grid" : "gmsh"},
+            {"end_mesh", name_of(fem::rim_end_mesh_names(), fem::rim_end_mesh_used(study), "rim end mesh")},
             {"fillet_start_m", study.fillet_start_m},
             {"boundary_layer_m", study.boundary_layer_m},
             {"plane_strain_noise", study.plane_strain_noise},
