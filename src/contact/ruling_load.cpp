@@ -20,8 +20,8 @@ double RulingLoad::line_load(double length_m, double f) const
   return oracle::line_load(normal_n, centre, length_m, f);
 }
 
-RulingLoad ruling_load(const oracle::RollingSample& sample, LoadRule rule, double normal_load_n,
-                       const RollingBodyMass& body)
+RulingLoad ruling_resultant(const oracle::RollingSample& sample, LoadRule rule, double normal_load_n,
+                            const RollingBodyMass& body)
 {
   RulingLoad load;
   const Eigen::Vector3d along = sample.contact_end_m - sample.contact_start_m;
@@ -30,7 +30,7 @@ RulingLoad ruling_load(const oracle::RollingSample& sample, LoadRule rule, doubl
   case LoadRule::uniform:
     load.normal_n = normal_load_n;
     load.uniform = true;
-    return load;
+    break;
   case LoadRule::static_through_centre_of_mass:
     load.normal_n = normal_load_n;
     load.centre = (body.centre_of_mass_m - sample.contact_start_m).dot(along) / along.squaredNorm();
@@ -40,6 +40,15 @@ RulingLoad ruling_load(const oracle::RollingSample& sample, LoadRule rule, doubl
     load.centre = sample.centre_of_pressure;
     break;
   }
+  return load;
+}
+
+RulingLoad ruling_load(const oracle::RollingSample& sample, LoadRule rule, double normal_load_n,
+                       const RollingBodyMass& body)
+{
+  RulingLoad load = ruling_resultant(sample, rule, normal_load_n, body);
+  if (load.uniform)
+    return load;
   if (!(load.centre > 0 && load.centre < 1) || !(load.normal_n > 0))
   {
     load.normal_n = 0;

@@ -59,7 +59,15 @@ struct RulingLoad
   double line_load(double length_m, double f) const;
 };
 
-/// The load of `sample`'s ruling under `rule`, F = `normal_load_n`.
+/// The rule's resultant on `sample`'s ruling before the no-tension rule: N
+/// and c as above for any c (outside (0, 1) the body stands on a rim point,
+/// whose load the rims' study needs), `uniform` for the uniform rule (c =
+/// 1/2); from and to stay [0, 1].
+RulingLoad ruling_resultant(const oracle::RollingSample& sample, LoadRule rule, double normal_load_n,
+                            const RollingBodyMass& body);
+
+/// The load of `sample`'s ruling under `rule`, F = `normal_load_n`: the
+/// resultant spread by the no-tension rule, N = 0 where c is outside (0, 1).
 RulingLoad ruling_load(const oracle::RollingSample& sample, LoadRule rule, double normal_load_n,
                        const RollingBodyMass& body);
 

@@ -69,6 +69,25 @@ TEST(RulingLoad, UniformRuleSpreadsFEvenlyAndAnOffRulingCentreCarriesNothing)
   EXPECT_EQ(on_rim.line_load(2, 0.5), 0);
 }
 
+TEST(RulingLoad, TheResultantKeepsARimPointsLoadThatTheNoTensionRuleDrops)
+{
+  // The centre of mass's foot 1.5 ruling lengths along: the body stands on
+  // the rim point, whose load the rims' study takes from the resultant.
+  const contact::RollingBodyMass off{{3, 0, 0}, 1.0};
+  const contact::RulingLoad resultant
+      = contact::ruling_resultant(ruling_along_x(), contact::LoadRule::static_through_centre_of_mass, 100, off);
+  EXPECT_DOUBLE_EQ(resultant.normal_n, 100);
+  EXPECT_DOUBLE_EQ(resultant.centre, 1.5);
+  const contact::RulingLoad dynamic = contact::ruling_resultant(ruling_along_x(), contact::LoadRule::dynamic, 100, off);
+  EXPECT_NEAR(dynamic.normal_n, 50, 1e-12);
+  EXPECT_DOUBLE_EQ(dynamic.centre, 0.75);
+  const contact::RulingLoad uniform = contact::ruling_resultant(ruling_along_x(), contact::LoadRule::uniform, 100, off);
+  EXPECT_TRUE(uniform.uniform);
+  EXPECT_DOUBLE_EQ(uniform.centre, 0.5);
+  EXPECT_EQ(contact::ruling_load(ruling_along_x(), contact::LoadRule::static_through_centre_of_mass, 100, off).normal_n,
+            0);
+}
+
 TEST(RulingLoad, PeaksAreHeldTheMarginInsideTheLoadedEnds)
 {
   EXPECT_DOUBLE_EQ(contact::held_fraction(0.21, 0.2, 0.6, 0.05), 0.25);

@@ -222,19 +222,23 @@ TEST(RimEndExtrudedMesh, RefusesTheCylinderSheetAndAnObliqueEdge)
                InputError);
 }
 
-// Disabled: it fails today (docs/methods/rims.md, "Where a rounded loop's
-// time goes": at the 120 deg end the two end peaks agree within 1 %, but
-// gmsh's far side reads 1.033 p0 at the strip's b / 6, the extruded
-// section's 1.002, so the ratios are 4 % apart). The check the extruded mesh
-// must pass before --end-mesh auto becomes the loop's.
-TEST(RimEndExtrudedMesh, DISABLED_EndModelAgreesWithGmshsOnRoundedAndSharpEnds)
+// Label long (tests/CMakeLists.txt, long_tests).
+TEST(RimEndExtrudedMesh, EndPeaksAgreeWithGmshsAndItsFarSideIsNearerLineHertz)
 {
   // A bearing's load (p0 = 2.0 GPa at R = 10 mm, b = 0.182 mm) on the flat
   // sheet, one level of edge elements b / 32: a rounded obtuse and a rounded
   // acute rim (r_e = 2 b) and the sharp square end, each on gmsh's Delaunay
   // mesh and on the extruded section. The two discretisations differ
-  // everywhere but in h_e; their end/interior ratios must agree within the
-  // end model's own tolerance (the change per level it calls converged).
+  // everywhere but in h_e. Their end values (the rounded peak; the sharp
+  // edge's nodal pressure at the same h_e) must agree within the end model's
+  // own tolerance (the change per level it calls converged). Their far sides
+  // do not: the exact far side is plane-strain line contact, p0, and gmsh's
+  // reads about 3 % above it, with 6 or 12 elements across b alike
+  // (docs/methods/rims.md, "Where a rounded loop's time goes"); the
+  // extruded one must read it
+  // within the same tolerance and nearer than gmsh's. Their end/interior
+  // ratios differ by the far sides' difference, and the extruded one is the
+  // one whose denominator is right.
   for (const auto& [angle_deg, edge_radius] : {std::pair{120.0, 3.64e-4}, std::pair{70.0, 3.64e-4}, std::pair{90.0, 0.0}})
   {
     rollcheck::fem::RimEndSettings s;
@@ -248,13 +252,17 @@ TEST(RimEndExtrudedMesh, DISABLED_EndModelAgreesWithGmshsOnRoundedAndSharpEnds)
     const rollcheck::fem::RimEndStudy gmsh = rollcheck::fem::solve_rim_end(MPI_COMM_WORLD, s);
     s.mesh = rollcheck::fem::RimEndMesh::extruded;
     const rollcheck::fem::RimEndStudy extruded = rollcheck::fem::solve_rim_end(MPI_COMM_WORLD, s);
-    ASSERT_TRUE(gmsh.end_to_interior && extruded.end_to_interior) << angle_deg;
-    std::printf("%.0f deg, r_e %g: gmsh %.4f (%ld dofs), extruded %.4f (%ld dofs)\n", angle_deg, edge_radius,
-                *gmsh.end_to_interior, static_cast<long>(gmsh.levels.back().dofs), *extruded.end_to_interior,
-                static_cast<long>(extruded.levels.back().dofs));
-    EXPECT_LT(std::abs(rollcheck::fem::end_to_interior_ratio_change(*gmsh.end_to_interior, *extruded.end_to_interior)),
-              s.tolerance)
-        << angle_deg;
-    EXPECT_NEAR(extruded.levels.back().far_peak_pa / gmsh.levels.back().far_peak_pa, 1.0, 0.02) << angle_deg;
+    const rollcheck::fem::RimEndLevel &g = gmsh.levels.back(), &e = extruded.levels.back();
+    const bool sharp = edge_radius == 0;
+    const double gmsh_end = sharp ? g.edge_pressure_pa : g.end_peak_pa;
+    const double extruded_end = sharp ? e.edge_pressure_pa : e.end_peak_pa;
+    const double p0 = gmsh.hertz_peak_pa;
+    std::printf("%.0f deg, r_e %g: end gmsh %.4e, extruded %.4e Pa; far side / p0 gmsh %.4f (%ld dofs), extruded "
+                "%.4f (%ld dofs)\n",
+                angle_deg, edge_radius, gmsh_end, extruded_end, g.far_peak_pa / p0, static_cast<long>(g.dofs),
+                e.far_peak_pa / p0, static_cast<long>(e.dofs));
+    EXPECT_NEAR(extruded_end / gmsh_end, 1.0, s.tolerance) << angle_deg;
+    EXPECT_NEAR(e.far_peak_pa / p0, 1.0, s.tolerance) << angle_deg;
+    EXPECT_LT(std::abs(e.far_peak_pa / p0 - 1), std::abs(g.far_peak_pa / p0 - 1)) << angle_deg;
   }
 }

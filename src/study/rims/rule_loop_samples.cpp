@@ -1,5 +1,6 @@
 // The rim loop's samples under a load rule (study/rims/rule_loop_samples.h).
 #include "study/rims/rule_loop_samples.h"
+#include "contact/ruling_load.h"
 #include "core/error.h"
 #include "geometry/body.h"
 #include "oracle/contact_density.h"
@@ -14,24 +15,14 @@ std::vector<RulingLoad> ruling_loads(const oracle::RealRolling& run, contact::Lo
                                      double gravity_m_s2)
 {
   std::vector<RulingLoad> loads;
+  const contact::RollingBodyMass mass{run.mass.centre_of_mass_m, run.mass.mass_kg, gravity_m_s2};
   for (const oracle::RollingSample& sample : run.trajectory.samples)
   {
     if (sample.time_s > run.scored_end_s)
       break;
-    const Eigen::Vector3d start = sample.contact_start_m, along = sample.contact_end_m - sample.contact_start_m;
-    switch (rule)
-    {
-    case contact::LoadRule::static_through_centre_of_mass:
-      loads.push_back({force_n, run.mass.centre_of_mass_m});
-      break;
-    case contact::LoadRule::dynamic:
-      loads.push_back({force_n * sample.normal_force_n / (run.mass.mass_kg * gravity_m_s2),
-                       start + sample.centre_of_pressure * along});
-      break;
-    case contact::LoadRule::uniform:
-      loads.push_back({force_n, start + 0.5 * along});
-      break;
-    }
+    // The resultant without the no-tension rule: a rim point's load too.
+    const contact::RulingLoad r = contact::ruling_resultant(sample, rule, force_n, mass);
+    loads.push_back({r.normal_n, sample.contact_start_m + r.centre * (sample.contact_end_m - sample.contact_start_m)});
   }
   return loads;
 }
