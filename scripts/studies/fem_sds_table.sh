@@ -20,7 +20,7 @@ mkdir -p "$out"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
 for name in oloid paper_oloid cylinder candidate; do
   /usr/bin/time -f '{"wall_s": %e, "user_s": %U, "system_s": %S}' -o "$out/$name.time.json" \
-    mpirun -n 2 "$binary" run "$here/cases/fem_sds_$name.toml" --set "out=$out/$name" --set "slab_orientations=$slab" \
+    mpirun -n 2 "$binary" run "$here/cases/fem_sds_$name.toml" --set "out=$out/$name" --set "slab_check=$slab" \
     --json "$out/$name.json" > "$out/$name.log" 2>&1 || { echo "case $name failed: see $out/$name.log" >&2; exit 1; }
 done
 /usr/bin/python3 "$here/scripts/studies/fem_sds_page.py" --tables "$out"
