@@ -4,8 +4,8 @@
 # 300 points per circle, and (2) the fast scores against issue 17's budgets, a
 # local search (BOBYQA, at most 400 evaluations) within 300 s and a global one
 # (DIRECT-L, 1000 evaluations) within 1800 s, each timed as the whole command.
-# The global searches of the rigid scores at matched face count and of U (each
-# 2-5 minutes on 2 idle cores) are left out to keep the script within 10
+# The global searches of the rigid scores at matched face count and of U (2-5
+# minutes each in their last run) are left out to keep the script within 10
 # minutes: their last rows are in docs/notes/optimize-tables.md. Each run's
 # JSON, its options (NAME.args.json) and /usr/bin/time's wall and CPU seconds
 # (NAME.time.json) go to OUT_DIR (default results/optimize-speed); then

@@ -113,7 +113,7 @@ def main(argv):
               "as the whole command: the noise replicates, the search, the derivatives at the start and at the "
               "optimum, and the sweeps. The rigid scores average 16 replicates, the costlier choice of \"The "
               "rigid-body noise\". The global searches of the rigid scores at matched face count and of U are not "
-              "run here (2-5 minutes each, beyond this script's 10): their last rows are in "
+              "run here (they would take this script past its 10 minutes): their last rows are in "
               "[notes](../notes/optimize-tables.md#speed-against-the-budgets-the-longer-global-searches). FEM-SDS "
               "is not a fast score: it runs in rollcheck-fem under mpirun (\"The FEM-SDS optimum on the exact "
               "surface\").", ""]
