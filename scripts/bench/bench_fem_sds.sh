@@ -7,23 +7,29 @@
 #     for every sample of the loop, their ratios, and the table's agreement
 #     with the direct solves (the same accuracy?);
 #  2. the whole quick-grid family table (`search --grid quick --score fem-sds`).
-#   bash scripts/bench/bench_fem_sds.sh [ROLLCHECK]
+# With JSON_DIR, the runs' JSON (oloid.json, family.json) and their wall and CPU
+# seconds (oloid.time.json, family.time.json: wall_s, user_s, system_s of
+# mpirun and its ranks) are kept there (scripts/studies/fem_sds.sh reads them).
+#   bash scripts/bench/bench_fem_sds.sh [ROLLCHECK] [JSON_DIR]
 set -euo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
 bin=${1:-$here/build/src/cli/rollcheck}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-seconds() { # wall seconds of the command
-  local start end
-  start=$(date +%s.%N); "$@" > /dev/null 2> "$tmp/log" || { cat "$tmp/log"; exit 1; }; end=$(date +%s.%N)
-  echo "$end - $start" | bc -l
+json=${2:-$tmp}
+mkdir -p "$json"
+timed() { # NAME COMMAND...: the command's wall and CPU seconds in $json/NAME.time.json
+  local name=$1; shift
+  /usr/bin/time -f '{"wall_s": %e, "user_s": %U, "system_s": %S}' -o "$json/$name.time.json" "$@" \
+    > /dev/null 2> "$tmp/log" || { cat "$tmp/log"; exit 1; }
 }
-oloid=$(seconds mpirun -n 2 "$bin" fem-sds --body oloid --json "$tmp/oloid.json")
-family=$(seconds mpirun -n 2 "$bin" search --grid quick --score fem-sds --json "$tmp/family.json")
-/usr/bin/python3 - "$tmp" "$oloid" "$family" <<'PY'
+timed oloid mpirun -n 2 "$bin" fem-sds --body oloid --json "$json/oloid.json"
+timed family mpirun -n 2 "$bin" search --grid quick --score fem-sds --json "$json/family.json"
+/usr/bin/python3 - "$json" <<'PY'
 import json, sys
-tmp, oloid_s, family_s = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
+tmp = sys.argv[1]
+oloid_s, family_s = (json.load(open(f"{tmp}/{name}.time.json"))["wall_s"] for name in ("oloid", "family"))
 r = json.load(open(f"{tmp}/oloid.json"))
 direct = [o["wall_s"] for o in r["per_orientation"] if o["fem_solved"]]
 per_direct = sum(direct) / len(direct)

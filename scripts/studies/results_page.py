@@ -65,6 +65,11 @@ def signed(x, digits=2):
     return "-" if x is None else f"{100 * x:+.{digits}f}"
 
 
+def write_page(path, lines):
+    """Write a page's lines, ending in one newline."""
+    open(path, "w").write("\n".join(lines).rstrip("\n") + "\n")
+
+
 def page_main(argv, usage, title, script, what, method, body):
     """A generator's command line, `PAGE_py INPUT "ROLLCHECK --version LINE"`:
     the page's header and body(INPUT) (its lines) printed to stdout."""
