@@ -72,6 +72,7 @@ fem::RimEndSettings oblique_settings(const ObliqueEndSettings& s, const LoopRimE
     if (oblique.sheet == fem::SheetModel::automatic)
       oblique.sheet = fem::SheetModel::flat;
     oblique.resolve_boundary_layer = true;
+    oblique.extra_levels = std::max(oblique.extra_levels, 1);
     const double modulus = contact::effective_modulus(oblique.youngs_modulus_pa, oblique.poisson_ratio, false);
     const double b = contact::line_contact(oblique.load_n_per_m, oblique.radius_m, modulus, oblique.poisson_ratio)
                          .half_width_m;
@@ -81,14 +82,14 @@ fem::RimEndSettings oblique_settings(const ObliqueEndSettings& s, const LoopRimE
   return oblique;
 }
 
-/// Rounded, both models converged: |d| at the last level plus its change
-/// over the last level.
+/// Rounded, both models converged: |d| between their last levels plus each
+/// ratio's change over its last level.
 std::optional<double> difference_bound(const ObliqueEndStudy& study)
 {
-  if (!study.rounded || !study.oblique.converged || !study.perpendicular.converged || study.levels.size() < 2)
+  if (!study.rounded || !study.oblique.converged || !study.perpendicular.converged || !study.difference)
     return std::nullopt;
-  const double last = study.levels.back().ratio_difference;
-  return std::abs(last) + std::abs(last - study.levels[study.levels.size() - 2].ratio_difference);
+  return std::abs(*study.difference) + std::abs(study.oblique.end_change.value())
+         + std::abs(study.perpendicular.end_change.value());
 }
 } // namespace
 
@@ -157,6 +158,8 @@ ObliqueEndStudy oblique_end_study(MPI_Comm comm, const ObliqueEndSettings& s)
     level.ratio_difference = level.oblique_ratio / level.perpendicular_ratio - 1;
     study.levels.push_back(level);
   }
+  if (study.rounded && study.oblique.end_to_interior && study.perpendicular.end_to_interior)
+    study.difference = *study.oblique.end_to_interior / *study.perpendicular.end_to_interior - 1;
   study.difference_bound = difference_bound(study);
   study.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return study;
@@ -166,24 +169,21 @@ nlohmann::json to_json(const ObliqueEndStudy& study)
 {
   const LoopRimEnd& e = study.end;
   nlohmann::json levels = nlohmann::json::array();
-  for (std::size_t k = 0; k < study.levels.size(); ++k)
-  {
-    const ObliqueEndLevel& l = study.levels[k];
+  for (const ObliqueEndLevel& l : study.levels)
     levels.push_back({{"edge_element_m", l.edge_element_m},
                       {"oblique_edge_to_interior", l.oblique_ratio},
                       {"perpendicular_edge_to_interior", l.perpendicular_ratio},
-                      {"ratio_difference", l.ratio_difference},
-                      {"oblique_end_peak_y_m", study.oblique.levels[k].end_peak_y_m}});
-  }
-  const std::size_t n = study.levels.size();
-  const nlohmann::json verdict
-      = {{"both_converged", study.oblique.converged && study.perpendicular.converged},
-         {"tolerance", study.oblique.setup.tolerance},
-         {"difference", n > 0 ? json_number(study.levels.back().ratio_difference) : nlohmann::json(nullptr)},
-         {"difference_change",
-          n > 1 ? json_number(study.levels[n - 1].ratio_difference - study.levels[n - 2].ratio_difference)
-                : nlohmann::json(nullptr)},
-         {"difference_bound", json_number(study.difference_bound)}};
+                      {"ratio_difference", l.ratio_difference}});
+  // Where across the ruling the oblique model's end peak lies, at each of its levels.
+  nlohmann::json peak_y = nlohmann::json::array();
+  for (const fem::RimEndLevel& l : study.oblique.levels)
+    peak_y.push_back(l.end_peak_y_m);
+  const nlohmann::json verdict = {{"both_converged", study.oblique.converged && study.perpendicular.converged},
+                                   {"tolerance", study.oblique.setup.tolerance},
+                                   {"oblique_levels", study.oblique.levels.size()},
+                                   {"perpendicular_levels", study.perpendicular.levels.size()},
+                                   {"difference", json_number(study.difference)},
+                                   {"difference_bound", json_number(study.difference_bound)}};
   return {{"end",
            {{"section_angle_deg", e.section_angle_rad / degree},
             {"dihedral_angle_deg", e.dihedral_angle_rad / degree},
@@ -202,6 +202,7 @@ nlohmann::json to_json(const ObliqueEndStudy& study)
           {"oblique", to_json(study.oblique)},
           {"perpendicular", to_json(study.perpendicular)},
           {"levels", levels},
+          {"oblique_end_peak_y_m", peak_y},
           {"verdict", verdict},
           {"wall_s", study.wall_s}};
 }
@@ -237,9 +238,14 @@ std::string report(const ObliqueEndStudy& study)
   for (const ObliqueEndLevel& l : study.levels)
     t += fmt::format("| {:.4g} | {:.4f} | {:.4f} | {:+.2f} % |\n", l.edge_element_m / study.oblique.half_width_m,
                      l.oblique_ratio, l.perpendicular_ratio, 100 * l.ratio_difference);
+  if (study.difference)
+    t += fmt::format("\nAt each model's last level (oblique {}, perpendicular {}): {:.4f} and {:.4f}, oblique / "
+                     "perpendicular - 1 = {:+.2f} %.\n",
+                     study.oblique.levels.size(), study.perpendicular.levels.size(), *study.oblique.end_to_interior,
+                     *study.perpendicular.end_to_interior, 100 * *study.difference);
   if (study.difference_bound)
-    t += fmt::format("\nThe perpendicular reduction is within {:.2f} % of the oblique model on this end (both "
-                     "converged within {:.0f} %).\n",
+    t += fmt::format("The perpendicular reduction is within {:.2f} % of the oblique model on this end (both "
+                     "converged within {:.0f} %; the difference plus each ratio's last change).\n",
                      100 * *study.difference_bound, 100 * study.oblique.setup.tolerance);
   return t;
 }

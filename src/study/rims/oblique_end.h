@@ -18,11 +18,11 @@
 // finite ratio, its end peak over the far side's, which converges: each
 // model is solved as the rim loop solves its ends (study/rims/rim_loop.h:
 // the boundary layer resolved at the last level, the block at least
-// `depth_over_edge_radius` r_e deep) and judged by its own tolerance
-// (RimEndSettings::tolerance); where both converged, the last level's
-// difference is the verdict, within the bound `difference_bound`: its
-// size plus its own change over the last level (both models' ratios then
-// still move by less than the tolerance).
+// `depth_over_edge_radius` r_e deep, at least one extra level) and judged
+// by its own tolerance (RimEndSettings::tolerance); where both converged,
+// the difference between their last levels is the verdict, within the bound
+// `difference_bound`: its size plus each ratio's change over its last level
+// (each below the tolerance).
 //
 // The most oblique end: over `samples` rulings of the body's contact loop
 // (oracle/rolling_dynamics.h trace_contact_loop) every end, loaded or not,
@@ -96,8 +96,12 @@ struct ObliqueEndStudy
   std::vector<ObliqueEndLevel> levels;
   bool rounded = false;
   std::optional<double> loop_load_n; ///< F, where q and R are the end's own in the loop
-  /// Rounded, both models converged: |difference| at the last level plus
-  /// its change over the last level; none otherwise.
+  /// Rounded: each model's end_to_interior at its own last level, oblique
+  /// over perpendicular less 1 (a model may take one level more than the
+  /// other: RimEndSettings::extra_levels).
+  std::optional<double> difference;
+  /// Both models converged: |difference| plus each ratio's change over its
+  /// last level (end_change); none otherwise.
   std::optional<double> difference_bound;
   double wall_s = 0;
 };
