@@ -100,8 +100,8 @@ def rounded_part(j, version, command):
              f"scripts/studies/oblique_end.sh    # {command}",
              "```", "",
              f"{made_by(j, version)} {end_line(e)}. Both models at {load}, r_e = {j['edge_radius_m'] * 1e3:g} mm "
-             f"(r_e / b = {j['edge_radius_m'] / half_width:.3g}, b = {half_width * 1e6:.4g} um), rigid plane, block "
-             f"H = {ob['depth_over_half_width']:.4g} b; each model's boundary layer s resolved at its last level "
+             f"(r_e / b = {j['edge_radius_m'] / half_width:.3g}, b = {half_width * 1e6:.4g} um), rigid plane, flat "
+             f"sheet; each model's boundary layer s resolved at its last level "
              f"(h_e <= s / 4, s / b = {ob['boundary_layer_m'] / half_width:.4g}). The oblique model's end peak is the "
              f"largest pressure near its fillet, wherever across the ruling; the perpendicular model's on its centre "
              f"line.", "",
