@@ -425,13 +425,7 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   read_contact_face(study, face, edge_element_m, level);
   read_centre_line(study, edge_element_m, level);
   if (crosses_obliquely(s.crossing_angle_rad) && s.edge_radius_m > 0)
-  {
-    const ObliqueEndPeak peak = oblique_end_peak(face, study.half_width_m, s.edge_radius_m, study.fillet_start_m,
-                                                 study.boundary_layer_m, s.crossing_angle_rad);
-    level.end_peak_pa = peak.pressure_pa;
-    level.end_peak_x_m = peak.x_m;
-    level.end_peak_y_m = peak.y_m;
-  }
+    read_oblique_end_peak(study, face, level);
   if (fields_out)
     *fields_out = std::move(fields);
   level.wall_s = wall_seconds_since(comm, start);

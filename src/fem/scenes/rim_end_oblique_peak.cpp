@@ -55,4 +55,14 @@ ObliqueEndPeak oblique_end_peak(std::span<const SurfacePressureNode> nodes, doub
     throw ComputationError(fmt::format("rim: no pressure near the oblique rounded edge (b = {:.3g} m)", b));
   return peak;
 }
+
+void read_oblique_end_peak(const RimEndStudy& study, std::span<const SurfacePressureNode> nodes, RimEndLevel& level)
+{
+  const RimEndSettings& s = study.setup;
+  const ObliqueEndPeak peak = oblique_end_peak(nodes, study.half_width_m, s.edge_radius_m, study.fillet_start_m,
+                                               study.boundary_layer_m, s.crossing_angle_rad);
+  level.end_peak_pa = peak.pressure_pa;
+  level.end_peak_x_m = peak.x_m;
+  level.end_peak_y_m = peak.y_m;
+}
 } // namespace rollcheck::fem

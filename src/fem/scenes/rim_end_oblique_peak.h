@@ -21,6 +21,7 @@
 // that mean lies 0.26 % below the centre's), and the largest such mean is
 // the end's peak.
 #include "fem/nodal_fields.h"
+#include "fem/scenes/rim_end_contact.h"
 #include <span>
 
 namespace rollcheck::fem
@@ -37,4 +38,8 @@ struct ObliqueEndPeak
 /// if no node near the edge carries pressure.
 ObliqueEndPeak oblique_end_peak(std::span<const SurfacePressureNode> nodes, double half_width_m, double edge_radius_m,
                                 double fillet_start_m, double boundary_layer_m, double crossing_angle_rad);
+
+/// The level's end peak (end_peak_pa, its x and y) from the contact face
+/// `nodes` by oblique_end_peak, with the study's b, r_e, x_t, s and c.
+void read_oblique_end_peak(const RimEndStudy& study, std::span<const SurfacePressureNode> nodes, RimEndLevel& level);
 } // namespace rollcheck::fem
