@@ -7,6 +7,7 @@
 #include "core/degree.h"
 #include "cli/scenes.h"
 #include "contact/continuum_loop_scores.h"
+#include "core/error.h"
 #include "fem/scenes/rim_end_contact.h"
 #include "study/rims/rim_end_json.h"
 #include "study/rims/oblique_end.h"
@@ -27,6 +28,7 @@ struct RimCommand : study::rims::RimLoopSettings
 {
   RimCommand() { loop.body.body.clear(); }
   bool oblique_study = false; ///< with --body: its loop's most oblique end, obliquely and perpendicular
+  bool oblique_loop_load = false; ///< with --oblique-study: the end's own q and R in the loop under --load
 };
 using RimSchema = io::BoundSchema<RimCommand>;
 using fem::RimEndSettings;
@@ -54,7 +56,11 @@ void add_loop_options(RimSchema& s)
       .flag("oblique_study", "--oblique-study", &RimCommand::oblique_study,
             "With --body: instead of the loop, its most oblique rim end (study/rims/oblique_end.h) solved with the "
             "edge crossing the ruling at its real angle and by the perpendicular reduction at the dihedral angle, at "
-            "the end options' q, R, material and levels")
+            "the end options' q, R, material, edge (--edge-radius: rounded both ways) and levels")
+      .flag("oblique_loop_load", "--oblique-loop-load", &RimCommand::oblique_loop_load,
+            "With --oblique-study: the end at its own line load and sheet radius in the loop, as the rim loop takes "
+            "them (--load through the centre of mass, the static rule; the hull's R, at least --edge-radius), instead "
+            "of --load-per-length and --sheet-radius")
       .choice("load_rule", "--load-rule", [](RimCommand& c) -> contact::LoadRule& { return c.loop.load_rule; },
               "With --body: the load on each ruling of the loop, which sets each loaded end's line load and the "
               "interior's: dynamic (the normal force and centre of pressure of the same rolling motion, scaled to "
@@ -194,6 +200,8 @@ const SceneSchema<RimCommand>& rim_schema()
 nlohmann::json run_rim(const io::Parameters& p)
 {
   RimCommand command = rim_schema().bind(p);
+  if (command.oblique_loop_load && !command.oblique_study)
+    throw InputError("rim: --oblique-loop-load needs --body and --oblique-study");
   if (command.loop.body.body.empty())
   {
     const fem::RimEndStudy study = fem::solve_rim_end(MPI_COMM_WORLD, command.end);
@@ -205,6 +213,9 @@ nlohmann::json run_rim(const io::Parameters& p)
     study::rims::ObliqueEndSettings settings;
     settings.body = command.loop.body;
     settings.end = command.end;
+    settings.depth_over_edge_radius = command.depth_over_edge_radius;
+    if (command.oblique_loop_load)
+      settings.loop_load_n = command.loop.normal_load_n;
     const study::rims::ObliqueEndStudy study = study::rims::oblique_end_study(MPI_COMM_WORLD, settings);
     print_summary(study::rims::report(study));
     return study::rims::to_json(study);

@@ -33,7 +33,9 @@ struct RimEndGeometry
   /// stays the section in the ruling's vertical plane, the other face turns
   /// about z with the edge, and the block covers both sides of the ruling
   /// (y in [-H, H]: no plane of symmetry at y = 0) and reaches H beyond the
-  /// edge's farthest point, x = H (1 + cot c).
+  /// edge's farthest point, x = H (1 + cot c). A fillet of such an edge is
+  /// built on the flat sheet only, its start fillet_start_distance at the
+  /// dihedral D along the edge's normal.
   double crossing_angle_rad = std::numbers::pi / 2;
 };
 
@@ -56,9 +58,10 @@ struct RimEndSizes
 /// The size at the point x (m) of the rim end scene.
 double rim_end_element_size(const RimEndSizes& sizes, const double* x);
 
-/// How far from the sharp edge, along the sheet, a fillet of radius r_e
-/// leaves it (m): tangent to both faces of the interior angle a, x_t = r_e
-/// tan((180 deg - a) / 2) (above r_e for an acute rim).
+/// How far from the sharp edge, along the sheet normal to the edge, a
+/// fillet of radius r_e leaves it (m): tangent to both faces of the interior
+/// angle a (an oblique edge's dihedral), x_t = r_e tan((180 deg - a) / 2)
+/// (above r_e for an acute rim).
 double fillet_start_distance(double edge_radius_m, double interior_angle_rad);
 
 } // namespace rollcheck::fem

@@ -13,10 +13,64 @@ namespace rollcheck::fem::scene_build
 {
 namespace
 {
+/// The oblique edge (an edge crossing the ruling obliquely) of the volume
+/// on the flat sheet: the one curve that bounds both the sheet, the plane
+/// z = 0, and the other face, the plane through the origin normal to n
+/// (fem/mesh/oblique_end_angle.h). Each face is told by its normal and a
+/// point at its parametric centre, which for a plane hold everywhere on it
+/// (the sign of gmsh's normal is the face's orientation, so both signs count).
+int slanted_edge(int volume, double section_angle_rad, double crossing_angle_rad)
+{
+  const double D = oblique_dihedral_angle(section_angle_rad, crossing_angle_rad), c = crossing_angle_rad;
+  const double n[3] = {std::sin(D) * std::sin(c), -std::sin(D) * std::cos(c), std::cos(D)};
+  gmsh::vectorpair faces;
+  gmsh::model::getBoundary({{3, volume}}, faces, false, false, false);
+  int sheet = -1, other = -1, found_sheet = 0, found_other = 0;
+  const double tol = 1e-9; // the model's unit is H
+  for (const auto& [dim, tag] : faces)
+  {
+    std::vector<double> low, high, normal, point;
+    gmsh::model::getParametrizationBounds(dim, tag, low, high);
+    const std::vector<double> centre = {(low[0] + high[0]) / 2, (low[1] + high[1]) / 2};
+    gmsh::model::getNormal(tag, centre, normal);
+    gmsh::model::getValue(dim, tag, centre, point);
+    const double along = normal[0] * n[0] + normal[1] * n[1] + normal[2] * n[2];
+    if (std::abs(normal[2]) > 1 - tol && std::abs(point[2]) < tol)
+      sheet = tag, ++found_sheet;
+    else if (std::abs(along) > 1 - tol && std::abs(point[0] * n[0] + point[1] * n[1] + point[2] * n[2]) < tol)
+      other = tag, ++found_other;
+  }
+  if (found_sheet != 1 || found_other != 1)
+    throw ComputationError(fmt::format("rim end: found {} sheets and {} other faces on the oblique end, not one each",
+                                       found_sheet, found_other));
+  gmsh::vectorpair sheet_curves, other_curves;
+  gmsh::model::getBoundary({{2, sheet}}, sheet_curves, false, false, false);
+  gmsh::model::getBoundary({{2, other}}, other_curves, false, false, false);
+  std::vector<int> shared;
+  for (const auto& [dim, tag] : sheet_curves)
+    if (std::find(other_curves.begin(), other_curves.end(), std::pair{dim, tag}) != other_curves.end())
+      shared.push_back(tag);
+  if (shared.size() != 1)
+    throw ComputationError(fmt::format("rim end: the sheet and the other face share {} curves, not one", shared.size()));
+  return shared.front();
+}
+
+/// The edge `edge` of the one volume `solid` rounded with a fillet of radius r (gmsh units).
+void fillet_edge(gmsh::vectorpair& solid, int edge, double r)
+{
+  gmsh::vectorpair filleted;
+  gmsh::model::occ::fillet({solid[0].second}, {edge}, {r}, filleted, true);
+  gmsh::model::occ::synchronize();
+  if (filleted.size() != 1)
+    throw ComputationError(fmt::format("rim end: the fillet of radius {:.3g} m failed", r));
+  solid = filleted;
+}
+
 /// The rim end's solid (build_rim_end_mesh): the block x in [-L, H],
 /// y in [0, H], z <= H, inside the cylinder of radius R about the line
 /// (x, 0, R), cut by the other face's half-space, its edge filleted; an
-/// oblique edge's block x in [-L, H (1 + cot c)], y in [-H, H], sharp.
+/// oblique edge's block x in [-L, H (1 + cot c)], y in [-H, H], on the flat
+/// sheet when filleted.
 void add_rim_end(const RimEndGeometry& g)
 {
   namespace occ = gmsh::model::occ;
@@ -51,13 +105,22 @@ void add_rim_end(const RimEndGeometry& g)
     throw ComputationError(fmt::format("rim end: the cut left {} volumes, not one", cut.size()));
   if (oblique)
   {
+    // A rounded edge: the fillet leaves the sheet x_t from the edge along
+    // its normal (fillet_start_distance at the dihedral), on the centre line
+    // x_t / sin c from it; the sheet's centre line ends there.
+    double sheet_end = 0;
     if (g.edge_radius_m > 0)
-      throw InputError("rim end: an edge crossing the ruling obliquely is modelled sharp only");
+    {
+      fillet_edge(cut, slanted_edge(cut[0].second, g.interior_angle_rad, g.crossing_angle_rad), g.edge_radius_m);
+      sheet_end = -fillet_start_distance(g.edge_radius_m,
+                                         oblique_dihedral_angle(g.interior_angle_rad, g.crossing_angle_rad))
+                  / std::sin(g.crossing_angle_rad);
+    }
     // The ruling's centre line on the sheet, where the pressures along the
     // ruling are read, as a line of mesh nodes: the sheet's face split along
     // it from the far side to the edge (one volume; two volumes split at
     // y = 0 would be meshed with twin nodes on their shared face, apart).
-    const int centre_line = occ::addLine(occ::addPoint(-L, 0, 0), occ::addPoint(0, 0, 0));
+    const int centre_line = occ::addLine(occ::addPoint(-L, 0, 0), occ::addPoint(sheet_end, 0, 0));
     gmsh::vectorpair split;
     occ::fragment(cut, {{1, centre_line}}, split, map);
     occ::synchronize();
@@ -89,11 +152,7 @@ void add_rim_end(const RimEndGeometry& g)
   }
   if (edges.size() != 1)
     throw ComputationError(fmt::format("rim end: found {} edge curves, not one", edges.size()));
-  gmsh::vectorpair filleted;
-  occ::fillet({cut[0].second}, edges, {g.edge_radius_m}, filleted, true);
-  occ::synchronize();
-  if (filleted.size() != 1)
-    throw ComputationError(fmt::format("rim end: the fillet of radius {:.3g} m failed", g.edge_radius_m));
+  fillet_edge(cut, edges.front(), g.edge_radius_m);
 }
 } // namespace
 
@@ -138,6 +197,9 @@ void check_rim_end_input(const RimEndGeometry& g, const RimEndSizes& sizes)
     throw InputError(fmt::format("rim end: need 0 <= edge radius < {} H, and R >= H for the cylinder sheet (edge "
                                  "radius {} m, R = {} m, H = {} m)",
                                  largest_edge_radius_over_depth, g.edge_radius_m, g.radius_m, H));
+  if (crosses_obliquely(g.crossing_angle_rad) && g.edge_radius_m > 0 && !g.flat_sheet)
+    throw InputError("rim end: an oblique rounded edge is modelled on the flat sheet only (the fillet of a plane and "
+                     "a cylinder crossing it obliquely is no cylinder)");
 }
 
 Predicate rim_end_block_planes(double H, double L)

@@ -1,4 +1,5 @@
 #include "fem/scenes/rim_end_contact.h"
+#include "fem/scenes/rim_end_oblique_peak.h"
 #include "contact/edge_on_elastic_block_exponent.h"
 #include "contact/hertz.h"
 #include "contact/wedge_exponent.h"
@@ -59,13 +60,13 @@ void validate(const RimEndSettings& s)
   if (s.mesh == RimEndMesh::extruded && (s.counter_face != CounterFace::rigid || s.sheet == SheetModel::cylinder))
     throw InputError("rim: end_mesh = extruded models an end on the flat sheet against the rigid plane");
   if (crosses_obliquely(s.crossing_angle_rad)
-      && (!(s.crossing_angle_rad > 0 && s.crossing_angle_rad < std::numbers::pi / 2) || s.edge_radius_m != 0
+      && (!(s.crossing_angle_rad > 0 && s.crossing_angle_rad < std::numbers::pi / 2)
           || s.counter_face != CounterFace::rigid
           || (s.mesh != RimEndMesh::delaunay && s.mesh != RimEndMesh::automatic)
           || !(s.length_over_depth > 1 + 1 / std::tan(s.crossing_angle_rad))))
-    throw InputError(fmt::format("rim: crossing_angle_deg must lie in (0, 90]; below 90 the end model is a sharp "
-                                 "edge (edge_radius_m 0) on the rigid plane, end_mesh gmsh, with length_over_depth "
-                                 "above 1 + cot c (got crossing {} deg, length_over_depth {})",
+    throw InputError(fmt::format("rim: crossing_angle_deg must lie in (0, 90]; below 90 the end model is on the "
+                                 "rigid plane, end_mesh gmsh, with length_over_depth above 1 + cot c (got crossing {} "
+                                 "deg, length_over_depth {})",
                                  s.crossing_angle_rad * 180 / std::numbers::pi, s.length_over_depth));
   if (!s.xdmf_path.empty())
   {
@@ -419,9 +420,12 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   std::optional<NodalFields> fields;
   if (fields_out)
     fields = recover_nodal_fields(problem);
-  read_contact_face(study, contact_face_pressures(comm, problem, block, fields ? &*fields : nullptr), edge_element_m,
-                    level);
+  const std::vector<SurfacePressureNode> face
+      = contact_face_pressures(comm, problem, block, fields ? &*fields : nullptr);
+  read_contact_face(study, face, edge_element_m, level);
   read_centre_line(study, edge_element_m, level);
+  if (crosses_obliquely(s.crossing_angle_rad) && s.edge_radius_m > 0)
+    read_oblique_end_peak(study, face, level);
   if (fields_out)
     *fields_out = std::move(fields);
   level.wall_s = wall_seconds_since(comm, start);
@@ -589,7 +593,10 @@ RimEndStudy solve_rim_end(MPI_Comm comm, const RimEndSettings& setup)
     throw InputError(fmt::format("rim: the flat sheet is half-space theory's, for b << R; here b = {:.3g} m against "
                                  "R = {} m",
                                  study.half_width_m, setup.radius_m));
-  study.fillet_start_m = fillet_start_distance(setup.edge_radius_m, setup.interior_angle_rad);
+  // Along the edge's normal, at the wedge's angle there (the dihedral; the
+  // interior angle itself where the edge is square to the ruling).
+  study.fillet_start_m = fillet_start_distance(setup.edge_radius_m,
+                                               oblique_dihedral_angle(setup.interior_angle_rad, setup.crossing_angle_rad));
   study.boundary_layer_m = 4 * study.hertz_peak_pa * setup.edge_radius_m / (std::numbers::pi * study.effective_modulus_pa);
   const double E = setup.youngs_modulus_pa, nu = setup.poisson_ratio;
   study.dihedral_angle_rad = oblique_dihedral_angle(setup.interior_angle_rad, setup.crossing_angle_rad);

@@ -134,8 +134,9 @@ struct RimEndSettings
   /// 90 the edge square to the ruling (the y >= 0 half by symmetry); below,
   /// interior_angle_rad is the section in the ruling's vertical plane, the
   /// wedge's angle the dihedral normal to the edge (fem/mesh/oblique_end_angle.h),
-  /// and the model covers both sides of the ruling: sharp edges on the
-  /// rigid plane, gmsh's mesh, L / H > 1 + cot c.
+  /// and the model covers both sides of the ruling: on the rigid plane,
+  /// gmsh's mesh, L / H > 1 + cot c, a rounded edge on the flat sheet (its
+  /// peak read over the face: fem/scenes/rim_end_oblique_peak.h).
   double crossing_angle_rad = std::numbers::pi / 2;
   CounterFace counter_face = CounterFace::rigid;
   double youngs_modulus_pa = 200e9;  ///< steel (the preprint's)
@@ -203,6 +204,9 @@ struct RimEndLevel
   /// mean over +-b / 4 along the ruling, a rounded edge's over at most half
   /// its boundary layer), and where (x).
   double end_peak_pa = 0, end_peak_x_m = 0;
+  /// Where across the ruling: 0 on the centre line, except an oblique rounded
+  /// edge's, read over the face near the fillet (fem/scenes/rim_end_oblique_peak.h).
+  double end_peak_y_m = 0;
   /// Mean nodal pressure on a sharp edge's nodes with y <= b / 2 (0 when rounded).
   double edge_pressure_pa = 0;
   std::vector<CentreLineNode> centre_line;

@@ -3,10 +3,14 @@
 #include "study/rims/oblique_end.h"
 #include "core/degree.h"
 #include "contact/rim_dihedral_angle.h"
+#include "contact/hertz.h"
 #include "contact/rim_overhang.h"
 #include "contact/wedge_exponent.h"
 #include "core/error.h"
+#include "core/json_number.h"
+#include "oracle/line_load.h"
 #include "oracle/rolling_dynamics.h"
+#include "oracle/rolling_study.h"
 #include "oracle/support_set.h"
 #include "study/rims/rim_end_json.h"
 #include <Eigen/Geometry>
@@ -31,8 +35,62 @@ std::vector<oracle::Circle> body_circles(const geometry::BodySpec& body)
                                body.body));
 }
 
-/// Edge nodal pressure over the far side's at a level (a sharp edge's end-to-interior ratio).
-double edge_ratio(const fem::RimEndLevel& level) { return level.edge_pressure_pa / level.far_peak_pa; }
+/// The body's centre of mass, from its mass mesh as real rolling takes it
+/// (oracle/rolling_study.h).
+Eigen::Vector3d centre_of_mass(const geometry::BodySpec& spec)
+{
+  return oracle::mass_model_of_mesh(oracle::mass_mesh(spec, oracle::RollingStudyParameters{}.mass_points), 1.0)
+      .centre_of_mass_m;
+}
+
+/// The end models' settings: the end's angles (obliquely: the section and
+/// the crossing), its q and R if taken from the loop, and a rounded edge's
+/// resolution and block as the rim loop sets them (study/rims/rim_loop.cpp
+/// end_settings).
+fem::RimEndSettings oblique_settings(const ObliqueEndSettings& s, const LoopRimEnd& end)
+{
+  fem::RimEndSettings oblique = s.end;
+  // Room for the slanted edge between the far side and the edge (L / H > 1 +
+  // cot c), the same block for both models.
+  oblique.length_over_depth = std::max(s.end.length_over_depth, 1.5 + 1 / std::tan(end.crossing_angle_rad));
+  oblique.interior_angle_rad = end.section_angle_rad;
+  oblique.crossing_angle_rad = end.crossing_angle_rad;
+  if (s.loop_load_n)
+  {
+    oblique.radius_m = std::max(end.sheet_radius_m, s.end.edge_radius_m);
+    oblique.load_n_per_m = oracle::line_load(*s.loop_load_n, end.centre_of_pressure, end.ruling_length_m, end.end);
+    if (!(oblique.load_n_per_m > 0))
+      throw InputError(fmt::format("rim --oblique-study: the most oblique end (sample {}, the ruling's {}) carries no "
+                                   "load under the static rule (centre of pressure {:.3f})",
+                                   end.sample, end.end == 0 ? "start" : "end", end.centre_of_pressure));
+  }
+  if (s.end.edge_radius_m > 0)
+  {
+    // The oblique fillet is built on the flat sheet alone
+    // (fem/mesh/rim_end_solid.h): both models take it, the sheet's height in
+    // the contact's initial gap, unless the cylinder is asked for by name.
+    if (oblique.sheet == fem::SheetModel::automatic)
+      oblique.sheet = fem::SheetModel::flat;
+    oblique.resolve_boundary_layer = true;
+    oblique.extra_levels = std::max(oblique.extra_levels, 1);
+    const double modulus = contact::effective_modulus(oblique.youngs_modulus_pa, oblique.poisson_ratio, false);
+    const double b = contact::line_contact(oblique.load_n_per_m, oblique.radius_m, modulus, oblique.poisson_ratio)
+                         .half_width_m;
+    oblique.depth_over_half_width
+        = std::max(oblique.depth_over_half_width, s.depth_over_edge_radius * s.end.edge_radius_m / b);
+  }
+  return oblique;
+}
+
+/// Rounded, both models converged: |d| between their last levels plus each
+/// ratio's change over its last level.
+std::optional<double> difference_bound(const ObliqueEndStudy& study)
+{
+  if (!study.rounded || !study.oblique.converged || !study.perpendicular.converged || !study.difference)
+    return std::nullopt;
+  return std::abs(*study.difference) + std::abs(study.oblique.end_change.value())
+         + std::abs(study.perpendicular.end_change.value());
+}
 } // namespace
 
 LoopRimEnd most_oblique_end(const geometry::BodySpec& spec, std::size_t samples)
@@ -41,6 +99,7 @@ LoopRimEnd most_oblique_end(const geometry::BodySpec& spec, std::size_t samples)
   const oracle::TwoCircleBody body = oracle::two_circle_body(circles);
   const oracle::ContactLoop loop = oracle::trace_contact_loop(
       body, oracle::contact_curve_point(body, -Eigen::Vector3d::UnitZ()), static_cast<int>(samples));
+  const Eigen::Vector3d centre_of_mass_m = centre_of_mass(spec);
   LoopRimEnd worst;
   worst.exponent_shift = -1;
   for (std::size_t k = 0; k < loop.directions.size(); ++k)
@@ -64,6 +123,9 @@ LoopRimEnd most_oblique_end(const geometry::BodySpec& spec, std::size_t samples)
                                  - contact::edge_on_rigid_plane_exponent(candidate.section_angle_rad);
       candidate.sample = k;
       candidate.end = e;
+      candidate.sheet_radius_m = e == 0 ? ruling.start_radius_m : ruling.end_radius_m;
+      candidate.ruling_length_m = ruling.length_m;
+      candidate.centre_of_pressure = (centre_of_mass_m - ruling.start_m).dot(ruling.axis) / ruling.length_m;
       if (candidate.exponent_shift > worst.exponent_shift)
         worst = candidate;
     }
@@ -78,12 +140,9 @@ ObliqueEndStudy oblique_end_study(MPI_Comm comm, const ObliqueEndSettings& s)
   const auto start = std::chrono::steady_clock::now();
   ObliqueEndStudy study;
   study.end = most_oblique_end(s.body, s.samples);
-  fem::RimEndSettings oblique = s.end;
-  // Room for the slanted edge between the far side and the edge (L / H > 1 +
-  // cot c), the same block for both models.
-  oblique.length_over_depth = std::max(s.end.length_over_depth, 1.5 + 1 / std::tan(study.end.crossing_angle_rad));
-  oblique.interior_angle_rad = study.end.section_angle_rad;
-  oblique.crossing_angle_rad = study.end.crossing_angle_rad;
+  study.rounded = s.end.edge_radius_m > 0;
+  study.loop_load_n = s.loop_load_n;
+  const fem::RimEndSettings oblique = oblique_settings(s, study.end);
   fem::RimEndSettings perpendicular = oblique;
   perpendicular.crossing_angle_rad = std::numbers::pi / 2;
   perpendicular.interior_angle_rad = study.end.dihedral_angle_rad;
@@ -94,11 +153,14 @@ ObliqueEndStudy oblique_end_study(MPI_Comm comm, const ObliqueEndSettings& s)
   {
     ObliqueEndLevel level;
     level.edge_element_m = study.oblique.levels[k].edge_element_m;
-    level.oblique_ratio = edge_ratio(study.oblique.levels[k]);
-    level.perpendicular_ratio = edge_ratio(study.perpendicular.levels[k]);
+    level.oblique_ratio = fem::end_to_interior(study.oblique.levels[k], !study.rounded);
+    level.perpendicular_ratio = fem::end_to_interior(study.perpendicular.levels[k], !study.rounded);
     level.ratio_difference = level.oblique_ratio / level.perpendicular_ratio - 1;
     study.levels.push_back(level);
   }
+  if (study.rounded && study.oblique.end_to_interior && study.perpendicular.end_to_interior)
+    study.difference = *study.oblique.end_to_interior / *study.perpendicular.end_to_interior - 1;
+  study.difference_bound = difference_bound(study);
   study.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return study;
 }
@@ -112,6 +174,16 @@ nlohmann::json to_json(const ObliqueEndStudy& study)
                       {"oblique_edge_to_interior", l.oblique_ratio},
                       {"perpendicular_edge_to_interior", l.perpendicular_ratio},
                       {"ratio_difference", l.ratio_difference}});
+  // Where across the ruling the oblique model's end peak lies, at each of its levels.
+  nlohmann::json peak_y = nlohmann::json::array();
+  for (const fem::RimEndLevel& l : study.oblique.levels)
+    peak_y.push_back(l.end_peak_y_m);
+  const nlohmann::json verdict = {{"both_converged", study.oblique.converged && study.perpendicular.converged},
+                                   {"tolerance", study.oblique.setup.tolerance},
+                                   {"oblique_levels", study.oblique.levels.size()},
+                                   {"perpendicular_levels", study.perpendicular.levels.size()},
+                                   {"difference", json_number(study.difference)},
+                                   {"difference_bound", json_number(study.difference_bound)}};
   return {{"end",
            {{"section_angle_deg", e.section_angle_rad / degree},
             {"dihedral_angle_deg", e.dihedral_angle_rad / degree},
@@ -120,10 +192,18 @@ nlohmann::json to_json(const ObliqueEndStudy& study)
             {"dihedral_wedge_exponent", contact::edge_on_rigid_plane_exponent(e.dihedral_angle_rad)},
             {"exponent_shift", e.exponent_shift},
             {"sample", e.sample},
-            {"ruling_end", e.end == 0 ? "start" : "end"}}},
+            {"ruling_end", e.end == 0 ? "start" : "end"},
+            {"hull_sheet_radius_m", e.sheet_radius_m},
+            {"ruling_length_m", e.ruling_length_m},
+            {"centre_of_pressure", e.centre_of_pressure}}},
+          {"rounded", study.rounded},
+          {"edge_radius_m", study.oblique.setup.edge_radius_m},
+          {"loop_load_n", json_number(study.loop_load_n)},
           {"oblique", to_json(study.oblique)},
           {"perpendicular", to_json(study.perpendicular)},
           {"levels", levels},
+          {"oblique_end_peak_y_m", peak_y},
+          {"verdict", verdict},
           {"wall_s", study.wall_s}};
 }
 
@@ -133,18 +213,40 @@ std::string report(const ObliqueEndStudy& study)
   auto exponent = [](const fem::RimEndStudy& s) {
     return s.measured_exponent ? fmt::format("{:.3f}", *s.measured_exponent) : std::string("-");
   };
+  auto status = [](const fem::RimEndStudy& s) {
+    return fmt::format("{} ({}{})", s.converged ? "converged" : "NOT converged",
+                       s.end_change ? fmt::format("{:+.2f} % last level", 100 * *s.end_change) : std::string("one level"),
+                       s.resolved ? "" : ", boundary layer not resolved");
+  };
+  const char* what = study.rounded ? "end" : "edge";
   std::string t = fmt::format(
       "\nThe loop's most oblique rim end: section {:.2f} deg, dihedral {:.2f} deg, crossing {:.2f} deg (wedge "
-      "exponent {:.3f} at the dihedral, {:.3f} at the section). Measured edge exponent: oblique {}, perpendicular "
-      "{}.\n\n| h_e / b | oblique edge / interior | perpendicular edge / interior | oblique / perpendicular - 1 |\n"
-      "|---|---|---|---|\n",
+      "exponent {:.3f} at the dihedral, {:.3f} at the section); q = {:.6g} N/m, R = {:.4g} m, {}.",
       e.section_angle_rad / degree, e.dihedral_angle_rad / degree, e.crossing_angle_rad / degree,
       contact::edge_on_rigid_plane_exponent(e.dihedral_angle_rad),
-      contact::edge_on_rigid_plane_exponent(e.section_angle_rad), exponent(study.oblique),
-      exponent(study.perpendicular));
+      contact::edge_on_rigid_plane_exponent(e.section_angle_rad), study.oblique.setup.load_n_per_m,
+      study.oblique.setup.radius_m,
+      study.rounded ? fmt::format("r_e = {:.4g} m", study.oblique.setup.edge_radius_m) : std::string("sharp edge"));
+  if (study.rounded)
+    t += fmt::format(" Oblique: {}; perpendicular: {}.", status(study.oblique), status(study.perpendicular));
+  else
+    t += fmt::format(" Measured edge exponent: oblique {}, perpendicular {}.", exponent(study.oblique),
+                     exponent(study.perpendicular));
+  t += fmt::format("\n\n| h_e / b | oblique {0} / interior | perpendicular {0} / interior | oblique / perpendicular - 1 "
+                   "|\n|---|---|---|---|\n",
+                   what);
   for (const ObliqueEndLevel& l : study.levels)
     t += fmt::format("| {:.4g} | {:.4f} | {:.4f} | {:+.2f} % |\n", l.edge_element_m / study.oblique.half_width_m,
                      l.oblique_ratio, l.perpendicular_ratio, 100 * l.ratio_difference);
+  if (study.difference)
+    t += fmt::format("\nAt each model's last level (oblique {}, perpendicular {}): {:.4f} and {:.4f}, oblique / "
+                     "perpendicular - 1 = {:+.2f} %.\n",
+                     study.oblique.levels.size(), study.perpendicular.levels.size(), *study.oblique.end_to_interior,
+                     *study.perpendicular.end_to_interior, 100 * *study.difference);
+  if (study.difference_bound)
+    t += fmt::format("The perpendicular reduction is within {:.2f} % of the oblique model on this end (both "
+                     "converged within {:.0f} %; the difference plus each ratio's last change).\n",
+                     100 * *study.difference_bound, 100 * study.oblique.setup.tolerance);
   return t;
 }
 } // namespace rollcheck::study::rims
