@@ -18,7 +18,7 @@ mkdir -p "$out"
 common="--radius 0.01 --load 800 --edge-radius 4e-4 --load-rule static --each-load-rule"
 declare -A settings=(
   [oloid]=${OLOID:---samples-per-loop 1024 --orientations 1 --levels 2 --edge-element 0.125 --end-table-step 60 --end-table-radius-step 0}
-  [cylinder]=${CYLINDER:---samples-per-loop 1024 --orientations 1 --levels 2 --edge-element 0.0625 --end-table-step 30 --end-table-radius-step 0})
+  [cylinder]=${CYLINDER:---samples-per-loop 1024 --orientations 1 --levels 2 --edge-element 0.03125 --end-table-step 30 --end-table-radius-step 0})
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
 for body in oloid cylinder; do
   start=$(date +%s)

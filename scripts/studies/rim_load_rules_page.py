@@ -15,8 +15,8 @@ is robust when the same body is ahead under every rule. Otherwise it
 
     scripts/studies/rim_load_rules_page.py OLOID.json CYLINDER.json VERSION COMMON OLOID_SETTINGS CYLINDER_SETTINGS PAGE.md
 
-CYLINDER.json may be "-": a run that has not finished; its columns then say
-so and every verdict that needs it "cannot be judged".
+CYLINDER.json may be "-": a run that gave no JSON; its columns then say so
+and every verdict that needs it "cannot be judged".
 """
 import json
 import sys
@@ -123,7 +123,7 @@ def main():
              f"# cylinder: rollcheck rim --body cylinder {common} {cylinder_settings}",
              "```", "",
              f"Made by {version.split(' (')[0]}: the oloid in {oloid['wall_s']:.0f} s, the cylinder "
-             + (f"in {cylinder['wall_s']:.0f} s" if cylinder else "not run to the end (its columns are empty)")
+             + (f"in {cylinder['wall_s']:.0f} s" if cylinder else "gave no JSON (its columns are empty)")
              + f", each on 2 ranks, all three rules in one run (the interior's FEM and the "
              f"end and flat-rim tables shared; [method](../methods/rims.md#the-load-rule)). Rigid plane, r1 = 10 mm, "
              f"F = 800 N, r_e = 0.4 mm. These are cheaper settings than the table above (coarser edge elements, "
