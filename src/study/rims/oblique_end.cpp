@@ -3,7 +3,6 @@
 #include "study/rims/oblique_end.h"
 #include "core/degree.h"
 #include "contact/rim_dihedral_angle.h"
-#include "contact/hertz.h"
 #include "contact/rim_overhang.h"
 #include "contact/wedge_exponent.h"
 #include "core/error.h"
@@ -13,6 +12,7 @@
 #include "oracle/rolling_study.h"
 #include "oracle/support_set.h"
 #include "study/rims/rim_end_json.h"
+#include "study/rims/rim_loop.h"
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <chrono>
@@ -71,13 +71,7 @@ fem::RimEndSettings oblique_settings(const ObliqueEndSettings& s, const LoopRimE
     // the contact's initial gap, unless the cylinder is asked for by name.
     if (oblique.sheet == fem::SheetModel::automatic)
       oblique.sheet = fem::SheetModel::flat;
-    oblique.resolve_boundary_layer = true;
-    oblique.extra_levels = std::max(oblique.extra_levels, 1);
-    const double modulus = contact::effective_modulus(oblique.youngs_modulus_pa, oblique.poisson_ratio, false);
-    const double b = contact::line_contact(oblique.load_n_per_m, oblique.radius_m, modulus, oblique.poisson_ratio)
-                         .half_width_m;
-    oblique.depth_over_half_width
-        = std::max(oblique.depth_over_half_width, s.depth_over_edge_radius * s.end.edge_radius_m / b);
+    oblique = resolved_as_loop_end(oblique, s.depth_over_edge_radius);
   }
   return oblique;
 }

@@ -78,17 +78,7 @@ fem::RimEndSettings end_settings(const RimLoopSettings& s, double radius_m, doub
   e.youngs_modulus_pa = s.loop.youngs_modulus_pa;
   e.poisson_ratio = s.loop.poisson_ratio;
   e.xdmf_path.clear(); // one end's fields, not the loop's
-  e.resolve_boundary_layer = true; // every end's ratio is a number of the end, not of the mesh
-  // An end whose levels still differ gets a third, as a flat-rim node does:
-  // the preprint's body's steel end table had 4 of 15 nodes at 3.3-6.4 %
-  // per level (docs/notes/rim-runs.md).
-  e.extra_levels = std::max(e.extra_levels, 1);
-  // The fillet must fit in the block, and b varies from end to end: deepen
-  // the block where the setting's H / b would be too shallow for this end's b.
-  if (e.edge_radius_m > 0)
-    e.depth_over_half_width
-        = std::max(e.depth_over_half_width, s.depth_over_edge_radius * e.edge_radius_m / half_width(e));
-  return e;
+  return resolved_as_loop_end(e, s.depth_over_edge_radius);
 }
 
 /// The flat-rim solves' settings: the loop's load and material, the end
@@ -508,6 +498,20 @@ loop_scores::LoopSamples loaded_ends_of(const std::vector<RuleSamples>& rules)
   return covered;
 }
 } // namespace
+
+fem::RimEndSettings resolved_as_loop_end(fem::RimEndSettings e, double depth_over_edge_radius)
+{
+  e.resolve_boundary_layer = true; // every end's ratio is a number of the end, not of the mesh
+  // An end whose levels still differ gets a third, as a flat-rim node does:
+  // the preprint's body's steel end table had 4 of 15 nodes at 3.3-6.4 %
+  // per level (docs/notes/rim-runs.md).
+  e.extra_levels = std::max(e.extra_levels, 1);
+  // The fillet must fit in the block, and b varies from end to end: deepen
+  // the block where the setting's H / b would be too shallow for this end's b.
+  if (e.edge_radius_m > 0)
+    e.depth_over_half_width = std::max(e.depth_over_half_width, depth_over_edge_radius * e.edge_radius_m / half_width(e));
+  return e;
+}
 
 RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
 {

@@ -245,6 +245,12 @@ struct RimLoopResult
   double flat_rim_seam_dihedral() const;
 };
 
+/// `e` resolved as the loop resolves every end model: the fillet's boundary
+/// layer resolved, one extra level where the last two differ, and for a
+/// rounded edge the block at least `depth_over_edge_radius` r_e deep (b
+/// varies from end to end, so H / b is deepened where it is too shallow).
+fem::RimEndSettings resolved_as_loop_end(fem::RimEndSettings e, double depth_over_edge_radius);
+
 /// Collective on `comm` (every rank gets the result). The end's counter-face
 /// sets the loop's too (settings.loop.elastic_plane: a steel block gives the
 /// slices the pair's E*). InputError naming the setting for bad settings;
