@@ -124,6 +124,11 @@ geometry::SurfaceMesh mass_mesh(const geometry::BodySpec& spec, int mass_points)
   return geometry::make_body(fine);
 }
 
+Eigen::Vector3d rolling_centre_of_mass(const geometry::BodySpec& spec)
+{
+  return mass_model_of_mesh(mass_mesh(spec, RollingStudyParameters{}.mass_points), 1.0).centre_of_mass_m;
+}
+
 RealRolling real_rolling(const geometry::BodySpec& spec, const RollingStudyParameters& p)
 {
   validate(p);

@@ -76,6 +76,9 @@ RealRolling real_rolling(const geometry::BodySpec& spec, const RollingStudyParam
 /// The body's mesh for its mass and area, as real_rolling builds it:
 /// `mass_points` samples per circle (or cylinder sides).
 geometry::SurfaceMesh mass_mesh(const geometry::BodySpec& spec, int mass_points);
+/// The body's centre of mass as real_rolling takes it (body frame): that of
+/// mass_mesh at the default mass_points.
+Eigen::Vector3d rolling_centre_of_mass(const geometry::BodySpec& spec);
 
 struct RollingStudyResult
 {

@@ -157,8 +157,7 @@ LoopEnd body_loop_end(const geometry::BodySpec& body, double interior_angle_rad,
   const Eigen::Vector3d centre_of_mass
       = body.body == "oloid"
             ? Eigen::Vector3d(0.5 * (circles[0].centre_m + circles[1].centre_m))
-            : oracle::mass_model_of_mesh(oracle::mass_mesh(body, oracle::RollingStudyParameters{}.mass_points), 1.0)
-                  .centre_of_mass_m;
+            : oracle::rolling_centre_of_mass(body);
   if (interior_angle_rad >= std::numbers::pi)
     return flattest_loop_ends(circles, centre_of_mass, {}).flattest;
   const double angles[1] = {interior_angle_rad};

@@ -35,18 +35,10 @@ std::vector<oracle::Circle> body_circles(const geometry::BodySpec& body)
                                body.body));
 }
 
-/// The body's centre of mass, from its mass mesh as real rolling takes it
-/// (oracle/rolling_study.h).
-Eigen::Vector3d centre_of_mass(const geometry::BodySpec& spec)
-{
-  return oracle::mass_model_of_mesh(oracle::mass_mesh(spec, oracle::RollingStudyParameters{}.mass_points), 1.0)
-      .centre_of_mass_m;
-}
-
 /// The end models' settings: the end's angles (obliquely: the section and
 /// the crossing), its q and R if taken from the loop, and a rounded edge's
-/// resolution and block as the rim loop sets them (study/rims/rim_loop.cpp
-/// end_settings).
+/// resolution and block as the rim loop sets them (study/rims/rim_loop.h
+/// resolved_as_loop_end).
 fem::RimEndSettings oblique_settings(const ObliqueEndSettings& s, const LoopRimEnd& end)
 {
   fem::RimEndSettings oblique = s.end;
@@ -93,7 +85,7 @@ LoopRimEnd most_oblique_end(const geometry::BodySpec& spec, std::size_t samples)
   const oracle::TwoCircleBody body = oracle::two_circle_body(circles);
   const oracle::ContactLoop loop = oracle::trace_contact_loop(
       body, oracle::contact_curve_point(body, -Eigen::Vector3d::UnitZ()), static_cast<int>(samples));
-  const Eigen::Vector3d centre_of_mass_m = centre_of_mass(spec);
+  const Eigen::Vector3d centre_of_mass_m = oracle::rolling_centre_of_mass(spec);
   LoopRimEnd worst;
   worst.exponent_shift = -1;
   for (std::size_t k = 0; k < loop.directions.size(); ++k)
