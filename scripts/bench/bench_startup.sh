@@ -4,7 +4,9 @@
 # (the executable with DOLFINx, PETSc and gmsh, as every command ran before
 # the split), and against the same work from a case file (`rollcheck run`,
 # which starts MPI): `--version`, and the approximate oracle on the published
-# oloid mesh. Prints the mean of N runs and the ratios.
+# oloid mesh; and that case run with Open MPI's singleton daemon (orted)
+# against the isolated singleton rollcheck asks for (core/mpi_launch.h).
+# Prints the mean of N runs and the ratios.
 #   bash scripts/bench/bench_startup.sh [BUILD_CLI_FOLDER] [N]
 set -euo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
@@ -31,3 +33,6 @@ printf '%-20s %12s %14s %8s %16s %8s\n' "" "rollcheck" "rollcheck-fem" "ratio" "
 printf '%-20s %10.4f s %12.4f s %7.1fx\n' "--version" "$v_fast" "$v_fem" "$(echo "$v_fem / $v_fast" | bc -l)"
 printf '%-20s %10.4f s %12.4f s %7.1fx %14.4f s %7.1fx\n' "approximate oracle" "$a_fast" "$a_fem" \
   "$(echo "$a_fem / $a_fast" | bc -l)" "$a_run" "$(echo "$a_run / $a_fast" | bc -l)"
+a_daemon=$(OMPI_MCA_ess_singleton_isolated=0 mean "$cli/rollcheck" run "$tmp/approx.toml" --json /dev/null)
+printf '%-20s %12s %14s %8s\n' "" "isolated" "with orted" "ratio"
+printf '%-20s %10.4f s %12.4f s %7.2fx\n' "run CASE (MPI)" "$a_run" "$a_daemon" "$(echo "$a_run / $a_daemon" | bc -l)"

@@ -27,9 +27,6 @@ namespace rollcheck::cli
 /// not an option, since rollcheck's own options take no values.
 std::string subcommand_in(const std::vector<std::string>& args);
 
-/// Whether a launcher (mpirun) started this process.
-bool launched_by_mpi();
-
 /// Whether the command line is one of the fast subcommands (mesh, oracle,
 /// search, optimize, report, audit) without FEM-SDS scores, outside mpirun:
 /// what needs neither MPI nor the FEM libraries.

@@ -3,6 +3,7 @@
 // it, PETSc's options and its end, and the FEM subcommands.
 #include "cli/cli.h"
 #include "core/error.h"
+#include "core/mpi_launch.h"
 #include "fem/first_failure.h"
 #include "fem/petsc_session.h"
 #include "geometry/tetrahedralize.h"
@@ -56,6 +57,7 @@ ProcessSession::ProcessSession(int& argc, char**& argv, const std::vector<std::s
 {
   if (!needs_mpi(args))
     return;
+  prefer_isolated_mpi_singleton();
   int provided;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
   MPI_Comm_dup(MPI_COMM_WORLD, &outcome_comm);

@@ -6,6 +6,7 @@
 // errors to exit codes. Both executables are built from this file.
 #include "cli/cli.h"
 #include "core/error.h"
+#include "core/mpi_launch.h"
 #include "rollcheck_version.h"
 #include <algorithm>
 #include <cstdlib>
@@ -94,11 +95,6 @@ std::string subcommand_in(const std::vector<std::string>& args)
 {
   const auto name = std::ranges::find_if(args, [](const std::string& a) { return !a.starts_with('-'); });
   return name == args.end() ? "" : *name;
-}
-
-bool launched_by_mpi()
-{
-  return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK") || std::getenv("PMI_RANK");
 }
 
 bool fast_command(const std::vector<std::string>& args)

@@ -1,5 +1,6 @@
 #include "fem/petsc_session.h"
 #include "core/error.h"
+#include "core/mpi_launch.h"
 #include <cstdlib>
 #include <dolfinx/common/log.h>
 #include <petscsys.h>
@@ -17,6 +18,10 @@ void ensure_petsc()
   // the user asked for trace output (-vv).
   loguru::g_stderr_verbosity = spdlog::get_level() <= spdlog::level::trace ? loguru::Verbosity_INFO
                                                                            : loguru::Verbosity_WARNING;
+  int mpi_running = 0;
+  MPI_Initialized(&mpi_running);
+  if (!mpi_running)
+    prefer_isolated_mpi_singleton();
   if (PetscInitializeNoArguments() != 0)
     throw ComputationError("PETSc failed to initialise");
   std::atexit([] {
