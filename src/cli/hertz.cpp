@@ -55,10 +55,13 @@ const SceneSchema<fem::HertzSettings>& hertz_schema()
                  "3d: extra refine levels about the contact's edge circle (the Hertz radius)", io::Bounds{0, 6})
         .include(penalty_schema(), &HertzSettings::penalty_c)
         .choice("pressure_recovery", "--pressure-recovery", &HertzSettings::pressure_recovery,
-                "Nodal contact pressure from the nodal contact forces: consistent (the contact patch's mass-matrix "
-                "system, exact for a linear pressure) or lumped (force over tributary area: the more accurate "
-                "on the default meshes)",
-                {{"lumped", fem::PressureRecovery::lumped}, {"consistent", fem::PressureRecovery::consistent}})
+                "Nodal contact pressure: lumped (nodal contact force over tributary area), consistent (the contact "
+                "patch's mass-matrix system, exact for a linear pressure), penalty (kappa <-g>_+ at the node) or "
+                "touching (lumped where the node's gap is closed, 0 where it is open)",
+                {{"lumped", fem::PressureRecovery::lumped},
+                 {"consistent", fem::PressureRecovery::consistent},
+                 {"penalty", fem::PressureRecovery::penalty},
+                 {"touching", fem::PressureRecovery::touching}})
         .flag("elastic_plane", "--elastic-plane", &HertzSettings::elastic_plane,
               "Compare with two identical elastic bodies, E* = E / (2 (1 - nu^2)), as the preprint did (flagged)")
         .real("contact_element_size_m", "--contact-element-size", &HertzSettings::contact_element_size_m, "m",

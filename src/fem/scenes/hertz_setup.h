@@ -12,13 +12,18 @@
 
 namespace rollcheck::fem
 {
-/// How the nodal contact pressure is recovered from the nodal contact forces
-/// F_i: lumped, F_i / A_i (fem/nodal_fields.h), or consistent, the contact
-/// patch's mass-matrix system M p = F (fem/consistent_pressure.h).
+/// How the nodal contact pressure is found: recovered from the nodal contact
+/// forces F_i, lumped, F_i / A_i (fem/nodal_fields.h), or consistent, the
+/// contact patch's mass-matrix system M p = F (fem/consistent_pressure.h);
+/// or read from the penalty's gap at the node (fem/penalty_pressure.h):
+/// penalty, kappa <-g_i>_+; touching, the lumped pressure where g_i < 0 and
+/// 0 where the node's gap is open.
 enum class PressureRecovery
 {
   lumped,
-  consistent
+  consistent,
+  penalty,
+  touching
 };
 
 struct HertzSettings
@@ -74,7 +79,7 @@ struct HertzSettings
 /// plane strain, within them from level 0, takes the axisymmetric level.
 int default_refine(Model model, int degree);
 
-/// "lumped" or "consistent".
+/// "lumped", "consistent", "penalty" or "touching".
 std::string recovery_name(PressureRecovery recovery);
 
 /// InputError naming the bad field; called by solve_hertz.
