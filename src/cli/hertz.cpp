@@ -157,7 +157,7 @@ void add_hertz_command(CLI::App& app)
   sub->add_option("--study", study.name,
                   "Run a study instead of one case: convergence (refine levels of every model and degree) or "
                   "penalty (penalty_c from 0.1 to 1000) or pointwise (3d cost against the largest nodal pressure's "
-                  "and the profile's error, both pressure recoveries); writes a CSV and a PNG to --out")
+                  "and the profile's error, by pressure recovery); writes a CSV and a PNG to --out")
       ->check(CLI::IsMember({"convergence", "penalty", "pointwise"}));
   sub->add_option("--out", study.out, "Folder for the study's CSV and PNG (default: results/hertz)");
   sub->add_option("--study-models", study.models, "Models the study covers (default: axi plane-strain 3d)")
