@@ -61,8 +61,10 @@ struct HertzSettings
   double force_rtol = 1e-6;           ///< load control: |F_h - F| / F at the end
   /// Nodal pressure recovery. Lumped: consistent recovery, exact for a
   /// pressure linear over a node's patch, amplifies the nodal forces' own
-  /// scatter and is the less accurate on every model's default mesh
-  /// (docs/methods/hertz-fem.md#pointwise-accuracy-in-3d-open).
+  /// scatter and is the less accurate on every model's default mesh; in 3D
+  /// P1 penalty and touching are the lumped recovery to the digit, and with
+  /// P2 penalty overshoots at the vertices while touching helps only where
+  /// the edge is refined (docs/methods/hertz-fem.md#pointwise-accuracy-in-3d-open).
   PressureRecovery pressure_recovery = PressureRecovery::lumped;
   /// Extra PETSc options, e.g. "-hertz_ksp_type gmres"; the solver's prefix is "hertz_".
   std::string petsc_options;
