@@ -55,10 +55,13 @@ const SceneSchema<fem::HertzSettings>& hertz_schema()
                  "3d: extra refine levels about the contact's edge circle (the Hertz radius)", io::Bounds{0, 6})
         .include(penalty_schema(), &HertzSettings::penalty_c)
         .choice("pressure_recovery", "--pressure-recovery", &HertzSettings::pressure_recovery,
-                "Nodal contact pressure from the nodal contact forces: consistent (the contact patch's mass-matrix "
-                "system, exact for a linear pressure) or lumped (force over tributary area: the more accurate "
-                "on the default meshes)",
-                {{"lumped", fem::PressureRecovery::lumped}, {"consistent", fem::PressureRecovery::consistent}})
+                "Nodal contact pressure: lumped (nodal contact force over tributary area), consistent (the contact "
+                "patch's mass-matrix system, exact for a linear pressure), penalty (kappa <-g>_+ at the node) or "
+                "touching (lumped where the node's gap is closed, 0 where it is open)",
+                {{"lumped", fem::PressureRecovery::lumped},
+                 {"consistent", fem::PressureRecovery::consistent},
+                 {"penalty", fem::PressureRecovery::penalty},
+                 {"touching", fem::PressureRecovery::touching}})
         .flag("elastic_plane", "--elastic-plane", &HertzSettings::elastic_plane,
               "Compare with two identical elastic bodies, E* = E / (2 (1 - nu^2)), as the preprint did (flagged)")
         .real("contact_element_size_m", "--contact-element-size", &HertzSettings::contact_element_size_m, "m",
@@ -154,7 +157,7 @@ void add_hertz_command(CLI::App& app)
   sub->add_option("--study", study.name,
                   "Run a study instead of one case: convergence (refine levels of every model and degree) or "
                   "penalty (penalty_c from 0.1 to 1000) or pointwise (3d cost against the largest nodal pressure's "
-                  "and the profile's error, both pressure recoveries); writes a CSV and a PNG to --out")
+                  "and the profile's error, by pressure recovery); writes a CSV and a PNG to --out")
       ->check(CLI::IsMember({"convergence", "penalty", "pointwise"}));
   sub->add_option("--out", study.out, "Folder for the study's CSV and PNG (default: results/hertz)");
   sub->add_option("--study-models", study.models, "Models the study covers (default: axi plane-strain 3d)")

@@ -23,7 +23,14 @@ int default_refine(Model model, int degree)
 
 std::string recovery_name(PressureRecovery recovery)
 {
-  return recovery == PressureRecovery::consistent ? "consistent" : "lumped";
+  switch (recovery)
+  {
+  case PressureRecovery::lumped: return "lumped";
+  case PressureRecovery::consistent: return "consistent";
+  case PressureRecovery::penalty: return "penalty";
+  case PressureRecovery::touching: return "touching";
+  }
+  return "lumped";
 }
 
 void validate(const HertzSettings& s)

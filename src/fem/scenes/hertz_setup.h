@@ -12,13 +12,18 @@
 
 namespace rollcheck::fem
 {
-/// How the nodal contact pressure is recovered from the nodal contact forces
-/// F_i: lumped, F_i / A_i (fem/nodal_fields.h), or consistent, the contact
-/// patch's mass-matrix system M p = F (fem/consistent_pressure.h).
+/// How the nodal contact pressure is found: recovered from the nodal contact
+/// forces F_i, lumped, F_i / A_i (fem/nodal_fields.h), or consistent, the
+/// contact patch's mass-matrix system M p = F (fem/consistent_pressure.h);
+/// or read from the penalty's gap at the node (fem/penalty_pressure.h):
+/// penalty, kappa <-g_i>_+; touching, the lumped pressure where g_i < 0 and
+/// 0 where the node's gap is open.
 enum class PressureRecovery
 {
   lumped,
-  consistent
+  consistent,
+  penalty,
+  touching
 };
 
 struct HertzSettings
@@ -56,8 +61,10 @@ struct HertzSettings
   double force_rtol = 1e-6;           ///< load control: |F_h - F| / F at the end
   /// Nodal pressure recovery. Lumped: consistent recovery, exact for a
   /// pressure linear over a node's patch, amplifies the nodal forces' own
-  /// scatter and is the less accurate on every model's default mesh
-  /// (docs/methods/hertz-fem.md#pointwise-accuracy-in-3d-open).
+  /// scatter and is the less accurate on every model's default mesh; in 3D
+  /// P1 penalty and touching are the lumped recovery to the digit, and with
+  /// P2 penalty overshoots at the vertices while touching helps only where
+  /// the edge is refined (docs/methods/hertz-fem.md#pointwise-accuracy-in-3d-open).
   PressureRecovery pressure_recovery = PressureRecovery::lumped;
   /// Extra PETSc options, e.g. "-hertz_ksp_type gmres"; the solver's prefix is "hertz_".
   std::string petsc_options;
@@ -74,7 +81,7 @@ struct HertzSettings
 /// plane strain, within them from level 0, takes the axisymmetric level.
 int default_refine(Model model, int degree);
 
-/// "lumped" or "consistent".
+/// "lumped", "consistent", "penalty" or "touching".
 std::string recovery_name(PressureRecovery recovery);
 
 /// InputError naming the bad field; called by solve_hertz.

@@ -5,6 +5,7 @@
 #include "fem/consistent_pressure.h"
 #include "fem/load_control.h"
 #include "fem/nodal_fields.h"
+#include "fem/penalty_pressure.h"
 #include "fem/petsc_session.h"
 #include "fem/mesh/scene_mesh.h"
 #include "fem/write_fields.h"
@@ -76,8 +77,13 @@ double penalty_stiffness(const HertzResult& result)
 NodalFields hertz_fields(const PenaltyContact& problem, PressureRecovery recovery)
 {
   NodalFields fields = recover_nodal_fields(problem);
+  auto& pressure = static_cast<ContactPressure&>(fields);
   if (recovery == PressureRecovery::consistent)
-    static_cast<ContactPressure&>(fields) = consistent_contact_pressure(problem);
+    pressure = consistent_contact_pressure(problem);
+  if (recovery == PressureRecovery::penalty)
+    pressure = penalty_nodal_pressure(problem);
+  if (recovery == PressureRecovery::touching)
+    pressure = touching_lumped_pressure(problem);
   return fields;
 }
 

@@ -22,12 +22,14 @@ namespace rollcheck::fem
 std::vector<HertzSettings> convergence_study(const HertzSettings& base, const std::vector<Model>& models);
 
 /// Cost against pointwise error (the largest nodal pressure and the
-/// profile's RMS, besides the fitted a and p0), each setup with the lumped
-/// and the consistent pressure recovery: the axisymmetric P1 default as the
+/// profile's RMS, besides the fitted a and p0), with the lumped and the
+/// consistent pressure recovery: the axisymmetric P1 default as the
 /// reference, then 3D P1 refine 0..3, 3D P1 at the default refine with 10x
-/// the base's penalty_c, and 3D P2 refine 0; then, lumped only, 3D P2
-/// refine 0 with pole_refine 2 alone, with edge_refine 2 and 3 besides, and
-/// with edge_refine 2 at 10x the base's penalty_c.
+/// the base's penalty_c, and 3D P2 refine 0 (also with the penalty's nodal
+/// pressure); then 3D P2 refine 0 with pole_refine 2 alone (lumped), with
+/// edge_refine 2 (lumped and touching), edge_refine 3 (lumped), pole and
+/// edge refine 3 (touching), and edge_refine 2 at 10x the base's penalty_c
+/// (lumped).
 std::vector<HertzSettings> pointwise_study(const HertzSettings& base);
 
 /// penalty_c in {0.1, 0.3, 1, 3, 10, 30, 100, 300, 1000}, P1, default mesh.
