@@ -129,16 +129,29 @@ Eigen::Vector3d rolling_centre_of_mass(const geometry::BodySpec& spec)
   return mass_model_of_mesh(mass_mesh(spec, RollingStudyParameters{}.mass_points), 1.0).centre_of_mass_m;
 }
 
+RollingMass rolling_mass(const geometry::BodySpec& spec, const RollingStudyParameters& p)
+{
+  const geometry::SurfaceMesh fine = mass_mesh(spec, p.mass_points);
+  return {mass_model_of_mesh(fine, p.mass_kg), geometry::mass_properties(fine).area_m2};
+}
+
 RealRolling real_rolling(const geometry::BodySpec& spec, const RollingStudyParameters& p)
 {
   validate(p);
   if (spec.body == "sphere")
     return sphere_rolling(spec, p);
+  return real_rolling(spec, p, rolling_mass(spec, p));
+}
+
+RealRolling real_rolling(const geometry::BodySpec& spec, const RollingStudyParameters& p, const RollingMass& body_mass)
+{
+  validate(p);
+  if (spec.body == "sphere")
+    return sphere_rolling(spec, p);
   const TwoCircleBody body = two_circle_body(line_contact_circles(spec));
-  const geometry::SurfaceMesh fine = mass_mesh(spec, p.mass_points);
-  const MassModel mass = mass_model_of_mesh(fine, p.mass_kg);
+  const MassModel& mass = body_mass.mass;
   RealRolling run;
-  run.surface_area_m2 = geometry::mass_properties(fine).area_m2;
+  run.surface_area_m2 = body_mass.surface_area_m2;
   run.circles = line_contact_circles(spec);
   run.mass = mass;
 

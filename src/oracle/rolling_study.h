@@ -73,6 +73,20 @@ std::vector<Circle> line_contact_circles(const geometry::BodySpec& spec);
 /// Runs the dynamics. InputError for bodies the rolling model does not cover
 /// (uv-sphere, hemisphere, rollers of three or more circles) and for bad parameters.
 RealRolling real_rolling(const geometry::BodySpec& spec, const RollingStudyParameters& parameters);
+/// The body's mass model and surface area as real_rolling takes them (from
+/// mass_mesh at parameters.mass_points, of parameters.mass_kg): they do not
+/// depend on how the body rolls, so a study that rolls one body at several
+/// energies builds them once (the mesh's hull is most of a short run's time).
+struct RollingMass
+{
+  MassModel mass;
+  double surface_area_m2 = 0;
+};
+RollingMass rolling_mass(const geometry::BodySpec& spec, const RollingStudyParameters& parameters);
+/// real_rolling with the body's mass built already: rolling_mass(spec,
+/// parameters) of the same spec, mass_points and mass_kg.
+RealRolling real_rolling(const geometry::BodySpec& spec, const RollingStudyParameters& parameters,
+                         const RollingMass& mass);
 /// The body's mesh for its mass and area, as real_rolling builds it:
 /// `mass_points` samples per circle (or cylinder sides).
 geometry::SurfaceMesh mass_mesh(const geometry::BodySpec& spec, int mass_points);

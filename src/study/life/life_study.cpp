@@ -43,12 +43,13 @@ Runs roll_every_body(const LifeSettings& s)
   const std::vector<std::string>& energies = s.grid[choice_index(s.grid, "rolling_energy")].values;
   Runs runs(s.bodies.size());
   auto roll = [&](std::size_t b) {
+    oracle::RollingStudyParameters p;
+    p.samples_per_loop = s.samples_per_loop;
+    const oracle::RollingMass mass = oracle::rolling_mass(s.bodies[b].spec, p); // the same at every energy
     for (const std::string& energy : energies)
     {
-      oracle::RollingStudyParameters p;
       p.rolling_energy = std::stod(energy);
-      p.samples_per_loop = s.samples_per_loop;
-      runs[b].emplace(energy, oracle::real_rolling(s.bodies[b].spec, p));
+      runs[b].emplace(energy, oracle::real_rolling(s.bodies[b].spec, p, mass));
     }
     spdlog::info("life: {} rolled at {} energies", s.bodies[b].name, energies.size());
   };

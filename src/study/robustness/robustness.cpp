@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <limits>
 #include <map>
+#include <optional>
 #include <future>
 #include <mutex>
 #include <set>
@@ -202,6 +203,7 @@ std::vector<double> genome_values(const geometry::BodySpec& spec, const std::vec
   std::map<double, std::vector<std::size_t>> by_energy;
   for (std::size_t i = 0; i < cells.size(); ++i)
     by_energy[decode(s.grid, cells[i], s).energy_excess].push_back(i);
+  std::optional<oracle::RollingMass> mass; // the same at every energy: built once
   for (const auto& [energy, at] : by_energy)
   {
     oracle::RollingStudyParameters p;
@@ -210,7 +212,9 @@ std::vector<double> genome_values(const geometry::BodySpec& spec, const std::vec
     oracle::RealRolling run;
     try
     {
-      run = oracle::real_rolling(spec, p);
+      if (!mass)
+        mass = oracle::rolling_mass(spec, p);
+      run = oracle::real_rolling(spec, p, *mass);
     }
     catch (const InputError&)
     {
