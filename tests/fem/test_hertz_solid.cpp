@@ -29,6 +29,21 @@ TEST(HertzSolid, SteelHemisphereDefault)
   EXPECT_LT(r.krylov_iterations, 60 * r.newton_iterations);
 }
 
+namespace
+{
+/// P2 at refine 0 with the pole and the contact's edge refined two levels.
+fem::HertzSettings refined_p2()
+{
+  fem::HertzSettings s;
+  s.model = fem::Model::solid;
+  s.degree = 2;
+  s.refine = 0;
+  s.pole_refine = 2;
+  s.edge_refine = 2;
+  return s;
+}
+} // namespace
+
 // P2 at refine 0 with the pole and the contact's edge refined two levels
 // (--degree 2 --refine 0 --pole-refine 2 --edge-refine 2): pointwise against
 // Hertz's profile p0 sqrt(1 - s^2 / a^2). The interior (s < 0.9 a) within
@@ -39,12 +54,7 @@ TEST(HertzSolid, SteelHemisphereDefault)
 // Minutes serially: labelled long (tests/CMakeLists.txt).
 TEST(HertzSolid, RefinedP2IsPointwiseWithinOnePercent)
 {
-  fem::HertzSettings s;
-  s.model = fem::Model::solid;
-  s.degree = 2;
-  s.refine = 0;
-  s.pole_refine = 2;
-  s.edge_refine = 2;
+  const fem::HertzSettings s = refined_p2();
   const fem::HertzResult r = fem::solve_hertz(MPI_COMM_WORLD, s);
   const fem::HertzReference& h = r.hertz;
   EXPECT_LT(error(r.contact_size_m, h.contact_size_m), 0.01);
@@ -65,12 +75,7 @@ TEST(HertzSolid, RefinedP2IsPointwiseWithinOnePercent)
 // Minutes serially: labelled long (tests/CMakeLists.txt).
 TEST(HertzSolid, TouchingRecoveryLowersTheRefinedP2ProfileErrorAtTheEdgeAlone)
 {
-  fem::HertzSettings s;
-  s.model = fem::Model::solid;
-  s.degree = 2;
-  s.refine = 0;
-  s.pole_refine = 2;
-  s.edge_refine = 2;
+  fem::HertzSettings s = refined_p2();
   const fem::HertzResult lumped = fem::solve_hertz(MPI_COMM_WORLD, s);
   s.pressure_recovery = fem::PressureRecovery::touching;
   const fem::HertzResult touching = fem::solve_hertz(MPI_COMM_WORLD, s);
