@@ -91,7 +91,10 @@ TEST(AuditRunner, EachCommandGetsItsOwnCpuTime)
   EXPECT_GE(burner.cpu_s, 0.3);
   EXPECT_LT(burner.cpu_s, 0.6); // the sleeper's share not added
   EXPECT_GE(burner.wall_s, burner.cpu_s); // one thread
-  EXPECT_LT(sleeper.cpu_s, 0.1); // the burner's 0.3 s, reaped while it slept, not counted here
+  // The burner's >= 0.3 s, reaped while the sleeper slept, not counted here:
+  // the sleeper's own start-up (0.13 s seen on a machine at load 7) stays
+  // below half of the burner's, which the burner's share added would not.
+  EXPECT_LT(sleeper.cpu_s, 0.5 * burner.cpu_s);
 }
 
 TEST(AuditRunner, SelectsClaimsInTheTablesOrderAndRefusesAnUnknownId)
