@@ -5,8 +5,8 @@
 // "singleton" when it initialises MPI. Open MPI 4 then forks and execs a
 // supporting daemon (orted) unless the MCA parameter ess_singleton_isolated
 // is set; rollcheck never spawns processes through MPI (MPI_Comm_spawn), so
-// it asks for the isolated singleton and saves the daemon's start (about
-// 0.2 s of each FEM process: scripts/bench/bench_startup.sh).
+// it asks for the isolated singleton and saves the daemon's start
+// (scripts/bench/bench_startup.sh measures both).
 // Reference: Open MPI 4.1 `ompi_info --all`, component ess singleton.
 
 namespace rollcheck
