@@ -18,10 +18,7 @@ void ensure_petsc()
   // the user asked for trace output (-vv).
   loguru::g_stderr_verbosity = spdlog::get_level() <= spdlog::level::trace ? loguru::Verbosity_INFO
                                                                            : loguru::Verbosity_WARNING;
-  int mpi_running = 0;
-  MPI_Initialized(&mpi_running);
-  if (!mpi_running)
-    prefer_isolated_mpi_singleton();
+  prefer_isolated_mpi_singleton(); // read only if PETSc starts MPI here
   if (PetscInitializeNoArguments() != 0)
     throw ComputationError("PETSc failed to initialise");
   std::atexit([] {

@@ -146,8 +146,6 @@ RealRolling real_rolling(const geometry::BodySpec& spec, const RollingStudyParam
 RealRolling real_rolling(const geometry::BodySpec& spec, const RollingStudyParameters& p, const RollingMass& body_mass)
 {
   validate(p);
-  if (spec.body == "sphere")
-    return sphere_rolling(spec, p);
   const TwoCircleBody body = two_circle_body(line_contact_circles(spec));
   const MassModel& mass = body_mass.mass;
   RealRolling run;

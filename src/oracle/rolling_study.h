@@ -83,8 +83,9 @@ struct RollingMass
   double surface_area_m2 = 0;
 };
 RollingMass rolling_mass(const geometry::BodySpec& spec, const RollingStudyParameters& parameters);
-/// real_rolling with the body's mass built already: rolling_mass(spec,
-/// parameters) of the same spec, mass_points and mass_kg.
+/// real_rolling of a body with line contact (require_line_contact: not the
+/// sphere) with its mass built already: rolling_mass(spec, parameters) of
+/// the same spec, mass_points and mass_kg.
 RealRolling real_rolling(const geometry::BodySpec& spec, const RollingStudyParameters& parameters,
                          const RollingMass& mass);
 /// The body's mesh for its mass and area, as real_rolling builds it:
