@@ -14,19 +14,30 @@
 # time, and a script that CTest runs after the discovered tests' own
 # (rollcheck_test_labels) sets the labels from that map.
 
-# rollcheck_test_names(OUT SOURCE): the Suite.Name of every TEST and TEST_P in
-# SOURCE. A test whose declaration this does not read would get no file and
-# so no label: that is an error here, not a test quietly in the wrong suite.
-function(rollcheck_test_names out source)
+# rollcheck_test_names(OUT FILTER SOURCE): the Suite.Name of every TEST and
+# TEST_P in SOURCE, and the --gtest_filter of their tests (a parameterised
+# test's are PREFIX/Suite.Name/VALUE). A test whose declaration this does not
+# read would get no file and so no label: that is an error here, not a test
+# quietly in the wrong suite.
+function(rollcheck_test_names out filter source)
   file(STRINGS ${source} declared REGEX "^[ \t]*TEST(_P|_F)?[ \t]*\\(")
   set(names)
+  set(patterns)
   foreach(line ${declared})
     if(NOT line MATCHES "^TEST(_P)?\\(([A-Za-z0-9_]+), ([A-Za-z0-9_]+)\\)")
       message(FATAL_ERROR "${source}: cannot read the test's name from `${line}` (one line, TEST(Suite, Name))")
     endif()
-    list(APPEND names ${CMAKE_MATCH_2}.${CMAKE_MATCH_3})
+    set(name ${CMAKE_MATCH_2}.${CMAKE_MATCH_3})
+    list(APPEND names ${name})
+    if(CMAKE_MATCH_1)
+      list(APPEND patterns */${name}/*)
+    else()
+      list(APPEND patterns ${name})
+    endif()
   endforeach()
+  list(JOIN patterns ":" patterns)
   set(${out} ${names} PARENT_SCOPE)
+  set(${filter} ${patterns} PARENT_SCOPE)
 endfunction()
 
 # rollcheck_test_layers(OUT SOURCE): the libraries of every layer named in
@@ -65,16 +76,13 @@ function(rollcheck_test_executable exe)
     get_filename_component(file ${src} NAME_WE)
     rollcheck_test_layers(file_layers ${src})
     list(APPEND layers ${file_layers})
-    rollcheck_test_names(names ${src})
-    set(filter)
+    rollcheck_test_names(names filter ${src})
     foreach(test ${names})
       if(DEFINED source_of_${test})
         message(FATAL_ERROR "${exe}: ${test} is defined in ${file} and in ${source_of_${test}}")
       endif()
       set(source_of_${test} ${file})
       string(APPEND map "set(rollcheck_file_${test} ${file})\n")
-      # A parameterised test's names are PREFIX/Suite.Name/VALUE.
-      list(APPEND filter ${test} */${test}/*)
     endforeach()
     # A renamed test would match no entry and quietly rejoin the default suite.
     foreach(entry ${arg_LONG_CASES})
@@ -85,9 +93,13 @@ function(rollcheck_test_executable exe)
         list(APPEND long_names ${CMAKE_MATCH_1})
       endif()
     endforeach()
+    # build/tests/test_NAME, the commands the docs quote, runs this file's
+    # tests (a --gtest_filter given to it replaces the file's filter).
+    file(GENERATE OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/${file}
+         CONTENT "#!/bin/sh\n# ${file}'s tests in ${exe}\nexec $<TARGET_FILE:${exe}> '--gtest_filter=${filter}' \"$@\"\n"
+         FILE_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_EXECUTE WORLD_READ WORLD_EXECUTE)
     if(file IN_LIST arg_TWO_RANKS)
       # Node pairs across processes: this file's tests again on 2 ranks.
-      list(JOIN filter ":" filter)
       add_test(NAME ${file}_2_ranks COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} 2 $<TARGET_FILE:${exe}>
                                             --gtest_filter=${filter})
       set(label ${file})

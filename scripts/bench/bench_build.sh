@@ -62,7 +62,17 @@ def profile(name):
     compile_s = sum(s for out, s in last.items() if out.endswith(".o") or out.endswith(".gch"))
     steps = sum(last.values())
     top = sorted(((s, out) for out, s in last.items()), reverse=True)[:6]
-    return dict(wall=wall, cpu=cpu, steps=steps, compile=compile_s, count=len(last), top=top)
+    # Where the steps went: compiling the libraries and executables of src/
+    # (and the generated forms), compiling the tests, linking the tests
+    # (whose step includes gtest_discover_tests starting the executable), the rest.
+    parts = {}
+    for out, s in last.items():
+        compiled = out.endswith(".o") or out.endswith(".gch")
+        part = ("tests compile" if compiled else "tests link") if out.startswith("tests/") else \
+               ("src compile" if compiled else "other")
+        count, total = parts.get(part, (0, 0.0))
+        parts[part] = (count + 1, total + s)
+    return dict(wall=wall, cpu=cpu, steps=steps, compile=compile_s, count=len(last), top=top, parts=parts)
 b, n = profile("base"), profile("new")
 print(f"clean build of {targets}, -j {jobs}, no ccache; base {base} against the tree as it is")
 print(f"{'':28}{'base':>10}{'new':>10}{'new/base':>10}")
@@ -70,6 +80,9 @@ for key, label in (("wall", "wall s"), ("cpu", "processor s (user+sys)"), ("step
                    ("compile", "  of which compiling s")):
     print(f"{label:28}{b[key]:10.0f}{n[key]:10.0f}{n[key] / b[key]:10.2f}")
 print(f"{'ninja steps':28}{b['count']:10d}{n['count']:10d}")
+for part in ("src compile", "tests compile", "tests link", "other"):
+    (bc, bs), (nc, ns) = b["parts"].get(part, (0, 0.0)), n["parts"].get(part, (0, 0.0))
+    print(f"{'  ' + part + ' (steps, s)':28}{f'{bc} {bs:.0f}':>10}{f'{nc} {ns:.0f}':>10}")
 print(f"goal: new/base at most 0.50; precompiled headers refused in the new build: {refused}")
 for name, p in (("base", b), ("new", n)):
     print(f"  {name} slowest: " + ", ".join(f"{out.split('/')[-1]} {s:.0f} s" for s, out in p["top"]))

@@ -9,7 +9,7 @@
 # detect_leaks=0: OpenMPI and PETSc keep what MPI_Init and PetscInitialize
 # allocate until exit without freeing it, so LeakSanitizer would report at the
 # end of every test that starts MPI; leaks of our own are not checked here.
-# TARGETS="test_a test_b": build only those test executables (and what they
+# TARGETS="tests_geometry tests_io": build only those test executables (and what they
 # link) and run only their tests, the light subset on a loaded machine.
 # Usage: scripts/setup/sanitize.sh [ctest arguments...]   (JOBS=N: build/test jobs; TARGETS=...)
 set -euo pipefail
@@ -30,7 +30,7 @@ targets=(${TARGETS:-})
 filter=()
 if ((${#targets[@]})); then
   cmake --build "$build" -j "$jobs" --target "${targets[@]}"
-  # gtest_discover_tests labels each test with its executable's name.
+  # Each test is labelled with its executable's name (cmake/test_labels.cmake).
   filter=(-L "^($(IFS='|'; echo "${targets[*]}"))\$")
 else
   cmake --build "$build" -j "$jobs"
