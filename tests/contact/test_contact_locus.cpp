@@ -12,6 +12,7 @@
 #include "oracle/stratified_samples.h"
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <limits>
 #include <numbers>
 #include <set>
 
@@ -206,4 +207,80 @@ TEST(RimOverhang, CylinderRimsAreSquareAndTheOloidsOtherFaceSupportsTheHull)
     EXPECT_TRUE(std::abs(t) < std::numbers::pi / 2) << t;
   std::printf("oloid rim overhangs %.2f, %.2f deg\n", overhang[0] * 180 / std::numbers::pi,
               overhang[1] * 180 / std::numbers::pi);
+}
+
+namespace
+{
+/// The other face's normal by brute force, from its definition (the first
+/// turn psi of u about the rim's tangent, away from the contact, at which
+/// another circle's support reaches `point`, or the direction leaves the
+/// circle's outward side): a march in steps of 2e-3 rad, then bisection.
+Eigen::Vector3d other_face_normal_by_march(const std::vector<oracle::Circle>& circles, int on,
+                                           const Eigen::Vector3d& point, const Eigen::Vector3d& u)
+{
+  const oracle::Circle& c = circles[static_cast<std::size_t>(on)];
+  const Eigen::Vector3d radial = (point - c.centre_m - (point - c.centre_m).dot(c.normal) * c.normal).normalized();
+  const Eigen::Vector3d turn = c.normal.cross(radial).cross(u).normalized();
+  auto direction = [&](double sense, double psi) { return Eigen::Vector3d(std::cos(psi) * u + sense * std::sin(psi) * turn); };
+  auto excess = [&](double sense, double psi) {
+    double worst = -std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < circles.size(); ++k)
+      if (static_cast<int>(k) != on)
+        worst = std::max(worst, oracle::circle_support(circles[k], direction(sense, psi)) - point.dot(direction(sense, psi)));
+    return worst;
+  };
+  const double sense = excess(1.0, 1e-3) < excess(-1.0, 1e-3) ? 1.0 : -1.0;
+  auto done = [&](double psi) { return excess(sense, psi) >= 0 || direction(sense, psi).dot(radial) <= 0; };
+  double lo = 1e-3, hi = 1e-3;
+  while (!done(hi))
+    lo = hi, hi += 2e-3;
+  for (int i = 0; i < 80; ++i)
+    (done(0.5 * (lo + hi)) ? hi : lo) = 0.5 * (lo + hi);
+  return direction(sense, lo);
+}
+} // namespace
+
+TEST(RimOverhang, OtherFaceNormalIsTheFirstTurnAtWhichAnotherCircleReachesTheEnd)
+{
+  // The closed form (a quadratic in tan(psi) per circle) against the march,
+  // at the support points of both circles over the directions of the sphere,
+  // on the oloid, the cylinder and rollers across the family.
+  std::vector<geometry::BodySpec> specs(3);
+  specs[0].body = "oloid";
+  specs[1].body = "cylinder";
+  specs[2].body = "paper-oloid";
+  for (const geometry::RollerGenome& g : {geometry::RollerGenome{60, 0.7, 0.65}, geometry::RollerGenome{120, 1.3, 0.8},
+                                          geometry::RollerGenome{100, 1.1, 1.4}})
+  {
+    geometry::BodySpec roller;
+    roller.body = "roller";
+    roller.genome = g;
+    specs.push_back(roller);
+  }
+  int compared = 0;
+  for (const geometry::BodySpec& spec : specs)
+  {
+    const std::vector<oracle::Circle> circles = oracle::line_contact_circles(spec);
+    for (int i = 0; i < 400; ++i)
+    {
+      // Directions spread over the sphere (a Fibonacci lattice).
+      const double z = 1 - (2 * i + 1) / 400.0, phi = i * std::numbers::pi * (3 - std::sqrt(5.0));
+      const Eigen::Vector3d u(std::sqrt(1 - z * z) * std::cos(phi), std::sqrt(1 - z * z) * std::sin(phi), z);
+      for (int on = 0; on < 2; ++on)
+      {
+        const oracle::Circle& c = circles[static_cast<std::size_t>(on)];
+        // The point must be a support point of the hull, off the circle's axis.
+        if (oracle::circle_support(c, u) < oracle::circle_support(circles[1 - on], u) - 1e-12 ||
+            (u - c.normal * c.normal.dot(u)).norm() < 1e-3)
+          continue;
+        const Eigen::Vector3d point = oracle::circle_support_point(c, u);
+        const Eigen::Vector3d closed = contact::other_face_normal(circles, on, point, u);
+        const Eigen::Vector3d marched = other_face_normal_by_march(circles, on, point, u);
+        EXPECT_NEAR(closed.norm(), 1.0, 1e-12);
+        EXPECT_LT((closed - marched).norm(), 1e-9) << geometry::body_label(spec) << " u " << u.transpose() << " on " << on;
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, 1000);
 }
