@@ -56,7 +56,8 @@ CellSettings decode(const std::vector<Choice>& grid, const Cell& cell, const Rob
 }
 
 /// Rolling runs of each body, one per energy, kept for every cell and
-/// bisection. Safe to share between threads that each work on other bodies.
+/// bisection; each body's mass model (its hull, the same at every energy)
+/// built once. Safe to share between threads that each work on other bodies.
 class Runs
 {
 public:
@@ -64,23 +65,34 @@ public:
   const oracle::RealRolling& at(int body, double energy_excess, long samples_per_loop)
   {
     const auto key = std::tuple{body, energy_excess, samples_per_loop};
+    const oracle::RollingMass* mass = nullptr;
     {
       std::lock_guard lock(mutex_);
       if (auto it = runs_.find(key); it != runs_.end())
         return it->second;
+      if (auto it = masses_.find(body); it != masses_.end())
+        mass = &it->second;
     }
     oracle::RollingStudyParameters p;
     p.rolling_energy = energy_excess;
     p.samples_per_loop = samples_per_loop;
-    oracle::RealRolling run = oracle::real_rolling(bodies_[body].spec, p);
+    const geometry::BodySpec& spec = bodies_[body].spec;
+    if (!mass)
+    {
+      oracle::RollingMass built = oracle::rolling_mass(spec, p);
+      std::lock_guard lock(mutex_);
+      mass = &masses_.emplace(body, std::move(built)).first->second; // std::map: references stay valid
+    }
+    oracle::RealRolling run = oracle::real_rolling(spec, p, *mass);
     std::lock_guard lock(mutex_);
-    return runs_.emplace(key, std::move(run)).first->second; // std::map: references stay valid
+    return runs_.emplace(key, std::move(run)).first->second;
   }
 
 private:
   const std::vector<NamedBody>& bodies_;
   std::mutex mutex_;
   std::map<std::tuple<int, double, long>, oracle::RealRolling> runs_;
+  std::map<int, oracle::RollingMass> masses_;
 };
 
 /// The scores over the run's first whole loop (callers skip a run whose rim
