@@ -54,6 +54,7 @@ void SliceScaling::cover(MPI_Comm comm, double lambda_min, double lambda_max)
                           fem.peak_pressure_pa / fem.hertz_peak_pressure_pa,
                           fem.refined_peak_pressure_pa / fem.hertz_peak_pressure_pa};
   }
+  index_nodes();
 }
 
 void SliceScaling::double_nodes()
@@ -66,6 +67,18 @@ void SliceScaling::double_nodes()
   }
   nodes_ = std::move(doubled);
   nodes_per_decade_ *= 2;
+  index_nodes();
+}
+
+void SliceScaling::index_nodes()
+{
+  by_k_.clear();
+  if (nodes_.empty())
+    return;
+  first_k_ = nodes_.begin()->first;
+  by_k_.assign(static_cast<std::size_t>(nodes_.rbegin()->first - first_k_ + 1), nullptr);
+  for (const auto& [k, node] : nodes_)
+    by_k_[static_cast<std::size_t>(k - first_k_)] = &node;
 }
 
 double SliceScaling::ratio(double lambda, int stride, bool refined) const
@@ -74,11 +87,15 @@ double SliceScaling::ratio(double lambda, int stride, bool refined) const
   // The bracketing nodes of the stride's grid (multiples of the stride).
   const int lower = stride * static_cast<int>(std::floor(position / stride));
   const int upper = position == lower ? lower : lower + stride;
-  const auto low = nodes_.find(lower), high = nodes_.find(upper);
-  if (!(lambda > 0) || low == nodes_.end() || high == nodes_.end())
+  const auto node = [&](int k) -> const Node* {
+    const long i = static_cast<long>(k) - first_k_;
+    return i >= 0 && i < static_cast<long>(by_k_.size()) ? by_k_[static_cast<std::size_t>(i)] : nullptr;
+  };
+  const Node *low = node(lower), *high = node(upper);
+  if (!(lambda > 0) || !low || !high)
     throw ComputationError(fmt::format("slice scaling: load ratio {} lies outside the solved table", lambda));
-  const double value_low = refined ? low->second.refined_ratio : low->second.ratio;
-  const double value_high = refined ? high->second.refined_ratio : high->second.ratio;
+  const double value_low = refined ? low->refined_ratio : low->ratio;
+  const double value_high = refined ? high->refined_ratio : high->ratio;
   if (upper == lower)
     return value_low;
   const double t = (position - lower) / stride;

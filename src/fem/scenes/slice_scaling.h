@@ -41,6 +41,11 @@ public:
 
   /// `settings` as for solve_slices; E* is the slices' (rigid or elastic plane).
   SliceScaling(const SliceSettings& settings, int nodes_per_decade);
+  // The index points into the nodes: a copy's would point into this one's.
+  SliceScaling(const SliceScaling&) = delete;
+  SliceScaling& operator=(const SliceScaling&) = delete;
+  SliceScaling(SliceScaling&&) = default;
+  SliceScaling& operator=(SliceScaling&&) = default;
 
   /// Solves the nodes not yet solved that the tables of stride 1 and 2 need to
   /// interpolate over [lambda_min, lambda_max]. Collective on `comm` (the
@@ -73,6 +78,11 @@ private:
   int nodes_per_decade_;
   double effective_modulus_pa_;
   std::map<int, Node> nodes_;
+  /// nodes_ by k - first_k_ (null where no node is solved): ratio() is
+  /// called at every Gauss point of every loop sample.
+  int first_k_ = 0;
+  std::vector<const Node*> by_k_;
+  void index_nodes();
   double wall_s_ = 0;
 };
 } // namespace rollcheck::fem
