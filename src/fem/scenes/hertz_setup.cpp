@@ -3,6 +3,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include <cmath>
+#include <cstdlib>
 #include <utility>
 #include <fmt/format.h>
 
@@ -33,6 +34,11 @@ std::string recovery_name(PressureRecovery recovery)
   return "lumped";
 }
 
+std::string contact_cap_name(ContactCapMesh cap)
+{
+  return cap == ContactCapMesh::rings ? "rings" : "unstructured";
+}
+
 void validate(const HertzSettings& s)
 {
   auto positive = [](double value, const char* what) {
@@ -60,6 +66,10 @@ void validate(const HertzSettings& s)
       throw InputError(fmt::format("hertz: {} refines the 3d model's contact; the {} model has none", what,
                                    model_name(s.model)));
   }
+  if (s.contact_cap == ContactCapMesh::rings && s.model != Model::solid)
+    throw InputError(fmt::format("hertz: contact_cap (--contact-cap) rings meshes the 3d model's contact cap; the {} "
+                                 "model has none",
+                                 model_name(s.model)));
   if (!std::isfinite(s.contact_element_size_m) || s.contact_element_size_m < 0)
     throw InputError(fmt::format("hertz: contact_element_size_m (--contact-element-size) must be >= 0, got {}",
                                  s.contact_element_size_m));
@@ -124,6 +134,16 @@ MeshGrading mesh_grading(const HertzSettings& s, const HertzReference& ref)
                          s.radius_m);
 }
 
+namespace
+{
+/// EXPERIMENT (not to be committed): the edge rings' segment, a fraction of h_c.
+double cap_segment(double h_c)
+{
+  const char* fraction = std::getenv("HZ8_SEGMENT");
+  return fraction ? std::atof(fraction) * h_c : h_c;
+}
+} // namespace
+
 ContactRefinement contact_refinement(const HertzSettings& s, const HertzReference& ref, const MeshGrading& g)
 {
   ContactRefinement r;
@@ -146,6 +166,18 @@ ContactRefinement contact_refinement(const HertzSettings& s, const HertzReferenc
     r.edge_half_width_m = edge_half_width * c_H;
     r.edge_radius_m = c_H;
   }
+  // The cap reaches beyond the profile (s < 1.5 c_H) and the fine ball; its
+  // rings' spacing is the refinements' at the pole and across the edge.
+  constexpr double cap_radius = 2.0;
+  if (s.contact_cap == ContactCapMesh::rings)
+    r.cap = cap_rings({.edge_radius_m = c_H,
+                       .edge_spacing_m = finer(s.edge_refine),
+                       .pole_spacing_m = finer(s.pole_refine),
+                       .pole_radius_m = pole_radius * c_H,
+                       .far_spacing_m = g.contact_size_m,
+                       .edge_segment_m = cap_segment(g.contact_size_m),
+                       .cap_radius_m = cap_radius * c_H,
+                       .growth = g.growth});
   return r;
 }
 
