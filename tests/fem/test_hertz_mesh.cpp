@@ -77,17 +77,16 @@ TEST(HertzMesh, ContactRefinementHalvesTheSurfaceElementsAtThePoleAndTheEdge)
 // The structured contact cap (ContactRefinement::cap): every node of the
 // contact surface within the cap lies on a designed ring to 1e-9 of the cap's
 // radius, ring j holds its m_j + 1 nodes (none between rings), and no node
-// lies within the designed clearance h_e / 2 of the Hertz edge.
+// lies within the designed clearance, half the rings' spacing, of the
+// Hertz edge.
 TEST(HertzMesh, StructuredCapPutsTheSurfaceNodesOnRingsClearOfTheEdge)
 {
   rf::ensure_petsc();
   const rf::MeshGrading grading = rf::contact_grading(contact, h_c, radius);
-  const double h_e = h_c / 2;
+  const double h_e = h_c / 2; // rings h <= h_e apart inside the contact
   rf::ContactRefinement refinement;
   refinement.cap = rf::cap_rings({.edge_radius_m = contact,
-                                  .edge_spacing_m = h_e,
-                                  .pole_spacing_m = h_c / 2,
-                                  .pole_radius_m = 0.25 * contact,
+                                  .spacing_m = h_e,
                                   .far_spacing_m = h_c,
                                   .edge_segment_m = h_c,
                                   .cap_radius_m = 2 * contact,
@@ -112,7 +111,7 @@ TEST(HertzMesh, StructuredCapPutsTheSurfaceNodesOnRingsClearOfTheEdge)
                                           [s](double p, double q) { return std::abs(p - s) < std::abs(q - s); });
     ASSERT_LT(std::abs(*nearest - s), tol) << "node at s = " << s / contact << " c";
     ++on_ring[nearest - rings.begin()];
-    EXPECT_GT(std::abs(s - contact), h_e / 2 - tol);
+    EXPECT_GT(std::abs(s - contact), rings[1] / 2 - tol);
   }
   for (std::size_t j = 0; j < rings.size(); ++j)
     EXPECT_EQ(on_ring[j], refinement.cap.segments[j] + 1) << "ring " << j << " at " << rings[j] / contact << " c";

@@ -206,19 +206,40 @@ void mesh_cap_by_rings(const CapEntities& cap, const CapRings& rings, double R)
   add_lines(cap.arc_y0, chain_y0);
   add_lines(cap.arc_x0, chain_x0);
   add_lines(cap.ring, nodes[n - 1]);
-  // Between rings j and j + 1, the next triangle takes the segment (inner
-  // or outer) whose midpoint angle comes first.
+  // Between rings j and j + 1 of as many segments, each quadrilateral's
+  // diagonal alternates (a chequerboard: every node's patch, and the half
+  // patch of a node in a symmetry plane, mirror-symmetric across its ring);
+  // elsewhere the next triangle takes the segment (inner or outer) whose
+  // midpoint angle comes first.
   std::vector<std::size_t> triangles, triangle_nodes;
+  const auto add_triangle = [&](std::size_t p, std::size_t q, std::size_t r) {
+    triangles.push_back(next_element++);
+    triangle_nodes.insert(triangle_nodes.end(), {p, q, r});
+  };
   for (std::size_t j = 0; j + 1 < n; ++j)
   {
     const std::vector<std::size_t>&inner = nodes[j], &outer = nodes[j + 1];
     const int m_in = rings.segments[j], m_out = rings.segments[j + 1];
+    if (m_in == m_out)
+    {
+      for (int i = 0; i < m_in; ++i)
+        if ((j + i) % 2 == 0)
+        {
+          add_triangle(inner[i], outer[i], outer[i + 1]);
+          add_triangle(inner[i], outer[i + 1], inner[i + 1]);
+        }
+        else
+        {
+          add_triangle(inner[i], outer[i], inner[i + 1]);
+          add_triangle(inner[i + 1], outer[i], outer[i + 1]);
+        }
+      continue;
+    }
     int i = 0, k = 0;
     while (i < m_in || k < m_out)
     {
       const bool take_inner = i < m_in && (k == m_out || (i + 0.5) / m_in < (k + 0.5) / m_out);
-      triangles.push_back(next_element++);
-      triangle_nodes.insert(triangle_nodes.end(), {inner[i], outer[k], take_inner ? inner[i + 1] : outer[k + 1]});
+      add_triangle(inner[i], outer[k], take_inner ? inner[i + 1] : outer[k + 1]);
       (take_inner ? i : k) += 1;
     }
   }

@@ -3,7 +3,6 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include <cmath>
-#include <cstdlib>
 #include <utility>
 #include <fmt/format.h>
 
@@ -134,16 +133,6 @@ MeshGrading mesh_grading(const HertzSettings& s, const HertzReference& ref)
                          s.radius_m);
 }
 
-namespace
-{
-/// EXPERIMENT (not to be committed): the edge rings' segment, a fraction of h_c.
-double cap_segment(double h_c)
-{
-  const char* fraction = std::getenv("HZ8_SEGMENT");
-  return fraction ? std::atof(fraction) * h_c : h_c;
-}
-} // namespace
-
 ContactRefinement contact_refinement(const HertzSettings& s, const HertzReference& ref, const MeshGrading& g)
 {
   ContactRefinement r;
@@ -167,15 +156,14 @@ ContactRefinement contact_refinement(const HertzSettings& s, const HertzReferenc
     r.edge_radius_m = c_H;
   }
   // The cap reaches beyond the profile (s < 1.5 c_H) and the fine ball; its
-  // rings' spacing is the refinements' at the pole and across the edge.
+  // rings are spaced as the finer of the pole's and the edge's refinement,
+  // the edge rings' segments the grading's h_c (fem/mesh/cap_rings.h).
   constexpr double cap_radius = 2.0;
   if (s.contact_cap == ContactCapMesh::rings)
     r.cap = cap_rings({.edge_radius_m = c_H,
-                       .edge_spacing_m = finer(s.edge_refine),
-                       .pole_spacing_m = finer(s.pole_refine),
-                       .pole_radius_m = pole_radius * c_H,
+                       .spacing_m = finer(std::max(s.pole_refine, s.edge_refine)),
                        .far_spacing_m = g.contact_size_m,
-                       .edge_segment_m = cap_segment(g.contact_size_m),
+                       .edge_segment_m = g.contact_size_m,
                        .cap_radius_m = cap_radius * c_H,
                        .growth = g.growth});
   return r;
