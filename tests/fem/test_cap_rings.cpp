@@ -3,7 +3,8 @@
 // contact with its edge midway between two rings (no ring within half a
 // spacing of it), growing beyond it; the segments are powers of two within
 // a factor sqrt(2) of the spacing (near-equilateral triangles) up to the
-// edge rings' count M, which every ring from the edge outwards keeps.
+// edge rings' count M, which every ring from the edge outwards keeps; every
+// second ring of a run alike is staggered by half a segment.
 #include "core/error.h"
 #include "fem/mesh/cap_rings.h"
 #include <algorithm>
@@ -74,6 +75,17 @@ TEST(CapRings, EqualRingsWithTheEdgeMidwayFromPoleToCap)
         EXPECT_GT(tangential / h, 1 / std::sqrt(2.0) - 1e-12) << "ring " << j;
         EXPECT_LT(tangential / h, std::sqrt(2.0) + 1e-12) << "ring " << j;
       }
+      // Angles: k pi / (2 m), or staggered by half a segment with both
+      // planes' ends, every second ring of a run alike.
+      const std::vector<double>& t = rings.angles_rad[j];
+      const bool staggered = t.size() == static_cast<std::size_t>(m) + 2;
+      ASSERT_TRUE(staggered || t.size() == static_cast<std::size_t>(m) + 1) << "ring " << j;
+      EXPECT_EQ(t.front(), 0.0);
+      EXPECT_EQ(t.back(), std::numbers::pi / 2);
+      for (std::size_t k = 1; k + 1 < t.size(); ++k)
+        EXPECT_NEAR(t[k], (k - (staggered ? 0.5 : 0.0)) * std::numbers::pi / 2 / m, 1e-14) << "ring " << j;
+      const bool previous_staggered = rings.angles_rad[j - 1].size() == rings.segments[j - 1] + 2u;
+      EXPECT_EQ(staggered, m == rings.segments[j - 1] && !previous_staggered) << "ring " << j;
     }
   }
 }

@@ -76,7 +76,7 @@ TEST(HertzMesh, ContactRefinementHalvesTheSurfaceElementsAtThePoleAndTheEdge)
 
 // The structured contact cap (ContactRefinement::cap): every node of the
 // contact surface within the cap lies on a designed ring to 1e-9 of the cap's
-// radius, ring j holds its m_j + 1 nodes (none between rings), and no node
+// radius, ring j holds its designed nodes (none between rings), and no node
 // lies within the designed clearance, half the rings' spacing, of the
 // Hertz edge.
 TEST(HertzMesh, StructuredCapPutsTheSurfaceNodesOnRingsClearOfTheEdge)
@@ -114,5 +114,5 @@ TEST(HertzMesh, StructuredCapPutsTheSurfaceNodesOnRingsClearOfTheEdge)
     EXPECT_GT(std::abs(s - contact), rings[1] / 2 - tol);
   }
   for (std::size_t j = 0; j < rings.size(); ++j)
-    EXPECT_EQ(on_ring[j], refinement.cap.segments[j] + 1) << "ring " << j << " at " << rings[j] / contact << " c";
+    EXPECT_EQ(on_ring[j], refinement.cap.angles_rad[j].size()) << "ring " << j << " at " << rings[j] / contact << " c";
 }

@@ -59,9 +59,27 @@ CapRings cap_rings(const CapRingDesign& d)
   rings.radius_m.back() = d.cap_radius_m;
   const int edge_segments = nearest_power_of_two(std::numbers::pi / 2 * c / d.edge_segment_m);
   rings.segments.push_back(0);
+  rings.angles_rad.push_back({0.0});
+  bool staggered = false;
   for (std::size_t j = 1; j < rings.radius_m.size(); ++j)
-    rings.segments.push_back(
-        std::min(edge_segments, nearest_power_of_two(std::numbers::pi / 2 * rings.radius_m[j] / h)));
+  {
+    const int m = std::min(edge_segments, nearest_power_of_two(std::numbers::pi / 2 * rings.radius_m[j] / h));
+    staggered = m == rings.segments.back() && !staggered;
+    rings.segments.push_back(m);
+    std::vector<double> angles;
+    const double segment = std::numbers::pi / 2 / m;
+    if (staggered)
+    {
+      angles.push_back(0.0);
+      for (int k = 0; k < m; ++k)
+        angles.push_back((k + 0.5) * segment);
+    }
+    else
+      for (int k = 0; k < m; ++k)
+        angles.push_back(k * segment);
+    angles.push_back(std::numbers::pi / 2);
+    rings.angles_rad.push_back(std::move(angles));
+  }
   return rings;
 }
 } // namespace rollcheck::fem

@@ -24,6 +24,15 @@
 // one ring to the next where they change (each inner segment facing two
 // outer ones, its two triangles and the one between them mirror images),
 // M on every ring from the edge outwards. Ring 0 is the pole (m_0 = 0).
+//
+// Node angles: ring j's nodes lie at t = k pi / (2 m_j), k = 0..m_j; in a
+// run of rings of as many segments, every second one counted from the run's
+// first is staggered, its nodes at t = (k + 1/2) pi / (2 m_j), k = 0..m_j - 1,
+// and at the symmetry planes t = 0 and pi / 2. Between rings, triangles join
+// the nodes in the order of their segments' midpoint angles: a hexagonal
+// lattice, each node's patch mirror-symmetric across its ring and across
+// its radius (as is the half patch of a node in a symmetry plane with its
+// mirror image), every node but the planes' of six triangles.
 #include <vector>
 
 namespace rollcheck::fem
@@ -42,6 +51,7 @@ struct CapRings
 {
   std::vector<double> radius_m; ///< s_0 = 0 < ... < s_n = s_cap; empty: no structured cap
   std::vector<int> segments;    ///< m_j per ring (m_0 = 0)
+  std::vector<std::vector<double>> angles_rad; ///< ring j's node angles t, from 0 to pi / 2 ({0} at the pole)
 };
 
 /// The rings of `design`. InputError unless every size is positive and

@@ -167,9 +167,10 @@ void mesh_cap_by_rings(const CapEntities& cap, const CapRings& rings, double R)
   } arc_y0, arc_x0, ring, face;
   for (std::size_t j = 1; j < n; ++j)
   {
-    const int m = rings.segments[j];
+    const std::vector<double>& angles = rings.angles_rad[j];
+    const std::size_t m = angles.size() - 1;
     const double z = R - std::sqrt(R * R - s[j] * s[j]);
-    for (int k = 0; k <= m; ++k)
+    for (std::size_t k = 0; k <= m; ++k)
     {
       const bool last = j + 1 == n;
       if (last && (k == 0 || k == m))
@@ -177,7 +178,7 @@ void mesh_cap_by_rings(const CapEntities& cap, const CapRings& rings, double R)
         nodes[j].push_back(k == 0 ? ring_end_y0 : ring_end_x0);
         continue;
       }
-      const double t = std::numbers::pi / 2 * k / m;
+      const double t = angles[k];
       NewNodes& on = last ? ring : k == 0 ? arc_y0 : k == m ? arc_x0 : face;
       on.tags.push_back(next_node);
       on.x.insert(on.x.end(), {k == m ? 0.0 : s[j] * std::cos(t), k == 0 ? 0.0 : s[j] * std::sin(t), z});
@@ -206,40 +207,21 @@ void mesh_cap_by_rings(const CapEntities& cap, const CapRings& rings, double R)
   add_lines(cap.arc_y0, chain_y0);
   add_lines(cap.arc_x0, chain_x0);
   add_lines(cap.ring, nodes[n - 1]);
-  // Between rings j and j + 1 of as many segments, each quadrilateral's
-  // diagonal alternates (a chequerboard: every node's patch, and the half
-  // patch of a node in a symmetry plane, mirror-symmetric across its ring);
-  // elsewhere the next triangle takes the segment (inner or outer) whose
-  // midpoint angle comes first.
+  // Between rings j and j + 1, the next triangle takes the segment (inner
+  // or outer) whose midpoint angle comes first (cap_rings.h).
   std::vector<std::size_t> triangles, triangle_nodes;
-  const auto add_triangle = [&](std::size_t p, std::size_t q, std::size_t r) {
-    triangles.push_back(next_element++);
-    triangle_nodes.insert(triangle_nodes.end(), {p, q, r});
-  };
   for (std::size_t j = 0; j + 1 < n; ++j)
   {
     const std::vector<std::size_t>&inner = nodes[j], &outer = nodes[j + 1];
-    const int m_in = rings.segments[j], m_out = rings.segments[j + 1];
-    if (m_in == m_out)
-    {
-      for (int i = 0; i < m_in; ++i)
-        if ((j + i) % 2 == 0)
-        {
-          add_triangle(inner[i], outer[i], outer[i + 1]);
-          add_triangle(inner[i], outer[i + 1], inner[i + 1]);
-        }
-        else
-        {
-          add_triangle(inner[i], outer[i], inner[i + 1]);
-          add_triangle(inner[i + 1], outer[i], outer[i + 1]);
-        }
-      continue;
-    }
-    int i = 0, k = 0;
+    const std::vector<double>&t_in = rings.angles_rad[j], &t_out = rings.angles_rad[j + 1];
+    const std::size_t m_in = inner.size() - 1, m_out = outer.size() - 1;
+    std::size_t i = 0, k = 0;
     while (i < m_in || k < m_out)
     {
-      const bool take_inner = i < m_in && (k == m_out || (i + 0.5) / m_in < (k + 0.5) / m_out);
-      add_triangle(inner[i], outer[k], take_inner ? inner[i + 1] : outer[k + 1]);
+      const bool take_inner
+          = i < m_in && (k == m_out || t_in[i] + t_in[i + 1] < t_out[k] + t_out[k + 1]);
+      triangles.push_back(next_element++);
+      triangle_nodes.insert(triangle_nodes.end(), {inner[i], outer[k], take_inner ? inner[i + 1] : outer[k + 1]});
       (take_inner ? i : k) += 1;
     }
   }
