@@ -29,15 +29,16 @@
 //
 // Structured contact cap (ContactRefinement::cap, optional): the sphere's
 // surface within s < s_cap of the axis (s = sqrt(x^2 + y^2)) is meshed by
-// rings (fem/mesh/cap_rings.h), not by gmsh: the node of ring j, segment k
-// lies at s_j (cos t, sin t) with t = (pi / 2) k / m_j, exactly on the
+// rings (fem/mesh/cap_rings.h), not by gmsh: ring j's node at the angle t
+// lies at (s_j cos t, s_j sin t, R - sqrt(R^2 - s_j^2)), exactly on the
 // sphere, and the triangles between rings j and j + 1 join their nodes in
-// the order of t (no node between rings). The solid is then the meridian
-// section (x, z), its arc split at s_cap, revolved by 90 degrees about the z
-// axis, so that the cap is a face of its own bounded by the two symmetry
-// planes' arcs and the ring s_cap; gmsh meshes the rest (the rest of the
-// sphere, the planes and the tetrahedra) conforming to the cap's triangles
-// (Mesh.MeshOnlyEmpty), with the same size fields.
+// the order of their segments' midpoint angles (no node between rings). The
+// solid is then the meridian section (x, z), its arc split at s_cap,
+// revolved by 90 degrees about the z axis, so that the cap is a face of its
+// own bounded by the two symmetry planes' arcs and the ring s_cap; gmsh
+// meshes the rest (the rest of the sphere, the planes and the tetrahedra)
+// conforming to the cap's triangles (Mesh.MeshOnlyEmpty), with the same
+// size fields.
 //
 // Tags (SceneMesh): contact, the arc (the sphere's surface) off the planes;
 // top, the face z = R (in 2D the model's z is its second coordinate);

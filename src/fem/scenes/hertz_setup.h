@@ -65,8 +65,8 @@ struct HertzSettings
   /// edge circle r = c_H on the sphere (fem/mesh/hertz_mesh.h); 0: none.
   int pole_refine = 0;
   int edge_refine = 0;
-  /// 3D: the contact cap's mesh; with rings, pole_refine and edge_refine set
-  /// the rings' spacing at the pole and across the edge as well.
+  /// 3D: the contact cap's mesh; with rings, the rings are spaced as the
+  /// finer of pole_refine's and edge_refine's sizes (fem/mesh/cap_rings.h).
   ContactCapMesh contact_cap = ContactCapMesh::unstructured;
   /// Contact-zone element size in m; overrides refine when > 0 (used by the
   /// hard cases: a fixed mesh under a varying load).
