@@ -53,6 +53,11 @@ const SceneSchema<fem::HertzSettings>& hertz_schema()
                  "3d: extra refine levels about the first point of contact", io::Bounds{0, 6})
         .integer("edge_refine", "--edge-refine", &HertzSettings::edge_refine, "",
                  "3d: extra refine levels about the contact's edge circle (the Hertz radius)", io::Bounds{0, 6})
+        .choice("contact_cap", "--contact-cap", &HertzSettings::contact_cap,
+                "3d: the contact cap's surface mesh (s < 2 a): unstructured (gmsh's, with the rest) or rings (node "
+                "rings about the axis, the Hertz edge midway between two; --pole-refine and --edge-refine set their "
+                "spacing)",
+                {{"unstructured", fem::ContactCapMesh::unstructured}, {"rings", fem::ContactCapMesh::rings}})
         .include(penalty_schema(), &HertzSettings::penalty_c)
         .choice("pressure_recovery", "--pressure-recovery", &HertzSettings::pressure_recovery,
                 "Nodal contact pressure: lumped (nodal contact force over tributary area), consistent (the contact "

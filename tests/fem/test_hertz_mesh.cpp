@@ -73,3 +73,46 @@ TEST(HertzMesh, ContactRefinementHalvesTheSurfaceElementsAtThePoleAndTheEdge)
     EXPECT_LT(mean, 0.625 * h_c);
   }
 }
+
+// The structured contact cap (ContactRefinement::cap): every node of the
+// contact surface within the cap lies on a designed ring to 1e-9 of the cap's
+// radius, ring j holds its designed nodes (none between rings), and no node
+// lies within the designed clearance, half the rings' spacing, of the
+// Hertz edge.
+TEST(HertzMesh, StructuredCapPutsTheSurfaceNodesOnRingsClearOfTheEdge)
+{
+  rf::ensure_petsc();
+  const rf::MeshGrading grading = rf::contact_grading(contact, h_c, radius);
+  const double h_e = h_c / 2; // rings h <= h_e apart inside the contact
+  rf::ContactRefinement refinement;
+  refinement.cap = rf::cap_rings({.edge_radius_m = contact,
+                                  .spacing_m = h_e,
+                                  .far_spacing_m = h_c,
+                                  .edge_segment_m = h_c,
+                                  .cap_radius_m = 2 * contact,
+                                  .growth = grading.growth});
+  const std::vector<double>& rings = refinement.cap.radius_m;
+  const rf::SceneMesh scene = rf::build_scene_mesh(MPI_COMM_SELF, rf::Model::solid, radius, grading, refinement);
+  const dolfinx::mesh::Mesh& mesh = *scene.mesh;
+  const std::vector<std::int32_t> facet_nodes
+      = dolfinx::mesh::entities_to_geometry(mesh, 2, scene.contact_facets, false);
+  std::vector<std::int32_t> nodes(facet_nodes.begin(), facet_nodes.end());
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  std::span<const double> x = mesh.geometry().x();
+  const double s_cap = rings.back(), tol = 1e-9 * s_cap;
+  std::vector<int> on_ring(rings.size(), 0);
+  for (std::int32_t node : nodes)
+  {
+    const double s = std::hypot(x[3 * node], x[3 * node + 1]);
+    if (s > s_cap + tol)
+      continue;
+    const auto nearest = std::min_element(rings.begin(), rings.end(),
+                                          [s](double p, double q) { return std::abs(p - s) < std::abs(q - s); });
+    ASSERT_LT(std::abs(*nearest - s), tol) << "node at s = " << s / contact << " c";
+    ++on_ring[nearest - rings.begin()];
+    EXPECT_GT(std::abs(s - contact), rings[1] / 2 - tol);
+  }
+  for (std::size_t j = 0; j < rings.size(); ++j)
+    EXPECT_EQ(on_ring[j], refinement.cap.angles_rad[j].size()) << "ring " << j << " at " << rings[j] / contact << " c";
+}

@@ -27,11 +27,25 @@
 // (a Min field). The tube's distance to the circle is a MathEval field,
 // sqrt((sqrt(x^2 + y^2) - c)^2 + (z - z_c)^2).
 //
+// Structured contact cap (ContactRefinement::cap, optional): the sphere's
+// surface within s < s_cap of the axis (s = sqrt(x^2 + y^2)) is meshed by
+// rings (fem/mesh/cap_rings.h), not by gmsh: ring j's node at the angle t
+// lies at (s_j cos t, s_j sin t, R - sqrt(R^2 - s_j^2)), exactly on the
+// sphere, and the triangles between rings j and j + 1 join their nodes in
+// the order of their segments' midpoint angles (no node between rings). The
+// solid is then the meridian section (x, z), its arc split at s_cap,
+// revolved by 90 degrees about the z axis, so that the cap is a face of its
+// own bounded by the two symmetry planes' arcs and the ring s_cap; gmsh
+// meshes the rest (the rest of the sphere, the planes and the tetrahedra)
+// conforming to the cap's triangles (Mesh.MeshOnlyEmpty), with the same
+// size fields.
+//
 // Tags (SceneMesh): contact, the arc (the sphere's surface) off the planes;
 // top, the face z = R (in 2D the model's z is its second coordinate);
 // symmetry_x, x = 0 (the axis in the axisymmetric model); symmetry_y (solid
 // only), y = 0. Symmetry multiplicity: axisymmetric 1, plane strain 2,
 // solid 4.
+#include "fem/mesh/cap_rings.h"
 #include "fem/mesh/mesh_grading.h"
 #include "fem/mesh/scene_facets.h"
 #include "fem/model.h"
@@ -48,6 +62,7 @@ struct ContactRefinement
   double edge_size_m = 0;   ///< within edge_half_width_m of the contact's edge circle
   double edge_half_width_m = 0;
   double edge_radius_m = 0; ///< the circle's radius c
+  CapRings cap;             ///< the structured contact cap's rings; none: the cap meshed as the rest
 };
 
 SceneMesh build_scene_mesh(MPI_Comm comm, Model model, double radius_m, const MeshGrading& grading,

@@ -21,6 +21,7 @@ void add_setup(nlohmann::json& j, const HertzResult& r)
   j["refine"] = s.refine >= 0 ? s.refine : default_refine(s.model, s.degree);
   j["pole_refine"] = s.pole_refine;
   j["edge_refine"] = s.edge_refine;
+  j["contact_cap"] = contact_cap_name(s.contact_cap);
   j["plane"] = s.elastic_plane ? "elastic: two identical bodies, E* = E / (2 (1 - nu^2))" : "rigid: E* = E / (1 - nu^2)";
   j["radius_m"] = s.radius_m;
   j["youngs_modulus_pa"] = s.youngs_modulus_pa;

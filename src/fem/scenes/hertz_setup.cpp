@@ -33,6 +33,11 @@ std::string recovery_name(PressureRecovery recovery)
   return "lumped";
 }
 
+std::string contact_cap_name(ContactCapMesh cap)
+{
+  return cap == ContactCapMesh::rings ? "rings" : "unstructured";
+}
+
 void validate(const HertzSettings& s)
 {
   auto positive = [](double value, const char* what) {
@@ -60,6 +65,10 @@ void validate(const HertzSettings& s)
       throw InputError(fmt::format("hertz: {} refines the 3d model's contact; the {} model has none", what,
                                    model_name(s.model)));
   }
+  if (s.contact_cap == ContactCapMesh::rings && s.model != Model::solid)
+    throw InputError(fmt::format("hertz: contact_cap (--contact-cap) rings meshes the 3d model's contact cap; the {} "
+                                 "model has none",
+                                 model_name(s.model)));
   if (!std::isfinite(s.contact_element_size_m) || s.contact_element_size_m < 0)
     throw InputError(fmt::format("hertz: contact_element_size_m (--contact-element-size) must be >= 0, got {}",
                                  s.contact_element_size_m));
@@ -146,6 +155,17 @@ ContactRefinement contact_refinement(const HertzSettings& s, const HertzReferenc
     r.edge_half_width_m = edge_half_width * c_H;
     r.edge_radius_m = c_H;
   }
+  // The cap reaches beyond the profile (s < 1.5 c_H) and the fine ball; its
+  // rings are spaced as the finer of the pole's and the edge's refinement,
+  // the edge rings' segments the grading's h_c (fem/mesh/cap_rings.h).
+  constexpr double cap_radius = 2.0;
+  if (s.contact_cap == ContactCapMesh::rings)
+    r.cap = cap_rings({.edge_radius_m = c_H,
+                       .spacing_m = finer(std::max(s.pole_refine, s.edge_refine)),
+                       .far_spacing_m = g.contact_size_m,
+                       .edge_segment_m = g.contact_size_m,
+                       .cap_radius_m = cap_radius * c_H,
+                       .growth = g.growth});
   return r;
 }
 

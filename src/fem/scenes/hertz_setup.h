@@ -26,6 +26,16 @@ enum class PressureRecovery
   touching
 };
 
+/// How the 3D model's contact cap (the sphere's surface within 2 c_H of the
+/// axis) is meshed: unstructured, by gmsh's Frontal-Delaunay with the rest;
+/// rings, the structured cap whose node rings keep off the Hertz edge
+/// (fem/mesh/cap_rings.h, fem/mesh/hertz_mesh.h).
+enum class ContactCapMesh
+{
+  unstructured,
+  rings
+};
+
 struct HertzSettings
 {
   Model model = Model::axisymmetric;
@@ -55,6 +65,9 @@ struct HertzSettings
   /// edge circle r = c_H on the sphere (fem/mesh/hertz_mesh.h); 0: none.
   int pole_refine = 0;
   int edge_refine = 0;
+  /// 3D: the contact cap's mesh; with rings, the rings are spaced as the
+  /// finer of pole_refine's and edge_refine's sizes (fem/mesh/cap_rings.h).
+  ContactCapMesh contact_cap = ContactCapMesh::unstructured;
   /// Contact-zone element size in m; overrides refine when > 0 (used by the
   /// hard cases: a fixed mesh under a varying load).
   double contact_element_size_m = 0.0;
@@ -84,6 +97,9 @@ int default_refine(Model model, int degree);
 /// "lumped", "consistent", "penalty" or "touching".
 std::string recovery_name(PressureRecovery recovery);
 
+/// "unstructured" or "rings".
+std::string contact_cap_name(ContactCapMesh cap);
+
 /// InputError naming the bad field; called by solve_hertz.
 void validate(const HertzSettings& setup);
 
@@ -106,7 +122,7 @@ HertzReference hertz_reference(const HertzSettings& setup);
 MeshGrading mesh_grading(const HertzSettings& setup, const HertzReference& reference);
 
 /// The 3D contact's pole and edge refinement (pole_refine, edge_refine) for
-/// the grading; none in 2D.
+/// the grading, and the structured cap's rings (contact_cap); none in 2D.
 ContactRefinement contact_refinement(const HertzSettings& setup, const HertzReference& reference,
                                      const MeshGrading& grading);
 

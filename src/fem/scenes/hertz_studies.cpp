@@ -115,15 +115,15 @@ HertzStudy run_study(MPI_Comm comm, const std::string& name, const std::vector<H
 
 std::string to_csv(const HertzStudy& study)
 {
-  std::string csv = "model,degree,refine,pole_refine,edge_refine,penalty_c,pressure_recovery,elements_across_contact,dofs,cells,ranks,newton_its,krylov_its,"
+  std::string csv = "model,degree,refine,pole_refine,edge_refine,contact_cap,penalty_c,pressure_recovery,elements_across_contact,dofs,cells,ranks,newton_its,krylov_its,"
                     "wall_s,solve_s,size_error,p0_error,p_max_nodal_error,max_shear_error,max_shear_depth_error,"
                     "max_von_mises_error,max_von_mises_depth_error,force_error,profile_rms_error,"
                     "profile_rms_error_interior,penalty_error_estimate,discretisation_error_estimate,flags,status\n";
   for (const HertzStudyRun& run : study.runs)
   {
     const HertzSettings& s = run.setup;
-    csv += fmt::format("{},{},{},{},{},{},{},", model_name(s.model), s.degree, resolved_refine(s), s.pole_refine,
-                       s.edge_refine, s.penalty_c, recovery_name(s.pressure_recovery));
+    csv += fmt::format("{},{},{},{},{},{},{},{},", model_name(s.model), s.degree, resolved_refine(s), s.pole_refine,
+                       s.edge_refine, contact_cap_name(s.contact_cap), s.penalty_c, recovery_name(s.pressure_recovery));
     if (!run.result)
     {
       std::string message = run.failure;
@@ -163,6 +163,7 @@ nlohmann::json to_json(const HertzStudy& study)
                                                {"refine", resolved_refine(s)},
                                                {"pole_refine", s.pole_refine},
                                                {"edge_refine", s.edge_refine},
+                                               {"contact_cap", contact_cap_name(s.contact_cap)},
                                                {"penalty_c", s.penalty_c},
                                                {"pressure_recovery", recovery_name(s.pressure_recovery)},
                                                {"failed", run.failure}});
