@@ -3,7 +3,7 @@
 # the axisymmetric default, both on 2 ranks in the same run, and any 3D
 # setups given as extra arguments (each one quoted string of options, e.g.
 # "--degree 2 --refine 0 --pole-refine 2 --edge-refine 2 --pressure-recovery
-# touching"). Prints each run's DOFs, wall time (the process's, start to
+# touching"; PETSc options after a `--` in it, "... -- -hertz_ksp_rtol 1e-8"). Prints each run's DOFs, wall time (the process's, start to
 # end, and the solver's wall_s), CPU time (user + system of mpirun and its
 # ranks: less disturbed by other jobs on a shared machine), its pointwise
 # errors against Hertz (largest nodal pressure, profile RMS / p0 over
