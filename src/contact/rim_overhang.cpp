@@ -3,7 +3,6 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <cmath>
-#include <fmt/format.h>
 #include <limits>
 #include <numbers>
 
