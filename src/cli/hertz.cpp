@@ -43,27 +43,36 @@ const SceneSchema<fem::HertzSettings>& hertz_schema()
            io::positive)
         .real("length_m", "--length", &HertzSettings::length_m, "m",
               "plane-strain: cylinder length carrying the load, force per length = load / length (2R)", io::positive)
-        .integer("degree", "--degree", &HertzSettings::degree, "", "Lagrange degree of the displacement: 1 or 2",
-                 io::Bounds{1, 2})
+        .integer("degree", "--degree", &HertzSettings::degree, "",
+                 "Lagrange degree of the displacement: 1 or 2; 0 = the model's default (3d: 2, axi and plane-strain: 1)",
+                 io::Bounds{0, 2})
         .integer("refine", "--refine", &HertzSettings::refine, "",
                  "Mesh level: 10 * 2^(refine/2) elements across the Hertz contact radius; -1 = the model's default "
                  "(axi/plane-strain P1: 4, P2: 2; 3d P1: 2, P2: 0)",
                  refine_range)
         .integer("pole_refine", "--pole-refine", &HertzSettings::pole_refine, "",
-                 "3d: extra refine levels about the first point of contact", io::Bounds{0, 6})
+                 "3d: extra refine levels about the first point of contact; -1 = the model's default (3d P2: 2, "
+                 "else 0)",
+                 io::Bounds{-1, 6})
         .integer("edge_refine", "--edge-refine", &HertzSettings::edge_refine, "",
-                 "3d: extra refine levels about the contact's edge circle (the Hertz radius)", io::Bounds{0, 6})
+                 "3d: extra refine levels about the contact's edge circle (the Hertz radius); -1 = the model's "
+                 "default (3d P2: 2, else 0)",
+                 io::Bounds{-1, 6})
         .choice("contact_cap", "--contact-cap", &HertzSettings::contact_cap,
-                "3d: the contact cap's surface mesh (s < 2 a): unstructured (gmsh's, with the rest) or rings (node "
+                "3d: the contact cap's surface mesh (s < 2 a): unstructured (gmsh's, with the rest), rings (node "
                 "rings about the axis, the Hertz edge midway between two; --pole-refine and --edge-refine set their "
-                "spacing)",
-                {{"unstructured", fem::ContactCapMesh::unstructured}, {"rings", fem::ContactCapMesh::rings}})
+                "spacing) or auto (3d P2: rings, else unstructured)",
+                {{"auto", fem::ContactCapMesh::automatic},
+                 {"unstructured", fem::ContactCapMesh::unstructured},
+                 {"rings", fem::ContactCapMesh::rings}})
         .include(penalty_schema(), &HertzSettings::penalty_c)
         .choice("pressure_recovery", "--pressure-recovery", &HertzSettings::pressure_recovery,
                 "Nodal contact pressure: lumped (nodal contact force over tributary area), consistent (the contact "
-                "patch's mass-matrix system, exact for a linear pressure), penalty (kappa <-g>_+ at the node) or "
-                "touching (lumped where the node's gap is closed, 0 where it is open)",
-                {{"lumped", fem::PressureRecovery::lumped},
+                "patch's mass-matrix system, exact for a linear pressure), penalty (kappa <-g>_+ at the node), "
+                "touching (lumped where the node's gap is closed, 0 where it is open) or auto (3d P2: touching, else "
+                "lumped)",
+                {{"auto", fem::PressureRecovery::automatic},
+                 {"lumped", fem::PressureRecovery::lumped},
                  {"consistent", fem::PressureRecovery::consistent},
                  {"penalty", fem::PressureRecovery::penalty},
                  {"touching", fem::PressureRecovery::touching}})

@@ -7,9 +7,10 @@
 // penetrating quadrature points the problem is linear and Newton ends with
 // the step after which that set stops changing: the residual is then the
 // linear solve's own (below 1e-8 of the solve's largest), or the next
-// increment is (1e-10 of the displacement). The total energy is convex, and a step
-// that raises it is halved (Armijo backtracking on the energy), which makes
-// the iteration globally convergent. Every linear solve's KSPConvergedReason
+// Newton increment is (1e-10 of the displacement: taken whole, without the
+// line search, whose test is round-off at that size). The total energy is
+// convex, and a larger step that raises it is halved (Armijo backtracking on
+// the energy), which makes the iteration globally convergent. Every linear solve's KSPConvergedReason
 // is checked: a diverged solve raises ComputationError, never a result.
 //
 // Linear solver: KSP with options prefix "hertz_". Defaults, overridable by

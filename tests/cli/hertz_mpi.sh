@@ -10,8 +10,8 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_TH
 mpi="mpirun -n 2 --oversubscribe"
 "$bin" -q hertz --model axi --json "$tmp/axi1.json" || fail=1
 $mpi "$bin" -q hertz --model axi --json "$tmp/axi2.json" || fail=1
-"$bin" -q hertz --model 3d --refine 0 --json "$tmp/solid1.json" || fail=1
-$mpi "$bin" -q hertz --model 3d --refine 0 --json "$tmp/solid2.json" || fail=1
+"$bin" -q hertz --model 3d --degree 1 --refine 0 --json "$tmp/solid1.json" || fail=1
+$mpi "$bin" -q hertz --model 3d --degree 1 --refine 0 --json "$tmp/solid2.json" || fail=1
 [[ $fail -eq 0 ]] || { echo "FAIL: a run failed"; exit 1; }
 /usr/bin/python3 - "$tmp" <<'PY'
 import json, sys

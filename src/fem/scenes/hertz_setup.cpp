@@ -21,10 +21,27 @@ int default_refine(Model model, int degree)
   return 0;
 }
 
+HertzSettings with_model_defaults(HertzSettings s)
+{
+  const bool solid = s.model == Model::solid;
+  if (s.degree == 0)
+    s.degree = solid ? 2 : 1;
+  const bool pointwise = solid && s.degree == 2;
+  for (int* levels : {&s.pole_refine, &s.edge_refine})
+    if (*levels == -1)
+      *levels = pointwise ? 2 : 0;
+  if (s.contact_cap == ContactCapMesh::automatic)
+    s.contact_cap = pointwise ? ContactCapMesh::rings : ContactCapMesh::unstructured;
+  if (s.pressure_recovery == PressureRecovery::automatic)
+    s.pressure_recovery = pointwise ? PressureRecovery::touching : PressureRecovery::lumped;
+  return s;
+}
+
 std::string recovery_name(PressureRecovery recovery)
 {
   switch (recovery)
   {
+  case PressureRecovery::automatic: return "auto";
   case PressureRecovery::lumped: return "lumped";
   case PressureRecovery::consistent: return "consistent";
   case PressureRecovery::penalty: return "penalty";
@@ -35,7 +52,13 @@ std::string recovery_name(PressureRecovery recovery)
 
 std::string contact_cap_name(ContactCapMesh cap)
 {
-  return cap == ContactCapMesh::rings ? "rings" : "unstructured";
+  switch (cap)
+  {
+  case ContactCapMesh::automatic: return "auto";
+  case ContactCapMesh::unstructured: return "unstructured";
+  case ContactCapMesh::rings: return "rings";
+  }
+  return "unstructured";
 }
 
 void validate(const HertzSettings& s)
@@ -53,14 +76,14 @@ void validate(const HertzSettings& s)
   if (!std::isfinite(s.poisson_ratio) || s.poisson_ratio <= -1.0 || s.poisson_ratio >= 0.5)
     throw InputError(fmt::format("hertz: poisson_ratio (--poisson) must lie in (-1, 0.5), got {}", s.poisson_ratio));
   if (s.degree != 1 && s.degree != 2)
-    throw InputError(fmt::format("hertz: degree (--degree) must be 1 or 2, got {}", s.degree));
+    throw InputError(fmt::format("hertz: degree (--degree) must be 1 or 2 (0: the model's default), got {}", s.degree));
   if (s.refine > 12)
     throw InputError(fmt::format("hertz: refine (--refine) must be at most 12, got {}", s.refine));
   for (const auto& [levels, what] : {std::pair{s.pole_refine, "pole_refine (--pole-refine)"},
                                      std::pair{s.edge_refine, "edge_refine (--edge-refine)"}})
   {
     if (levels < 0 || levels > 6)
-      throw InputError(fmt::format("hertz: {} must lie in 0..6, got {}", what, levels));
+      throw InputError(fmt::format("hertz: {} must lie in 0..6 (-1: the model's default), got {}", what, levels));
     if (levels > 0 && s.model != Model::solid)
       throw InputError(fmt::format("hertz: {} refines the 3d model's contact; the {} model has none", what,
                                    model_name(s.model)));

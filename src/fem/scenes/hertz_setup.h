@@ -18,8 +18,10 @@ namespace rollcheck::fem
 /// or read from the penalty's gap at the node (fem/penalty_pressure.h):
 /// penalty, kappa <-g_i>_+; touching, the lumped pressure where g_i < 0 and
 /// 0 where the node's gap is open.
+/// automatic: the model's default for its degree (with_model_defaults).
 enum class PressureRecovery
 {
+  automatic,
   lumped,
   consistent,
   penalty,
@@ -29,9 +31,11 @@ enum class PressureRecovery
 /// How the 3D model's contact cap (the sphere's surface within 2 c_H of the
 /// axis) is meshed: unstructured, by gmsh's Frontal-Delaunay with the rest;
 /// rings, the structured cap whose node rings keep off the Hertz edge
-/// (fem/mesh/cap_rings.h, fem/mesh/hertz_mesh.h).
+/// (fem/mesh/cap_rings.h, fem/mesh/hertz_mesh.h); automatic: the model's
+/// default for its degree (with_model_defaults).
 enum class ContactCapMesh
 {
+  automatic,
   unstructured,
   rings
 };
@@ -47,7 +51,9 @@ struct HertzSettings
   /// model sees force_n / length_m per unit length. Default 2R: a roller as
   /// long as it is wide.
   double length_m = 0.02;
-  int degree = 1;                     ///< Lagrange degree of the displacement, 1 or 2
+  /// Lagrange degree of the displacement, 1 or 2; 0: the model's default
+  /// (with_model_defaults).
+  int degree = 0;
   /// Contact-zone element size h_c = c_H / (10 * 2^(refine / 2)), c_H the
   /// Hertz radius or half-width: refine 0 puts 10 elements across it, each
   /// step adds a factor sqrt(2). Negative: the model's default (default_refine).
@@ -62,12 +68,13 @@ struct HertzSettings
   /// 3D: extra refine levels (each a factor sqrt(2) smaller elements than
   /// the contact zone's h_c) in a ball of radius pole_radius c_H about the
   /// first point of contact, and within edge_half_width c_H of the contact's
-  /// edge circle r = c_H on the sphere (fem/mesh/hertz_mesh.h); 0: none.
-  int pole_refine = 0;
-  int edge_refine = 0;
+  /// edge circle r = c_H on the sphere (fem/mesh/hertz_mesh.h); 0: none;
+  /// -1: the model's default (with_model_defaults).
+  int pole_refine = -1;
+  int edge_refine = -1;
   /// 3D: the contact cap's mesh; with rings, the rings are spaced as the
   /// finer of pole_refine's and edge_refine's sizes (fem/mesh/cap_rings.h).
-  ContactCapMesh contact_cap = ContactCapMesh::unstructured;
+  ContactCapMesh contact_cap = ContactCapMesh::automatic;
   /// Contact-zone element size in m; overrides refine when > 0 (used by the
   /// hard cases: a fixed mesh under a varying load).
   double contact_element_size_m = 0.0;
@@ -78,7 +85,7 @@ struct HertzSettings
   /// P1 penalty and touching are the lumped recovery to the digit, and with
   /// P2 penalty overshoots at the vertices while touching helps only where
   /// the edge is refined (docs/methods/hertz-fem.md#pointwise-accuracy-in-3d-open).
-  PressureRecovery pressure_recovery = PressureRecovery::lumped;
+  PressureRecovery pressure_recovery = PressureRecovery::automatic;
   /// Extra PETSc options, e.g. "-hertz_ksp_type gmres"; the solver's prefix is "hertz_".
   std::string petsc_options;
   /// Progress lines (meshing, size, load control) at info level; else at debug (-v).
@@ -94,10 +101,19 @@ struct HertzSettings
 /// plane strain, within them from level 0, takes the axisymmetric level.
 int default_refine(Model model, int degree);
 
-/// "lumped", "consistent", "penalty" or "touching".
+/// The setup with every "model's default" (degree 0, pole_refine and
+/// edge_refine -1, the automatic cap and recovery) replaced by the model's
+/// choice for its degree; the rest as given. 3D: P2 with the pole and edge
+/// refined two levels, the cap's rings and the touching recovery, the
+/// cheapest setup whose largest nodal pressure and profile RMS are both within
+/// 0.5 % of Hertz (docs/methods/hertz-fem.md#pointwise-accuracy-in-3d); 3D at
+/// degree 1 and the 2D models: none of these, the lumped recovery.
+HertzSettings with_model_defaults(HertzSettings setup);
+
+/// "auto", "lumped", "consistent", "penalty" or "touching".
 std::string recovery_name(PressureRecovery recovery);
 
-/// "unstructured" or "rings".
+/// "auto", "unstructured" or "rings".
 std::string contact_cap_name(ContactCapMesh cap);
 
 /// InputError naming the bad field; called by solve_hertz.

@@ -265,9 +265,10 @@ void record_peak_memory(MPI_Comm comm, HertzResult& result)
 }
 } // namespace
 
-HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& setup)
+HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& given)
 {
   const auto start = Clock::now();
+  const HertzSettings setup = with_model_defaults(given);
   validate(setup);
   ensure_petsc();
   int rank = 0;

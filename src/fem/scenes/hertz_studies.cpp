@@ -12,13 +12,21 @@ namespace
 int resolved_refine(const HertzSettings& s) { return s.refine >= 0 ? s.refine : default_refine(s.model, s.degree); }
 
 /// The base setup (body, load, solver options) with a study's model, degree
-/// and mesh level, writing no fields.
+/// and mesh level, writing no fields; the contact's refinement, cap and
+/// recovery as the base gives them, where it leaves them to the model: none,
+/// unstructured, lumped (the studies' rows name what they change).
 HertzSettings study_setup(const HertzSettings& base, Model model, int degree, int refine)
 {
   HertzSettings s = base;
   s.model = model;
   s.degree = degree;
   s.refine = refine;
+  for (int* levels : {&s.pole_refine, &s.edge_refine})
+    *levels = std::max(*levels, 0);
+  if (s.contact_cap == ContactCapMesh::automatic)
+    s.contact_cap = ContactCapMesh::unstructured;
+  if (s.pressure_recovery == PressureRecovery::automatic)
+    s.pressure_recovery = PressureRecovery::lumped;
   s.contact_element_size_m = 0;
   s.xdmf_path.clear();
   return s;
@@ -45,7 +53,7 @@ std::vector<HertzSettings> pointwise_study(const HertzSettings& base)
   const Recoveries both = {PressureRecovery::lumped, PressureRecovery::consistent};
   std::vector<HertzSettings> setups;
   const auto add = [&](Model model, int degree, int refine, double penalty_c, const Recoveries& recoveries,
-                       int pole_refine = 0, int edge_refine = 0) {
+                       int pole_refine = 0, int edge_refine = 0, ContactCapMesh cap = ContactCapMesh::unstructured) {
     for (PressureRecovery recovery : recoveries)
     {
       HertzSettings s = study_setup(base, model, degree, refine);
@@ -53,6 +61,7 @@ std::vector<HertzSettings> pointwise_study(const HertzSettings& base)
       s.penalty_c = penalty_c;
       s.pole_refine = pole_refine;
       s.edge_refine = edge_refine;
+      s.contact_cap = cap;
       setups.push_back(s);
     }
   };
@@ -72,6 +81,10 @@ std::vector<HertzSettings> pointwise_study(const HertzSettings& base)
   add(Model::solid, 2, 0, base.penalty_c, {PressureRecovery::lumped}, 2, 3);
   add(Model::solid, 2, 0, base.penalty_c, {PressureRecovery::touching}, 3, 3);
   add(Model::solid, 2, 0, 10 * base.penalty_c, {PressureRecovery::lumped}, 2, 2);
+  // The cap's node rings (the 3D default, with_model_defaults) against
+  // gmsh's cap at the same sizes, both recoveries.
+  add(Model::solid, 2, 0, base.penalty_c, {PressureRecovery::lumped, PressureRecovery::touching}, 2, 2,
+      ContactCapMesh::rings);
   return setups;
 }
 
