@@ -7,8 +7,9 @@
 // penetrating quadrature points the problem is linear and Newton ends with
 // the step after which that set stops changing: the residual is then the
 // linear solve's own (below 1e-8 of the solve's largest), or the next
-// Newton increment is (1e-10 of the displacement: taken whole, without the
-// line search, whose test is round-off at that size). The total energy is
+// Newton increment is (below 1e-10 of the displacement, or ten times an
+// iterative linear solve's rtol where that is looser: taken whole, without
+// the line search, whose test is round-off at that size). The total energy is
 // convex, and a larger step that raises it is halved (Armijo backtracking on
 // the energy), which makes the iteration globally convergent. Every linear solve's KSPConvergedReason
 // is checked: a diverged solve raises ComputationError, never a result.

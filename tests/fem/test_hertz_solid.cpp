@@ -79,7 +79,7 @@ fem::HertzSettings refined_p2()
 // the 0.5 %; the largest nodal pressure and the whole profile's RMS,
 // whose nodes at the edge read the lumped recovery's average of the sqrt over
 // their patches (O(p0 sqrt(h / a)) each), within 1 %, against 2.5 % and
-// 1.8 % at the P1 default (docs/methods/hertz-fem.md#pointwise-accuracy-in-3d-open).
+// 1.8 % at the P1 default (docs/methods/hertz-fem.md#pointwise-accuracy-in-3d).
 // Minutes serially: labelled long (tests/CMakeLists.txt).
 TEST(HertzSolid, RefinedP2IsPointwiseWithinOnePercent)
 {

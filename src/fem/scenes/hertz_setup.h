@@ -84,7 +84,7 @@ struct HertzSettings
   /// scatter and is the less accurate on every model's default mesh; in 3D
   /// P1 penalty and touching are the lumped recovery to the digit, and with
   /// P2 penalty overshoots at the vertices while touching helps only where
-  /// the edge is refined (docs/methods/hertz-fem.md#pointwise-accuracy-in-3d-open).
+  /// the edge is refined (docs/methods/hertz-fem.md#pointwise-accuracy-in-3d).
   PressureRecovery pressure_recovery = PressureRecovery::automatic;
   /// Extra PETSc options, e.g. "-hertz_ksp_type gmres"; the solver's prefix is "hertz_".
   std::string petsc_options;
