@@ -50,6 +50,11 @@ public:
 /// The subcommands of the executable's session beyond the fast ones (none in rollcheck).
 void add_fem_commands(CLI::App& app);
 
+/// MPI for a command that knows it needs it only once its input is read
+/// (`run`: a case file's scene; not `run --template` or a rejected file),
+/// started here unless the session already has it (rollcheck-fem).
+void start_mpi();
+
 /// PETSc's options, the arguments after `--` (rollcheck-fem).
 void insert_petsc_options(std::vector<std::string> options);
 

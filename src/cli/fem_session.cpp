@@ -41,26 +41,40 @@ void warn_unused_petsc_options()
   PetscOptionsLeftRestore(nullptr, &count, &names, &values);
 }
 
-/// Whether the command line needs MPI: every subcommand but the fast ones,
-/// and anything a launcher (mpirun) started.
+/// Whether the command line needs MPI from its start: every subcommand but
+/// the fast ones and `run` (start_mpi, once its case file is read), and
+/// anything a launcher (mpirun) started.
 bool needs_mpi(const std::vector<std::string>& args)
 {
-  return launched_by_mpi() || (!subcommand_in(args).empty() && !fast_command(args));
+  const std::string subcommand = subcommand_in(args);
+  return launched_by_mpi() || (!subcommand.empty() && subcommand != "run" && !fast_command(args));
+}
+
+void init_mpi(int* argc, char*** argv)
+{
+  prefer_isolated_mpi_singleton();
+  int provided;
+  MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
+  MPI_Comm_dup(MPI_COMM_WORLD, &outcome_comm);
 }
 } // namespace
 
 /// MPI is started for the scenes that need it (FEM solves, batches spread
-/// over ranks, case files of any scene) or when a launcher started this
-/// process; the others start without it. PETSc is started by whoever needs
-/// it and ended here.
+/// over ranks; a case file's scene once it is read, start_mpi) or when a
+/// launcher started this process; the others start without it. PETSc is
+/// started by whoever needs it and ended here.
 ProcessSession::ProcessSession(int& argc, char**& argv, const std::vector<std::string>& args)
 {
-  if (!needs_mpi(args))
-    return;
-  prefer_isolated_mpi_singleton();
-  int provided;
-  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
-  MPI_Comm_dup(MPI_COMM_WORLD, &outcome_comm);
+  if (needs_mpi(args))
+    init_mpi(&argc, &argv);
+}
+
+void start_mpi()
+{
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  if (!initialized)
+    init_mpi(nullptr, nullptr);
 }
 
 ProcessSession::~ProcessSession()

@@ -27,6 +27,7 @@ void add_run_command(CLI::App& app)
     const Scene& scene = find_scene(file.kind, origin);
     const io::Parameters params = io::resolve_case(file, *scene.schema, overrides, origin);
     check_scene_outputs(*scene.schema, params);
+    start_mpi();
     nlohmann::json summary = scene.run(params);
     summary["case"] = {{"file", case_path}, {"parameters", params.to_json()}};
     return CommandResult{summary};
