@@ -155,7 +155,8 @@ void add_end_model_options(RimSchema& s)
               {{"auto", fem::SheetModel::automatic}, {"cylinder", fem::SheetModel::cylinder},
                {"flat", fem::SheetModel::flat}})
       .choice("end_mesh", "--end-mesh", end(&RimEndSettings::mesh),
-              "How the end is meshed: gmsh (Delaunay tetrahedra graded about the edge and the strip, any end), grid "
+              "How the end is meshed: gmsh (Delaunay tetrahedra graded about the edge and the strip, any end), hxt "
+              "(the same surface mesh and sizes tetrahedralised by gmsh's HXT: several times faster on large ends), grid "
               "(a structured grid of tetrahedra built without gmsh, h_e across the edge and b / contact_elements along "
               "it, sheared for an end within 15 deg of square: an independent check of the sharp square or near-square "
               "end on the rigid plane, flat sheet), extruded (the section meshed in 2D and extruded along the edge: "

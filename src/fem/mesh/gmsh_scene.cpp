@@ -95,11 +95,11 @@ void set_graded_size_field(int pole, const MeshGrading& g)
   sizes_from_fields_alone();
 }
 
-RawMesh mesh_with_gmsh(int dim, const std::function<double()>& add_geometry_and_sizes)
+RawMesh mesh_with_gmsh(int dim, const std::function<double()>& add_geometry_and_sizes, VolumeMesher mesher)
 {
   return run_gmsh_session("scene", "scene", [&] {
-    gmsh::option::setNumber("Mesh.Algorithm", 6);   // Frontal-Delaunay: near-equilateral triangles
-    gmsh::option::setNumber("Mesh.Algorithm3D", 1); // Delaunay
+    gmsh::option::setNumber("Mesh.Algorithm", 6); // Frontal-Delaunay: near-equilateral triangles
+    gmsh::option::setNumber("Mesh.Algorithm3D", mesher == VolumeMesher::hxt ? 10 : 1); // HXT or Delaunay
     gmsh::option::setNumber("Mesh.Optimize", 1);
     require_meshable(add_geometry_and_sizes());
     gmsh::vectorpair volumes;

@@ -8,6 +8,7 @@
 // geometry two scenes share.
 #include "fem/mesh/gmsh_raw_mesh.h"
 #include "fem/mesh/mesh_grading.h"
+#include "fem/mesh/volume_mesher.h"
 #include <functional>
 
 namespace rollcheck::fem::scene_build
@@ -16,8 +17,9 @@ namespace rollcheck::fem::scene_build
 /// sizes (and any other meshing option) it sets too; it returns the smallest
 /// size, InputError below 1e-8 of the model (gmsh's geometric tolerance: an
 /// element near it aborts the 2D mesher from inside an OpenMP region).
-/// The mesh as read_gmsh_mesh(dim) reads it.
-RawMesh mesh_with_gmsh(int dim, const std::function<double()>& add_geometry_and_sizes);
+/// The mesh as read_gmsh_mesh(dim) reads it; 3D volumes by `mesher`.
+RawMesh mesh_with_gmsh(int dim, const std::function<double()>& add_geometry_and_sizes,
+                       VolumeMesher mesher = VolumeMesher::delaunay);
 
 /// mesh_with_gmsh with the grading about the point of contact, whose tag
 /// `add_geometry` returns.

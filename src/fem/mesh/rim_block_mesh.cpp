@@ -10,14 +10,14 @@ namespace rollcheck::fem
 {
 using namespace scene_build;
 
-SceneMesh build_rim_block_mesh(MPI_Comm comm, const RimEndGeometry& g, const RimEndSizes& sizes)
+SceneMesh build_rim_block_mesh(MPI_Comm comm, const RimEndGeometry& g, const RimEndSizes& sizes, VolumeMesher mesher)
 {
   const auto start = std::chrono::steady_clock::now();
   if (!g.flat_sheet)
     throw InputError("rim end on a block: the sheet must be flat (its profile in the initial gap)");
   const double H = g.depth_m, L = g.length_m;
   const RimEndGeometry unit{g.radius_m / H, g.interior_angle_rad, g.edge_radius_m / H, 1.0, L / H, true};
-  SceneMesh scene = distribute_quietly(comm, 3, [&] { return mesh_rim_end(unit, sizes, H, true); });
+  SceneMesh scene = distribute_quietly(comm, 3, [&] { return mesh_rim_end(unit, sizes, H, true, mesher); });
   const double tol = 1e-9 * H;
   SceneParts parts = rim_end_planes(L, tol);
   parts.top = [=](double, double, double z) { return std::abs(std::abs(z) - H) < tol; };

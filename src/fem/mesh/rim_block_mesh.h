@@ -24,6 +24,7 @@
 
 namespace rollcheck::fem
 {
-/// InputError unless the sheet is flat.
-SceneMesh build_rim_block_mesh(MPI_Comm comm, const RimEndGeometry& geometry, const RimEndSizes& sizes);
+/// InputError unless the sheet is flat. The volumes tetrahedralised by `mesher`.
+SceneMesh build_rim_block_mesh(MPI_Comm comm, const RimEndGeometry& geometry, const RimEndSizes& sizes,
+                               VolumeMesher mesher = VolumeMesher::delaunay);
 } // namespace rollcheck::fem

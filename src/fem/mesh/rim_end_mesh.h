@@ -26,12 +26,15 @@
 // y = 0. Symmetry multiplicity 2.
 #include "fem/mesh/rim_end_geometry.h"
 #include "fem/mesh/scene_facets.h"
+#include "fem/mesh/volume_mesher.h"
 #include <mpi.h>
 
 namespace rollcheck::fem
 {
 /// InputError for a geometry outside the ranges above (R, H, L and the sizes
 /// positive and finite, a in [60, 180) deg, 0 <= r_e <
-/// largest_edge_radius_over_depth H, R >= H for the cylinder sheet).
-SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& geometry, const RimEndSizes& sizes);
+/// largest_edge_radius_over_depth H, R >= H for the cylinder sheet). The
+/// volume tetrahedralised by `mesher`.
+SceneMesh build_rim_end_mesh(MPI_Comm comm, const RimEndGeometry& geometry, const RimEndSizes& sizes,
+                             VolumeMesher mesher = VolumeMesher::delaunay);
 } // namespace rollcheck::fem

@@ -156,9 +156,12 @@ void add_rim_end(const RimEndGeometry& g)
 }
 } // namespace
 
-RawMesh mesh_rim_end(const RimEndGeometry& unit, const RimEndSizes& sizes, double H, bool with_block)
+RawMesh mesh_rim_end(const RimEndGeometry& unit, const RimEndSizes& sizes, double H, bool with_block,
+                     VolumeMesher mesher)
 {
-  RawMesh raw = mesh_with_gmsh(3, [&] {
+  RawMesh raw = mesh_with_gmsh(
+      3,
+      [&] {
     add_rim_end(unit);
     if (with_block)
     {
@@ -176,7 +179,8 @@ RawMesh mesh_rim_end(const RimEndGeometry& unit, const RimEndSizes& sizes, doubl
     });
     sizes_from_fields_alone();
     return std::min(sizes.edge_m, sizes.contact_m) / H;
-  });
+      },
+      mesher);
   for (double& x : raw.x)
     x *= H;
   return raw;

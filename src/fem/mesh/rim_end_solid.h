@@ -5,6 +5,7 @@
 #include "fem/mesh/gmsh_raw_mesh.h"
 #include "fem/mesh/rim_end_geometry.h"
 #include "fem/mesh/scene_parts.h"
+#include "fem/mesh/volume_mesher.h"
 
 namespace rollcheck::fem::scene_build
 {
@@ -12,8 +13,9 @@ namespace rollcheck::fem::scene_build
 /// H = 1), graded by rim_end_element_size, scaled back to metres; with the
 /// block x in [-L, H], y in [0, H], z in [-H, 0] below it, fragmented with
 /// the body (a conforming shared face), graded as the body mirrored in the
-/// interface z = 0.
-RawMesh mesh_rim_end(const RimEndGeometry& unit, const RimEndSizes& sizes, double H, bool with_block);
+/// interface z = 0. The volumes by `mesher`.
+RawMesh mesh_rim_end(const RimEndGeometry& unit, const RimEndSizes& sizes, double H, bool with_block,
+                     VolumeMesher mesher);
 
 /// InputError for a geometry outside build_rim_end_mesh's ranges
 /// (fem/mesh/rim_end_mesh.h) or sizes that are not positive and finite.

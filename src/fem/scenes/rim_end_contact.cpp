@@ -62,10 +62,10 @@ void validate(const RimEndSettings& s)
   if (crosses_obliquely(s.crossing_angle_rad)
       && (!(s.crossing_angle_rad > 0 && s.crossing_angle_rad < std::numbers::pi / 2)
           || s.counter_face != CounterFace::rigid
-          || (s.mesh != RimEndMesh::delaunay && s.mesh != RimEndMesh::automatic)
+          || (s.mesh != RimEndMesh::delaunay && s.mesh != RimEndMesh::hxt && s.mesh != RimEndMesh::automatic)
           || !(s.length_over_depth > 1 + 1 / std::tan(s.crossing_angle_rad))))
     throw InputError(fmt::format("rim: crossing_angle_deg must lie in (0, 90]; below 90 the end model is on the "
-                                 "rigid plane, end_mesh gmsh, with length_over_depth above 1 + cot c (got crossing {} "
+                                 "rigid plane, end_mesh gmsh or hxt, with length_over_depth above 1 + cot c (got crossing {} "
                                  "deg, length_over_depth {})",
                                  s.crossing_angle_rad * 180 / std::numbers::pi, s.length_over_depth));
   if (!s.xdmf_path.empty())
@@ -192,16 +192,18 @@ SceneMesh level_mesh(MPI_Comm comm, const RimEndStudy& study, const RimEndSizes&
   const RimEndGeometry geometry{
       s.radius_m, s.interior_angle_rad, s.edge_radius_m, block.depth_m, block.length_m, study.flat_sheet,
       s.crossing_angle_rad};
+  const RimEndMesh used = rim_end_mesh_used(study);
+  const VolumeMesher mesher = used == RimEndMesh::hxt ? VolumeMesher::hxt : VolumeMesher::delaunay;
   if (s.counter_face == CounterFace::block)
-    return build_rim_block_mesh(comm, geometry, sizes);
-  switch (rim_end_mesh_used(study))
+    return build_rim_block_mesh(comm, geometry, sizes, mesher);
+  switch (used)
   {
   case RimEndMesh::extruded:
     return build_rim_end_extruded_mesh(comm, geometry, sizes);
   case RimEndMesh::grid:
     return build_square_end_grid_mesh(comm, geometry, sizes);
   default:
-    return build_rim_end_mesh(comm, geometry, sizes);
+    return build_rim_end_mesh(comm, geometry, sizes, mesher);
   }
 }
 

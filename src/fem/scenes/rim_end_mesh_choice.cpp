@@ -8,6 +8,7 @@ namespace rollcheck::fem
 const NamedValues<RimEndMesh>& rim_end_mesh_names()
 {
   static const NamedValues<RimEndMesh> names = {{"gmsh", RimEndMesh::delaunay},
+                                                {"hxt", RimEndMesh::hxt},
                                                 {"grid", RimEndMesh::grid},
                                                 {"extruded", RimEndMesh::extruded},
                                                 {"auto", RimEndMesh::automatic}};
@@ -18,7 +19,7 @@ RimEndMesh rim_end_mesh_used(const RimEndStudy& study)
 {
   const RimEndSettings& s = study.setup;
   if (s.counter_face == CounterFace::block)
-    return RimEndMesh::delaunay;
+    return s.mesh == RimEndMesh::hxt ? RimEndMesh::hxt : RimEndMesh::delaunay;
   if (s.mesh == RimEndMesh::automatic)
     return study.flat_sheet && !crosses_obliquely(s.crossing_angle_rad) ? RimEndMesh::extruded : RimEndMesh::delaunay;
   return s.mesh;
