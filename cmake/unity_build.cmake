@@ -12,9 +12,9 @@
 # alone; a new clash shows as a redefinition error naming both files.
 option(ROLLCHECK_UNITY "Compile each library's files in batches (unity build)" ON)
 set(ROLLCHECK_UNITY_BATCH 16 CACHE STRING "Files per unity batch of the libraries and executables")
-# The test files define more names of their own (constants, helpers): their
-# batches stay smaller (cmake/test_executables.cmake).
-set(ROLLCHECK_TEST_UNITY_BATCH 8 CACHE STRING "Files per unity batch of the test executables")
+# The test executables' batches (cmake/test_executables.cmake), kept apart:
+# test files define more names of their own (constants, helpers).
+set(ROLLCHECK_TEST_UNITY_BATCH 16 CACHE STRING "Files per unity batch of the test executables")
 
 # rollcheck_unity(TARGET [SEPARATE FILE...]): TARGET's C++ files in batches,
 # but the FILEs (paths relative to the calling folder) alone.

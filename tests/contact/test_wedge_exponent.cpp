@@ -15,25 +15,25 @@ using namespace rollcheck;
 
 namespace
 {
-constexpr double deg = std::numbers::pi / 180;
+constexpr double degree_rad = std::numbers::pi / 180;
 }
 
 TEST(WedgeExponent, KnownWedges)
 {
-  EXPECT_NEAR(contact::wedge_stress_exponent(360 * deg), -0.5, 1e-12);
-  EXPECT_NEAR(contact::wedge_stress_exponent(270 * deg), 0.5445 - 1, 5e-5);
-  EXPECT_NEAR(contact::wedge_stress_exponent(240 * deg), 0.6157 - 1, 5e-5);
-  EXPECT_NEAR(contact::edge_on_rigid_plane_exponent(120 * deg), 0.6157 - 1, 5e-5);
-  EXPECT_EQ(contact::wedge_stress_exponent(180 * deg), 0.0);
-  EXPECT_EQ(contact::edge_on_rigid_plane_exponent(90 * deg), 0.0); // the cylinder's square rim
-  EXPECT_EQ(contact::wedge_stress_exponent(60 * deg), 0.0);
+  EXPECT_NEAR(contact::wedge_stress_exponent(360 * degree_rad), -0.5, 1e-12);
+  EXPECT_NEAR(contact::wedge_stress_exponent(270 * degree_rad), 0.5445 - 1, 5e-5);
+  EXPECT_NEAR(contact::wedge_stress_exponent(240 * degree_rad), 0.6157 - 1, 5e-5);
+  EXPECT_NEAR(contact::edge_on_rigid_plane_exponent(120 * degree_rad), 0.6157 - 1, 5e-5);
+  EXPECT_EQ(contact::wedge_stress_exponent(180 * degree_rad), 0.0);
+  EXPECT_EQ(contact::edge_on_rigid_plane_exponent(90 * degree_rad), 0.0); // the cylinder's square rim
+  EXPECT_EQ(contact::wedge_stress_exponent(60 * degree_rad), 0.0);
 }
 
 TEST(WedgeExponent, TheLeastRootOfWilliamsEquation)
 {
   for (double w_deg = 181; w_deg <= 360; w_deg += 7)
   {
-    const double w = w_deg * deg;
+    const double w = w_deg * degree_rad;
     const double lambda = 1 + contact::wedge_stress_exponent(w);
     auto f = [w](double l) { return std::sin(l * w) + l * std::sin(w); };
     EXPECT_NEAR(f(lambda), 0.0, 1e-12) << w_deg;
@@ -42,7 +42,7 @@ TEST(WedgeExponent, TheLeastRootOfWilliamsEquation)
       EXPECT_GT(f(lambda * k / 1000.0), 0.0) << w_deg << " deg has a smaller root near " << lambda * k / 1000.0;
   }
   // Sharper wedges are more singular.
-  EXPECT_LT(contact::wedge_stress_exponent(300 * deg), contact::wedge_stress_exponent(250 * deg));
+  EXPECT_LT(contact::wedge_stress_exponent(300 * degree_rad), contact::wedge_stress_exponent(250 * degree_rad));
 }
 
 TEST(WedgeExponent, AnglesOutsideTheCircleAreRejected)
