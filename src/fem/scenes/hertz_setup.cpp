@@ -75,14 +75,14 @@ void validate(const HertzSettings& s)
   positive(s.force_rtol, "force_rtol (--force-rtol)");
   if (!std::isfinite(s.poisson_ratio) || s.poisson_ratio <= -1.0 || s.poisson_ratio >= 0.5)
     throw InputError(fmt::format("hertz: poisson_ratio (--poisson) must lie in (-1, 0.5), got {}", s.poisson_ratio));
-  if (s.degree != 1 && s.degree != 2)
+  if (s.degree < 0 || s.degree > 2)
     throw InputError(fmt::format("hertz: degree (--degree) must be 1 or 2 (0: the model's default), got {}", s.degree));
   if (s.refine > 12)
     throw InputError(fmt::format("hertz: refine (--refine) must be at most 12, got {}", s.refine));
   for (const auto& [levels, what] : {std::pair{s.pole_refine, "pole_refine (--pole-refine)"},
                                      std::pair{s.edge_refine, "edge_refine (--edge-refine)"}})
   {
-    if (levels < 0 || levels > 6)
+    if (levels < -1 || levels > 6)
       throw InputError(fmt::format("hertz: {} must lie in 0..6 (-1: the model's default), got {}", what, levels));
     if (levels > 0 && s.model != Model::solid)
       throw InputError(fmt::format("hertz: {} refines the 3d model's contact; the {} model has none", what,

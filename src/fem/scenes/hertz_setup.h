@@ -116,7 +116,8 @@ std::string recovery_name(PressureRecovery recovery);
 /// "auto", "unstructured" or "rings".
 std::string contact_cap_name(ContactCapMesh cap);
 
-/// InputError naming the bad field; called by solve_hertz.
+/// InputError naming the bad field (the model's-default values, degree 0
+/// and pole or edge refinement -1, are good); called by solve_hertz.
 void validate(const HertzSettings& setup);
 
 /// Hertz theory for the setup, in the model's terms.
