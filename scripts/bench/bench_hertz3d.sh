@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Benchmark (not a test) of issue 61: the 3D hemisphere's default against
-# the axisymmetric default, both on 2 ranks in the same run, and any 3D
-# setups given as extra arguments (each one quoted string of options, e.g.
+# Benchmark (not a test) of issue 61: the 3D hemisphere's default (P2 on the
+# cap's rings) and the 3D P1 model (--degree 1) against the axisymmetric
+# default, all on 2 ranks in the same run, and any 3D setups given as extra
+# arguments (each one quoted string of options, e.g.
 # "--degree 2 --refine 0 --pole-refine 2 --edge-refine 2 --pressure-recovery
 # touching"; PETSc options after a `--` in it, "... -- -hertz_ksp_rtol 1e-8"). Prints each run's DOFs, wall time (the process's, start to
 # end, and the solver's wall_s), CPU time (user + system of mpirun and its
@@ -16,7 +17,7 @@ here=$(cd "$(dirname "$0")/../.." && pwd)
 bin=${1:-$here/build/src/cli/rollcheck}
 repeats=${2:-3}
 shift $(($# < 2 ? $# : 2))
-setups=("--model axi" "--model 3d")
+setups=("--model axi" "--model 3d" "--model 3d --degree 1")
 for extra in "$@"; do setups+=("--model 3d $extra"); done
 source "$here/scripts/bench/bench_lib.sh"
 printf '%s\n' "${setups[@]}" > "$tmp/setups"
