@@ -40,7 +40,7 @@ TEST(HertzSolid, SteelHemisphereDefaultIsPointwiseWithinHalfAPercent)
 
 // P1 at its default level (refine 2, gmsh's cap, lumped): a within 1 %, p0
 // (the Hertz-form fit) within 2 %; its largest nodal pressure reads +2.5 %,
-// its profile RMS 1.8 %, so it is not pointwise. Label long (tests/CMakeLists.txt).
+// its profile RMS 1.8 %, so it is not pointwise (8 s serially).
 TEST(HertzSolid, SteelHemisphereP1FitsHertzWithinOnePercent)
 {
   fem::HertzSettings s;
