@@ -6,11 +6,10 @@
 //   "One machine, one minute, three billion tetrahedra", Int. J. Numer.
 //   Meth. Engng 117 (2019) 967-990), a Delaunay kernel with its own boundary
 //   recovery and optimisation, run on one thread as every gmsh session here
-//   (fem/mesh/gmsh_raw_mesh.h). On the rim loop's first rounded end (1.2M
-//   DOFs) it meshed in 59.6 s against Delaunay's 351.3 s. gmsh 4.8's HXT is
-//   not reproducible: the same end meshed twice, even with OMP_NUM_THREADS=1,
-//   has a few dozen nodes more or less (docs/methods/rims.md); Delaunay's
-//   meshes are the same from run to run.
+//   (fem/mesh/gmsh_raw_mesh.h): the faster on large volumes, but in gmsh 4.8
+//   not reproducible (the same geometry and sizes give slightly different
+//   meshes from run to run), where Delaunay's meshes are the same every run.
+//   Measurements: docs/methods/rims.md, "Where a rounded loop's time goes".
 namespace rollcheck::fem
 {
 enum class VolumeMesher

@@ -94,8 +94,8 @@ enum class CounterFace
 
 /// How the end is meshed: gmsh's Delaunay tetrahedra graded about the edge
 /// and the strip (any end), the same by gmsh's HXT (fem/mesh/volume_mesher.h:
-/// the same surface mesh and sizes, its volume meshed about 6 times faster on
-/// the loop's deep rounded ends), or a structured grid built without gmsh
+/// the same surface mesh and sizes, the volume meshed faster but not
+/// reproducibly), or a structured grid built without gmsh
 /// (fem/mesh/scene_mesh.h build_square_end_grid_mesh: a sharp square or
 /// near-square end, within 15 deg of 90, on the flat sheet against the rigid
 /// plane only), an independent discretisation to check the first by.
