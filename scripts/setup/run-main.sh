@@ -4,7 +4,7 @@
 # cases/default/, whose report shows the verdicts and the audit table).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
-bash "$here/scripts/setup/setup.sh"
+bash "$here/scripts/setup/setup.sh" rollcheck rollcheck-fem
 export OPENBLAS_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 cd "$here"
 mkdir -p results

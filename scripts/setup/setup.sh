@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages rollcheck needs (idempotent), then configures
 # and builds it in Release under build/. Run as root on a fresh machine.
+# Arguments name the targets to build (the main job needs the two programs
+# only, not the tests and benchmarks); none builds everything.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
 
@@ -30,4 +32,6 @@ if ((${#missing[@]})); then
 fi
 
 cmake -S "$here" -B "$here/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$here/build" -j "$(nproc)"
+targets=()
+for t in "$@"; do targets+=(--target "$t"); done
+cmake --build "$here/build" -j "$(nproc)" "${targets[@]}"

@@ -91,13 +91,14 @@ Rates sample_rates(const oracle::RollingSample& sample, double rate, const Rolli
   const RulingLoad load = ruling_load(sample, s.load_rule, s.normal_load_n, body);
   if (!(load.normal_n > 0))
     return r;
+  const bool all_scores = !s.accumulated_pressure_only;
   // Contact time: the second moment and the touched area in closed form.
-  if (hertz)
+  if (all_scores && hertz)
   {
     r.second[0] = 16 * load.normal_n / (std::numbers::pi * e_star * rate);
     r.area[0] = length * rate * (load.to - load.from) * radius((load.from + load.to) / 2);
   }
-  else
+  else if (all_scores)
   {
     r.first[0] = length;
     r.area[0] = r.swept; // the second moment: rigid_time_second_moment, between samples
@@ -127,13 +128,13 @@ Rates sample_rates(const oracle::RollingSample& sample, double rate, const Rolli
         const double weight = h / 2 * length * radius(f) * rate; // dA / dt of this Gauss point
         if (!(q > 0))
           continue;
-        if (hertz)
+        if (all_scores && hertz)
         {
           const double rho = 2 * std::sqrt(4 * q * radius(f) / (std::numbers::pi * e_star)) / (rate * radius(f));
           r.first[0] += rho * weight;
           r.max[0] = std::max(r.max[0], rho);
         }
-        else
+        else if (all_scores)
           r.max[0] = std::max(r.max[0], 1 / (rate * radius(f)));
         const double q_held = load.line_load(length, held(f));
         const double load_ratio = q_held / (e_star * radius(held(f)));
@@ -149,6 +150,8 @@ Rates sample_rates(const oracle::RollingSample& sample, double rate, const Rolli
         r.area[2] += weight;
         r.max[2] = std::max(r.max[2], k_pass / (rate * radius(f)));
         accumulated_squared += k_pass * k_pass / 2;
+        if (!all_scores)
+          continue;
         // Damage relative to that of a 100 MPa amplitude: V does not see the scale.
         add_point(r, 1, p0, weight);
         add_point(r, 3, std::pow(p0 / 2 / 100e6, -1 / s.basquin_exponent), weight);
@@ -241,7 +244,7 @@ ContinuumLoopScores continuum_loop_scores(const oracle::RollingTrajectory& traje
     for (int i = 0; i < n_quantities; ++i)
       a.area[i] *= dt / 2, a.first[i] *= dt / 2, a.second[i] *= dt / 2;
     a.swept *= dt / 2;
-    if (s.width == oracle::ContactWidthModel::rigid && (rates(k).first[0] > 0 || rates(k + 1).first[0] > 0))
+    if (!s.accumulated_pressure_only && s.width == oracle::ContactWidthModel::rigid && (rates(k).first[0] > 0 || rates(k + 1).first[0] > 0))
       a.second[0] = rigid_time_second_moment(samples[k], samples[k + 1], rate_of(samples[k]), rate_of(samples[k + 1]),
                                              dt, 16);
     total += a;
@@ -249,10 +252,13 @@ ContinuumLoopScores continuum_loop_scores(const oracle::RollingTrajectory& traje
   ContinuumLoopScores scores;
   scores.surface_area_m2 = surface_area_m2;
   scores.swept_area_m2 = total.swept;
-  scores.contact_time = score_of(total, 0, surface_area_m2);
-  scores.peak_pressure = score_of(total, 1, surface_area_m2);
   scores.accumulated_pressure = score_of(total, 2, surface_area_m2);
-  scores.damage = score_of(total, 3, surface_area_m2);
+  if (!s.accumulated_pressure_only)
+  {
+    scores.contact_time = score_of(total, 0, surface_area_m2);
+    scores.peak_pressure = score_of(total, 1, surface_area_m2);
+    scores.damage = score_of(total, 3, surface_area_m2);
+  }
   scores.peak_pressure_max_pa = total.max[1];
   scores.load_ratio_min = total.load_ratio_min;
   scores.load_ratio_max = total.load_ratio_max;

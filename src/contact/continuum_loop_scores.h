@@ -78,6 +78,9 @@ struct ContinuumLoopSettings
   double effective_modulus_pa = 200e9 / (2 * (1 - 0.3 * 0.3)); ///< steel on steel
   double basquin_exponent = FatigueParameters{}.basquin_exponent;
   int pieces = 64;            ///< Gauss pieces along each ruling
+  /// Only the accumulated pressure (what FEM-SDS reads): the other scores are
+  /// left zero, and the damage's power and the widths are not computed.
+  bool accumulated_pressure_only = false;
   /// g(lambda), lambda = q / (E* R), multiplying every peak pressure; empty: 1 (line Hertz).
   std::function<double(double)> pressure_factor = {};
 };

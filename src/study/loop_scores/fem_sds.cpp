@@ -411,10 +411,10 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScali
   return result;
 }
 
-BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScaling& table)
+BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScaling& table, bool with_uniformity)
 {
   fem::ensure_petsc(); // MPI too
-  const Scene scene = make_scene(s, true);
+  const Scene scene = make_scene(s, with_uniformity);
   BodyLoop r;
   r.body = geometry::body_label(s.body);
   r.source = scene.source.description;

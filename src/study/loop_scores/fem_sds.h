@@ -167,7 +167,10 @@ struct BodyLoop
   std::optional<double> uniformity; ///< U (oracle/uniformity_score.h), rolling oracle only
   std::optional<ContinuumSds> continuum; ///< rolling oracle, a whole loop only
 };
-BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& settings, fem::SliceScaling& table);
+/// `with_uniformity` false leaves U empty: a search scoring FEM-SDS alone
+/// skips the contact density's pass over the mesh.
+BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& settings, fem::SliceScaling& table,
+                         bool with_uniformity = true);
 
 /// The slices' FEM settings of `settings`: what a shared table is built with.
 fem::SliceSettings slice_settings(const FemSdsSettings& settings);

@@ -28,6 +28,7 @@ ContinuumSds continuum_sds(MPI_Comm comm, const oracle::RealRolling& run, contac
 {
   ContinuumSds r;
   s.pressure_factor = nullptr;
+  s.accumulated_pressure_only = true;
   contact::ContinuumLoopScores line;
   r.line_hertz = accumulated_pressure_variance(run.trajectory, run, s, &line);
   r.load_ratio_min = line.load_ratio_min;

@@ -419,7 +419,7 @@ void add_end_table(MPI_Comm comm, const RimLoopSettings& s, const loop_scores::L
   std::vector<EndTableNode> table;
   for (const double radius : columns)
     for (const double angle : angles)
-      table.push_back({angle, radius});
+      table.push_back({.dihedral_angle_rad = angle, .sheet_radius_m = radius, .reached = true, .study = {}});
   mark_reached_nodes(comm, s, covered, result, table);
   const auto reached = std::count_if(table.begin(), table.end(), [](const EndTableNode& n) { return n.reached; });
   if (rank == 0)

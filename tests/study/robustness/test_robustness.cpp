@@ -112,6 +112,31 @@ TEST(ContinuumLoopScores, OloidScoresAreResolutionFree)
   }
 }
 
+TEST(ContinuumLoopScores, AccumulatedPressureAloneIsTheSameNumber)
+{
+  // FEM-SDS reads the accumulated pressure alone: skipping the other scores
+  // must not move it by a bit, under either width and the FEM factor.
+  const oracle::RealRolling run = roll("oloid", 0.1, 2000);
+  for (auto width : {oracle::ContactWidthModel::hertz, oracle::ContactWidthModel::rigid})
+  {
+    contact::ContinuumLoopSettings s;
+    s.width = width;
+    s.pressure_factor = [](double lambda) { return 1 + 0.1 * std::log10(lambda); };
+    const contact::ContinuumLoopScores all = scores(run, s);
+    s.accumulated_pressure_only = true;
+    const contact::ContinuumLoopScores alone = scores(run, s);
+    EXPECT_GT(all.accumulated_pressure.whole, 0);
+    EXPECT_EQ(alone.accumulated_pressure.whole, all.accumulated_pressure.whole);
+    EXPECT_EQ(alone.accumulated_pressure.touched, all.accumulated_pressure.touched);
+    EXPECT_EQ(alone.accumulated_pressure.peak_to_mean, all.accumulated_pressure.peak_to_mean);
+    EXPECT_EQ(alone.load_ratio_min, all.load_ratio_min);
+    EXPECT_EQ(alone.load_ratio_max, all.load_ratio_max);
+    EXPECT_GT(all.damage.whole, 0);
+    EXPECT_EQ(alone.damage.whole, 0);
+    EXPECT_EQ(alone.contact_time.whole, 0);
+  }
+}
+
 TEST(ContinuumLoopScores, RefusesBadSettings)
 {
   const oracle::RealRolling run = roll("cylinder", 0.1, 400);
