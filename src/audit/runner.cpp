@@ -1,6 +1,7 @@
 #include "audit/runner.h"
 #include "core/child_process.h"
 #include "core/error.h"
+#include "core/progress_beat.h"
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -9,6 +10,7 @@
 #include <fmt/ranges.h>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <mutex>
 #include <numeric>
 #include <spdlog/spdlog.h>
@@ -187,10 +189,26 @@ std::vector<CommandOutput> run_commands(const std::vector<CommandArgs>& commands
   std::atomic<std::size_t> next{0};
   std::mutex log_mutex;
   std::size_t done = 0;
+  // The costliest commands take half a minute each: the beat names the running ones meanwhile.
+  ProgressBeat beat("audit", true, std::chrono::seconds(5));
+  std::map<std::size_t, std::chrono::steady_clock::time_point> running; // by command index
+  const auto start = std::chrono::steady_clock::now();
+  auto set_beat = [&] { // under log_mutex
+    std::vector<std::string> names;
+    for (const auto& [i, since] : running)
+      names.push_back(fmt::format("{} (from {:.0f} s)", command_id(i),
+                                  std::chrono::duration<double>(since - start).count()));
+    beat.step(fmt::format("[{}/{}] running {}", done, commands.size(), fmt::join(names, ", ")), false);
+  };
   auto worker = [&] {
     for (std::size_t k = next++; k < commands.size(); k = next++)
     {
       const std::size_t i = order[k];
+      {
+        std::lock_guard lock(log_mutex);
+        running[i] = std::chrono::steady_clock::now();
+        set_beat();
+      }
       try
       {
         errors[i] = run_one(commands[i], rollcheck, scratch.path / (command_id(i) + ".json"), outputs[i], costs[i]);
@@ -200,8 +218,10 @@ std::vector<CommandOutput> run_commands(const std::vector<CommandArgs>& commands
         errors[i] = e.what();
       }
       std::lock_guard lock(log_mutex);
+      running.erase(i);
       spdlog::info("audit [{}/{}] {} {} ({:.1f} s, {:.1f} s CPU)", ++done, commands.size(), command_id(i),
                    command_line(commands[i]), costs[i].wall_s, costs[i].cpu_s);
+      set_beat();
     }
   };
   std::vector<std::thread> pool;

@@ -8,7 +8,7 @@
 #include "cli/cli.h"
 #include "cli/scenes.h"
 #include "study/rims/flat_rim_contact.h"
-#include "study/rims/progress_beat.h"
+#include "core/progress_beat.h"
 #include <numbers>
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
@@ -81,7 +81,7 @@ const SceneSchema<study::rims::FlatRimSettings>& flat_rim_schema()
 nlohmann::json run_flat_rim(const io::Parameters& p)
 {
   const study::rims::FlatRimSettings setup = flat_rim_schema().bind(p);
-  study::rims::ProgressBeat beat("flat-rim", process_rank() == 0);
+  ProgressBeat beat("flat-rim", process_rank() == 0);
   const study::rims::FlatRimContact r
       = study::rims::flat_rim_contact(setup, [&](const std::string& what) { beat.step(what); });
   print_summary(study::rims::report(setup, r));

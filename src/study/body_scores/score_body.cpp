@@ -280,7 +280,7 @@ BodyScores score_body(const ScoreBodySettings& s)
     r.rolling_parameters = s.rolling;
     r.n_faces = r.rolling.faces;
     r.continuum_settings = rolling_continuum_settings(s);
-    if (run.trajectory.mode == oracle::ContactMode::line && std::isfinite(run.first_loop_end_s))
+    if (s.with_continuum && run.trajectory.mode == oracle::ContactMode::line && std::isfinite(run.first_loop_end_s))
       r.continuum = contact::continuum_loop_scores(
           run.trajectory, 0, run.first_loop_end_s, run.surface_area_m2,
           {run.mass.centre_of_mass_m, run.mass.mass_kg, s.rolling.gravity_m_s2}, r.continuum_settings);

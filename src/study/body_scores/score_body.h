@@ -57,6 +57,8 @@ struct ScoreBodySettings
   /// law's dynamics imply), end margin and time law; the contact width is
   /// rolling's. U_inf (uniformity_score_continuum) is their contact time.
   contact::ContinuumLoopSettings continuum;
+  /// false: real rolling leaves BodyScores::continuum empty (a search reading U alone).
+  bool with_continuum = true;
   oracle::PaperCompat compat = oracle::PaperCompat::corrected();
   contact::MetricSet metrics;
   long convergence_every = 50; ///< score snapshots every this many samples (the reference outputs': 50); 0: none

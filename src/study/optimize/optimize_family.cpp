@@ -433,6 +433,7 @@ double replicate_score(const FamilySearchSettings& s, FamilyMeshes& meshes, std:
   b.metrics.cds = s.score == FamilyScore::cds;
   b.metrics.sds = s.score == FamilyScore::sds;
   b.convergence_every = 0;
+  b.with_continuum = false; // score_of reads U, CDS or SDS only
   const std::vector<double> p = replicate_genome(s, x, replicate);
   b.body = family_body(s, p, std::max(3, meshes.points(p) + replicate_mesh_offset(s, replicate)));
   if (is_fem_sds(s.score))

@@ -14,7 +14,7 @@
 // hull): the table then starts after the last refused node
 // (flat_rim_table_start), the FEM end table taking the ends below.
 #include "study/rims/flat_rim_contact.h"
-#include "study/rims/progress_beat.h"
+#include "core/progress_beat.h"
 #include <Eigen/Core>
 #include <cstddef>
 #include <mpi.h>

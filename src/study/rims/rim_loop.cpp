@@ -11,7 +11,7 @@
 #include "fem/petsc_session.h"
 #include "fem/scenes/slice_scaling.h"
 #include "oracle/contact_density.h"
-#include "study/rims/progress_beat.h"
+#include "core/progress_beat.h"
 #include "study/rims/table_nodes.h"
 #include <algorithm>
 #include <chrono>

@@ -1,8 +1,8 @@
-// A long phase's progress on a thread of its own (study/rims/progress_beat.h).
-#include "study/rims/progress_beat.h"
+// A long phase's progress on a thread of its own (core/progress_beat.h).
+#include "core/progress_beat.h"
 #include <spdlog/spdlog.h>
 
-namespace rollcheck::study::rims
+namespace rollcheck
 {
 ProgressBeat::ProgressBeat(std::string phase, bool active, std::chrono::milliseconds period)
     : phase_(std::move(phase)), active_(active), period_(period)
@@ -28,13 +28,14 @@ ProgressBeat::~ProgressBeat()
   thread_.join();
 }
 
-void ProgressBeat::step(std::string what)
+void ProgressBeat::step(std::string what, bool log_now)
 {
   if (!active_)
     return;
   const std::lock_guard lock(mutex_);
   step_ = std::move(what);
-  log_locked();
+  if (log_now)
+    log_locked();
 }
 
 double ProgressBeat::elapsed_s() const
@@ -46,4 +47,4 @@ void ProgressBeat::log_locked() const
 {
   spdlog::info("{}: {} ({:.0f} s)", phase_, step_.empty() ? "running" : step_, elapsed_s());
 }
-} // namespace rollcheck::study::rims
+} // namespace rollcheck

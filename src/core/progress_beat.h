@@ -1,8 +1,9 @@
 #pragma once
 // Progress of a long phase at the default log level (info) while it runs:
 // the rim loop's steps (the interior, each direct end, the flat-rim table,
-// each node of the end table) and flat-rim's levels take from seconds to
-// many minutes each, longer than a user should wait without a word. A beat
+// each node of the end table), flat-rim's levels and the audit's commands
+// take from seconds to many minutes each, longer than a user should wait
+// without a word. A beat
 // logs the current step when it is set and, on a thread of its own, again
 // every `period` while it lasts, with the time since the phase began; a
 // solve that logs nothing for minutes still shows that it runs.
@@ -16,7 +17,7 @@
 #include <string>
 #include <thread>
 
-namespace rollcheck::study::rims
+namespace rollcheck
 {
 class ProgressBeat
 {
@@ -27,8 +28,9 @@ public:
   ProgressBeat(const ProgressBeat&) = delete;
   ProgressBeat& operator=(const ProgressBeat&) = delete;
 
-  /// The phase's current step, logged now and on every beat until the next.
-  void step(std::string what);
+  /// The phase's current step, logged on every beat until the next, and now
+  /// unless the caller logs the change itself.
+  void step(std::string what, bool log_now = true);
   /// Seconds since the phase began.
   double elapsed_s() const;
 
@@ -44,4 +46,4 @@ private:
   bool stop_ = false;
   std::thread thread_;
 };
-} // namespace rollcheck::study::rims
+} // namespace rollcheck

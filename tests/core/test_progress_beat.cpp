@@ -1,7 +1,7 @@
-// A long phase's progress (study/rims/progress_beat.h): the step is logged
+// A long phase's progress (core/progress_beat.h): the step is logged
 // when it is set, repeated on the beat's own thread while it lasts, and the
 // thread stops with the beat; an inactive beat says nothing.
-#include "study/rims/progress_beat.h"
+#include "core/progress_beat.h"
 #include <chrono>
 #include <gtest/gtest.h>
 #include <memory>
@@ -49,7 +49,7 @@ TEST(ProgressBeat, LogsTheStepNowAndAgainOnEveryBeat)
 {
   CapturedLog log;
   {
-    study::rims::ProgressBeat beat("rim loop", true, std::chrono::milliseconds(1));
+    ProgressBeat beat("rim loop", true, std::chrono::milliseconds(1));
     beat.step("end table node 3 of 17");
     EXPECT_GE(log.count("rim loop: end table node 3 of 17 ("), 1);
     // Without another step the beat repeats it: wait (without a deadline
@@ -69,9 +69,21 @@ TEST(ProgressBeat, AnInactiveBeatIsSilent)
 {
   CapturedLog log;
   {
-    study::rims::ProgressBeat beat("rim loop", false, std::chrono::milliseconds(1));
+    ProgressBeat beat("rim loop", false, std::chrono::milliseconds(1));
     beat.step("direct end 1 of 4");
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   EXPECT_EQ(log.text(), "");
+}
+
+TEST(ProgressBeat, AStepTheCallerLogsItselfWaitsForTheBeat)
+{
+  CapturedLog log;
+  {
+    ProgressBeat beat("audit", true, std::chrono::hours(1));
+    beat.step("[3/64] running c17", false);
+    EXPECT_EQ(log.count("running c17"), 0);
+    beat.step("[4/64] running c63");
+    EXPECT_EQ(log.count("audit: [4/64] running c63 ("), 1);
+  }
 }
