@@ -2,6 +2,7 @@
 #include "core/child_process.h"
 #include "core/error.h"
 #include "core/progress_beat.h"
+#include "core/slice_table_folder.h"
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -13,6 +14,7 @@
 #include <map>
 #include <mutex>
 #include <numeric>
+#include <optional>
 #include <spdlog/spdlog.h>
 #include <sys/resource.h>
 #include <thread>
@@ -129,6 +131,30 @@ struct ScratchFolder
   ScratchFolder(const ScratchFolder&) = delete;
   ScratchFolder& operator=(const ScratchFolder&) = delete;
 };
+
+/// While it lives, the commands keep the FEM slice table's nodes in `folder`
+/// (core/slice_table_folder.h), unless the caller named a folder already (a
+/// job sharing them beyond the audit): each node is solved once per audit,
+/// not once per command.
+class SharedSliceTable
+{
+public:
+  explicit SharedSliceTable(const std::filesystem::path& folder) : set_(!slice_table_folder())
+  {
+    if (set_)
+      setenv(slice_table_folder_variable, folder.c_str(), 1);
+  }
+  ~SharedSliceTable()
+  {
+    if (set_)
+      unsetenv(slice_table_folder_variable);
+  }
+  SharedSliceTable(const SharedSliceTable&) = delete;
+  SharedSliceTable& operator=(const SharedSliceTable&) = delete;
+
+private:
+  const bool set_;
+};
 /// The claim's `true` verdict from its source: a cell, its own rule (run by
 /// `run_rule`, which fills the command ids) or its untestable reason.
 Judgement decide_truth(const AuditClaim& claim, const TruthSource& source,
@@ -182,6 +208,7 @@ std::vector<CommandOutput> run_commands(const std::vector<CommandArgs>& commands
                                         const std::filesystem::path& rollcheck, unsigned threads)
 {
   const ScratchFolder scratch;
+  const SharedSliceTable slice_table(scratch.path / "slice_table");
   std::vector<nlohmann::json> outputs(commands.size());
   std::vector<std::string> errors(commands.size());
   std::vector<CommandCost> costs(commands.size());

@@ -6,6 +6,10 @@
 #include "fem/scenes/slice_contact.h"
 #include "contact/load_ratio.h"
 #include "fem/scenes/slice_scaling.h"
+#include "core/slice_table_folder.h"
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include "core/error.h"
 #include <cmath>
 #include <gtest/gtest.h>
@@ -106,4 +110,42 @@ TEST(SliceContact, LoadsEqualButForTheirLastBitsGiveTheSamePeak)
     EXPECT_NEAR(slices[k + 1].refined_peak_pressure_pa / slices[k].refined_peak_pressure_pa, 1.0, 1e-9)
         << "slice " << k / 2;
   }
+}
+
+// The job's shared table (fem/scenes/slice_table_store.h): a second table
+// with the same settings reads every node the first solved, to the bit; other
+// settings read none; a node file cut short is solved again.
+TEST(SliceScaling, ATableReadsTheNodesAnotherSolvedUnderTheSameSettingsOnly)
+{
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "rollcheck_test_slice_table";
+  std::filesystem::remove_all(folder);
+  setenv(slice_table_folder_variable, folder.c_str(), 1);
+  const fem::SliceSettings settings;
+  fem::SliceScaling first(settings, 2);
+  first.cover(MPI_COMM_WORLD, 1e-9, 1e-9); // the node k = -18 alone
+  EXPECT_EQ(first.nodes_read(), 0u);
+  ASSERT_EQ(first.nodes().size(), 1u);
+  fem::SliceScaling second(settings, 2);
+  second.cover(MPI_COMM_WORLD, 1e-9, 1e-9);
+  EXPECT_EQ(second.nodes_read(), 1u);
+  EXPECT_EQ(second.wall_s(), 0.0);
+  for (const auto& [k, node] : first.nodes())
+  {
+    EXPECT_EQ(second.nodes().at(k).ratio, node.ratio) << k;
+    EXPECT_EQ(second.nodes().at(k).refined_ratio, node.refined_ratio) << k;
+    EXPECT_EQ(second.nodes().at(k).fem.approach_m, node.fem.approach_m) << k;
+  }
+  fem::SliceSettings other = settings;
+  other.poisson_ratio = 0.29;
+  fem::SliceScaling third(other, 2);
+  third.cover(MPI_COMM_WORLD, 1e-9, 1e-9);
+  EXPECT_EQ(third.nodes_read(), 0u);
+  for (const auto& file : std::filesystem::directory_iterator(folder))
+    std::ofstream(file.path(), std::ios::trunc) << "{\"load\":";
+  fem::SliceScaling fourth(settings, 2);
+  fourth.cover(MPI_COMM_WORLD, 1e-9, 1e-9);
+  EXPECT_EQ(fourth.nodes_read(), 0u);
+  EXPECT_EQ(fourth.nodes().at(-18).ratio, first.nodes().at(-18).ratio);
+  unsetenv(slice_table_folder_variable);
+  std::filesystem::remove_all(folder);
 }

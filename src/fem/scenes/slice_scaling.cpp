@@ -2,6 +2,8 @@
 #include "contact/hertz.h"
 #include "core/error.h"
 #include "fem/all_gather.h"
+#include "fem/petsc_session.h"
+#include "fem/scenes/slice_table_store.h"
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
@@ -44,17 +46,42 @@ void SliceScaling::cover(MPI_Comm comm, double lambda_min, double lambda_max)
     }
   if (missing.empty())
     return;
-  const auto start = std::chrono::steady_clock::now();
-  const std::vector<SliceFem> solved = solve_slices(comm, loads, settings_);
-  wall_s_ += wall_seconds_since(comm, start);
+  // Nodes another process of the job has solved (slice_table_store.h): one
+  // process alone reads them, so that the ranks of a run never disagree.
+  ensure_petsc(); // MPI too
+  int ranks = 1;
+  MPI_Comm_size(comm, &ranks);
+  const std::optional<std::filesystem::path> folder = ranks == 1 ? slice_table_folder() : std::nullopt;
+  std::vector<int> to_solve_k;
+  std::vector<SliceLoad> to_solve;
   for (std::size_t i = 0; i < missing.size(); ++i)
+    if (std::optional<SliceFem> stored = folder ? read_stored_slice(*folder, settings_, loads[i]) : std::nullopt)
+    {
+      add_node(missing[i], *stored);
+      ++nodes_read_;
+    }
+    else
+      to_solve_k.push_back(missing[i]), to_solve.push_back(loads[i]);
+  if (!to_solve.empty())
   {
-    const SliceFem& fem = solved[i];
-    nodes_[missing[i]] = {missing[i], contact::load_ratio(fem.load.load_n_per_m, unit_radius_m, effective_modulus_pa_), fem,
-                          fem.peak_pressure_pa / fem.hertz_peak_pressure_pa,
-                          fem.refined_peak_pressure_pa / fem.hertz_peak_pressure_pa};
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<SliceFem> solved = solve_slices(comm, to_solve, settings_);
+    wall_s_ += wall_seconds_since(comm, start);
+    for (std::size_t i = 0; i < to_solve.size(); ++i)
+    {
+      add_node(to_solve_k[i], solved[i]);
+      if (folder)
+        store_slice(*folder, settings_, solved[i]);
+    }
   }
   index_nodes();
+}
+
+void SliceScaling::add_node(int k, const SliceFem& fem)
+{
+  nodes_[k] = {k, contact::load_ratio(fem.load.load_n_per_m, unit_radius_m, effective_modulus_pa_), fem,
+               fem.peak_pressure_pa / fem.hertz_peak_pressure_pa,
+               fem.refined_peak_pressure_pa / fem.hertz_peak_pressure_pa};
 }
 
 void SliceScaling::double_nodes()

@@ -17,8 +17,9 @@
 // give the same g to 1e-6.)
 //
 // g is tabulated at the nodes lambda_k = 10^(k / nodes_per_decade), solved at
-// the unit radius on demand (`cover`) and interpolated linearly in log lambda
-// between them. Each node is a SliceFem: the settings' mesh level and one
+// the unit radius on demand (`cover`), or read where another process of the
+// job solved them (fem/scenes/slice_table_store.h, serial runs), and
+// interpolated linearly in log lambda between them. Each node is a SliceFem: the settings' mesh level and one
 // finer. Every other node (`stride` 2) is the table with half the nodes, so
 // the table's own convergence costs nothing extra.
 #include "contact/load_ratio.h"
@@ -70,8 +71,10 @@ public:
   const std::map<int, Node>& nodes() const { return nodes_; }
   int nodes_per_decade() const { return nodes_per_decade_; }
   double effective_modulus_pa() const { return effective_modulus_pa_; }
-  /// Seconds spent in `cover`, summed over its calls.
+  /// Seconds spent solving nodes in `cover`, summed over its calls.
   double wall_s() const { return wall_s_; }
+  /// Nodes read from another process's solves (slice_table_store.h), not solved here.
+  std::size_t nodes_read() const { return nodes_read_; }
 
 private:
   SliceSettings settings_;
@@ -83,6 +86,8 @@ private:
   int first_k_ = 0;
   std::vector<const Node*> by_k_;
   void index_nodes();
+  void add_node(int k, const SliceFem& fem);
   double wall_s_ = 0;
+  std::size_t nodes_read_ = 0;
 };
 } // namespace rollcheck::fem

@@ -253,9 +253,10 @@ void log_loop(const LoopSds& loop, const std::optional<ContinuumSds>& continuum,
                  continuum->line_hertz, continuum->fem, 100 * continuum->change());
   auto text = [](const std::optional<double>& v) { return v ? fmt::format("{:.4g}", *v) : std::string("singular"); };
   spdlog::info("loop of {} samples ({} singular): point-Hertz SDS {}, line-Hertz SDS {}, FEM-SDS {}; FEM table {} "
-               "solves ({} per decade, {:.1f} s), K-to-2K change {:+.3f} %, half-samples change {:+.3f} %{}",
+               "solves ({} per decade, {:.1f} s{}), K-to-2K change {:+.3f} %, half-samples change {:+.3f} %{}",
                loop.samples, loop.singular_samples, text(loop.point_hertz.value), text(loop.line_hertz.value),
                text(loop.fem.value), loop.fem_solves, loop.nodes_per_decade, table.wall_s(),
+               table.nodes_read() ? fmt::format("; {} of its nodes read from the job's table", table.nodes_read()) : "",
                100 * loop.table_change(), 100 * loop.fem_rulings.sample_change(),
                loop.converged() ? "" : " - NOT CONVERGED");
 }
@@ -403,6 +404,7 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScali
   for (const auto& [k, node] : table.nodes())
     result.table.push_back(node);
   result.table_wall_s = table.wall_s();
+  result.table_nodes_read = table.nodes_read();
   result.normal_load_n = s.normal_load_n;
   result.effective_modulus_pa = m.effective_modulus_pa;
   result.analytic_effective_modulus_pa = pressure.effective_modulus_pa;

@@ -140,6 +140,7 @@ struct FemSdsResult
   Eigen::Vector3d centre_of_mass_m = Eigen::Vector3d::Zero();
   std::vector<fem::SliceScaling::Node> table; ///< the FEM solves every sample's pressures come from
   double table_wall_s = 0;                 ///< FEM time of the table
+  std::size_t table_nodes_read = 0;        ///< its nodes another process of the job solved (slice_table_store.h)
   double table_vs_direct_worst = 0;        ///< over the directly solved orientations
   double worst_refinement_change = 0;      ///< largest |FEM finer / FEM - 1| over solved orientations
   double max_orientation_wall_s = 0;

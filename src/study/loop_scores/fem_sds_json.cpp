@@ -154,6 +154,7 @@ nlohmann::json to_json(const FemSdsResult& result)
       {"loop", to_json(loop)},
       {"fem_table", table},
       {"fem_table_wall_s", json_number(result.table_wall_s)},
+      {"fem_table_nodes_read", result.table_nodes_read},
       {"table_vs_direct_worst", json_number(result.table_vs_direct_worst)},
       {"orientations", result.orientations.size()},
       {"fem_solved_orientations", result.fem_solved},
