@@ -50,6 +50,10 @@ void add_loop_options(RimSchema& s)
             io::Bounds{1, 1000})
       .integer("seed", "--seed", [](RimCommand& c) -> std::uint64_t& { return c.loop.seed; }, "",
                "With --body: seed of the stratified sampling of those orientations", io::non_negative)
+      .integer("fem_slices", "--fem-slices", [](RimCommand& c) -> int& { return c.loop.fem_slices; }, "",
+               "With --body: plane-strain FEM slices per orientation solved directly, evenly spread over the loaded "
+               "ruling away from its ends (the interior's check against the table)",
+               io::Bounds{2, 1000})
       .integer("samples_per_loop", "--samples-per-loop", [](RimCommand& c) -> long& { return c.loop.samples_per_loop; }, "",
                "With --body: samples of the rolling loop, every one scored", io::loop_samples)
       .former("samples")

@@ -13,12 +13,14 @@ bin=$1; here=$2; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
 mpirun -n 2 --oversubscribe "$bin" -q rim --body cylinder --orientations 1 --samples-per-loop 256 --levels 2 \
-  --each-load-rule --json "$tmp/cylinder.json" > "$tmp/cylinder.log" 2>&1 \
+  --each-load-rule --fem-slices 3 --json "$tmp/cylinder.json" > "$tmp/cylinder.log" 2>&1 \
   || { echo "FAIL: rim --body cylinder"; cat "$tmp/cylinder.log"; exit 1; }
 check_json "two loaded square ends per sample, none singular on the rigid plane" \
   '.loop_scores.loaded_ends == 512 and .loop_scores.loaded_end_samples == 256 and .singular_from_deg > 89.999
    and (.ends | length) == 2 and all(.ends[]; .singular == false and (.interior_angle_deg - 90 | fabs) < 1e-6)' \
   "$tmp/cylinder.json"
+check_json "the orientation solved directly has the asked 3 slices" \
+  '(.interior.per_orientation | length) == 1 and (.interior.per_orientation[0].slices | length) == 3' "$tmp/cylinder.json"
 check_json "a rim square to the ruling: its dihedral angle is its section, 90 deg, with a wedge exponent of 0 at both" \
   'all(.ends[]; (.dihedral_angle_deg - 90 | fabs) < 1e-6 and .dihedral_wedge_exponent == 0 and .section_wedge_exponent == 0)
    and (.loaded_end_dihedral_min_deg - 90 | fabs) < 1e-6 and (.loaded_end_dihedral_max_deg - 90 | fabs) < 1e-6
@@ -36,5 +38,6 @@ check_json "the default load rule is the dynamic one, and the three rules agree 
 refuses rim "--body sphere:sphere not in" "--body cylinder --end-table-step 0:end_table_step_deg" \
   "--body cylinder --end-table-radius-step 0.5:end_table_radius_step" \
   "--body cylinder --end-table-acute-step -5:end_table_acute_step_deg" \
-  "--body cylinder --block-depth 4:block_depth" "--body cylinder --orientations 0:orientations"
+  "--body cylinder --block-depth 4:block_depth" "--body cylinder --orientations 0:orientations" \
+  "--body cylinder --fem-slices 1:fem_slices"
 exit $fail
