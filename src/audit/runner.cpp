@@ -91,11 +91,11 @@ void log_costliest(const std::vector<CommandArgs>& commands, const std::vector<C
 }
 
 /// Subcommands that run for tens of seconds (FEM loops, searches over rolling
-/// loops, the grid of modelling choices), longest first. The runner starts
+/// loops, the grid of modelling choices, the life study), longest first. The runner starts
 /// them before the short ones, so that the short commands fill the other
 /// workers around them instead of one long command running alone at the end
 /// (longest-processing-time-first scheduling).
-const std::vector<std::string> long_subcommands = {"optimize", "rim", "robustness", "fem-sds", "search", "hertz"};
+const std::vector<std::string> long_subcommands = {"optimize", "rim", "robustness", "life", "fem-sds", "search", "hertz"};
 
 /// The indices of `commands` in the order they start: the long subcommands
 /// first, in the order of long_subcommands, each group in citation order.
