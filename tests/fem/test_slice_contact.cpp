@@ -10,6 +10,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <spdlog/sinks/ringbuffer_sink.h>
+#include <spdlog/spdlog.h>
 #include "core/error.h"
 #include <cmath>
 #include <gtest/gtest.h>
@@ -148,4 +150,29 @@ TEST(SliceScaling, ATableReadsTheNodesAnotherSolvedUnderTheSameSettingsOnly)
   EXPECT_EQ(fourth.nodes().at(-18).ratio, first.nodes().at(-18).ratio);
   unsetenv(slice_table_folder_variable);
   std::filesystem::remove_all(folder);
+}
+
+// The shared table is a convenience: a folder that cannot be written (here a
+// regular file stands at its path) is named in a warning, and the table is
+// solved and correct all the same.
+TEST(SliceScaling, AnUnwritableSharedTableIsWarnedAboutAndTheRunGoesOn)
+{
+  const std::filesystem::path file = std::filesystem::temp_directory_path() / "rollcheck_test_slice_table_file";
+  std::ofstream(file) << "not a folder\n";
+  setenv(slice_table_folder_variable, file.c_str(), 1);
+  const auto sink = std::make_shared<spdlog::sinks::ringbuffer_sink_mt>(100);
+  const auto before = spdlog::default_logger();
+  spdlog::set_default_logger(std::make_shared<spdlog::logger>("captured", sink));
+  fem::SliceScaling table(fem::SliceSettings{}, 2);
+  EXPECT_NO_THROW(table.cover(MPI_COMM_WORLD, 1e-9, 1e-9));
+  spdlog::set_default_logger(before);
+  int warnings = 0;
+  for (const std::string& line : sink->last_formatted())
+    warnings += line.find("ROLLCHECK_SLICE_TABLE_DIR") != std::string::npos && line.find("not kept") != std::string::npos;
+  EXPECT_EQ(warnings, 1);
+  EXPECT_EQ(table.nodes_read(), 0u);
+  EXPECT_EQ(table.nodes().size(), 1u);
+  EXPECT_TRUE(std::filesystem::is_regular_file(file));
+  unsetenv(slice_table_folder_variable);
+  std::filesystem::remove(file);
 }

@@ -51,7 +51,7 @@ void SliceScaling::cover(MPI_Comm comm, double lambda_min, double lambda_max)
   ensure_petsc(); // MPI too
   int ranks = 1;
   MPI_Comm_size(comm, &ranks);
-  const std::optional<std::filesystem::path> folder = ranks == 1 ? slice_table_folder() : std::nullopt;
+  std::optional<std::filesystem::path> folder = ranks == 1 ? slice_table_folder() : std::nullopt;
   std::vector<int> to_solve_k;
   std::vector<SliceLoad> to_solve;
   for (std::size_t i = 0; i < missing.size(); ++i)
@@ -70,8 +70,8 @@ void SliceScaling::cover(MPI_Comm comm, double lambda_min, double lambda_max)
     for (std::size_t i = 0; i < to_solve.size(); ++i)
     {
       add_node(to_solve_k[i], solved[i]);
-      if (folder)
-        store_slice(*folder, settings_, solved[i]);
+      if (folder && !store_slice(*folder, settings_, solved[i]))
+        folder.reset(); // warned once
     }
   }
   index_nodes();

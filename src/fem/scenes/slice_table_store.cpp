@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
 
 namespace rollcheck::fem
 {
@@ -43,13 +44,22 @@ std::optional<SliceFem> read_stored_slice(const std::filesystem::path& folder, c
   }
 }
 
-void store_slice(const std::filesystem::path& folder, const SliceSettings& settings, const SliceFem& fem)
+bool store_slice(const std::filesystem::path& folder, const SliceSettings& settings, const SliceFem& fem)
 {
-  std::error_code error;
-  std::filesystem::create_directories(folder, error);
-  if (error)
-    throw ComputationError(fmt::format("slice table: cannot create {} ({}): {}", folder.string(),
-                                       slice_table_folder_variable, error.message()));
-  write_file_atomically(node_path(folder, settings, fem.load), nlohmann::json(fem).dump());
+  try
+  {
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    if (error)
+      throw ComputationError(fmt::format("cannot create {}: {}", folder.string(), error.message()));
+    write_file_atomically(node_path(folder, settings, fem.load), nlohmann::json(fem).dump());
+    return true;
+  }
+  catch (const std::runtime_error& e) // ComputationError or InputError from the writer
+  {
+    spdlog::warn("{} = {}: the slice table's nodes are not kept ({})", slice_table_folder_variable, folder.string(),
+                 e.what());
+    return false;
+  }
 }
 } // namespace rollcheck::fem

@@ -24,7 +24,8 @@ namespace rollcheck::fem
 std::optional<SliceFem> read_stored_slice(const std::filesystem::path& folder, const SliceSettings& settings,
                                           const SliceLoad& load);
 
-/// Keeps `fem` (solved under `settings`) in the folder, creating it if needed;
-/// ComputationError if the folder or the file cannot be written.
-void store_slice(const std::filesystem::path& folder, const SliceSettings& settings, const SliceFem& fem);
+/// Keeps `fem` (solved under `settings`) in the folder, creating it if
+/// needed. The folder is a convenience, not an output: one that cannot be
+/// written is named in a warning and the run goes on (false).
+bool store_slice(const std::filesystem::path& folder, const SliceSettings& settings, const SliceFem& fem);
 } // namespace rollcheck::fem
