@@ -10,7 +10,8 @@ for more than 10 s.
 
     /usr/bin/python3 scripts/bench/bench_silence.py [path/to/rollcheck] [--quick]
 
---quick leaves out the audit (90 s) and the 2-rank rim loop (40 s).
+--quick leaves out flat-rim's defaults (50 s), the 2-rank rim loop (25 s) and the
+audit (70 s).
 """
 import os
 import subprocess
@@ -31,7 +32,10 @@ def commands(rollcheck: str, scratch: Path, quick: bool):
         yield f"run {case.name}", [rollcheck, "run", str(case), "--json", str(scratch / f"{case.stem}.json")]
     yield "fem-sds --body oloid (2 ranks)", mpirun + [rollcheck, "fem-sds", "--body", "oloid", "--json",
                                                        str(scratch / "fem_sds.json")]
+    yield "hertz --model 3d (2 ranks)", mpirun + [rollcheck, "hertz", "--model", "3d", "--json",
+                                               str(scratch / "hertz.json")]
     if not quick:
+        yield "flat-rim (its defaults)", [rollcheck, "flat-rim", "--json", str(scratch / "flat_rim.json")]
         yield "rim --body oloid --orientations 1 --levels 1 (2 ranks)", mpirun + [
             rollcheck, "rim", "--body", "oloid", "--orientations", "1", "--levels", "1", "--json",
             str(scratch / "rim.json")]
