@@ -1,6 +1,7 @@
 #include "fem/scenes/slice_scaling.h"
 #include "contact/hertz.h"
 #include "core/error.h"
+#include "core/progress_beat.h"
 #include "fem/all_gather.h"
 #include "fem/petsc_session.h"
 #include "fem/scenes/slice_table_store.h"
@@ -64,6 +65,13 @@ void SliceScaling::cover(MPI_Comm comm, double lambda_min, double lambda_max)
       to_solve_k.push_back(missing[i]), to_solve.push_back(loads[i]);
   if (!to_solve.empty())
   {
+    int rank = 0;
+    MPI_Comm_rank(comm, &rank);
+    // A table of many nodes takes seconds to minutes: said, and repeated while it runs.
+    ProgressBeat beat("FEM slice table", rank == 0, std::chrono::seconds(5));
+    beat.step(fmt::format("solving {} node{} (load ratios {:.3g} to {:.3g})", to_solve.size(),
+                          to_solve.size() == 1 ? "" : "s", to_solve.front().load_n_per_m / effective_modulus_pa_,
+                          to_solve.back().load_n_per_m / effective_modulus_pa_));
     const auto start = std::chrono::steady_clock::now();
     const std::vector<SliceFem> solved = solve_slices(comm, to_solve, settings_);
     wall_s_ += wall_seconds_since(comm, start);
