@@ -31,7 +31,9 @@ if ((${#missing[@]})); then
   apt-get install -y -qq "${missing[@]}" >/dev/null
 fi
 
-cmake -S "$here" -B "$here/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+# Configured once: a build re-runs CMake itself when a CMakeLists.txt changes,
+# and stamps the commit itself (cmake/commit_stamp.cmake).
+[[ -f "$here/build/build.ninja" ]] || cmake -S "$here" -B "$here/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 targets=()
 for t in "$@"; do targets+=(--target "$t"); done
 cmake --build "$here/build" -j "$(nproc)" "${targets[@]}"

@@ -7,6 +7,7 @@
 #include "cli/cli.h"
 #include "core/error.h"
 #include "core/mpi_launch.h"
+#include "rollcheck_commit.h"
 #include "rollcheck_version.h"
 #include <algorithm>
 #include <cstdlib>
