@@ -83,6 +83,12 @@ for pattern in "^rollcheck [0-9]+\.[0-9]+\.[0-9]+ \(commit ([0-9a-f]{7,}(-dirty)
   "PETSc [0-9]+\.[0-9]+\.[0-9]+" "gmsh [0-9]+\.[0-9]+\.[0-9]+"; do
   grep -qE "$pattern" <<<"$version" || { echo "FAIL: --version lacks '$pattern':"; echo "$version"; fail=1; }
 done
+# The commit is stamped at build time (cmake/commit_stamp.cmake): in a checkout
+# it is the source's HEAD (a commit after the build, not rebuilt, fails here).
+if head=$(git -C "$here" describe --always 2>/dev/null); then
+  grep -qE "\(commit $head(-dirty)?\)" <<<"$version" \
+    || { echo "FAIL: --version does not name HEAD $head:"; echo "$version"; fail=1; }
+fi
 
 # The case files, through `rollcheck run`, coarse for speed (the hemisphere's
 # 3D default, P2 on rings, is hertz_mpi_default.sh's and test_hertz_solid's).
