@@ -14,7 +14,6 @@
 #include <map>
 #include <mutex>
 #include <numeric>
-#include <optional>
 #include <spdlog/spdlog.h>
 #include <sys/resource.h>
 #include <thread>

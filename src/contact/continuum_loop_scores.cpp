@@ -93,15 +93,18 @@ Rates sample_rates(const oracle::RollingSample& sample, double rate, const Rolli
     return r;
   const bool all_scores = !s.accumulated_pressure_only;
   // Contact time: the second moment and the touched area in closed form.
-  if (all_scores && hertz)
+  if (all_scores)
   {
-    r.second[0] = 16 * load.normal_n / (std::numbers::pi * e_star * rate);
-    r.area[0] = length * rate * (load.to - load.from) * radius((load.from + load.to) / 2);
-  }
-  else if (all_scores)
-  {
-    r.first[0] = length;
-    r.area[0] = r.swept; // the second moment: rigid_time_second_moment, between samples
+    if (hertz)
+    {
+      r.second[0] = 16 * load.normal_n / (std::numbers::pi * e_star * rate);
+      r.area[0] = length * rate * (load.to - load.from) * radius((load.from + load.to) / 2);
+    }
+    else
+    {
+      r.first[0] = length;
+      r.area[0] = r.swept; // the second moment: rigid_time_second_moment, between samples
+    }
   }
   const double lo = load.from + s.end_margin, hi = load.to - s.end_margin;
   const bool held_ends = lo <= hi;
@@ -244,7 +247,8 @@ ContinuumLoopScores continuum_loop_scores(const oracle::RollingTrajectory& traje
     for (int i = 0; i < n_quantities; ++i)
       a.area[i] *= dt / 2, a.first[i] *= dt / 2, a.second[i] *= dt / 2;
     a.swept *= dt / 2;
-    if (!s.accumulated_pressure_only && s.width == oracle::ContactWidthModel::rigid && (rates(k).first[0] > 0 || rates(k + 1).first[0] > 0))
+    if (!s.accumulated_pressure_only && s.width == oracle::ContactWidthModel::rigid
+        && (rates(k).first[0] > 0 || rates(k + 1).first[0] > 0))
       a.second[0] = rigid_time_second_moment(samples[k], samples[k + 1], rate_of(samples[k]), rate_of(samples[k + 1]),
                                              dt, 16);
     total += a;

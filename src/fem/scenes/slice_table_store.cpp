@@ -46,20 +46,23 @@ std::optional<SliceFem> read_stored_slice(const std::filesystem::path& folder, c
 
 bool store_slice(const std::filesystem::path& folder, const SliceSettings& settings, const SliceFem& fem)
 {
+  auto not_kept = [&](const std::string& why) {
+    spdlog::warn("{} = {}: the slice table's nodes are not kept ({})", slice_table_folder_variable, folder.string(),
+                 why);
+    return false;
+  };
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error)
+    return not_kept(fmt::format("cannot create it: {}", error.message()));
   try
   {
-    std::error_code error;
-    std::filesystem::create_directories(folder, error);
-    if (error)
-      throw ComputationError(fmt::format("cannot create {}: {}", folder.string(), error.message()));
     write_file_atomically(node_path(folder, settings, fem.load), nlohmann::json(fem).dump());
-    return true;
   }
-  catch (const std::runtime_error& e) // ComputationError or InputError from the writer
+  catch (const ComputationError& e) // the writer names the file and the system's reason
   {
-    spdlog::warn("{} = {}: the slice table's nodes are not kept ({})", slice_table_folder_variable, folder.string(),
-                 e.what());
-    return false;
+    return not_kept(e.what());
   }
+  return true;
 }
 } // namespace rollcheck::fem
