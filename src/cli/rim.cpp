@@ -100,8 +100,8 @@ void add_end_table_options(RimSchema& s)
             io::Bounds{0, 100})
       .real("depth_over_edge_radius", "--block-depth", &RimCommand::depth_over_edge_radius, "",
             "With --body and a rounded edge: each end model's block at least this many edge radii deep (H >= c r_e at "
-            "every end, however small its b; above 4 for the fillet to fit). An acute end's ratio falls as the block "
-            "deepens (docs/results/rim-ends.md#the-blocks-depth)",
+            "every end, however small its b; above 4 for the fillet to fit). As the block deepens an acute end's ratio "
+            "falls and an obtuse end's rises (2-3 % per doubling; docs/notes/rim-ends-tables.md)",
             io::Bounds{4, 100, true, false})
       .real("flat_rim_from_deg", "--flat-rim-from", &RimCommand::flat_rim_from_rad, "deg",
             "With --body and a rounded edge: loaded ends of at least this interior angle take the flat-rim table, the "
