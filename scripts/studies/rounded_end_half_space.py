@@ -23,8 +23,9 @@ pressure (the FEM's end / interior) and over p0.
   python3 scripts/studies/rounded_end_half_space.py [--rho 4 --length 400 ...]
   python3 scripts/studies/rounded_end_half_space.py --check   # Hertz's point contact on the same grid
 
-Cost: n cells (3,000-6,000) need an n x n influence matrix and a few dense
-solves: 15-110 s a row on one core. A study prototype, not rollcheck's model.
+Cost: n cells (4,000-7,000 at the defaults) need an n x n influence matrix
+and a few dense solves: 25-120 s a row on one core. A study prototype, not
+rollcheck's model.
 """
 import argparse
 import sys
