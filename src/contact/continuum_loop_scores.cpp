@@ -14,25 +14,9 @@ namespace rollcheck::contact
 {
 namespace
 {
-constexpr int n_quantities = 4; // contact time, peak pressure, accumulated pressure, damage
-
-/// Rates per unit time of the moments of each quantity x over the surface
-/// the ruling sweeps: integral 1[x > 0] dA, x dA, x^2 dA, and max x.
-struct Rates
-{
-  std::array<double, n_quantities> area{}, first{}, second{}, max{};
-  double swept = 0;
-  double load_ratio_min = std::numeric_limits<double>::infinity(), load_ratio_max = 0;
-  Rates& operator+=(const Rates& o)
-  {
-    for (int i = 0; i < n_quantities; ++i)
-      area[i] += o.area[i], first[i] += o.first[i], second[i] += o.second[i], max[i] = std::max(max[i], o.max[i]);
-    swept += o.swept;
-    load_ratio_min = std::min(load_ratio_min, o.load_ratio_min);
-    load_ratio_max = std::max(load_ratio_max, o.load_ratio_max);
-    return *this;
-  }
-};
+constexpr int n_quantities = ContinuumMoments::quantities;
+/// A sample's moments per unit time: the trapezoid rule sums them over the window.
+using Rates = ContinuumMoments;
 
 /// integral_0^1 ds / R(s) for R linear from r0 to r1.
 double mean_reciprocal_radius(double r0, double r1)
@@ -183,13 +167,21 @@ ContinuumScore score_of(const Rates& total, int quantity, double surface_area_m2
   return score;
 }
 
-void validate(const oracle::RollingTrajectory& trajectory, double begin_s, double end_s, double surface_area_m2,
-              const ContinuumLoopSettings& s)
+void require_positive_area(double surface_area_m2)
+{
+  if (!(surface_area_m2 > 0))
+    throw InputError(fmt::format("continuum loop scores: needs a positive surface area, got {} m^2", surface_area_m2));
+}
+
+void validate(const oracle::RollingTrajectory& trajectory, double begin_s, double end_s, const ContinuumLoopSettings& s,
+              WindowPart part)
 {
   if (trajectory.mode != oracle::ContactMode::line)
     throw InputError("continuum loop scores: defined for line contact only");
-  if (!(end_s > begin_s) || !(surface_area_m2 > 0))
-    throw InputError("continuum loop scores: needs end > begin and a positive surface area");
+  if (!(end_s > begin_s))
+    throw InputError("continuum loop scores: needs end > begin");
+  if (!(part.parts >= 1 && part.part >= 0 && part.part < part.parts))
+    throw InputError(fmt::format("continuum loop scores: part {} of {} does not exist", part.part, part.parts));
   if (!(s.end_margin >= 0 && s.end_margin < 0.5))
     throw InputError(fmt::format("end margin must be in [0, 0.5), got {}", s.end_margin));
   if (!(s.normal_load_n > 0) || !std::isfinite(s.normal_load_n))
@@ -205,11 +197,20 @@ const NamedValues<TimeLaw>& time_law_names()
   return names;
 }
 
-ContinuumLoopScores continuum_loop_scores(const oracle::RollingTrajectory& trajectory, double begin_s, double end_s,
-                                          double surface_area_m2, const RollingBodyMass& body,
-                                          const ContinuumLoopSettings& s)
+ContinuumMoments& ContinuumMoments::operator+=(const ContinuumMoments& o)
 {
-  validate(trajectory, begin_s, end_s, surface_area_m2, s);
+  for (int i = 0; i < quantities; ++i)
+    area[i] += o.area[i], first[i] += o.first[i], second[i] += o.second[i], max[i] = std::max(max[i], o.max[i]);
+  swept += o.swept;
+  load_ratio_min = std::min(load_ratio_min, o.load_ratio_min);
+  load_ratio_max = std::max(load_ratio_max, o.load_ratio_max);
+  return *this;
+}
+
+ContinuumMoments continuum_loop_moments(const oracle::RollingTrajectory& trajectory, double begin_s, double end_s,
+                                        const RollingBodyMass& body, const ContinuumLoopSettings& s, WindowPart part)
+{
+  validate(trajectory, begin_s, end_s, s, part);
   const auto& samples = trajectory.samples;
   // The uniform rate sweeps the same loop in the same time at constant sigma'.
   double swept_angle = 0, window = 0;
@@ -232,8 +233,19 @@ ContinuumLoopScores continuum_loop_scores(const oracle::RollingTrajectory& traje
       at[k] = sample_rates(samples[k], rate_of(samples[k]), body, s), done[k] = true;
     return at[k];
   };
-  Rates total;
+  // This part's run of the window's intervals [first, last).
+  std::size_t first = 0, last = 0;
   for (std::size_t k = 0; k + 1 < samples.size(); ++k)
+    if (std::min(samples[k + 1].time_s, end_s) > std::max(samples[k].time_s, begin_s))
+    {
+      if (last == 0)
+        first = k;
+      last = k + 1;
+    }
+  const std::size_t intervals = last - first;
+  const auto share = [&](int p) { return first + intervals * static_cast<std::size_t>(p) / static_cast<std::size_t>(part.parts); };
+  Rates total;
+  for (std::size_t k = share(part.part); k < share(part.part + 1); ++k)
   {
     const double t0 = std::max(samples[k].time_s, begin_s), t1 = std::min(samples[k + 1].time_s, end_s);
     if (!(t1 > t0))
@@ -253,6 +265,13 @@ ContinuumLoopScores continuum_loop_scores(const oracle::RollingTrajectory& traje
                                              dt, 16);
     total += a;
   }
+  return total;
+}
+
+ContinuumLoopScores continuum_loop_scores(const ContinuumMoments& total, double surface_area_m2,
+                                          const ContinuumLoopSettings& s)
+{
+  require_positive_area(surface_area_m2);
   ContinuumLoopScores scores;
   scores.surface_area_m2 = surface_area_m2;
   scores.swept_area_m2 = total.swept;
@@ -267,5 +286,13 @@ ContinuumLoopScores continuum_loop_scores(const oracle::RollingTrajectory& traje
   scores.load_ratio_min = total.load_ratio_min;
   scores.load_ratio_max = total.load_ratio_max;
   return scores;
+}
+
+ContinuumLoopScores continuum_loop_scores(const oracle::RollingTrajectory& trajectory, double begin_s, double end_s,
+                                          double surface_area_m2, const RollingBodyMass& body,
+                                          const ContinuumLoopSettings& s)
+{
+  require_positive_area(surface_area_m2); // before the integration
+  return continuum_loop_scores(continuum_loop_moments(trajectory, begin_s, end_s, body, s), surface_area_m2, s);
 }
 } // namespace rollcheck::contact

@@ -55,6 +55,8 @@
 #include "oracle/contact_density.h"
 #include "oracle/rolling_dynamics.h"
 #include <Eigen/Core>
+#include <array>
+#include <limits>
 #include <functional>
 #include <string>
 
@@ -107,6 +109,39 @@ struct ContinuumLoopScores
   /// (the range a pressure factor must cover).
   double load_ratio_min = 0, load_ratio_max = 0;
 };
+
+/// What the scores are made of: the integrals over the loop of each
+/// quantity x over the surface the rulings sweep (integral 1[x > 0] dA,
+/// x dA, x^2 dA, and max x; the swept area; the load ratios' range).
+/// Those of disjoint parts of a window add up (+=: sums, and the largest and
+/// least), so that the parts can be integrated apart (on MPI ranks).
+struct ContinuumMoments
+{
+  static constexpr int quantities = 4; ///< contact time, peak pressure, accumulated pressure, damage
+  std::array<double, quantities> area{}, first{}, second{}, max{};
+  double swept = 0;
+  double load_ratio_min = std::numeric_limits<double>::infinity(), load_ratio_max = 0;
+  ContinuumMoments& operator+=(const ContinuumMoments& other);
+};
+
+/// The part-th of `parts` contiguous runs of a window's sample intervals
+/// (as near equal in count as they divide); {0, 1} is the whole window.
+struct WindowPart
+{
+  int part = 0;
+  int parts = 1;
+};
+
+/// The moments of `part` of the loop [begin_s, end_s] of a line-contact
+/// trajectory (the parts of a window add up to its whole). InputError for
+/// point contact, an empty window, a part that does not exist or bad settings.
+ContinuumMoments continuum_loop_moments(const oracle::RollingTrajectory& trajectory, double begin_s, double end_s,
+                                        const RollingBodyMass& body, const ContinuumLoopSettings& settings,
+                                        WindowPart part = {});
+/// The scores of a whole window's moments on a body of area `surface_area_m2`
+/// (ComputationError if nothing is touched).
+ContinuumLoopScores continuum_loop_scores(const ContinuumMoments& moments, double surface_area_m2,
+                                          const ContinuumLoopSettings& settings);
 
 /// The scores of the loop [begin_s, end_s] of a line-contact trajectory on a
 /// body of area `surface_area_m2`. InputError for point contact, an empty

@@ -50,7 +50,8 @@ assert r["fem_solves"] >= r["fem_solves_half_table"] >= 2
 assert len(r["fem_table"]) >= r["fem_solves"] and r["table_vs_direct_worst"] < 0.003
 # The continuum value on the exact surface: r / L = 0.5 (docs/methods/fem-sds.md), resolution-free.
 assert abs(r["fem_sds_continuum"] - 0.5) < 2e-4 and abs(r["line_hertz_sds_continuum"] - 0.5) < 2e-4, r["fem_sds_continuum"]
-assert abs(r["fem_sds_continuum_change"]) < 0.01
+assert abs(r["fem_sds_continuum_change"]) < 0.01 and abs(r["fem_sds_continuum_table_change"]) < 0.01
+assert r["fem_sds_continuum_status"] == "converged", r["fem_sds_continuum_status"]
 rigid = json.load(open(f"{d}/rigid.json"))
 unsolved = [o for o in rigid["per_orientation"] if not o["fem_solved"]]
 assert len(unsolved) == rigid["orientations"] - rigid["fem_solved_orientations"]

@@ -61,6 +61,7 @@ assert abs(cylinder["fem_sds_continuum"] - 0.5) < 2e-4, cylinder["fem_sds_contin
 for r in rows:
     if r["scored"]:
         assert r["fem_sds_continuum"] > 0 and abs(r["fem_sds_continuum_change"]) < 0.01, r
+        assert r["fem_sds_continuum_status"] == "converged" and abs(r["fem_sds_continuum_table_change"]) < 0.01, r
 print(f"{len(rows)} bodies, {len(unscored)} genomes lift a rim; cylinder FEM-SDS {cylinder['fem_sds']:.6g} "
       f"(even side {even:.6g}); oloid FEM / cylinder {refs['oloid']['over_cylinder']['fem_sds']:.3g}")
 PY

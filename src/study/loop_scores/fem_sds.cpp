@@ -123,7 +123,9 @@ struct Scene
   std::optional<oracle::RealRolling> run; ///< the rolling oracle's
 };
 
-Scene make_scene(const FemSdsSettings& s, bool with_uniformity)
+/// Without the template or U (`mesh_parts` false) the scene has no mesh,
+/// faces or pressures: the loop's samples and its run alone.
+Scene make_scene(const FemSdsSettings& s, bool with_uniformity, bool mesh_parts = true)
 {
   oracle::require_line_contact(s.body);
   if (s.time_law == contact::TimeLaw::uniform_rate && s.load_rule == contact::LoadRule::dynamic)
@@ -132,11 +134,14 @@ Scene make_scene(const FemSdsSettings& s, bool with_uniformity)
   Scene scene;
   scene.models = models_of(s);
   const Models& m = scene.models;
-  scene.mesh = geometry::make_body(s.body);
-  scene.body = oracle::make_rolling_body(scene.mesh, m.compat);
-  const contact::FaceCurvature curvature = contact::face_curvature(scene.mesh, m.hertz, m.compat);
-  scene.pressure = contact::face_pressure(curvature.effective_radius_m, m.hertz, m.compat);
-  scene.cones = oracle::face_cones(scene.mesh);
+  if (mesh_parts || s.oracle != OrientationOracle::rolling)
+  {
+    scene.mesh = geometry::make_body(s.body);
+    scene.body = oracle::make_rolling_body(scene.mesh, m.compat);
+    const contact::FaceCurvature curvature = contact::face_curvature(scene.mesh, m.hertz, m.compat);
+    scene.pressure = contact::face_pressure(curvature.effective_radius_m, m.hertz, m.compat);
+    scene.cones = oracle::face_cones(scene.mesh);
+  }
   scene.source = s.oracle == OrientationOracle::rolling
                      ? rolling_source(s, scene.mesh, scene.contact_held, with_uniformity ? &scene.uniformity : nullptr,
                                       scene.run)
@@ -150,7 +155,7 @@ std::optional<ContinuumSds> scene_continuum(MPI_Comm comm, const Scene& scene, c
 {
   if (!scene.run || !scene.contact_held || !std::isfinite(scene.run->first_loop_end_s))
     return std::nullopt;
-  return continuum_sds(comm, *scene.run, continuum_settings(s), table);
+  return continuum_sds(comm, *scene.run, continuum_settings(s), table, {s.tolerance, loop_settings(s).max_nodes_per_decade});
 }
 
 /// The slices' FEM along the loaded ruling and their peaks, and the line
@@ -413,23 +418,33 @@ FemSdsResult run_fem_sds(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScali
   return result;
 }
 
-BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScaling& table, bool with_uniformity)
+BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& s, fem::SliceScaling& table, const BodyLoopParts& parts)
 {
   fem::ensure_petsc(); // MPI too
-  const Scene scene = make_scene(s, with_uniformity);
+  const Scene scene = make_scene(s, parts.uniformity, parts.face_template || parts.uniformity);
   BodyLoop r;
   r.body = geometry::body_label(s.body);
   r.source = scene.source.description;
   r.contact_held = scene.contact_held;
   r.n_faces = static_cast<std::int64_t>(scene.mesh.faces.rows());
   r.uniformity = scene.uniformity;
+  r.parts = parts;
   const LoopSdsSettings loop = loop_settings(s);
-  r.loop = loop_sds(comm,
-                    map_loop_samples(comm, scene.source, scene.body, scene.pressure.peak_pressure_pa, scene.cones,
-                                     table.effective_modulus_pa(), loop),
-                    table, loop);
-  r.continuum = scene_continuum(comm, scene, s, table);
+  if (parts.face_template)
+    r.loop = loop_sds(comm,
+                      map_loop_samples(comm, scene.source, scene.body, scene.pressure.peak_pressure_pa, scene.cones,
+                                       table.effective_modulus_pa(), loop),
+                      table, loop);
+  if (parts.continuum)
+    r.continuum = scene_continuum(comm, scene, s, table);
   return r;
+}
+
+std::string BodyLoop::status() const
+{
+  if (parts.face_template)
+    return loop.status();
+  return continuum ? continuum->status() : "no whole loop: no continuum value";
 }
 
 fem::SliceSettings slice_settings(const FemSdsSettings& s) { return models_of(s).slice; }

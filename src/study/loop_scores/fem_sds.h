@@ -158,6 +158,16 @@ struct FemSdsResult
 /// One body's whole loop scored, with a FEM table the caller may share
 /// between bodies (the family table): the scores of run_fem_sds without the
 /// directly solved orientations, and U of the loop's contact density.
+/// What of a body's loop score_body_loop computes: a search scoring one
+/// FEM-SDS value skips the others (U: the contact density's pass over the
+/// mesh; the face template: the mesh, its faces' pressures and the mapping
+/// of every sample onto them; the continuum value: its passes over the loop).
+struct BodyLoopParts
+{
+  bool uniformity = true;
+  bool face_template = true;
+  bool continuum = true;
+};
 struct BodyLoop
 {
   std::string body;                 ///< geometry::body_label
@@ -167,11 +177,15 @@ struct BodyLoop
   LoopSds loop;
   std::optional<double> uniformity; ///< U (oracle/uniformity_score.h), rolling oracle only
   std::optional<ContinuumSds> continuum; ///< rolling oracle, a whole loop only
+  BodyLoopParts parts;                   ///< what was computed
+  /// The status of the value scored: the template's (LoopSds::status), or
+  /// the continuum's (ContinuumSds::status) when the template was left out.
+  std::string status() const;
 };
-/// `with_uniformity` false leaves U empty: a search scoring FEM-SDS alone
-/// skips the contact density's pass over the mesh.
+/// The parts left out stay empty (`loop` default, no U, no continuum; no
+/// mesh, so no faces, without the template and U).
 BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& settings, fem::SliceScaling& table,
-                         bool with_uniformity = true);
+                         const BodyLoopParts& parts = {});
 
 /// The slices' FEM settings of `settings`: what a shared table is built with.
 fem::SliceSettings slice_settings(const FemSdsSettings& settings);

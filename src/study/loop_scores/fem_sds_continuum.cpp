@@ -2,21 +2,52 @@
 #include "study/loop_scores/fem_sds_continuum.h"
 #include "core/json_number.h"
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <fmt/format.h>
 
 namespace rollcheck::study::loop_scores
 {
 namespace
 {
-double accumulated_pressure_variance(const oracle::RollingTrajectory& trajectory, const oracle::RealRolling& run,
-                                     const contact::ContinuumLoopSettings& s, contact::ContinuumLoopScores* all = nullptr)
+/// The loop's moments, each rank integrating its part of the window, summed over `comm`.
+contact::ContinuumMoments loop_moments(MPI_Comm comm, const oracle::RollingTrajectory& trajectory,
+                                       const oracle::RealRolling& run, const contact::ContinuumLoopSettings& s)
 {
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &ranks);
   const double end = std::isfinite(run.first_loop_end_s) ? run.first_loop_end_s : run.scored_end_s;
   // fem-sds rolls the body under the rolling study's default gravity.
   const contact::RollingBodyMass mass{run.mass.centre_of_mass_m, run.mass.mass_kg,
                                       oracle::RollingStudyParameters{}.gravity_m_s2};
+  contact::ContinuumMoments m = contact::continuum_loop_moments(trajectory, 0, end, mass, s, {rank, ranks});
+  constexpr int q = contact::ContinuumMoments::quantities;
+  std::array<double, 3 * q + 1> sums{};
+  std::copy(m.area.begin(), m.area.end(), sums.begin());
+  std::copy(m.first.begin(), m.first.end(), sums.begin() + q);
+  std::copy(m.second.begin(), m.second.end(), sums.begin() + 2 * q);
+  sums.back() = m.swept;
+  MPI_Allreduce(MPI_IN_PLACE, sums.data(), static_cast<int>(sums.size()), MPI_DOUBLE, MPI_SUM, comm);
+  std::copy(sums.begin(), sums.begin() + q, m.area.begin());
+  std::copy(sums.begin() + q, sums.begin() + 2 * q, m.first.begin());
+  std::copy(sums.begin() + 2 * q, sums.begin() + 3 * q, m.second.begin());
+  m.swept = sums.back();
+  std::array<double, q + 2> largest{};
+  std::copy(m.max.begin(), m.max.end(), largest.begin());
+  largest[q] = -m.load_ratio_min, largest[q + 1] = m.load_ratio_max;
+  MPI_Allreduce(MPI_IN_PLACE, largest.data(), static_cast<int>(largest.size()), MPI_DOUBLE, MPI_MAX, comm);
+  std::copy(largest.begin(), largest.begin() + q, m.max.begin());
+  m.load_ratio_min = -largest[q], m.load_ratio_max = largest[q + 1];
+  return m;
+}
+
+double accumulated_pressure_variance(MPI_Comm comm, const oracle::RollingTrajectory& trajectory,
+                                     const oracle::RealRolling& run, const contact::ContinuumLoopSettings& s,
+                                     contact::ContinuumLoopScores* all = nullptr)
+{
   const contact::ContinuumLoopScores scores
-      = contact::continuum_loop_scores(trajectory, 0, end, run.surface_area_m2, mass, s);
+      = contact::continuum_loop_scores(loop_moments(comm, trajectory, run, s), run.surface_area_m2, s);
   if (all)
     *all = scores;
   return scores.accumulated_pressure.whole;
@@ -24,20 +55,35 @@ double accumulated_pressure_variance(const oracle::RollingTrajectory& trajectory
 } // namespace
 
 ContinuumSds continuum_sds(MPI_Comm comm, const oracle::RealRolling& run, contact::ContinuumLoopSettings s,
-                           fem::SliceScaling& table)
+                           fem::SliceScaling& table, const ContinuumTableRefinement& refinement)
 {
   ContinuumSds r;
+  r.tolerance = refinement.tolerance;
   s.pressure_factor = nullptr;
   s.accumulated_pressure_only = true;
   contact::ContinuumLoopScores line;
-  r.line_hertz = accumulated_pressure_variance(run.trajectory, run, s, &line);
+  r.line_hertz = accumulated_pressure_variance(comm, run.trajectory, run, s, &line);
   r.load_ratio_min = line.load_ratio_min;
   r.load_ratio_max = line.load_ratio_max;
   const double least = fem::SliceScaling::smallest_load_ratio;
   r.below_table = r.load_ratio_min < least;
-  table.cover(comm, std::max(r.load_ratio_min, least), std::max(r.load_ratio_max, least));
-  s.pressure_factor = [&table, least](double lambda) { return table.ratio(std::max(lambda, least)); };
-  r.fem = accumulated_pressure_variance(run.trajectory, run, s);
+  auto factor = [&table, least](int stride) {
+    return [&table, least, stride](double lambda) { return table.ratio(std::max(lambda, least), stride); };
+  };
+  while (true)
+  {
+    table.cover(comm, std::max(r.load_ratio_min, least), std::max(r.load_ratio_max, least));
+    s.pressure_factor = factor(1);
+    r.fem = accumulated_pressure_variance(comm, run.trajectory, run, s);
+    s.pressure_factor = factor(2);
+    r.fem_half_table = accumulated_pressure_variance(comm, run.trajectory, run, s);
+    if (std::abs(r.table_change()) < refinement.tolerance
+        || 2 * table.nodes_per_decade() > refinement.max_nodes_per_decade)
+      break;
+    table.double_nodes();
+  }
+  r.nodes_per_decade = table.nodes_per_decade();
+  s.pressure_factor = factor(1);
   oracle::RollingTrajectory coarse = run.trajectory;
   coarse.samples.clear();
   for (std::size_t k = 0; k < run.trajectory.samples.size(); k += 2)
@@ -45,8 +91,17 @@ ContinuumSds continuum_sds(MPI_Comm comm, const oracle::RealRolling& run, contac
   if (run.trajectory.samples.size() % 2 == 0 && !run.trajectory.samples.empty())
     coarse.samples.push_back(run.trajectory.samples.back()); // the window's end stays covered
   s.pieces = std::max(1, s.pieces / 2);
-  r.fem_coarse = accumulated_pressure_variance(coarse, run, s);
+  r.fem_coarse = accumulated_pressure_variance(comm, coarse, run, s);
   return r;
+}
+
+std::string ContinuumSds::status() const
+{
+  if (converged())
+    return "converged";
+  return fmt::format("not converged: halving the samples and pieces changes the continuum value by {:+.2f} %, "
+                     "halving the FEM table by {:+.2f} % (tolerance {:.2g} %)",
+                     100 * change(), 100 * table_change(), 100 * tolerance);
 }
 
 nlohmann::json to_json(const ContinuumSds& c)
@@ -54,6 +109,8 @@ nlohmann::json to_json(const ContinuumSds& c)
   return {{"line_hertz_sds_continuum", json_number(c.line_hertz)},
           {"fem_sds_continuum", json_number(c.fem)},
           {"fem_sds_continuum_change", json_number(c.change())},
+          {"fem_sds_continuum_table_change", json_number(c.table_change())},
+          {"fem_sds_continuum_status", c.status()},
           {"fem_sds_continuum_held_below_table", c.below_table}};
 }
 } // namespace rollcheck::study::loop_scores

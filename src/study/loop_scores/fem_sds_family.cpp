@@ -20,7 +20,7 @@ namespace
 /// `why_not` empty; or why it has none: a rim lifts before the loop closes,
 /// or it cannot roll over its potential barrier (the same on every rank).
 BodyLoop whole_loop(MPI_Comm comm, const geometry::BodySpec& body, const FemSdsSettings& base,
-                    fem::SliceScaling& table, std::string& why_not, bool with_uniformity = true)
+                    fem::SliceScaling& table, std::string& why_not, const BodyLoopParts& parts = {})
 {
   FemSdsSettings settings = base;
   settings.body = body;
@@ -28,7 +28,7 @@ BodyLoop whole_loop(MPI_Comm comm, const geometry::BodySpec& body, const FemSdsS
   BodyLoop loop;
   try
   {
-    loop = score_body_loop(comm, settings, table, with_uniformity);
+    loop = score_body_loop(comm, settings, table, parts);
     why_not = loop.contact_held ? "" : loop.source;
   }
   catch (const InputError& e)
@@ -114,9 +114,12 @@ std::function<double(const geometry::BodySpec&)> fem_sds_scorer(MPI_Comm comm, c
   auto table = std::make_shared<fem::SliceScaling>(slice_settings(base), base.table_nodes_per_decade);
   return [comm, base, value, table, statuses](const geometry::BodySpec& body) {
     std::string why_not;
-    const BodyLoop loop = whole_loop(comm, body, base, *table, why_not, false); // the search reads no U
+    // The search reads the value it scores alone, and its status.
+    const bool continuum = value == FemSdsValue::continuum;
+    const BodyLoop loop = whole_loop(comm, body, base, *table, why_not,
+                                     {.uniformity = false, .face_template = !continuum, .continuum = continuum});
     if (statuses)
-      statuses->push_back(why_not.empty() ? loop.loop.status() : why_not);
+      statuses->push_back(why_not.empty() ? loop.status() : why_not);
     if (!why_not.empty())
       return std::numeric_limits<double>::infinity();
     if (value == FemSdsValue::continuum)

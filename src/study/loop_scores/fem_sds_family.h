@@ -75,10 +75,12 @@ enum class FemSdsValue
 /// line-contact model cannot follow over a whole loop (a rim lifts) or that
 /// cannot roll over its potential barrier: it has no whole loop to score
 /// (and, for the continuum value, a loop without one).
-/// Collective on `comm` at every call. Each call's loop status (LoopSds::status:
-/// "converged", "not converged (...)", "singular (...)", or why there is no
-/// loop) is appended to `statuses`, if given, so that the search can report
-/// how many of the bodies it scored were converged.
+/// Only the value scored is computed. Collective on `comm` at every call.
+/// Each call's status, that of the value scored (LoopSds::status for the
+/// template, ContinuumSds::status for the continuum value: "converged",
+/// "not converged: ...", "singular: ...", or why there is no loop), is
+/// appended to `statuses`, if given, so that the search can report how many
+/// of the bodies it scored were converged.
 std::function<double(const geometry::BodySpec&)> fem_sds_scorer(
     MPI_Comm comm, const FemSdsSettings& base, FemSdsValue value,
     std::shared_ptr<std::vector<std::string>> statuses = {});

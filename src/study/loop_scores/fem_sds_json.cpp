@@ -189,6 +189,8 @@ nlohmann::json continuum_json(const std::optional<ContinuumSds>& continuum)
   return {{"line_hertz_sds_continuum", nullptr},
           {"fem_sds_continuum", nullptr},
           {"fem_sds_continuum_change", nullptr},
+          {"fem_sds_continuum_table_change", nullptr},
+          {"fem_sds_continuum_status", nullptr},
           {"fem_sds_continuum_held_below_table", nullptr}};
 }
 } // namespace rollcheck::study::loop_scores

@@ -4,7 +4,8 @@
 // so the FEM's g is one constant and cancels); the true oloid's and the
 // cylinder's values when the loop's samples and the pieces along each ruling
 // double; the oloid's FEM value against its line-Hertz value within the FEM's
-// correction (under 1 %, docs/results/fem-sds.md).
+// correction (under 1 %, docs/results/fem-sds.md); its own FEM table check
+// (every other node), and a loop scored for its continuum value alone.
 #include "core/error.h"
 #include "fem/petsc_session.h"
 #include "fem/scenes/slice_scaling.h"
@@ -89,4 +90,53 @@ TEST(FemSdsContinuum, OloidIsAboveTheCylinderAndRefusesAUniformRateUnderTheDynam
   const nlohmann::json j = study::loop_scores::continuum_json(oloid.continuum);
   EXPECT_EQ(j.at("fem_sds_continuum").get<double>(), oloid.continuum->fem);
   EXPECT_TRUE(study::loop_scores::continuum_json(std::nullopt).at("fem_sds_continuum").is_null());
+}
+
+TEST(FemSdsContinuum, ItsTableIsRefinedUntilEveryOtherNodeAgrees)
+{
+  // The continuum value's own table check: its value with every other node
+  // of the FEM table. At the default tolerance the oloid's starting table
+  // (2 nodes a decade) is fine enough; a tolerance no table can meet refines
+  // it up to the most nodes a decade allowed, and says so.
+  fem::ensure_petsc();
+  FemSdsSettings s;
+  const oracle::RealRolling run = roll("oloid", 8000); // 2000 samples are not converged: -3.8 %
+  fem::SliceScaling table(study::loop_scores::slice_settings(s), s.table_nodes_per_decade);
+  const ContinuumSds converged = continuum(run, s, table);
+  EXPECT_EQ(converged.nodes_per_decade, 2);
+  EXPECT_LT(std::abs(converged.table_change()), converged.tolerance);
+  EXPECT_EQ(converged.status(), "converged");
+  const ContinuumSds refined = study::loop_scores::continuum_sds(
+      MPI_COMM_WORLD, run, study::loop_scores::continuum_settings(s), table, {.tolerance = 1e-12, .max_nodes_per_decade = 4});
+  EXPECT_EQ(refined.nodes_per_decade, 4);
+  EXPECT_EQ(table.nodes_per_decade(), 4);
+  EXPECT_TRUE(refined.status().starts_with("not converged: ")) << refined.status();
+  EXPECT_NE(refined.table_change(), 0.0); // two tables, not one read twice
+  // Twice the nodes keep the value within the tolerance it was converged to.
+  EXPECT_LT(std::abs(refined.fem / converged.fem - 1), converged.tolerance);
+}
+
+TEST(FemSdsContinuum, ALoopScoredForItsContinuumValueAloneSkipsTheTemplateAndTakesItsStatus)
+{
+  // What a search scoring the continuum value computes (fem_sds_family.h
+  // fem_sds_scorer): the same continuum value as the whole loop's, no mesh,
+  // no template, and the continuum's convergence as the loop's status.
+  fem::ensure_petsc();
+  FemSdsSettings s;
+  s.samples_per_loop = 8000;
+  s.body.body = "oloid";
+  fem::SliceScaling table(study::loop_scores::slice_settings(s), s.table_nodes_per_decade);
+  const study::loop_scores::BodyLoop whole = study::loop_scores::score_body_loop(MPI_COMM_WORLD, s, table);
+  const study::loop_scores::BodyLoop alone = study::loop_scores::score_body_loop(
+      MPI_COMM_WORLD, s, table, {.uniformity = false, .face_template = false, .continuum = true});
+  ASSERT_TRUE(whole.continuum && alone.continuum);
+  EXPECT_EQ(alone.continuum->fem, whole.continuum->fem);
+  EXPECT_EQ(alone.n_faces, 0);
+  EXPECT_EQ(alone.loop.samples, 0U);
+  EXPECT_FALSE(alone.uniformity);
+  EXPECT_EQ(alone.status(), alone.continuum->status());
+  EXPECT_EQ(whole.status(), whole.loop.status());
+  const nlohmann::json j = study::loop_scores::continuum_json(alone.continuum);
+  EXPECT_EQ(j.at("fem_sds_continuum_status").get<std::string>(), "converged");
+  EXPECT_EQ(j.at("fem_sds_continuum_table_change").get<double>(), alone.continuum->table_change());
 }

@@ -137,6 +137,37 @@ TEST(ContinuumLoopScores, AccumulatedPressureAloneIsTheSameNumber)
   }
 }
 
+TEST(ContinuumLoopScores, PartsOfTheWindowAddUpToTheWhole)
+{
+  // The window's intervals integrated in three parts (as ranks do, study/
+  // loop_scores/fem_sds_continuum.h) and added give the whole window's
+  // moments and scores, to rounding; a fourth part of three is refused.
+  const oracle::RealRolling run = roll("oloid", 0.1, 2000);
+  contact::ContinuumLoopSettings s;
+  const contact::RollingBodyMass mass{run.mass.centre_of_mass_m, run.mass.mass_kg, 9.81};
+  const double end = run.first_loop_end_s;
+  const contact::ContinuumMoments whole = contact::continuum_loop_moments(run.trajectory, 0, end, mass, s);
+  contact::ContinuumMoments added;
+  for (int part = 0; part < 3; ++part)
+  {
+    const contact::ContinuumMoments m = contact::continuum_loop_moments(run.trajectory, 0, end, mass, s, {part, 3});
+    EXPECT_GT(m.swept, 0.2 * whole.swept) << "part " << part; // each part a third of the intervals
+    added += m;
+  }
+  EXPECT_NEAR(added.swept / whole.swept, 1.0, 1e-12);
+  for (int q = 0; q < contact::ContinuumMoments::quantities; ++q)
+  {
+    EXPECT_NEAR(added.first[q] / whole.first[q], 1.0, 1e-12) << q;
+    EXPECT_NEAR(added.second[q] / whole.second[q], 1.0, 1e-12) << q;
+    EXPECT_EQ(added.max[q], whole.max[q]) << q;
+  }
+  EXPECT_EQ(added.load_ratio_min, whole.load_ratio_min);
+  EXPECT_EQ(added.load_ratio_max, whole.load_ratio_max);
+  const contact::ContinuumLoopScores a = contact::continuum_loop_scores(added, run.surface_area_m2, s);
+  EXPECT_NEAR(a.accumulated_pressure.whole / scores(run, s).accumulated_pressure.whole, 1.0, 1e-10);
+  EXPECT_THROW(contact::continuum_loop_moments(run.trajectory, 0, end, mass, s, {3, 3}), InputError);
+}
+
 TEST(ContinuumLoopScores, RefusesBadSettings)
 {
   const oracle::RealRolling run = roll("cylinder", 0.1, 400);
