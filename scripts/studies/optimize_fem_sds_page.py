@@ -3,7 +3,8 @@
 files of `rollcheck optimize --score fem-sds` (scripts/studies/optimize_fem_sds.sh),
 the same search at two meshes: the start and the optimum at each, and how
 far the optimum moves between them (in box widths, and in its continuum
-value), written between the page's markers.
+value), and how many of the loops each scored converged, written between
+the page's markers.
 
     scripts/studies/optimize_fem_sds_page.py COARSE.json FINE.json VERSION PAGE.md
 """
@@ -21,6 +22,21 @@ def genome(x):
     return f"({x[0]:.1f}, {x[1]:.3f}, {x[2]:.3f})"
 
 
+def loops(j):
+    """How many of the loops the search scored are converged (each by the
+    continuum value's own status), and what the others were."""
+    counts = j["fem_sds_loops"]
+    others = {}
+    for status, n in counts["by_status"].items():
+        if status != "converged":
+            kind = "lift a rim before the loop closes" if "a rim lifts" in status else status
+            others[kind] = others.get(kind, 0) + n
+    text = f"{counts['by_status'].get('converged', 0)} / {counts['scored']}"
+    if others:
+        text += " (" + "; ".join(f"{n} {k}" for k, n in sorted(others.items())) + ")"
+    return text
+
+
 def main():
     if len(sys.argv) != 5:
         sys.exit(__doc__)
@@ -33,14 +49,14 @@ def main():
              "```", "",
              f"Made by {version.split(' (')[0]}.", "",
              "| points per circle | start (the true oloid) | optimum | improvement / threshold | noise sigma | "
-             "at the start | s |",
-             "|---|---|---|---|---|---|---|"]
+             "at the start | loops converged / scored | s |",
+             "|---|---|---|---|---|---|---|---|"]
     for j in (coarse, fine):
         o = j["optimum"]
         lines.append(f"| {j['mesh']['points_per_circle']} | {j['start_value']:.5g} | {genome(o['x'])} {o['value']:.5g} "
                      f"({100 * (o['value'] / j['start_value'] - 1):+.1f} %) | {o['improvement']:.3g} / "
                      f"{o['significance_threshold']:.3g} | {j['noise']['sigma']:.3g} | {j['verdict_at_start']} | "
-                     f"{j['wall_s']:.0f} |")
+                     f"{loops(j)} | {j['wall_s']:.0f} |")
     lower, upper = coarse["box"]["lower"], coarse["box"]["upper"]
     a, b = coarse["optimum"]["x"], fine["optimum"]["x"]
     distance = math.sqrt(sum(((p - q) / (u - l)) ** 2 for p, q, l, u in zip(a, b, lower, upper)))
