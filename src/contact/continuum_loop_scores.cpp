@@ -123,16 +123,19 @@ Rates sample_rates(const oracle::RollingSample& sample, double rate, const Rolli
         }
         else if (all_scores)
           r.max[0] = std::max(r.max[0], 1 / (rate * radius(f)));
-        const double q_held = load.line_load(length, held(f));
-        const double load_ratio = q_held / (e_star * radius(held(f)));
+        // Between the held ends (the middle part) a point is held where it is.
+        const bool middle = held_ends && part == 1;
+        const double f_held = middle ? f : held(f), r_held = radius(f_held);
+        const double q_held = middle ? q : load.line_load(length, f_held);
+        const double load_ratio = q_held / (e_star * r_held);
         r.load_ratio_min = std::min(r.load_ratio_min, load_ratio);
         r.load_ratio_max = std::max(r.load_ratio_max, load_ratio);
-        const double p0 = std::sqrt(q_held * e_star / (std::numbers::pi * radius(held(f))))
+        const double p0 = std::sqrt(q_held * e_star / (std::numbers::pi * r_held))
                           * (s.pressure_factor ? s.pressure_factor(load_ratio) : 1.0);
-        const double b_held = std::sqrt(4 * q_held * radius(held(f)) / (std::numbers::pi * e_star));
         // accumulated = K / (|sigma'| R(f)): its first moment is smooth in s,
         // its second carries 1 / R, integrated exactly over the piece below.
-        const double k_pass = hertz ? std::numbers::pi / 2 * p0 * b_held : p0;
+        const double k_pass
+            = hertz ? std::numbers::pi / 2 * p0 * std::sqrt(4 * q_held * r_held / (std::numbers::pi * e_star)) : p0;
         r.first[2] += k_pass * h / 2 * length;
         r.area[2] += weight;
         r.max[2] = std::max(r.max[2], k_pass / (rate * radius(f)));
