@@ -254,8 +254,9 @@ void log_loop(const LoopSds& loop, const std::optional<ContinuumSds>& continuum,
 {
   if (continuum)
     spdlog::info("continuum (exact surface): line-Hertz SDS {:.4g}, FEM-SDS {:.4g} ({:+.3f} % from half the "
-                 "resolution)",
-                 continuum->line_hertz, continuum->fem, 100 * continuum->change());
+                 "resolution, {:+.3f} % from every other node of the FEM table, {} per decade){}",
+                 continuum->line_hertz, continuum->fem, 100 * continuum->change(), 100 * continuum->table_change(),
+                 continuum->nodes_per_decade, continuum->converged() ? "" : " - NOT CONVERGED");
   auto text = [](const std::optional<double>& v) { return v ? fmt::format("{:.4g}", *v) : std::string("singular"); };
   spdlog::info("loop of {} samples ({} singular): point-Hertz SDS {}, line-Hertz SDS {}, FEM-SDS {}; FEM table {} "
                "solves ({} per decade, {:.1f} s{}), K-to-2K change {:+.3f} %, half-samples change {:+.3f} %{}",
@@ -444,7 +445,7 @@ std::string BodyLoop::status() const
 {
   if (parts.face_template)
     return loop.status();
-  return continuum ? continuum->status() : "no whole loop: no continuum value";
+  return continuum ? continuum->status() : "no continuum value: the loop did not close";
 }
 
 fem::SliceSettings slice_settings(const FemSdsSettings& s) { return models_of(s).slice; }

@@ -155,9 +155,6 @@ struct FemSdsResult
   double wall_s = 0;
 };
 
-/// One body's whole loop scored, with a FEM table the caller may share
-/// between bodies (the family table): the scores of run_fem_sds without the
-/// directly solved orientations, and U of the loop's contact density.
 /// What of a body's loop score_body_loop computes: a search scoring one
 /// FEM-SDS value skips the others (U: the contact density's pass over the
 /// mesh; the face template: the mesh, its faces' pressures and the mapping
@@ -168,6 +165,9 @@ struct BodyLoopParts
   bool face_template = true;
   bool continuum = true;
 };
+/// One body's whole loop scored, with a FEM table the caller may share
+/// between bodies (the family table): the scores of run_fem_sds without the
+/// directly solved orientations, and U of the loop's contact density.
 struct BodyLoop
 {
   std::string body;                 ///< geometry::body_label
@@ -182,8 +182,8 @@ struct BodyLoop
   /// the continuum's (ContinuumSds::status) when the template was left out.
   std::string status() const;
 };
-/// The parts left out stay empty (`loop` default, no U, no continuum; no
-/// mesh, so no faces, without the template and U).
+/// The parts left out stay empty (`loop` default, no U, no continuum; with
+/// the rolling oracle and neither the template nor U, no mesh and so no faces).
 BodyLoop score_body_loop(MPI_Comm comm, const FemSdsSettings& settings, fem::SliceScaling& table,
                          const BodyLoopParts& parts = {});
 

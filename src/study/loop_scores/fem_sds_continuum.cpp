@@ -1,9 +1,13 @@
 // FEM-SDS on the exact surface (study/loop_scores/fem_sds_continuum.h).
 #include "study/loop_scores/fem_sds_continuum.h"
+#include "core/error.h"
 #include "core/json_number.h"
+#include "fem/first_failure.h"
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
+#include <string>
 #include <fmt/format.h>
 
 namespace rollcheck::study::loop_scores
@@ -21,7 +25,28 @@ contact::ContinuumMoments loop_moments(MPI_Comm comm, const oracle::RollingTraje
   // fem-sds rolls the body under the rolling study's default gravity.
   const contact::RollingBodyMass mass{run.mass.centre_of_mass_m, run.mass.mass_kg,
                                       oracle::RollingStudyParameters{}.gravity_m_s2};
-  contact::ContinuumMoments m = contact::continuum_loop_moments(trajectory, 0, end, mass, s, {rank, ranks});
+  // A part that fails on one rank only must not leave the others waiting in the sums.
+  contact::ContinuumMoments m;
+  int exit_code = 0;
+  std::string failure;
+  try
+  {
+    m = contact::continuum_loop_moments(trajectory, 0, end, mass, s, {rank, ranks});
+  }
+  catch (const InputError& e)
+  {
+    exit_code = 2, failure = e.what();
+  }
+  catch (const ComputationError& e)
+  {
+    exit_code = 1, failure = e.what();
+  }
+  if (const std::optional<fem::RankFailure> first = fem::first_failure(comm, exit_code, failure))
+  {
+    if (first->exit_code == 2)
+      throw InputError(first->message);
+    throw ComputationError(first->message);
+  }
   constexpr int q = contact::ContinuumMoments::quantities;
   std::array<double, 3 * q + 1> sums{};
   std::copy(m.area.begin(), m.area.end(), sums.begin());

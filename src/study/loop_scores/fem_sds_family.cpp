@@ -104,6 +104,18 @@ std::string label(const FamilyRow& row)
 }
 
 std::string number(const std::optional<double>& v) { return v ? fmt::format("{:.4g}", *v) : std::string("-"); }
+
+/// A scored row's convergence: the template's (LoopSds::status) and the
+/// continuum value's (ContinuumSds::status), the ranking's, each named
+/// where they differ.
+std::string note(const FamilyRow& row)
+{
+  const std::string face_template = row.loop.loop.status();
+  const std::string continuum = row.loop.continuum ? row.loop.continuum->status() : "no continuum value";
+  if (face_template == continuum)
+    return face_template;
+  return fmt::format("template: {}; continuum: {}", face_template, continuum);
+}
 } // namespace
 
 std::function<double(const geometry::BodySpec&)> fem_sds_scorer(MPI_Comm comm, const FemSdsSettings& base,
@@ -148,8 +160,9 @@ FamilyResult fem_sds_family(MPI_Comm comm, const FamilySettings& s)
     const FamilyRow& row = result.rows.back();
     if (rank == 0)
       spdlog::info("{} of {} {}: {} ({:.1f} s)", result.rows.size(), total, label(row),
-                   row.scored ? fmt::format("point-Hertz SDS {}, FEM-SDS {}, U {}", number(row.loop.loop.point_hertz.value),
-                                            number(row.loop.loop.fem.value), number(row.loop.uniformity))
+                   row.scored ? fmt::format("point-Hertz SDS {}, FEM-SDS {}, U {}, continuum {} ({})",
+                                            number(row.loop.loop.point_hertz.value), number(row.loop.loop.fem.value),
+                                            number(row.loop.uniformity), number(continuum_of(row)), note(row))
                               : row.why_not,
                    row.wall_s);
   };
@@ -223,7 +236,7 @@ std::string markdown_table(const FamilyResult& result)
                      number(l.fem.value), number(row->loop.uniformity),
                      number(ratio(l.point_hertz.value, c.point_hertz.value)), number(ratio(l.fem.value, c.fem.value)),
                      number(ratio(row->loop.uniformity, cylinder.loop.uniformity)), 100 * l.table_change(),
-                     100 * l.fem_rulings.sample_change(), l.status());
+                     100 * l.fem_rulings.sample_change(), note(*row));
   }
   return t;
 }

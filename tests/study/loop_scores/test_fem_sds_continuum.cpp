@@ -140,3 +140,19 @@ TEST(FemSdsContinuum, ALoopScoredForItsContinuumValueAloneSkipsTheTemplateAndTak
   EXPECT_EQ(j.at("fem_sds_continuum_status").get<std::string>(), "converged");
   EXPECT_EQ(j.at("fem_sds_continuum_table_change").get<double>(), alone.continuum->table_change());
 }
+
+TEST(FemSdsContinuum, ItsStatusNeedsBothChangesBelowTheTolerance)
+{
+  ContinuumSds c;
+  c.tolerance = 0.01;
+  c.fem = 1.0;
+  c.fem_coarse = 1.0 / 1.005;    // +0.5 % from half the samples and pieces
+  c.fem_half_table = 1.0 / 1.02; // +2 % from every other node
+  EXPECT_FALSE(c.converged());
+  EXPECT_EQ(c.status(), "not converged: halving the samples and pieces changes the continuum value by +0.50 %, "
+                        "halving the FEM table by +2.00 % (tolerance 1 %)");
+  c.fem_half_table = 1.0 / 0.995;
+  EXPECT_EQ(c.status(), "converged");
+  c.fem_coarse = 1.0 / 0.98;
+  EXPECT_FALSE(c.converged());
+}
