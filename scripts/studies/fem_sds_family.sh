@@ -2,8 +2,9 @@
 # The FEM-SDS family of docs/results/fem-sds.md, ranked by the continuum value,
 # and its stability: `rollcheck search --grid quick --score fem-sds` on two
 # ranks at 300 and 600 points per circle; exits 1 unless every scored
-# genome's fem_sds_continuum changes by under 1 % between them and against
-# half its loop quadrature, and the five best bodies are the same at both; then writes the page's family section (between
+# genome's fem_sds_continuum changes by under 1 % between them and is
+# converged by its own status (half its loop quadrature, every other node of
+# the FEM table), and the five best bodies are the same at both; then writes the page's family section (between
 # its markers) with scripts/studies/fem_sds_family_page.py.
 # Usage: scripts/studies/fem_sds_family.sh [ROLLCHECK_BINARY] [OUT_DIR]
 set -euo pipefail
