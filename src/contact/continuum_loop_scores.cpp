@@ -215,15 +215,21 @@ ContinuumMoments continuum_loop_moments(const oracle::RollingTrajectory& traject
 {
   validate(trajectory, begin_s, end_s, s, part);
   const auto& samples = trajectory.samples;
-  // The uniform rate sweeps the same loop in the same time at constant sigma'.
+  // The uniform rate sweeps the same loop in the same time at constant sigma';
+  // the window's intervals are [first, last).
   double swept_angle = 0, window = 0;
+  std::size_t first = 0, last = 0;
   for (std::size_t k = 0; k + 1 < samples.size(); ++k)
   {
     const double t0 = std::max(samples[k].time_s, begin_s), t1 = std::min(samples[k + 1].time_s, end_s);
-    if (t1 > t0)
-      swept_angle += std::abs(samples[k + 1].turning_angle_rad - samples[k].turning_angle_rad)
-                     * (t1 - t0) / (samples[k + 1].time_s - samples[k].time_s),
-          window += t1 - t0;
+    if (!(t1 > t0))
+      continue;
+    swept_angle += std::abs(samples[k + 1].turning_angle_rad - samples[k].turning_angle_rad) * (t1 - t0)
+                   / (samples[k + 1].time_s - samples[k].time_s);
+    window += t1 - t0;
+    if (last == 0)
+      first = k;
+    last = k + 1;
   }
   const double uniform_rate = swept_angle / window;
   const bool uniform = s.time_law == TimeLaw::uniform_rate;
@@ -236,15 +242,7 @@ ContinuumMoments continuum_loop_moments(const oracle::RollingTrajectory& traject
       at[k] = sample_rates(samples[k], rate_of(samples[k]), body, s), done[k] = true;
     return at[k];
   };
-  // This part's run of the window's intervals [first, last).
-  std::size_t first = 0, last = 0;
-  for (std::size_t k = 0; k + 1 < samples.size(); ++k)
-    if (std::min(samples[k + 1].time_s, end_s) > std::max(samples[k].time_s, begin_s))
-    {
-      if (last == 0)
-        first = k;
-      last = k + 1;
-    }
+  // This part's run of the window's intervals.
   const std::size_t intervals = last - first;
   const auto share = [&](int p) { return first + intervals * static_cast<std::size_t>(p) / static_cast<std::size_t>(part.parts); };
   Rates total;

@@ -48,22 +48,12 @@ contact::ContinuumMoments loop_moments(MPI_Comm comm, const oracle::RollingTraje
     throw ComputationError(first->message);
   }
   constexpr int q = contact::ContinuumMoments::quantities;
-  std::array<double, 3 * q + 1> sums{};
-  std::copy(m.area.begin(), m.area.end(), sums.begin());
-  std::copy(m.first.begin(), m.first.end(), sums.begin() + q);
-  std::copy(m.second.begin(), m.second.end(), sums.begin() + 2 * q);
-  sums.back() = m.swept;
-  MPI_Allreduce(MPI_IN_PLACE, sums.data(), static_cast<int>(sums.size()), MPI_DOUBLE, MPI_SUM, comm);
-  std::copy(sums.begin(), sums.begin() + q, m.area.begin());
-  std::copy(sums.begin() + q, sums.begin() + 2 * q, m.first.begin());
-  std::copy(sums.begin() + 2 * q, sums.begin() + 3 * q, m.second.begin());
-  m.swept = sums.back();
-  std::array<double, q + 2> largest{};
-  std::copy(m.max.begin(), m.max.end(), largest.begin());
-  largest[q] = -m.load_ratio_min, largest[q + 1] = m.load_ratio_max;
-  MPI_Allreduce(MPI_IN_PLACE, largest.data(), static_cast<int>(largest.size()), MPI_DOUBLE, MPI_MAX, comm);
-  std::copy(largest.begin(), largest.begin() + q, m.max.begin());
-  m.load_ratio_min = -largest[q], m.load_ratio_max = largest[q + 1];
+  for (std::array<double, q>* sums : {&m.area, &m.first, &m.second})
+    MPI_Allreduce(MPI_IN_PLACE, sums->data(), q, MPI_DOUBLE, MPI_SUM, comm);
+  MPI_Allreduce(MPI_IN_PLACE, &m.swept, 1, MPI_DOUBLE, MPI_SUM, comm);
+  MPI_Allreduce(MPI_IN_PLACE, m.max.data(), q, MPI_DOUBLE, MPI_MAX, comm);
+  MPI_Allreduce(MPI_IN_PLACE, &m.load_ratio_max, 1, MPI_DOUBLE, MPI_MAX, comm);
+  MPI_Allreduce(MPI_IN_PLACE, &m.load_ratio_min, 1, MPI_DOUBLE, MPI_MIN, comm);
   return m;
 }
 
