@@ -12,7 +12,7 @@ rm -rf "$tmp"; mkdir -p "$tmp/cases"
 # area 2 pi r h + 2 pi r^2 of the inscribed 60-gon prism, within 0.5 %).
 printf '[scene]\nkind = "mesh"\nbody = "oloid"\npoints = 100\n[[check]]\npointer = "/area_m2"\nvalue = 12.566370614359172\nrel_tol = 0.005\nreference = "4 pi r^2"\n' > "$tmp/cases/oloid.toml"
 printf '[scene]\nkind = "mesh"\nbody = "cylinder"\n[[check]]\npointer = "/area_m2"\nvalue = 18.84955592153876\nrel_tol = 0.005\nreference = "6 pi r^2"\n' > "$tmp/cases/cylinder.toml"
-"$bin" -q batch "$tmp/cases" --out "$tmp/out" > /dev/null 2>&1 || { echo "FAIL: batch"; fail=1; }
+batch_ok batch "$tmp/cases" --out "$tmp/out"
 
 "$bin" report --from "$tmp/out/results.h5" > "$tmp/report.out" 2>&1
 check '[[ $? -eq 0 ]]' "report: exit code"

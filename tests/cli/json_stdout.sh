@@ -17,7 +17,7 @@ cd "$tmp" || exit 1
 printf '[scene]\nkind = "mesh"\nbody = "sphere"\nsubdivisions = 1\n' > cases/sphere.toml
 cp "$src/cases/default/geometry_oloids.toml" checked/ # validate: a case with its checks
 # report reads a store; the subcommands run in --help's order, report before batch.
-"$bin" -q batch cases --out prepared -j 1 > /dev/null 2>&1 || { echo "FAIL: the batch for report's store"; fail=1; }
+batch_ok "the batch for report's store" cases --out prepared -j 1
 declare -A line=(
   [mesh]="mesh --body cylinder"
   [oracle]="oracle --body oloid --oracle approx --points 50 --steps 50"

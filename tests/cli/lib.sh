@@ -31,3 +31,13 @@ refuses() {
     fi
   done
 }
+
+# batch_ok DESCRIPTION ARGS...: `$bin -q batch ARGS` exits 0; if not, the
+# failure is recorded with the batch's own output (each failed case's
+# message), so that a failure on another machine says why.
+batch_ok() {
+  local what=$1 out rc; shift
+  out=$("$bin" -q batch "$@" 2>&1); rc=$?
+  [[ $rc -eq 0 ]] && return 0
+  echo "FAIL: $what (exit $rc):"; echo "$out" | tail -c 4000; fail=1; return 1
+}

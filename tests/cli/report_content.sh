@@ -12,7 +12,7 @@ python=/usr/bin/python3
 rm -rf "$tmp"; mkdir -p "$tmp/cases"
 printf '[scene]\nkind = "mesh"\nbody = "oloid"\npoints = 100\n' > "$tmp/cases/oloid.toml"
 cp "$source/cases/default/hertz_axisymmetric.toml" "$tmp/cases/hertz_axi.toml"
-"$bin" -q batch "$tmp/cases" --out "$tmp/out" > /dev/null 2>&1 || { echo "FAIL: batch"; exit 1; }
+batch_ok batch "$tmp/cases" --out "$tmp/out" || exit 1
 store=$tmp/out/results.h5
 cat > "$tmp/validation.json" << 'EOF'
 {"checks": [

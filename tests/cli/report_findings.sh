@@ -13,7 +13,7 @@ source "$(dirname "$0")/lib.sh"
 bin=$1; source=$2; tmp=$3
 rm -rf "$tmp"; mkdir -p "$tmp/cases"
 printf '[scene]\nkind = "mesh"\nbody = "oloid"\npoints = 100\n' > "$tmp/cases/oloid.toml"
-"$bin" -q batch "$tmp/cases" --out "$tmp/out" > /dev/null 2>&1 || { echo "FAIL: batch"; exit 1; }
+batch_ok batch "$tmp/cases" --out "$tmp/out" || exit 1
 "$bin" -q robustness --samples-per-loop 200 --pieces 4 --family-samples-per-loop 200 --json "$tmp/robustness.json" > /dev/null \
   || { echo "FAIL: robustness"; exit 1; }
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
