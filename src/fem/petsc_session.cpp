@@ -1,4 +1,5 @@
 #include "fem/petsc_session.h"
+#include "core/blas_threads.h"
 #include "core/error.h"
 #include "core/mpi_launch.h"
 #include <cstdlib>
@@ -21,6 +22,7 @@ void ensure_petsc()
   prefer_isolated_mpi_singleton(); // read only if PETSc starts MPI here
   if (PetscInitializeNoArguments() != 0)
     throw ComputationError("PETSc failed to initialise");
+  prefer_one_blas_thread(); // PETSc's BLAS: the ranks are the parallelism
   std::atexit([] {
     PetscBool finalised = PETSC_FALSE;
     PetscFinalized(&finalised);
