@@ -108,7 +108,7 @@ Rates sample_rates(const oracle::RollingSample& sample, double rate, const Rolli
     for (int k = 0; k < n; ++k)
     {
       const double s0 = a + k * h, s1 = s0 + h;
-      double accumulated_squared = 0; // K^2 at the piece's Gauss points, averaged
+      double accumulated_squared = 0, second_squared = 0; // K^2 at the piece's Gauss points, averaged
       for (const double f : {s0 + h / 2 - offset, s0 + h / 2 + offset})
       {
         const double q = load.line_load(length, f);
@@ -130,16 +130,27 @@ Rates sample_rates(const oracle::RollingSample& sample, double rate, const Rolli
         const double load_ratio = q_held / (e_star * r_held);
         r.load_ratio_min = std::min(r.load_ratio_min, load_ratio);
         r.load_ratio_max = std::max(r.load_ratio_max, load_ratio);
-        const double p0 = std::sqrt(q_held * e_star / (std::numbers::pi * r_held))
-                          * (s.pressure_factor ? s.pressure_factor(load_ratio) : 1.0);
+        const std::array<double, 2> g = s.pressure_factors ? s.pressure_factors(load_ratio)
+                                        : std::array<double, 2>{s.pressure_factor ? s.pressure_factor(load_ratio) : 1.0, 1.0};
+        const double p0_line = std::sqrt(q_held * e_star / (std::numbers::pi * r_held)), p0 = p0_line * g[0];
         // accumulated = K / (|sigma'| R(f)): its first moment is smooth in s,
         // its second carries 1 / R, integrated exactly over the piece below.
-        const double k_pass
-            = hertz ? std::numbers::pi / 2 * p0 * std::sqrt(4 * q_held * r_held / (std::numbers::pi * e_star)) : p0;
+        auto accumulated = [&](double peak) {
+          return hertz ? std::numbers::pi / 2 * peak * std::sqrt(4 * q_held * r_held / (std::numbers::pi * e_star))
+                       : peak;
+        };
+        const double k_pass = accumulated(p0);
         r.first[2] += k_pass * h / 2 * length;
         r.area[2] += weight;
         r.max[2] = std::max(r.max[2], k_pass / (rate * radius(f)));
         accumulated_squared += k_pass * k_pass / 2;
+        if (s.pressure_factors)
+        {
+          const double k_second = accumulated(p0_line * g[1]);
+          r.second_factor.first += k_second * h / 2 * length;
+          r.second_factor.max = std::max(r.second_factor.max, k_second / (rate * radius(f)));
+          second_squared += k_second * k_second / 2;
+        }
         if (!all_scores)
           continue;
         // Damage relative to that of a 100 MPa amplitude: V does not see the scale.
@@ -147,16 +158,19 @@ Rates sample_rates(const oracle::RollingSample& sample, double rate, const Rolli
         add_point(r, 3, std::pow(p0 / 2 / 100e6, -1 / s.basquin_exponent), weight);
       }
       r.second[2] += accumulated_squared * length / rate * piece_reciprocal_radius(radius(s0), radius(s1), h);
+      if (s.pressure_factors)
+        r.second_factor.second += second_squared * length / rate * piece_reciprocal_radius(radius(s0), radius(s1), h);
     }
   }
   return r;
 }
 
-ContinuumScore score_of(const Rates& total, int quantity, double surface_area_m2)
+/// The scores of a quantity of integrals `first` (x dA), `second` (x^2 dA)
+/// and largest value `max` over the touched area `touched_m2`.
+ContinuumScore score_of(double first, double second, double max, double touched_m2, double surface_area_m2)
 {
   ContinuumScore score;
-  const double first = total.first[quantity], second = total.second[quantity];
-  score.touched_area_m2 = total.area[quantity];
+  score.touched_area_m2 = touched_m2;
   if (!(first > 0))
     throw ComputationError("continuum loop scores: nothing is touched in the loop");
   // V >= 0 (Cauchy-Schwarz); a uniform x leaves rounding of either sign.
@@ -166,8 +180,14 @@ ContinuumScore score_of(const Rates& total, int quantity, double surface_area_m2
   };
   score.whole = variance(surface_area_m2);
   score.touched = variance(score.touched_area_m2);
-  score.peak_to_mean = total.max[quantity] * score.touched_area_m2 / first;
+  score.peak_to_mean = max * score.touched_area_m2 / first;
   return score;
+}
+
+ContinuumScore score_of(const Rates& total, int quantity, double surface_area_m2)
+{
+  return score_of(total.first[quantity], total.second[quantity], total.max[quantity], total.area[quantity],
+                  surface_area_m2);
 }
 
 void require_positive_area(double surface_area_m2)
@@ -191,6 +211,8 @@ void validate(const oracle::RollingTrajectory& trajectory, double begin_s, doubl
     throw InputError(fmt::format("normal load (N) must be positive and finite, got {}", s.normal_load_n));
   if (s.pieces < 1)
     throw InputError(fmt::format("pieces along the ruling must be at least 1, got {}", s.pieces));
+  if (s.pressure_factor && s.pressure_factors)
+    throw InputError("continuum loop scores: give a pressure factor or a pair of them, not both");
 }
 } // namespace
 
@@ -205,6 +227,8 @@ ContinuumMoments& ContinuumMoments::operator+=(const ContinuumMoments& o)
   for (int i = 0; i < quantities; ++i)
     area[i] += o.area[i], first[i] += o.first[i], second[i] += o.second[i], max[i] = std::max(max[i], o.max[i]);
   swept += o.swept;
+  second_factor.first += o.second_factor.first, second_factor.second += o.second_factor.second;
+  second_factor.max = std::max(second_factor.max, o.second_factor.max);
   load_ratio_min = std::min(load_ratio_min, o.load_ratio_min);
   load_ratio_max = std::max(load_ratio_max, o.load_ratio_max);
   return *this;
@@ -260,6 +284,7 @@ ContinuumMoments continuum_loop_moments(const oracle::RollingTrajectory& traject
     for (int i = 0; i < n_quantities; ++i)
       a.area[i] *= dt / 2, a.first[i] *= dt / 2, a.second[i] *= dt / 2;
     a.swept *= dt / 2;
+    a.second_factor.first *= dt / 2, a.second_factor.second *= dt / 2;
     if (!s.accumulated_pressure_only && s.width == oracle::ContactWidthModel::rigid
         && (rates(k).first[0] > 0 || rates(k + 1).first[0] > 0))
       a.second[0] = rigid_time_second_moment(samples[k], samples[k + 1], rate_of(samples[k]), rate_of(samples[k + 1]),
@@ -277,6 +302,9 @@ ContinuumLoopScores continuum_loop_scores(const ContinuumMoments& total, double 
   scores.surface_area_m2 = surface_area_m2;
   scores.swept_area_m2 = total.swept;
   scores.accumulated_pressure = score_of(total, 2, surface_area_m2);
+  if (s.pressure_factors)
+    scores.accumulated_pressure_second_factor = score_of(total.second_factor.first, total.second_factor.second,
+                                                         total.second_factor.max, total.area[2], surface_area_m2);
   if (!s.accumulated_pressure_only)
   {
     scores.contact_time = score_of(total, 0, surface_area_m2);

@@ -85,6 +85,14 @@ struct ContinuumLoopSettings
   bool accumulated_pressure_only = false;
   /// g(lambda), lambda = q / (E* R), multiplying every peak pressure; empty: 1 (line Hertz).
   std::function<double(double)> pressure_factor = {};
+  /// g(lambda) and a second factor g'(lambda) from one call: g as
+  /// pressure_factor, g' scored beside it for the accumulated pressure alone
+  /// (ContinuumMoments::second_factor, ContinuumLoopScores::
+  /// accumulated_pressure_second_factor), as a pass with pressure_factor g'
+  /// would score it, to the bit. One pass for a FEM table and the same
+  /// table at half its nodes, whose look-ups share their logarithm. At most
+  /// one of pressure_factor and pressure_factors is set.
+  std::function<std::array<double, 2>(double)> pressure_factors = {};
 };
 
 /// The scores of one per-point quantity x.
@@ -108,6 +116,15 @@ struct ContinuumLoopScores
   /// Least and largest lambda = q / (E* R) at which a peak pressure was taken
   /// (the range a pressure factor must cover).
   double load_ratio_min = 0, load_ratio_max = 0;
+  /// The accumulated pressure under pressure_factors' second factor (zero without it).
+  ContinuumScore accumulated_pressure_second_factor;
+};
+
+/// The accumulated pressure's integrals under a second pressure factor (its
+/// touched area is area[2], the first factor's).
+struct SecondFactorMoments
+{
+  double first = 0, second = 0, max = 0;
 };
 
 /// What the scores are made of: the integrals over the loop of each
@@ -121,6 +138,7 @@ struct ContinuumMoments
   std::array<double, quantities> area{}, first{}, second{}, max{};
   double swept = 0;
   double load_ratio_min = std::numeric_limits<double>::infinity(), load_ratio_max = 0;
+  SecondFactorMoments second_factor; ///< with ContinuumLoopSettings::pressure_factors
   ContinuumMoments& operator+=(const ContinuumMoments& other);
 };
 

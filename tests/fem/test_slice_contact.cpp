@@ -14,6 +14,7 @@
 #include <spdlog/spdlog.h>
 #include "core/error.h"
 #include <cmath>
+#include <array>
 #include <gtest/gtest.h>
 #include <numbers>
 
@@ -83,6 +84,15 @@ TEST(SliceScaling, TheSliceScalesWithItsRadiusAndTheTableMeetsDirectSolves)
   EXPECT_NEAR(table.ratio(between) / g, 1.0, 3e-3);
   EXPECT_NEAR(table.ratio(between, 2) / g, 1.0, 3e-3);
   EXPECT_THROW(table.ratio(1e-8), ComputationError);
+  // Both strides from one look-up: theirs to the bit, on a node, between
+  // nodes of stride 1 and between those of stride 2.
+  for (const double lambda : {1e-10, std::pow(10.0, -9.5), between, std::pow(10.0, -9.8), 1e-9})
+  {
+    const std::array<double, 2> both = table.ratios(lambda);
+    EXPECT_EQ(both[0], table.ratio(lambda)) << lambda;
+    EXPECT_EQ(both[1], table.ratio(lambda, 2)) << lambda;
+  }
+  EXPECT_THROW(table.ratios(1e-8), ComputationError);
   // Doubling keeps the solved nodes at their lambda.
   table.double_nodes();
   EXPECT_EQ(table.nodes_per_decade(), 4);

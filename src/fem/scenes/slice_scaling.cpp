@@ -118,7 +118,17 @@ void SliceScaling::index_nodes()
 
 double SliceScaling::ratio(double lambda, int stride, bool refined) const
 {
+  return interpolate(lambda, nodes_per_decade_ * std::log10(lambda), stride, refined);
+}
+
+std::array<double, 2> SliceScaling::ratios(double lambda) const
+{
   const double position = nodes_per_decade_ * std::log10(lambda);
+  return {interpolate(lambda, position, 1, false), interpolate(lambda, position, 2, false)};
+}
+
+double SliceScaling::interpolate(double lambda, double position, int stride, bool refined) const
+{
   // The bracketing nodes of the stride's grid (multiples of the stride).
   const int lower = stride * static_cast<int>(std::floor(position / stride));
   const int upper = position == lower ? lower : lower + stride;

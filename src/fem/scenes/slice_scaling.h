@@ -24,6 +24,7 @@
 // the table's own convergence costs nothing extra.
 #include "contact/load_ratio.h"
 #include "fem/scenes/slice_contact.h"
+#include <array>
 #include <map>
 #include <mpi.h>
 #include <vector>
@@ -59,6 +60,9 @@ public:
   /// g(lambda) from every `stride`-th node; `refined` from the finer level.
   /// ComputationError outside the covered range.
   double ratio(double lambda, int stride = 1, bool refined = false) const;
+  /// {ratio(lambda, 1), ratio(lambda, 2)}, equal to theirs to the bit, with
+  /// one logarithm: the table and its half, read at every Gauss point of a loop.
+  std::array<double, 2> ratios(double lambda) const;
 
   struct Node
   {
@@ -86,6 +90,8 @@ private:
   int first_k_ = 0;
   std::vector<const Node*> by_k_;
   void index_nodes();
+  /// ratio() at `position` = nodes_per_decade * log10(lambda).
+  double interpolate(double lambda, double position, int stride, bool refined) const;
   void add_node(int k, const SliceFem& fem);
   double wall_s_ = 0;
   std::size_t nodes_read_ = 0;

@@ -51,7 +51,10 @@ contact::ContinuumMoments loop_moments(MPI_Comm comm, const oracle::RollingTraje
   for (std::array<double, q>* sums : {&m.area, &m.first, &m.second})
     MPI_Allreduce(MPI_IN_PLACE, sums->data(), q, MPI_DOUBLE, MPI_SUM, comm);
   MPI_Allreduce(MPI_IN_PLACE, &m.swept, 1, MPI_DOUBLE, MPI_SUM, comm);
+  MPI_Allreduce(MPI_IN_PLACE, &m.second_factor.first, 1, MPI_DOUBLE, MPI_SUM, comm);
+  MPI_Allreduce(MPI_IN_PLACE, &m.second_factor.second, 1, MPI_DOUBLE, MPI_SUM, comm);
   MPI_Allreduce(MPI_IN_PLACE, m.max.data(), q, MPI_DOUBLE, MPI_MAX, comm);
+  MPI_Allreduce(MPI_IN_PLACE, &m.second_factor.max, 1, MPI_DOUBLE, MPI_MAX, comm);
   MPI_Allreduce(MPI_IN_PLACE, &m.load_ratio_max, 1, MPI_DOUBLE, MPI_MAX, comm);
   MPI_Allreduce(MPI_IN_PLACE, &m.load_ratio_min, 1, MPI_DOUBLE, MPI_MIN, comm);
   return m;
@@ -82,23 +85,22 @@ ContinuumSds continuum_sds(MPI_Comm comm, const oracle::RealRolling& run, contac
   r.load_ratio_max = line.load_ratio_max;
   const double least = fem::SliceScaling::smallest_load_ratio;
   r.below_table = r.load_ratio_min < least;
-  auto factor = [&table, least](int stride) {
-    return [&table, least, stride](double lambda) { return table.ratio(std::max(lambda, least), stride); };
-  };
   while (true)
   {
     table.cover(comm, std::max(r.load_ratio_min, least), std::max(r.load_ratio_max, least));
-    s.pressure_factor = factor(1);
-    r.fem = accumulated_pressure_variance(comm, run.trajectory, run, s);
-    s.pressure_factor = factor(2);
-    r.fem_half_table = accumulated_pressure_variance(comm, run.trajectory, run, s);
+    // The table and its half in one pass.
+    s.pressure_factors = [&table, least](double lambda) { return table.ratios(std::max(lambda, least)); };
+    contact::ContinuumLoopScores both;
+    r.fem = accumulated_pressure_variance(comm, run.trajectory, run, s, &both);
+    r.fem_half_table = both.accumulated_pressure_second_factor.whole;
     if (std::abs(r.table_change()) < refinement.tolerance
         || 2 * table.nodes_per_decade() > refinement.max_nodes_per_decade)
       break;
     table.double_nodes();
   }
   r.nodes_per_decade = table.nodes_per_decade();
-  s.pressure_factor = factor(1);
+  s.pressure_factors = nullptr;
+  s.pressure_factor = [&table, least](double lambda) { return table.ratio(std::max(lambda, least)); };
   oracle::RollingTrajectory coarse = run.trajectory;
   coarse.samples.clear();
   for (std::size_t k = 0; k < run.trajectory.samples.size(); k += 2)

@@ -7,6 +7,7 @@
 #include "oracle/uniformity_score.h"
 #include "study/robustness/comparison_verdict.h"
 #include "study/robustness/family_ranking.h"
+#include <array>
 #include <cmath>
 #include <limits>
 #include <gtest/gtest.h>
@@ -137,6 +138,41 @@ TEST(ContinuumLoopScores, AccumulatedPressureAloneIsTheSameNumber)
   }
 }
 
+TEST(ContinuumLoopScores, ASecondPressureFactorScoresAsItsOwnPassToTheBit)
+{
+  // pressure_factors' pair in one pass: the first factor's scores are those
+  // of a pass with it as pressure_factor, the second's accumulated pressure
+  // that of a pass with the second, to the bit (the FEM table and its half,
+  // study/loop_scores/fem_sds_continuum.h). Both kinds of factor at once are refused.
+  const oracle::RealRolling run = roll("oloid", 0.1, 1000);
+  const auto g = [](double lambda) { return 1 + 0.1 * std::log10(lambda); };
+  const auto h = [](double lambda) { return 1.2 - 0.03 * std::log10(lambda); };
+  for (const oracle::ContactWidthModel width : {oracle::ContactWidthModel::hertz, oracle::ContactWidthModel::rigid})
+  {
+    contact::ContinuumLoopSettings s;
+    s.width = width;
+    s.accumulated_pressure_only = true;
+    s.pressure_factors = [&](double lambda) { return std::array<double, 2>{g(lambda), h(lambda)}; };
+    const contact::ContinuumLoopScores both = scores(run, s);
+    s.pressure_factors = nullptr;
+    s.pressure_factor = g;
+    const contact::ContinuumLoopScores first = scores(run, s);
+    s.pressure_factor = h;
+    const contact::ContinuumLoopScores second = scores(run, s);
+    EXPECT_EQ(both.accumulated_pressure.whole, first.accumulated_pressure.whole);
+    EXPECT_EQ(both.accumulated_pressure.peak_to_mean, first.accumulated_pressure.peak_to_mean);
+    const contact::ContinuumScore& b = both.accumulated_pressure_second_factor;
+    EXPECT_EQ(b.whole, second.accumulated_pressure.whole);
+    EXPECT_EQ(b.touched, second.accumulated_pressure.touched);
+    EXPECT_EQ(b.peak_to_mean, second.accumulated_pressure.peak_to_mean);
+    EXPECT_EQ(b.touched_area_m2, second.accumulated_pressure.touched_area_m2);
+    EXPECT_NE(b.whole, both.accumulated_pressure.whole);
+    EXPECT_EQ(first.accumulated_pressure_second_factor.whole, 0); // no second factor, no score
+    s.pressure_factors = [&](double lambda) { return std::array<double, 2>{g(lambda), h(lambda)}; };
+    EXPECT_THROW(scores(run, s), InputError);
+  }
+}
+
 TEST(ContinuumLoopScores, PartsOfTheWindowAddUpToTheWhole)
 {
   // The window's intervals integrated in three parts (as ranks do, study/
@@ -144,6 +180,7 @@ TEST(ContinuumLoopScores, PartsOfTheWindowAddUpToTheWhole)
   // moments and scores, to rounding; a fourth part of three is refused.
   const oracle::RealRolling run = roll("oloid", 0.1, 2000);
   contact::ContinuumLoopSettings s;
+  s.pressure_factors = [](double lambda) { return std::array<double, 2>{1.0, 1 + 0.1 * std::log10(lambda)}; };
   const contact::RollingBodyMass mass{run.mass.centre_of_mass_m, run.mass.mass_kg, 9.81};
   const double end = run.first_loop_end_s;
   const contact::ContinuumMoments whole = contact::continuum_loop_moments(run.trajectory, 0, end, mass, s);
@@ -161,6 +198,9 @@ TEST(ContinuumLoopScores, PartsOfTheWindowAddUpToTheWhole)
     EXPECT_NEAR(added.second[q] / whole.second[q], 1.0, 1e-12) << q;
     EXPECT_EQ(added.max[q], whole.max[q]) << q;
   }
+  EXPECT_NEAR(added.second_factor.first / whole.second_factor.first, 1.0, 1e-12);
+  EXPECT_NEAR(added.second_factor.second / whole.second_factor.second, 1.0, 1e-12);
+  EXPECT_EQ(added.second_factor.max, whole.second_factor.max);
   EXPECT_EQ(added.load_ratio_min, whole.load_ratio_min);
   EXPECT_EQ(added.load_ratio_max, whole.load_ratio_max);
   const contact::ContinuumLoopScores a = contact::continuum_loop_scores(added, run.surface_area_m2, s);
