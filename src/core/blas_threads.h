@@ -16,7 +16,8 @@
 namespace rollcheck
 {
 /// Where OPENBLAS_NUM_THREADS, GOTO_NUM_THREADS and OMP_NUM_THREADS are all
-/// unset and the process's BLAS is OpenBLAS, sets its threads to one.
-/// Returns whether it did.
+/// unset and the process's BLAS is OpenBLAS's pthreads build
+/// (openblas_get_parallel() == 1; its OpenMP build would set OpenMP's count
+/// for the whole process), sets its threads to one. Returns whether it did.
 bool prefer_one_blas_thread();
 } // namespace rollcheck

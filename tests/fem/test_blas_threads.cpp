@@ -37,11 +37,15 @@ TEST(BlasThreads, OneThreadUnlessTheEnvironmentNamesACount)
   using Set = void (*)(int);
   const auto get = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
   const auto set = reinterpret_cast<Set>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-  ASSERT_TRUE(get && set) << "the FEM's BLAS (PETSc's, Debian's stack) is OpenBLAS";
+  using Parallel = int (*)();
+  const auto parallel = reinterpret_cast<Parallel>(dlsym(RTLD_DEFAULT, "openblas_get_parallel"));
+  ASSERT_TRUE(get && set && parallel) << "the FEM's BLAS (PETSc's, Debian's stack) is OpenBLAS";
+  ASSERT_EQ(parallel(), 1) << "Debian's stack: OpenBLAS's pthreads build";
   const UnsetVariable a("OPENBLAS_NUM_THREADS"), b("GOTO_NUM_THREADS"), c("OMP_NUM_THREADS");
 
   set(2);
-  const int chosen = get(); // 2 where the machine has 2 CPUs or more
+  const int chosen = get();
+  ASSERT_GT(chosen, 1) << "needs 2 CPUs, so that one thread differs from the count chosen";
   ::setenv("OMP_NUM_THREADS", "2", 1);
   EXPECT_FALSE(rollcheck::prefer_one_blas_thread());
   EXPECT_EQ(get(), chosen);

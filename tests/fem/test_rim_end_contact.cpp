@@ -413,7 +413,7 @@ TEST(RimEndContact, RoundedAcuteRimPeaksWhereItsFilletStarts)
   s.depth_over_half_width = 52;
   s.edge_element_over_half_width = 1.0 / 64;
   s.levels = 2;
-  // HXT's meshes differ from run to run (a few tens of nodes in 87,000), and
+  // HXT's meshes differ from run to run (about a hundred DOFs in 87,000), and
   // the end's change from b/64 to b/128 with them: -2.3 to -3.4 % against the
   // 3 % tolerance (-1.3 % to b/256). The study adds a level where it needs
   // one, as a user's run would.

@@ -77,7 +77,8 @@ ContinuumSds continuum_sds(MPI_Comm comm, const oracle::RealRolling& run, contac
 {
   ContinuumSds r;
   r.tolerance = refinement.tolerance;
-  s.pressure_factor = nullptr;
+  s.pressure_factor = nullptr; // line Hertz first: g = 1
+  s.pressure_factors = nullptr;
   s.accumulated_pressure_only = true;
   contact::ContinuumLoopScores line;
   r.line_hertz = accumulated_pressure_variance(comm, run.trajectory, run, s, &line);

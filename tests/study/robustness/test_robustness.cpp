@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <gtest/gtest.h>
 #include <numbers>
 
@@ -148,29 +149,37 @@ TEST(ContinuumLoopScores, ASecondPressureFactorScoresAsItsOwnPassToTheBit)
   const auto g = [](double lambda) { return 1 + 0.1 * std::log10(lambda); };
   const auto h = [](double lambda) { return 1.2 - 0.03 * std::log10(lambda); };
   for (const oracle::ContactWidthModel width : {oracle::ContactWidthModel::hertz, oracle::ContactWidthModel::rigid})
-  {
-    contact::ContinuumLoopSettings s;
-    s.width = width;
-    s.accumulated_pressure_only = true;
-    s.pressure_factors = [&](double lambda) { return std::array<double, 2>{g(lambda), h(lambda)}; };
-    const contact::ContinuumLoopScores both = scores(run, s);
-    s.pressure_factors = nullptr;
-    s.pressure_factor = g;
-    const contact::ContinuumLoopScores first = scores(run, s);
-    s.pressure_factor = h;
-    const contact::ContinuumLoopScores second = scores(run, s);
-    EXPECT_EQ(both.accumulated_pressure.whole, first.accumulated_pressure.whole);
-    EXPECT_EQ(both.accumulated_pressure.peak_to_mean, first.accumulated_pressure.peak_to_mean);
-    const contact::ContinuumScore& b = both.accumulated_pressure_second_factor;
-    EXPECT_EQ(b.whole, second.accumulated_pressure.whole);
-    EXPECT_EQ(b.touched, second.accumulated_pressure.touched);
-    EXPECT_EQ(b.peak_to_mean, second.accumulated_pressure.peak_to_mean);
-    EXPECT_EQ(b.touched_area_m2, second.accumulated_pressure.touched_area_m2);
-    EXPECT_NE(b.whole, both.accumulated_pressure.whole);
-    EXPECT_EQ(first.accumulated_pressure_second_factor.whole, 0); // no second factor, no score
-    s.pressure_factors = [&](double lambda) { return std::array<double, 2>{g(lambda), h(lambda)}; };
-    EXPECT_THROW(scores(run, s), InputError);
-  }
+    for (const bool accumulated_only : {true, false})
+    {
+      contact::ContinuumLoopSettings s;
+      s.width = width;
+      s.accumulated_pressure_only = accumulated_only;
+      s.pressure_factors = [&](double lambda) { return std::array<double, 2>{g(lambda), h(lambda)}; };
+      const contact::ContinuumLoopScores both = scores(run, s);
+      s.pressure_factors = nullptr;
+      s.pressure_factor = g;
+      const contact::ContinuumLoopScores first = scores(run, s);
+      s.pressure_factor = h;
+      const contact::ContinuumLoopScores second = scores(run, s);
+      // The first factor's every score, the peak pressure and damage included.
+      for (const auto& [a, b] : {std::pair{both.accumulated_pressure, first.accumulated_pressure},
+                                 std::pair{both.peak_pressure, first.peak_pressure},
+                                 std::pair{both.damage, first.damage}, std::pair{both.contact_time, first.contact_time}})
+      {
+        EXPECT_EQ(a.whole, b.whole);
+        EXPECT_EQ(a.peak_to_mean, b.peak_to_mean);
+      }
+      EXPECT_EQ(both.peak_pressure_max_pa, first.peak_pressure_max_pa);
+      const contact::ContinuumScore& b = both.accumulated_pressure_second_factor;
+      EXPECT_EQ(b.whole, second.accumulated_pressure.whole);
+      EXPECT_EQ(b.touched, second.accumulated_pressure.touched);
+      EXPECT_EQ(b.peak_to_mean, second.accumulated_pressure.peak_to_mean);
+      EXPECT_EQ(b.touched_area_m2, second.accumulated_pressure.touched_area_m2);
+      EXPECT_NE(b.whole, both.accumulated_pressure.whole);
+      EXPECT_EQ(first.accumulated_pressure_second_factor.whole, 0); // no second factor, no score
+      s.pressure_factors = [&](double lambda) { return std::array<double, 2>{g(lambda), h(lambda)}; };
+      EXPECT_THROW(scores(run, s), InputError);
+    }
 }
 
 TEST(ContinuumLoopScores, PartsOfTheWindowAddUpToTheWhole)
@@ -204,7 +213,9 @@ TEST(ContinuumLoopScores, PartsOfTheWindowAddUpToTheWhole)
   EXPECT_EQ(added.load_ratio_min, whole.load_ratio_min);
   EXPECT_EQ(added.load_ratio_max, whole.load_ratio_max);
   const contact::ContinuumLoopScores a = contact::continuum_loop_scores(added, run.surface_area_m2, s);
-  EXPECT_NEAR(a.accumulated_pressure.whole / scores(run, s).accumulated_pressure.whole, 1.0, 1e-10);
+  const contact::ContinuumLoopScores w = scores(run, s);
+  EXPECT_NEAR(a.accumulated_pressure.whole / w.accumulated_pressure.whole, 1.0, 1e-10);
+  EXPECT_NEAR(a.accumulated_pressure_second_factor.whole / w.accumulated_pressure_second_factor.whole, 1.0, 1e-10);
   EXPECT_THROW(contact::continuum_loop_moments(run.trajectory, 0, end, mass, s, {3, 3}), InputError);
 }
 
