@@ -135,10 +135,8 @@ Rates sample_rates(const oracle::RollingSample& sample, double rate, const Rolli
         const double p0_line = std::sqrt(q_held * e_star / (std::numbers::pi * r_held)), p0 = p0_line * g[0];
         // accumulated = K / (|sigma'| R(f)): its first moment is smooth in s,
         // its second carries 1 / R, integrated exactly over the piece below.
-        auto accumulated = [&](double peak) {
-          return hertz ? std::numbers::pi / 2 * peak * std::sqrt(4 * q_held * r_held / (std::numbers::pi * e_star))
-                       : peak;
-        };
+        const double b_held = hertz ? std::sqrt(4 * q_held * r_held / (std::numbers::pi * e_star)) : 0;
+        auto accumulated = [&](double peak) { return hertz ? std::numbers::pi / 2 * peak * b_held : peak; };
         const double k_pass = accumulated(p0);
         r.first[2] += k_pass * h / 2 * length;
         r.area[2] += weight;
@@ -157,9 +155,10 @@ Rates sample_rates(const oracle::RollingSample& sample, double rate, const Rolli
         add_point(r, 1, p0, weight);
         add_point(r, 3, std::pow(p0 / 2 / 100e6, -1 / s.basquin_exponent), weight);
       }
-      r.second[2] += accumulated_squared * length / rate * piece_reciprocal_radius(radius(s0), radius(s1), h);
+      const double reciprocal_radius = piece_reciprocal_radius(radius(s0), radius(s1), h);
+      r.second[2] += accumulated_squared * length / rate * reciprocal_radius;
       if (s.pressure_factors)
-        r.second_factor.second += second_squared * length / rate * piece_reciprocal_radius(radius(s0), radius(s1), h);
+        r.second_factor.second += second_squared * length / rate * reciprocal_radius;
     }
   }
   return r;
