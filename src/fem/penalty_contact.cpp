@@ -154,6 +154,12 @@ std::int64_t PenaltyContact::num_dofs() const
   return _V->dofmap()->index_map->size_global() * _V->dofmap()->index_map_bs();
 }
 
+void PenaltyContact::prefer_direct_solver(std::int64_t max_dofs)
+{
+  if (_model == Model::solid && num_dofs() <= max_dofs)
+    use_direct_solver_default(_ksp);
+}
+
 void PenaltyContact::start_translated(double shift_m, double approach_m)
 {
   std::span<T> u = _u->x()->mutable_array();

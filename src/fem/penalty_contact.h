@@ -18,7 +18,8 @@
 // PETSC_OPTIONS or HertzSettings::petsc_options (fem/solver_defaults.h): 2D
 // MUMPS LU; 3D GMRES (rtol 1e-10) with GAMG on an aij matrix with the
 // rigid-body near-nullspace, or, once node pairs join two bodies, with hypre
-// BoomerAMG (set_node_pairs).
+// BoomerAMG (set_node_pairs); MUMPS LU where the scene prefers it up to a
+// size (prefer_direct_solver).
 #include "fem/contact_forms.h"
 #include "fem/lumped_projection.h"
 #include "fem/mesh/scene_mesh.h"
@@ -117,6 +118,12 @@ public:
   /// reverse one), and the Jacobian's sparsity is rebuilt to hold the pairs
   /// (off-process rows are sent to their owners at assembly).
   void set_node_pairs(std::vector<NodePair> pairs);
+  /// MUMPS LU instead of the 3D iterative default while the problem has at
+  /// most `max_dofs` unknowns (fem/solver_defaults.h
+  /// use_direct_solver_default: a given -hertz_ksp_type or -hertz_pc_type
+  /// wins). For scenes whose strongly graded meshes cost GAMG more than the
+  /// factorisation costs LU.
+  void prefer_direct_solver(std::int64_t max_dofs);
   /// This process's pairs, as set.
   const std::vector<NodePair>& node_pairs() const { return _pairs; }
   /// p = kappa <-g>_+ of each of this process's pairs at the current state.

@@ -164,6 +164,21 @@ void solve_linear(KSP ksp, Vec b, Vec x)
                                  solver_prefix, rejection));
 }
 
+void use_direct_solver_default(KSP ksp)
+{
+  PetscBool has_ksp = PETSC_FALSE, has_pc = PETSC_FALSE;
+  PetscOptionsHasName(nullptr, solver_prefix, "-ksp_type", &has_ksp);
+  PetscOptionsHasName(nullptr, solver_prefix, "-pc_type", &has_pc);
+  if (has_ksp || has_pc)
+    return;
+  PC pc;
+  KSPGetPC(ksp, &pc);
+  KSPSetType(ksp, KSPPREONLY);
+  PCSetType(pc, PCLU);
+  PCFactorSetMatSolverType(pc, MATSOLVERMUMPS);
+  KSPSetFromOptions(ksp);
+}
+
 std::vector<std::string> use_pair_solver_defaults(KSP ksp)
 {
   // The pairs join two bodies by springs of c E h against an element's E h

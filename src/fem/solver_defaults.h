@@ -7,7 +7,8 @@
 // - 3D: GMRES (rtol 1e-10, at most 1000 iterations) with GAMG on an aij
 //   matrix whose near-nullspace holds the rigid-body modes; once node pairs
 //   join two bodies, hypre BoomerAMG with the usual 3D settings instead
-//   (use_pair_solver_defaults).
+//   (use_pair_solver_defaults); a scene whose meshes GAMG serves poorly
+//   asks for MUMPS LU up to a size (use_direct_solver_default).
 // A value PETSc rejects is bad input (InputError), never a silently kept
 // default.
 #include "fem/model.h"
@@ -50,6 +51,12 @@ KSP create_linear_solver(MPI_Comm comm, Model model, const std::string& petsc_op
 /// not PETSc's trace and an improper exit under mpirun. A solve that runs but
 /// does not converge is the caller's to judge (KSPGetConvergedReason).
 void solve_linear(KSP ksp, Vec b, Vec x);
+
+/// MUMPS LU (KSPPREONLY + PCLU) instead of the 3D default, then the options
+/// of the database again, so -hertz_pc_factor_* and -hertz_mat_mumps_*
+/// options apply; nothing changes if a -hertz_ksp_type or -hertz_pc_type is
+/// given (the user's solver wins).
+void use_direct_solver_default(KSP ksp);
 
 /// 3D with node pairs: GMRES + hypre BoomerAMG unless a -hertz_pc_type is
 /// given; each BoomerAMG setting is a default that a given option keeps.

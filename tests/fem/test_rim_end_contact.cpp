@@ -142,6 +142,35 @@ TEST(RimEndContact, StartingFromANeighboursApproachSavesLoadStepsNotAccuracy)
   EXPECT_THROW(fem::solve_rim_end(MPI_COMM_WORLD, s), InputError);
 }
 
+TEST(RimEndContact, SmallEndsAreFactorisedLargeOnesIteratedAndAGivenSolverWins)
+{
+  // One coarse level of the square end. MUMPS LU applies the factorisation
+  // once a Newton step (one "Krylov iteration" each); GMRES + GAMG iterates.
+  // All three solve the same problem: the same state to the solvers'
+  // tolerance.
+  fem::RimEndSettings s;
+  s.levels = 1;
+  s.contact_elements = 3;
+  s.edge_element_over_half_width = 0.25;
+  const fem::RimEndStudy direct = fem::solve_rim_end(MPI_COMM_WORLD, s);
+  s.direct_solver_max_dofs = direct.levels.front().dofs - 1;
+  const fem::RimEndStudy above = fem::solve_rim_end(MPI_COMM_WORLD, s);
+  s.direct_solver_max_dofs = fem::RimEndSettings{}.direct_solver_max_dofs;
+  s.petsc_options = "-hertz_ksp_type gmres -hertz_pc_type gamg";
+  const fem::RimEndStudy given = fem::solve_rim_end(MPI_COMM_WORLD, s);
+  const fem::RimEndLevel &d = direct.levels.front(), &a = above.levels.front(), &g = given.levels.front();
+  std::printf("Newton / Krylov: direct %d / %d, above the bound %d / %d, given %d / %d\n", d.newton_iterations,
+              d.krylov_iterations, a.newton_iterations, a.krylov_iterations, g.newton_iterations, g.krylov_iterations);
+  EXPECT_EQ(d.krylov_iterations, d.newton_iterations);
+  EXPECT_GT(a.krylov_iterations, 5 * a.newton_iterations);
+  EXPECT_GT(g.krylov_iterations, 5 * g.newton_iterations);
+  for (const fem::RimEndLevel* iterated : {&a, &g})
+  {
+    EXPECT_NEAR(iterated->end_peak_pa / d.end_peak_pa, 1.0, 1e-6);
+    EXPECT_NEAR(iterated->far_peak_pa / d.far_peak_pa, 1.0, 1e-6);
+  }
+}
+
 TEST(RimEndContact, EdgeElementsCoverTheRoundedEdgesBand)
 {
   // The size field by hand: h_e over the band |x - x_t| <= w on the surface

@@ -414,7 +414,17 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
   if (block)
     pair_with_block(problem, study, sizes);
   else
+  {
+    // gmsh's tetrahedra are graded from the fillet to 10 b: GAMG took 18-25
+    // GMRES iterations a solve, and MUMPS LU was 1.3-1.5x faster from 19k to
+    // 207k unknowns (scripts/bench/bench_rim_solver.sh). On the extruded
+    // section LU was slower and filled more (docs/methods/rims.md); with the
+    // block's pairs BoomerAMG stays (fem/solver_defaults.h).
+    const RimEndMesh used = rim_end_mesh_used(study);
+    if (used == RimEndMesh::delaunay || used == RimEndMesh::hxt)
+      problem.prefer_direct_solver(s.direct_solver_max_dofs);
     press_on_rigid_plane(problem, study, sizes);
+  }
   level.dofs = problem.num_dofs();
   load_to_line_load(comm, problem, study, previous, state, level);
   if (block && s.edge_radius_m > 0)

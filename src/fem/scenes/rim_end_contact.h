@@ -173,7 +173,13 @@ struct RimEndSettings
   /// rim_end_element_size): at c = 100 (the other scenes') the nodal
   /// pressures along the strip scattered by 4-5 %, at c = 10 by 2.4 %.
   double penalty_c = 10.0;
-  std::string petsc_options;         ///< prefix "hertz_" (default: 3D GMRES + GAMG)
+  std::string petsc_options;         ///< prefix "hertz_" (default: see direct_solver_max_dofs)
+  /// On gmsh's tetrahedra and the rigid plane, a level of at most this many
+  /// unknowns is solved by MUMPS LU, a larger one by GMRES + GAMG
+  /// (fem/solver_defaults.h; petsc_options naming a KSP or PC type win).
+  /// LU's memory grows faster than the unknowns (one process: 0.6 GB at 90k,
+  /// 1.3 GB at 195k; scripts/bench/bench_rim_solver.sh), GAMG's linearly.
+  std::int64_t direct_solver_max_dofs = 300000;
   /// The last level's fields (fem/write_fields.h), if set: a .xdmf in a writable
   /// folder, written once the study has finished (a level that fails leaves none).
   std::filesystem::path xdmf_path;
