@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 #include <numeric>
+#include <span>
 #include <unsupported/Eigen/FFT>
 
 namespace rollcheck::contact
@@ -39,33 +40,77 @@ std::size_t fast_fft_size(std::size_t n)
   }
 }
 
-/// In-place 2D FFT of a row-major nx x ny array (rows along y), forward or
-/// inverse (unscaled).
-void fft_2d(std::vector<Complex>& data, std::size_t nx, std::size_t ny, bool inverse)
+/// The smallest multiple of 4 of the fast sizes >= n: Eigen's real FFT
+/// takes its half-length complex path only at multiples of 4.
+std::size_t fast_real_fft_size(std::size_t n)
 {
-  Eigen::FFT<double> fft;
-  fft.SetFlag(Eigen::FFT<double>::Unscaled);
-  std::vector<Complex> in(std::max(nx, ny)), out(std::max(nx, ny));
-  const auto transform = [&](std::size_t n) {
-    if (inverse)
-      fft.inv(out.data(), in.data(), static_cast<Eigen::DenseIndex>(n));
-    else
-      fft.fwd(out.data(), in.data(), static_cast<Eigen::DenseIndex>(n));
-  };
-  for (std::size_t i = 0; i < nx; ++i)
+  return 4 * fast_fft_size((n + 3) / 4);
+}
+
+/// One FFT object a thread: it keeps the plans (twiddles) of the sizes it
+/// has transformed, and its scratch is not shared between threads.
+Eigen::FFT<double>& thread_fft()
+{
+  thread_local Eigen::FFT<double> fft = [] {
+    Eigen::FFT<double> f;
+    f.SetFlag(Eigen::FFT<double>::Unscaled);
+    f.SetFlag(Eigen::FFT<double>::HalfSpectrum);
+    return f;
+  }();
+  return fft;
+}
+
+/// The 2D spectrum of a real row-major array of `rows` x `ny` values, zero
+/// beyond them to px x py (py a multiple of 4): each row's half spectrum
+/// (py / 2 + 1 values, Hermitian symmetry gives the rest), then the complex
+/// transform along x of each of those columns. Row-major px x (py / 2 + 1).
+std::vector<Complex> real_spectrum_2d(std::span<const double> values, std::size_t rows, std::size_t ny,
+                                      std::size_t px, std::size_t py)
+{
+  Eigen::FFT<double>& fft = thread_fft();
+  const std::size_t half = py / 2 + 1;
+  std::vector<Complex> spectrum(px * half, 0.0);
+  std::vector<double> row(py, 0.0);
+  for (std::size_t i = 0; i < rows; ++i)
   {
-    std::copy_n(data.begin() + static_cast<std::ptrdiff_t>(i * ny), ny, in.begin());
-    transform(ny);
-    std::copy_n(out.begin(), ny, data.begin() + static_cast<std::ptrdiff_t>(i * ny));
+    std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(i * ny), ny, row.begin());
+    fft.fwd(spectrum.data() + i * half, row.data(), static_cast<Eigen::DenseIndex>(py));
   }
-  for (std::size_t j = 0; j < ny; ++j)
+  std::vector<Complex> in(px), out(px);
+  for (std::size_t j = 0; j < half; ++j)
   {
-    for (std::size_t i = 0; i < nx; ++i)
-      in[i] = data[i * ny + j];
-    transform(nx);
-    for (std::size_t i = 0; i < nx; ++i)
-      data[i * ny + j] = out[i];
+    for (std::size_t i = 0; i < px; ++i)
+      in[i] = spectrum[i * half + j];
+    fft.fwd(out.data(), in.data(), static_cast<Eigen::DenseIndex>(px));
+    for (std::size_t i = 0; i < px; ++i)
+      spectrum[i * half + j] = out[i];
   }
+  return spectrum;
+}
+
+/// The first `rows` x `ny` values of the real array whose spectrum
+/// real_spectrum_2d gave (unscaled: times px py).
+std::vector<double> real_inverse_2d(std::vector<Complex>& spectrum, std::size_t rows, std::size_t ny, std::size_t px,
+                                    std::size_t py)
+{
+  Eigen::FFT<double>& fft = thread_fft();
+  const std::size_t half = py / 2 + 1;
+  std::vector<Complex> in(px), out(px);
+  for (std::size_t j = 0; j < half; ++j)
+  {
+    for (std::size_t i = 0; i < px; ++i)
+      in[i] = spectrum[i * half + j];
+    fft.inv(out.data(), in.data(), static_cast<Eigen::DenseIndex>(px));
+    for (std::size_t i = 0; i < px; ++i)
+      spectrum[i * half + j] = out[i];
+  }
+  std::vector<double> values(rows * ny), row(py);
+  for (std::size_t i = 0; i < rows; ++i)
+  {
+    fft.inv(row.data(), spectrum.data() + i * half, static_cast<Eigen::DenseIndex>(py));
+    std::copy_n(row.begin(), ny, values.begin() + static_cast<std::ptrdiff_t>(i * ny));
+  }
+  return values;
 }
 } // namespace
 
@@ -78,7 +123,7 @@ double cell_deflection(double half_x_m, double half_y_m, double x_m, double y_m,
 }
 
 HalfSpaceDeflection::HalfSpaceDeflection(const HalfSpaceGrid& grid, double effective_modulus_pa)
-    : grid_(grid), padded_x_(fast_fft_size(2 * grid.nx)), padded_y_(fast_fft_size(2 * grid.ny))
+    : grid_(grid), padded_x_(fast_fft_size(2 * grid.nx)), padded_y_(fast_real_fft_size(2 * grid.ny))
 {
   if (grid.nx == 0 || grid.ny == 0 || !(grid.cell_x_m > 0) || !(grid.cell_y_m > 0))
     throw InputError(fmt::format("half-space contact: the grid needs cells ({} x {}) of positive size ({} x {} m)",
@@ -94,7 +139,7 @@ HalfSpaceDeflection::HalfSpaceDeflection(const HalfSpaceGrid& grid, double effec
       return static_cast<double>(k) - static_cast<double>(padded);
     return std::nan("");
   };
-  kernel_spectrum_.assign(padded_x_ * padded_y_, 0.0);
+  std::vector<double> kernel(padded_x_ * padded_y_, 0.0);
   for (std::size_t i = 0; i < padded_x_; ++i)
   {
     const double di = offset(i, grid.nx, padded_x_);
@@ -104,12 +149,11 @@ HalfSpaceDeflection::HalfSpaceDeflection(const HalfSpaceGrid& grid, double effec
     {
       const double dj = offset(j, grid.ny, padded_y_);
       if (!std::isnan(dj))
-        kernel_spectrum_[i * padded_y_ + j] = cell_deflection(grid.cell_x_m / 2, grid.cell_y_m / 2,
-                                                              di * grid.cell_x_m, dj * grid.cell_y_m,
-                                                              effective_modulus_pa);
+        kernel[i * padded_y_ + j] = cell_deflection(grid.cell_x_m / 2, grid.cell_y_m / 2, di * grid.cell_x_m,
+                                                    dj * grid.cell_y_m, effective_modulus_pa);
     }
   }
-  fft_2d(kernel_spectrum_, padded_x_, padded_y_, false);
+  kernel_spectrum_ = real_spectrum_2d(kernel, padded_x_, padded_y_, padded_x_, padded_y_);
   // The inverse transform's 1 / N, once.
   const double scale = 1.0 / static_cast<double>(padded_x_ * padded_y_);
   for (Complex& k : kernel_spectrum_)
@@ -121,19 +165,12 @@ std::vector<double> HalfSpaceDeflection::operator()(std::span<const double> pres
   if (pressure_pa.size() != grid_.size())
     throw InputError(fmt::format("half-space contact: {} pressures for a grid of {} cells", pressure_pa.size(),
                                  grid_.size()));
-  std::vector<Complex> work(padded_x_ * padded_y_, 0.0);
-  for (std::size_t i = 0; i < grid_.nx; ++i)
-    for (std::size_t j = 0; j < grid_.ny; ++j)
-      work[i * padded_y_ + j] = pressure_pa[i * grid_.ny + j];
-  fft_2d(work, padded_x_, padded_y_, false);
+  // The pressure is real and zero beyond the grid's nx rows: half spectra
+  // along y, and the rows beyond nx neither transformed nor transformed back.
+  std::vector<Complex> work = real_spectrum_2d(pressure_pa, grid_.nx, grid_.ny, padded_x_, padded_y_);
   for (std::size_t k = 0; k < work.size(); ++k)
     work[k] *= kernel_spectrum_[k];
-  fft_2d(work, padded_x_, padded_y_, true);
-  std::vector<double> deflection(grid_.size());
-  for (std::size_t i = 0; i < grid_.nx; ++i)
-    for (std::size_t j = 0; j < grid_.ny; ++j)
-      deflection[i * grid_.ny + j] = work[i * padded_y_ + j].real();
-  return deflection;
+  return real_inverse_2d(work, grid_.nx, grid_.ny, padded_x_, padded_y_);
 }
 
 namespace

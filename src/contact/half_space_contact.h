@@ -11,7 +11,9 @@
 // nu2^2) / E2 (contact/hertz.h effective_modulus). The grid's deflection is
 // that kernel convolved with the pressure, by FFT on a grid padded to twice
 // each side so that the circular convolution equals the linear one (DC-FFT:
-// S. Liu, Q. Wang, G. Liu, Wear 243 (2000) 101-111). The contact conditions
+// S. Liu, Q. Wang, G. Liu, Wear 243 (2000) 101-111). Both are real: half
+// spectra along y (the other half is their conjugate), and the padding's
+// rows are neither transformed nor transformed back. The contact conditions
 //   p >= 0,  g = h + u - delta >= 0,  p g = 0,  sum p A = F
 // (h the initial gap, delta the rigid approach) are solved by the constrained
 // conjugate-gradient method of I. A. Polonsky and L. M. Keer, Wear 231 (1999)

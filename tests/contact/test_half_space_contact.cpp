@@ -45,6 +45,37 @@ TEST(HalfSpaceContact, CellDeflectionIsBoussinesqFarAwayAndLoveAtTheCentre)
               8 * a * std::log(1 + std::sqrt(2.0)) / (std::numbers::pi * effective_modulus), 1e-20);
 }
 
+TEST(HalfSpaceContact, FftDeflectionIsTheDirectSumOfEveryCellsDeflection)
+{
+  // The padded real FFT convolution against the sum over cells, term by
+  // term, on grids whose padded sizes are odd, even and a multiple of 4 on
+  // either side (13 x 7 pads to 27 x 16, 8 x 37 to 16 x 80), under an uneven
+  // pressure that is zero on some cells.
+  for (const auto& [nx, ny] : {std::pair<std::size_t, std::size_t>{13, 7}, {8, 37}, {1, 1}})
+  {
+    const contact::HalfSpaceGrid grid{nx, ny, 2e-6, 3e-6, -1e-5, 4e-6};
+    std::vector<double> pressure(grid.size());
+    for (std::size_t k = 0; k < pressure.size(); ++k)
+      pressure[k] = k % 5 == 3 ? 0.0 : 1e8 * (1.0 + std::sin(0.7 * static_cast<double>(k)));
+    const std::vector<double> u = contact::HalfSpaceDeflection(grid, effective_modulus)(pressure);
+    ASSERT_EQ(u.size(), grid.size());
+    double worst = 0, largest = 0;
+    for (std::size_t i = 0; i < nx; ++i)
+      for (std::size_t j = 0; j < ny; ++j)
+      {
+        double direct = 0;
+        for (std::size_t k = 0; k < nx; ++k)
+          for (std::size_t l = 0; l < ny; ++l)
+            direct += pressure[k * ny + l]
+                      * contact::cell_deflection(grid.cell_x_m / 2, grid.cell_y_m / 2, grid.x(i) - grid.x(k),
+                                                 grid.y(j) - grid.y(l), effective_modulus);
+        worst = std::max(worst, std::abs(u[i * ny + j] - direct));
+        largest = std::max(largest, std::abs(direct));
+      }
+    EXPECT_LT(worst, 1e-12 * largest) << nx << " x " << ny;
+  }
+}
+
 TEST(HalfSpaceContact, HertzPressureDeflectsTheSurfaceByTheSpheresProfile)
 {
   // Hertz's pressure p0 sqrt(1 - r^2 / a^2) deflects the surface by
