@@ -1,5 +1,6 @@
 #include "contact/hertz.h"
 #include "core/error.h"
+#include <array>
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
@@ -47,6 +48,27 @@ DepthMaximum maximise_over_depth(F f)
   const double z = (lo + hi) / 2;
   return {f(z), z};
 }
+
+/// compute(nu), kept for the last nu this thread asked for. The subsurface
+/// maxima per unit p0 and contact size depend on nu alone, and a scan of
+/// 4,400 points costs far more than the rest of the contact: the half-space
+/// solvers ask for one nu at every column of a grid at every iteration
+/// (contact/line_hertz_beyond.cpp). One cache per call site (the lambda's type).
+template <typename Compute>
+auto kept_for_poisson_ratio(double nu, Compute compute)
+{
+  using Maxima = decltype(compute(nu));
+  thread_local bool kept = false;
+  thread_local double kept_nu = 0;
+  thread_local Maxima maxima{};
+  if (!kept || nu != kept_nu)
+  {
+    maxima = compute(nu);
+    kept_nu = nu;
+    kept = true;
+  }
+  return maxima;
+}
 } // namespace
 
 double effective_modulus_rigid_plane(double E, double nu)
@@ -74,13 +96,15 @@ PointHertz point_contact(double force_n, double radius_m, double effective_modul
   require_poisson(nu);
   const double a = std::cbrt(3 * force_n * radius_m / (4 * effective_modulus_pa));
   const double p0 = 3 * force_n / (2 * std::numbers::pi * a * a);
-  // Axis stresses per unit p0 at depth zeta = z / a (Johnson eq. 3.45).
-  auto sigma_z = [](double zeta) { return -1 / (1 + zeta * zeta); };
-  auto sigma_r = [nu](double zeta) {
-    return -(1 + nu) * (1 - zeta * std::atan(1 / zeta)) + 1 / (2 * (1 + zeta * zeta));
-  };
-  // On the axis sigma_r = sigma_theta, so von Mises = |sigma_z - sigma_r| = 2 tau_max.
-  const auto shear = maximise_over_depth([&](double zeta) { return std::abs(sigma_z(zeta) - sigma_r(zeta)) / 2; });
+  const DepthMaximum shear = kept_for_poisson_ratio(nu, [](double nu) {
+    // Axis stresses per unit p0 at depth zeta = z / a (Johnson eq. 3.45).
+    auto sigma_z = [](double zeta) { return -1 / (1 + zeta * zeta); };
+    auto sigma_r = [nu](double zeta) {
+      return -(1 + nu) * (1 - zeta * std::atan(1 / zeta)) + 1 / (2 * (1 + zeta * zeta));
+    };
+    // On the axis sigma_r = sigma_theta, so von Mises = |sigma_z - sigma_r| = 2 tau_max.
+    return maximise_over_depth([&](double zeta) { return std::abs(sigma_z(zeta) - sigma_r(zeta)) / 2; });
+  });
   return {a,
           p0,
           2 * p0 / 3,
@@ -99,15 +123,16 @@ LineHertz line_contact(double force_per_length, double radius_m, double effectiv
   require_poisson(nu);
   const double b = std::sqrt(4 * force_per_length * radius_m / (std::numbers::pi * effective_modulus_pa));
   const double p0 = 2 * force_per_length / (std::numbers::pi * b);
-  // Axis stresses per unit p0 at zeta = z / b (Johnson eq. 4.49), plane strain.
-  auto sigma_x = [](double zeta) {
-    return -((1 + 2 * zeta * zeta) / std::sqrt(1 + zeta * zeta) - 2 * zeta);
-  };
-  auto sigma_z = [](double zeta) { return -1 / std::sqrt(1 + zeta * zeta); };
-  const auto shear = maximise_over_depth([&](double zeta) { return std::abs(sigma_x(zeta) - sigma_z(zeta)) / 2; });
-  const auto mises = maximise_over_depth([&](double zeta) {
-    const double sx = sigma_x(zeta), sz = sigma_z(zeta), sy = nu * (sx + sz);
-    return std::sqrt(((sx - sy) * (sx - sy) + (sy - sz) * (sy - sz) + (sz - sx) * (sz - sx)) / 2);
+  const auto [shear, mises] = kept_for_poisson_ratio(nu, [](double nu) {
+    // Axis stresses per unit p0 at zeta = z / b (Johnson eq. 4.49), plane strain.
+    auto sigma_x = [](double zeta) { return -((1 + 2 * zeta * zeta) / std::sqrt(1 + zeta * zeta) - 2 * zeta); };
+    auto sigma_z = [](double zeta) { return -1 / std::sqrt(1 + zeta * zeta); };
+    return std::array<DepthMaximum, 2>{
+        maximise_over_depth([&](double zeta) { return std::abs(sigma_x(zeta) - sigma_z(zeta)) / 2; }),
+        maximise_over_depth([&](double zeta) {
+          const double sx = sigma_x(zeta), sz = sigma_z(zeta), sy = nu * (sx + sz);
+          return std::sqrt(((sx - sy) * (sx - sy) + (sy - sz) * (sy - sz) + (sz - sx) * (sz - sx)) / 2);
+        })};
   });
   return {b, p0, std::numbers::pi * p0 / 4, shear.value * p0, shear.depth * b, mises.value * p0, mises.depth * b};
 }
