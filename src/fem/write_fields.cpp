@@ -1,6 +1,7 @@
 #include "fem/write_fields.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "fem/field_output.h"
 #include "fem/first_failure.h"
 #include <dolfinx/fem/FunctionSpace.h>
 #include <dolfinx/mesh/Mesh.h>
@@ -84,16 +85,12 @@ void join_collections(const std::filesystem::path& xdmf)
   write_file_atomically(xdmf, text.str());
 }
 
-/// How long a rank whose write failed waits for the others to finish the
-/// same step of DOLFINx's writer before it ends every rank (fem/first_failure.h).
-constexpr std::chrono::seconds write_patience{30};
-
 /// Every rank's failure becomes every rank's (fem/first_failure.h): a
 /// collective step that failed on one rank must not leave the others waiting
 /// in the next one. `failure`: this rank's message, empty if it succeeded.
 void agree(MPI_Comm comm, const std::string& failure)
 {
-  if (const std::optional<RankFailure> first = first_failure(comm, failure.empty() ? 0 : 1, failure, write_patience))
+  if (const std::optional<RankFailure> first = first_failure(comm, failure.empty() ? 0 : 1, failure, write_patience()))
     throw ComputationError(first->rank == 0 ? first->message
                                             : fmt::format("{} (on rank {})", first->message, first->rank));
 }

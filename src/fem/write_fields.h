@@ -30,8 +30,9 @@
 // the failing rank's message, instead of the others waiting for ever in the
 // writer's next collective call. Where the others are held inside the step
 // (HDF5 reduces over the ranks within a dataset write), the failed rank
-// removes the temporary folder, names the file and, after 30 s, ends every
-// rank (MPI_Abort, exit 1).
+// removes the temporary folder, names the file and, after the write's
+// patience (fem/field_output.h write_patience), ends every rank
+// (MPI_Abort, exit 1).
 #include "fem/nodal_fields.h"
 #include <dolfinx/io/XDMFFile.h>
 #include <filesystem>

@@ -7,8 +7,9 @@
 # JSON summary (peak pressure, the prescribed approach on the loaded face, von
 # Mises from the stress); the axisymmetric stress is in the mesh's axes
 # (r, z, theta), so on the axis, where sigma_rr = sigma_theta theta, its XX
-# and ZZ components agree. A missing output folder is refused before any
-# computation; no scratch is left behind.
+# and ZZ components agree. A missing output folder and a write patience that
+# is no whole number of seconds are refused before any computation; no
+# scratch is left behind.
 set -u
 source "$(dirname "$0")/lib.sh"
 bin=$1; tmp=$3
@@ -69,5 +70,9 @@ PY
 done
 "$bin" -q hertz --model axi --xdmf "$tmp/missing/f.xdmf" > "$tmp/bad.log" 2>&1; rc=$?
 if [[ $rc -ne 2 ]] || ! grep -q "missing" "$tmp/bad.log"; then echo "FAIL: a missing folder gave exit $rc"; cat "$tmp/bad.log"; fail=1; fi
+ROLLCHECK_WRITE_PATIENCE=1.5 "$bin" -q hertz --model axi --xdmf "$tmp/patience.xdmf" > "$tmp/bad.log" 2>&1; rc=$?
+if [[ $rc -ne 2 ]] || ! grep -q "ROLLCHECK_WRITE_PATIENCE" "$tmp/bad.log" || [[ -e $tmp/patience.xdmf ]]; then
+  echo "FAIL: a write patience of 1.5 s gave exit $rc"; cat "$tmp/bad.log"; fail=1
+fi
 ls -A "$tmp" | grep -q '\.tmp' && { echo "FAIL: scratch left behind"; fail=1; }
 exit $fail

@@ -1,7 +1,7 @@
 #include "fem/scenes/hertz_setup.h"
 #include "contact/hertz.h"
-#include "core/atomic_file.h"
 #include "core/error.h"
+#include "fem/field_output.h"
 #include <cmath>
 #include <utility>
 #include <fmt/format.h>
@@ -102,9 +102,7 @@ void validate(const HertzSettings& s)
     throw InputError(fmt::format("hertz: force_rtol must be below 0.01, got {}", s.force_rtol));
   if (!s.xdmf_path.empty())
   {
-    if (s.xdmf_path.extension() != ".xdmf")
-      throw InputError(fmt::format("hertz: the field output '{}' (--xdmf) must end in .xdmf", s.xdmf_path.string()));
-    check_output_file(s.xdmf_path, "hertz: the field output (--xdmf)");
+    check_field_output(s.xdmf_path, "hertz: the field output (--xdmf)");
   }
 }
 

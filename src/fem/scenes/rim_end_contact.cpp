@@ -3,8 +3,8 @@
 #include "contact/edge_on_elastic_block_exponent.h"
 #include "contact/hertz.h"
 #include "contact/wedge_exponent.h"
-#include "core/atomic_file.h"
 #include "core/error.h"
+#include "fem/field_output.h"
 #include "core/refinement_series.h"
 #include "fem/all_gather.h"
 #include "fem/load_control.h"
@@ -70,9 +70,7 @@ void validate(const RimEndSettings& s)
                                  s.crossing_angle_rad * 180 / std::numbers::pi, s.length_over_depth));
   if (!s.xdmf_path.empty())
   {
-    if (s.xdmf_path.extension() != ".xdmf")
-      throw InputError(fmt::format("rim: the field output '{}' (--xdmf) must end in .xdmf", s.xdmf_path.string()));
-    check_output_file(s.xdmf_path, "rim: the field output (--xdmf)");
+    check_field_output(s.xdmf_path, "rim: the field output (--xdmf)");
   }
   if (s.contact_elements < 2 || s.contact_elements > 40 || s.levels < 1 || s.levels > 6 || s.extra_levels < 0
       || s.extra_levels > 2)
