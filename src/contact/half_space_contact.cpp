@@ -60,6 +60,25 @@ Eigen::FFT<double>& thread_fft()
   return fft;
 }
 
+/// The complex transform along x, forward or inverse (unscaled), of each
+/// column of a row-major px x half array, in place.
+void transform_columns(std::vector<Complex>& data, std::size_t px, std::size_t half, bool inverse)
+{
+  Eigen::FFT<double>& fft = thread_fft();
+  std::vector<Complex> in(px), out(px);
+  for (std::size_t j = 0; j < half; ++j)
+  {
+    for (std::size_t i = 0; i < px; ++i)
+      in[i] = data[i * half + j];
+    if (inverse)
+      fft.inv(out.data(), in.data(), static_cast<Eigen::DenseIndex>(px));
+    else
+      fft.fwd(out.data(), in.data(), static_cast<Eigen::DenseIndex>(px));
+    for (std::size_t i = 0; i < px; ++i)
+      data[i * half + j] = out[i];
+  }
+}
+
 /// The 2D spectrum of a real row-major array of `rows` x `ny` values, zero
 /// beyond them to px x py (py a multiple of 4): each row's half spectrum
 /// (py / 2 + 1 values, Hermitian symmetry gives the rest), then the complex
@@ -76,15 +95,7 @@ std::vector<Complex> real_spectrum_2d(std::span<const double> values, std::size_
     std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(i * ny), ny, row.begin());
     fft.fwd(spectrum.data() + i * half, row.data(), static_cast<Eigen::DenseIndex>(py));
   }
-  std::vector<Complex> in(px), out(px);
-  for (std::size_t j = 0; j < half; ++j)
-  {
-    for (std::size_t i = 0; i < px; ++i)
-      in[i] = spectrum[i * half + j];
-    fft.fwd(out.data(), in.data(), static_cast<Eigen::DenseIndex>(px));
-    for (std::size_t i = 0; i < px; ++i)
-      spectrum[i * half + j] = out[i];
-  }
+  transform_columns(spectrum, px, half, false);
   return spectrum;
 }
 
@@ -95,15 +106,7 @@ std::vector<double> real_inverse_2d(std::vector<Complex>& spectrum, std::size_t 
 {
   Eigen::FFT<double>& fft = thread_fft();
   const std::size_t half = py / 2 + 1;
-  std::vector<Complex> in(px), out(px);
-  for (std::size_t j = 0; j < half; ++j)
-  {
-    for (std::size_t i = 0; i < px; ++i)
-      in[i] = spectrum[i * half + j];
-    fft.inv(out.data(), in.data(), static_cast<Eigen::DenseIndex>(px));
-    for (std::size_t i = 0; i < px; ++i)
-      spectrum[i * half + j] = out[i];
-  }
+  transform_columns(spectrum, px, half, true);
   std::vector<double> values(rows * ny), row(py);
   for (std::size_t i = 0; i < rows; ++i)
   {
