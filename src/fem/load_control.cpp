@@ -36,6 +36,7 @@ LoadControlReport continue_to_force(PenaltyContact& problem, double target, doub
     const NewtonReport newton = problem.solve();
     report.newton.newton_iterations += newton.newton_iterations;
     report.newton.krylov_iterations += newton.krylov_iterations;
+    report.newton.preconditioner_setups += newton.preconditioner_setups;
     report.newton.line_search_halvings += newton.line_search_halvings;
     report.newton.final_relative_increment = newton.final_relative_increment;
     report.newton.assembly_s += newton.assembly_s;

@@ -45,6 +45,7 @@ struct NewtonReport
 {
   int newton_iterations = 0;
   int krylov_iterations = 0;
+  int preconditioner_setups = 0; ///< linear solves that built their preconditioner afresh
   int line_search_halvings = 0;
   double final_relative_increment = 0;
   double assembly_s = 0;
@@ -124,6 +125,14 @@ public:
   /// wins). For scenes whose strongly graded meshes cost GAMG more than the
   /// factorisation costs LU.
   void prefer_direct_solver(std::int64_t max_dofs);
+  /// Within each solve() the preconditioner of its first Newton iteration
+  /// serves the later ones (an iterative solver only), until a solve takes
+  /// more than twice that first solve's Krylov iterations: the set of
+  /// penetrating points, and so the Jacobian, changes little within one
+  /// approach on the hemisphere (3D P2: 224 iterations against 223, 15 %
+  /// less time), but enough on a steel block's node pairs to take BoomerAMG
+  /// 4.6 times the iterations (docs/methods/hertz-fem.md).
+  void reuse_preconditioner_within_solve(bool reuse) { _reuse_within_solve = reuse; }
   /// This process's pairs, as set.
   const std::vector<NodePair>& node_pairs() const { return _pairs; }
   /// p = kappa <-g>_+ of each of this process's pairs at the current state.
@@ -203,6 +212,7 @@ private:
   std::vector<std::int32_t> _top_z_dofs; ///< owned, unrolled
   int _z_component;
   Model _model;
+  bool _reuse_within_solve = false;
   Mat _A = nullptr;
   KSP _ksp = nullptr;
   MatNullSpace _near_nullspace = nullptr;

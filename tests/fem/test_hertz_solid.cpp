@@ -56,6 +56,28 @@ TEST(HertzSolid, SteelHemisphereP1FitsHertzWithinOnePercent)
                                               h.max_von_mises_depth_m);
 }
 
+// Each load step's Newton iterations keep the preconditioner of its first
+// (fem/penalty_contact.h): the same state to the Krylov tolerance, and about
+// as many iterations as a fresh preconditioner every time (P1 at refine 0).
+TEST(HertzSolid, KeepingALoadStepsPreconditionerChangesNeitherTheStateNorTheIterations)
+{
+  fem::HertzSettings s;
+  s.model = fem::Model::solid;
+  s.degree = 1;
+  s.refine = 0;
+  const fem::HertzResult kept = fem::solve_hertz(MPI_COMM_WORLD, s);
+  s.reuse_preconditioner = false;
+  const fem::HertzResult fresh = fem::solve_hertz(MPI_COMM_WORLD, s);
+  EXPECT_NEAR(kept.max_nodal_pressure_pa / fresh.max_nodal_pressure_pa, 1.0, 1e-8);
+  EXPECT_NEAR(kept.contact_size_m / fresh.contact_size_m, 1.0, 1e-8);
+  EXPECT_NEAR(kept.approach_m / fresh.approach_m, 1.0, 1e-8);
+  EXPECT_LE(kept.krylov_iterations, fresh.krylov_iterations * 5 / 4);
+  // One preconditioner a load step kept; one a Newton iteration fresh.
+  EXPECT_EQ(kept.preconditioner_setups, kept.load_steps);
+  EXPECT_EQ(fresh.preconditioner_setups, fresh.newton_iterations);
+  EXPECT_LT(kept.preconditioner_setups, fresh.preconditioner_setups);
+}
+
 namespace
 {
 /// P2 at refine 0 with the pole and the contact's edge refined two levels.

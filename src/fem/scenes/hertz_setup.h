@@ -88,6 +88,9 @@ struct HertzSettings
   PressureRecovery pressure_recovery = PressureRecovery::automatic;
   /// Extra PETSc options, e.g. "-hertz_ksp_type gmres"; the solver's prefix is "hertz_".
   std::string petsc_options;
+  /// 3D: each load step's Newton iterations keep its first preconditioner
+  /// (fem/penalty_contact.h reuse_preconditioner_within_solve).
+  bool reuse_preconditioner = true;
   /// Progress lines (meshing, size, load control) at info level; else at debug (-v).
   bool log_progress = true;
   /// If set, the fields of every load step are written there (fem/write_fields.h), the data in a .h5 beside it.

@@ -129,6 +129,7 @@ void reach_hertz_load(PenaltyContact& problem, HertzResult& result, spdlog::leve
   result.load_steps = load.load_steps;
   result.newton_iterations = load.newton.newton_iterations;
   result.krylov_iterations = load.newton.krylov_iterations;
+  result.preconditioner_setups = load.newton.preconditioner_setups;
   result.assembly_s = load.newton.assembly_s;
   result.solve_s = load.newton.solve_s;
   result.approach_m = load.approach_m;
@@ -282,6 +283,7 @@ HertzResult solve_hertz(MPI_Comm comm, const HertzSettings& given)
   const double kappa = penalty_stiffness(result);
   PenaltyContact problem(scene, setup.model, setup.degree, result.hertz.body_modulus_pa, setup.poisson_ratio, kappa,
                          setup.petsc_options);
+  problem.reuse_preconditioner_within_solve(setup.model == Model::solid && setup.reuse_preconditioner);
   result.dofs = problem.num_dofs();
   if (rank == 0)
     spdlog::log(progress, "hertz {} P{}: {} cells, {} dofs, h_c = {:.4g} m ({:.3g} per {}), kappa = {:.4g} Pa/m",

@@ -44,6 +44,7 @@ struct HertzResult
   int load_steps = 0;
   int newton_iterations = 0;
   int krylov_iterations = 0;
+  int preconditioner_setups = 0;
   double mesh_s = 0, assembly_s = 0, solve_s = 0, postprocess_s = 0, wall_s = 0;
   double peak_memory_mb = 0;        ///< largest resident set of one rank
   double total_peak_memory_mb = 0;  ///< summed over ranks
