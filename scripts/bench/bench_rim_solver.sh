@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Benchmark (not a test): the rim end's linear solver on gmsh's tetrahedra.
 # One level of three ends on the rigid plane, one process each, with the
-# default (MUMPS LU up to fem/solver_defaults.h direct_solve_max_dofs) and
+# default (MUMPS LU up to RimEndSettings::direct_solver_max_dofs) and
 # with the 3D iterative default forced (-hertz_ksp_type gmres -hertz_pc_type
 # gamg): unknowns, wall seconds, peak memory, the ratios, and the end/far
 # pressure ratio of both (the same problem, so it agrees to the solvers'

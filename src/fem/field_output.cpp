@@ -1,6 +1,7 @@
 #include "fem/field_output.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include <cctype>
 #include <cerrno>
 #include <cstdlib>
 #include <fmt/format.h>
@@ -15,7 +16,9 @@ std::chrono::seconds write_patience()
   char* end = nullptr;
   errno = 0;
   const long seconds = std::strtol(text, &end, 10);
-  if (errno != 0 || *end != '\0' || seconds < 1 || seconds > 86400)
+  // Digits only: strtol would also take a leading space or sign.
+  if (!std::isdigit(static_cast<unsigned char>(text[0])) || errno != 0 || *end != '\0' || seconds < 1
+      || seconds > 86400)
     throw InputError(fmt::format("{}='{}': the write's patience must be a whole number of seconds from 1 to 86400",
                                  write_patience_variable, text));
   return std::chrono::seconds(seconds);

@@ -15,8 +15,9 @@ namespace rollcheck::fem
 /// The environment variable of the write's patience, in whole seconds.
 inline constexpr const char* write_patience_variable = "ROLLCHECK_WRITE_PATIENCE";
 
-/// 30 s, or what ROLLCHECK_WRITE_PATIENCE names (1 to 86400); InputError
-/// naming the variable if it names anything else.
+/// 30 s if ROLLCHECK_WRITE_PATIENCE is unset or empty, else the whole
+/// seconds it names (digits, 1 to 86400); InputError naming the variable if
+/// it names anything else.
 std::chrono::seconds write_patience();
 
 /// NAME.xdmf, a file that can be written there (core/atomic_file.h

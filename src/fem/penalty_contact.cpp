@@ -42,9 +42,7 @@ constexpr int max_line_search_halvings = 12;
 /// failed.
 double increment_tolerance(KSP ksp)
 {
-  KSPType type = nullptr;
-  KSPGetType(ksp, &type);
-  if (type != nullptr && std::string(type) == KSPPREONLY)
+  if (is_direct(ksp))
     return newton_rtol;
   PetscReal rtol = 0, abstol = 0, dtol = 0;
   PetscInt max_its = 0;
@@ -293,10 +291,13 @@ NewtonReport PenaltyContact::solve()
   double largest_residual = 0;
   bool full_step = false;
   // reuse_preconditioner_within_solve: the first solve's preconditioner and
-  // Krylov iterations, while the later solves stay within twice those.
-  KSPType ksp_type = nullptr;
-  KSPGetType(_ksp, &ksp_type);
-  bool reuse = _reuse_within_solve && ksp_type != nullptr && std::string(ksp_type) != KSPPREONLY;
+  // Krylov iterations, while the later solves stay within twice those. A
+  // direct solve's factors must follow the matrix, and a
+  // -hertz_ksp_reuse_preconditioner given is the user's to keep.
+  PetscBool reuse_given = PETSC_FALSE;
+  PetscOptionsHasName(nullptr, solver_prefix, "-ksp_reuse_preconditioner", &reuse_given);
+  const bool managed = _reuse_within_solve && !reuse_given && !is_direct(_ksp);
+  bool reuse = managed;
   PetscInt fresh_its = 0;
   for (int it = 1; it <= max_newton_iterations && failure.empty(); ++it)
   {
@@ -318,7 +319,7 @@ NewtonReport PenaltyContact::solve()
     start = Clock::now();
     KSPSetOperators(_ksp, _A, _A);
     const bool reused = reuse && it > 1;
-    if (_reuse_within_solve)
+    if (managed)
       KSPSetReusePreconditioner(_ksp, reused ? PETSC_TRUE : PETSC_FALSE);
     VecZeroEntries(du_petsc);
     solve_linear(_ksp, b_petsc, du_petsc);
@@ -330,7 +331,8 @@ NewtonReport PenaltyContact::solve()
     if (reused && (reason < 0 || its > 2 * fresh_its))
     {
       // The kept preconditioner no longer fits: a fresh one from here on
-      // (and for this step, if the kept one gave up).
+      // (and for this step, if the kept one gave up: PCApply sets it up
+      // again, the operator having changed since).
       reuse = false;
       KSPSetReusePreconditioner(_ksp, PETSC_FALSE);
       if (reason < 0)
@@ -401,6 +403,8 @@ NewtonReport PenaltyContact::solve()
       failure = fmt::format("Newton did not converge in {} iterations (|du|/|u| = {:.3e})", it,
                             report.final_relative_increment);
   }
+  if (managed)
+    KSPSetReusePreconditioner(_ksp, PETSC_FALSE); // the next solve's first iteration sets its own up
   VecDestroy(&b_petsc);
   VecDestroy(&du_petsc);
   spdlog::debug("Newton: {} iterations, {} Krylov, assembly and line search {:.2f} s, linear solves {:.2f} s",

@@ -126,12 +126,14 @@ public:
   /// factorisation costs LU.
   void prefer_direct_solver(std::int64_t max_dofs);
   /// Within each solve() the preconditioner of its first Newton iteration
-  /// serves the later ones (an iterative solver only), until a solve takes
-  /// more than twice that first solve's Krylov iterations: the set of
-  /// penetrating points, and so the Jacobian, changes little within one
-  /// approach on the hemisphere (3D P2: 224 iterations against 223, 15 %
-  /// less time), but enough on a steel block's node pairs to take BoomerAMG
-  /// 4.6 times the iterations (docs/methods/hertz-fem.md).
+  /// serves the later ones (an iterative solver only, and unless
+  /// -hertz_ksp_reuse_preconditioner is given), until a solve takes more
+  /// than twice that first solve's Krylov iterations or gives up (that one
+  /// is solved again with a fresh preconditioner): the set of penetrating
+  /// points, and so the Jacobian, changes little within one approach on the
+  /// hemisphere (3D P2: 224 iterations against 223, 13 % less time), but
+  /// enough on a steel block's node pairs to take BoomerAMG 4.6 times the
+  /// iterations (docs/methods/hertz-fem.md).
   void reuse_preconditioner_within_solve(bool reuse) { _reuse_within_solve = reuse; }
   /// This process's pairs, as set.
   const std::vector<NodePair>& node_pairs() const { return _pairs; }

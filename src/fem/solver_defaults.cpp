@@ -51,6 +51,29 @@ void set_default_solver(KSP ksp, Model model)
   }
 }
 
+/// KSPSetFromOptions, with PETSc's rejection kept as the message it returns
+/// (empty if none). PETSc's default handler would print a rejection on rank
+/// 0 and exit(0) every other rank without MPI_Finalize, so mpirun reported
+/// an improper exit instead of the exit code 2: the caller throws on every
+/// rank.
+std::string set_from_options(KSP ksp)
+{
+  std::string rejection;
+  PetscPushErrorHandler(keep_first_message, &rejection);
+  const PetscErrorCode set = KSPSetFromOptions(ksp);
+  PetscPopErrorHandler();
+  if (set != 0 && rejection.empty())
+    rejection = fmt::format("PETSc error {}", static_cast<int>(set));
+  return set != 0 ? rejection : std::string();
+}
+
+/// set_from_options for a solver the scene chose after the set-up: InputError if PETSc rejects an option.
+void set_from_options_or_throw(KSP ksp)
+{
+  if (const std::string rejection = set_from_options(ksp); !rejection.empty())
+    throw InputError(fmt::format("PETSc rejected the solver options (prefix {}): {}", solver_prefix, rejection));
+}
+
 /// Option names ("-hertz_ksp_type") in a PETSc options string.
 std::vector<std::string> option_names(const std::string& options)
 {
@@ -136,21 +159,20 @@ KSP create_linear_solver(MPI_Comm comm, Model model, const std::string& petsc_op
   KSPCreate(comm, &ksp);
   KSPSetOptionsPrefix(ksp, solver_prefix);
   set_default_solver(ksp, model);
-  // PETSc's default handler would print a rejection on rank 0 and exit(0)
-  // every other rank without MPI_Finalize, so mpirun reported an improper
-  // exit instead of the exit code 2: the message is kept here and every rank
-  // throws.
-  std::string rejection;
-  PetscPushErrorHandler(keep_first_message, &rejection);
-  const PetscErrorCode set = KSPSetFromOptions(ksp);
-  PetscPopErrorHandler();
-  if (set != 0)
+  if (const std::string rejection = set_from_options(ksp); !rejection.empty())
   {
     KSPDestroy(&ksp);
     throw InputError(fmt::format("PETSc rejected the solver options (prefix {}){}: {}", solver_prefix,
                                  petsc_options.empty() ? "" : fmt::format(" '{}'", petsc_options), rejection));
   }
   return ksp;
+}
+
+bool is_direct(KSP ksp)
+{
+  PetscBool direct = PETSC_FALSE;
+  PetscObjectTypeCompareAny(reinterpret_cast<PetscObject>(ksp), &direct, KSPPREONLY, KSPNONE, "");
+  return direct == PETSC_TRUE;
 }
 
 void solve_linear(KSP ksp, Vec b, Vec x)
@@ -176,7 +198,7 @@ void use_direct_solver_default(KSP ksp)
   KSPSetType(ksp, KSPPREONLY);
   PCSetType(pc, PCLU);
   PCFactorSetMatSolverType(pc, MATSOLVERMUMPS);
-  KSPSetFromOptions(ksp);
+  set_from_options_or_throw(ksp);
 }
 
 std::vector<std::string> use_pair_solver_defaults(KSP ksp)
@@ -215,7 +237,7 @@ std::vector<std::string> use_pair_solver_defaults(KSP ksp)
   KSPGetPC(ksp, &pc);
   PCSetType(pc, PCHYPRE);
   PCHYPRESetType(pc, "boomeramg");
-  KSPSetFromOptions(ksp);
+  set_from_options_or_throw(ksp);
   return inserted;
 }
 } // namespace rollcheck::fem

@@ -44,6 +44,11 @@ MatNullSpace rigid_body_near_nullspace(const dolfinx::fem::FunctionSpace& V, Mod
 /// `petsc_options` only names them in that message. The caller destroys it.
 KSP create_linear_solver(MPI_Comm comm, Model model, const std::string& petsc_options);
 
+/// Whether the KSP applies its preconditioner once (KSPPREONLY or its alias
+/// KSPNONE): a direct solve, exact to round-off, whose preconditioner must
+/// follow the matrix.
+bool is_direct(KSP ksp);
+
 /// KSPSolve with PETSc's error kept as create_linear_solver keeps it: a solver
 /// the options chose that cannot run here (PETSc's own LU on several ranks:
 /// "MatSolverType petsc does not support matrix type mpiaij") raises
@@ -54,8 +59,8 @@ void solve_linear(KSP ksp, Vec b, Vec x);
 
 /// MUMPS LU (KSPPREONLY + PCLU) instead of the 3D default, then the options
 /// of the database again, so -hertz_pc_factor_* and -hertz_mat_mumps_*
-/// options apply; nothing changes if a -hertz_ksp_type or -hertz_pc_type is
-/// given (the user's solver wins).
+/// options apply (InputError if PETSc rejects one); nothing changes if a
+/// -hertz_ksp_type or -hertz_pc_type is given (the user's solver wins).
 void use_direct_solver_default(KSP ksp);
 
 /// 3D with node pairs: GMRES + hypre BoomerAMG unless a -hertz_pc_type is

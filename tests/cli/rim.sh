@@ -2,7 +2,7 @@
 # rollcheck rim and the rim case: a sharp obtuse rim is reported singular
 # with its exponent and no end peak; a rounded one with the end/interior
 # ratio; the fields are written whole for ParaView; bad input exits 2 naming
-# the setting and writes nothing.
+# the setting and writes nothing, a PETSc option the solver rejects too.
 set -u
 source "$(dirname "$0")/lib.sh"
 bin=$1; here=$2; tmp=$3
@@ -30,6 +30,11 @@ check '/usr/bin/python3 -c "import meshio, sys; m = meshio.read(sys.argv[1]); as
 check_json "steel block: the square end singular with the elastic wedge's exponent, b of E* halved" \
   '.counter_face == "steel" and .singular == true and .wedge_exponent < -0.225 and .wedge_exponent > -0.227
    and .half_width_m > 3.40e-5 and .half_width_m < 3.41e-5 and .end_to_interior == null' "$tmp/steel.json"
+# The end's direct solver reads the factorisation's options: a value PETSc
+# rejects is bad input (exit 2, named), as for any other solver.
+"$bin" -q rim --levels 1 --json "$tmp/bad.json" -- -hertz_pc_factor_shift_type bogus > "$tmp/bad.log" 2>&1; rc=$?
+check '[[ $rc -eq 2 ]] && grep -q "PETSc rejected" "$tmp/bad.log" && [[ ! -e $tmp/bad.json ]]' \
+  "a bad factorisation option: $(tail -n 3 "$tmp/bad.log")"
 refuses rim "--interior-angle 180:interior_angle_deg" "--interior-angle 50:interior_angle_deg" \
   "--sheet-radius -1:sheet_radius_m" "--load-per-length nan:load_per_length_n_per_m" "--levels 0:levels" \
   "--xdmf $tmp/f.vtu:--xdmf" "--edge-radius 1e-3:edge_radius_m"

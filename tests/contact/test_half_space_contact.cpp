@@ -48,9 +48,9 @@ TEST(HalfSpaceContact, CellDeflectionIsBoussinesqFarAwayAndLoveAtTheCentre)
 TEST(HalfSpaceContact, FftDeflectionIsTheDirectSumOfEveryCellsDeflection)
 {
   // The padded real FFT convolution against the sum over cells, term by
-  // term, on grids whose padded sizes are odd, even and a multiple of 4 on
-  // either side (13 x 7 pads to 27 x 16, 8 x 37 to 16 x 80), under an uneven
-  // pressure that is zero on some cells.
+  // term, on grids padded to an odd and an even size along x (y's is a
+  // multiple of 4: 13 x 7 pads to 27 x 16, 8 x 37 to 16 x 80), under an
+  // uneven pressure that is zero on some cells.
   for (const auto& [nx, ny] : {std::pair<std::size_t, std::size_t>{13, 7}, {8, 37}, {1, 1}})
   {
     const contact::HalfSpaceGrid grid{nx, ny, 2e-6, 3e-6, -1e-5, 4e-6};

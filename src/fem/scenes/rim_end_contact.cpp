@@ -4,9 +4,9 @@
 #include "contact/hertz.h"
 #include "contact/wedge_exponent.h"
 #include "core/error.h"
-#include "fem/field_output.h"
 #include "core/refinement_series.h"
 #include "fem/all_gather.h"
+#include "fem/field_output.h"
 #include "fem/load_control.h"
 #include "fem/nodal_fields.h"
 #include "fem/penalty_contact.h"
@@ -413,9 +413,9 @@ RimEndLevel solve_level(MPI_Comm comm, const RimEndStudy& study, double edge_ele
     pair_with_block(problem, study, sizes);
   else
   {
-    // gmsh's tetrahedra are graded from the fillet to 10 b: GAMG took 18-25
-    // GMRES iterations a solve, and MUMPS LU was 1.3-1.5x faster from 19k to
-    // 207k unknowns (scripts/bench/bench_rim_solver.sh). On the extruded
+    // gmsh's tetrahedra are graded from the fillet to 10 b: GAMG took 18-27
+    // GMRES iterations a solve, and MUMPS LU was 1.38-1.44x faster from 19k
+    // to 193k unknowns (scripts/bench/bench_rim_solver.sh). On the extruded
     // section LU was slower and filled more (docs/methods/rims.md); with the
     // block's pairs BoomerAMG stays (fem/solver_defaults.h).
     const RimEndMesh used = rim_end_mesh_used(study);

@@ -177,8 +177,8 @@ struct RimEndSettings
   /// On gmsh's tetrahedra and the rigid plane, a level of at most this many
   /// unknowns is solved by MUMPS LU, a larger one by GMRES + GAMG
   /// (fem/solver_defaults.h; petsc_options naming a KSP or PC type win).
-  /// LU's memory grows faster than the unknowns (one process: 0.6 GB at 90k,
-  /// 1.3 GB at 195k; scripts/bench/bench_rim_solver.sh), GAMG's linearly.
+  /// LU's memory grows faster than the unknowns (one process: 0.65 GB at
+  /// 93k, 1.26 GB at 193k; scripts/bench/bench_rim_solver.sh), GAMG's linearly.
   std::int64_t direct_solver_max_dofs = 300000;
   /// The last level's fields (fem/write_fields.h), if set: a .xdmf in a writable
   /// folder, written once the study has finished (a level that fails leaves none).
