@@ -58,14 +58,12 @@ template <typename Compute>
 auto kept_for_poisson_ratio(double nu, Compute compute)
 {
   using Maxima = decltype(compute(nu));
-  thread_local bool kept = false;
-  thread_local double kept_nu = 0;
+  thread_local double kept_nu = std::nan(""); // equal to no ratio: the first call computes
   thread_local Maxima maxima{};
-  if (!kept || nu != kept_nu)
+  if (nu != kept_nu)
   {
     maxima = compute(nu);
     kept_nu = nu;
-    kept = true;
   }
   return maxima;
 }

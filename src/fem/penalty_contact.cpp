@@ -50,6 +50,69 @@ double increment_tolerance(KSP ksp)
   return std::max(newton_rtol, 10 * rtol);
 }
 
+/// reuse_preconditioner_within_solve's state over one solve(): the first
+/// Newton step's preconditioner and Krylov iterations, kept while the later
+/// steps stay within twice those.
+struct KeptPreconditioner
+{
+  bool managed = false; ///< this solve sets the KSP's reuse flag
+  bool reuse = false;   ///< the later steps still keep the first's preconditioner
+  PetscInt first_iterations = 0;
+};
+
+/// A direct solve's factors must follow the matrix, and a
+/// -hertz_ksp_reuse_preconditioner given is the user's to keep.
+KeptPreconditioner keep_preconditioner(KSP ksp, bool asked)
+{
+  PetscBool given = PETSC_FALSE;
+  PetscOptionsHasName(nullptr, solver_prefix, "-ksp_reuse_preconditioner", &given);
+  const bool managed = asked && !given && !is_direct(ksp);
+  return {managed, managed, 0};
+}
+
+struct LinearStep
+{
+  KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+  PetscInt iterations = 0;     ///< of the solve whose increment is taken
+  PetscInt all_iterations = 0; ///< with those of a kept preconditioner's solve that gave up
+  int setups = 0;              ///< preconditioners built afresh
+};
+
+/// One Newton step's linear solve, du = J^-1 b, keeping the first step's
+/// preconditioner as `kept` says.
+LinearStep solve_step(KSP ksp, Vec b, Vec du, bool first, KeptPreconditioner& kept)
+{
+  const bool reused = kept.reuse && !first;
+  if (kept.managed)
+    KSPSetReusePreconditioner(ksp, reused ? PETSC_TRUE : PETSC_FALSE);
+  LinearStep step;
+  const auto solve = [&] {
+    VecZeroEntries(du);
+    solve_linear(ksp, b, du);
+    KSPGetConvergedReason(ksp, &step.reason);
+    KSPGetIterationNumber(ksp, &step.iterations);
+    step.all_iterations += step.iterations;
+  };
+  solve();
+  step.setups = reused ? 0 : 1;
+  if (reused && (step.reason < 0 || step.iterations > 2 * kept.first_iterations))
+  {
+    // The kept preconditioner no longer fits: a fresh one from here on (and
+    // for this step, if the kept one gave up: PCApply sets it up again, the
+    // operator having changed since).
+    kept.reuse = false;
+    KSPSetReusePreconditioner(ksp, PETSC_FALSE);
+    if (step.reason < 0)
+    {
+      solve();
+      step.setups = 1;
+    }
+  }
+  if (first)
+    kept.first_iterations = step.iterations;
+  return step;
+}
+
 /// f's values at the points of a scalar space (DG0: cell midpoints, P1: vertices).
 void interpolate_scalar(dolfinx::fem::Function<double>& f, const std::function<double(const double* x)>& value)
 {
@@ -290,15 +353,7 @@ NewtonReport PenaltyContact::solve()
   // scale, the others stayed above 7.9e-6 (docs/notes/rims-log.md#speed).
   double largest_residual = 0;
   bool full_step = false;
-  // reuse_preconditioner_within_solve: the first solve's preconditioner and
-  // Krylov iterations, while the later solves stay within twice those. A
-  // direct solve's factors must follow the matrix, and a
-  // -hertz_ksp_reuse_preconditioner given is the user's to keep.
-  PetscBool reuse_given = PETSC_FALSE;
-  PetscOptionsHasName(nullptr, solver_prefix, "-ksp_reuse_preconditioner", &reuse_given);
-  const bool managed = _reuse_within_solve && !reuse_given && !is_direct(_ksp);
-  bool reuse = managed;
-  PetscInt fresh_its = 0;
+  KeptPreconditioner kept = keep_preconditioner(_ksp, _reuse_within_solve);
   for (int it = 1; it <= max_newton_iterations && failure.empty(); ++it)
   {
     auto start = Clock::now();
@@ -318,38 +373,12 @@ NewtonReport PenaltyContact::solve()
 
     start = Clock::now();
     KSPSetOperators(_ksp, _A, _A);
-    const bool reused = reuse && it > 1;
-    if (managed)
-      KSPSetReusePreconditioner(_ksp, reused ? PETSC_TRUE : PETSC_FALSE);
-    VecZeroEntries(du_petsc);
-    solve_linear(_ksp, b_petsc, du_petsc);
-    KSPConvergedReason reason;
-    KSPGetConvergedReason(_ksp, &reason);
-    PetscInt its = 0;
-    KSPGetIterationNumber(_ksp, &its);
-    bool rebuilt = !reused;
-    if (reused && (reason < 0 || its > 2 * fresh_its))
-    {
-      // The kept preconditioner no longer fits: a fresh one from here on
-      // (and for this step, if the kept one gave up: PCApply sets it up
-      // again, the operator having changed since).
-      reuse = false;
-      KSPSetReusePreconditioner(_ksp, PETSC_FALSE);
-      if (reason < 0)
-      {
-        report.krylov_iterations += its;
-        rebuilt = true;
-        VecZeroEntries(du_petsc);
-        solve_linear(_ksp, b_petsc, du_petsc);
-        KSPGetConvergedReason(_ksp, &reason);
-        KSPGetIterationNumber(_ksp, &its);
-      }
-    }
-    if (it == 1)
-      fresh_its = its;
-    report.preconditioner_setups += rebuilt ? 1 : 0;
+    const LinearStep linear = solve_step(_ksp, b_petsc, du_petsc, it == 1, kept);
+    const KSPConvergedReason reason = linear.reason;
+    const PetscInt its = linear.iterations;
+    report.preconditioner_setups += linear.setups;
     report.solve_s += seconds_since(start);
-    report.krylov_iterations += its;
+    report.krylov_iterations += linear.all_iterations;
     report.newton_iterations = it;
     if (reason < 0)
     {
@@ -403,7 +432,7 @@ NewtonReport PenaltyContact::solve()
       failure = fmt::format("Newton did not converge in {} iterations (|du|/|u| = {:.3e})", it,
                             report.final_relative_increment);
   }
-  if (managed)
+  if (kept.managed)
     KSPSetReusePreconditioner(_ksp, PETSC_FALSE); // the next solve's first iteration sets its own up
   VecDestroy(&b_petsc);
   VecDestroy(&du_petsc);
