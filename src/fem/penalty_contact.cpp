@@ -78,6 +78,36 @@ struct LinearStep
   int setups = 0;              ///< preconditioners built afresh
 };
 
+/// Whether the Krylov solve's stop follows the problem's load scale (see
+/// PenaltyContact::solve): an iterative solve whose -hertz_ksp_atol is not given.
+bool scales_absolute_tolerance(KSP ksp)
+{
+  PetscBool given = PETSC_FALSE;
+  PetscOptionsHasName(nullptr, solver_prefix, "-ksp_atol", &given);
+  return !given && !is_direct(ksp);
+}
+
+/// The KSP stops once its residual is below rtol times `reference`, or
+/// rtol times its own initial residual, whichever is larger.
+void set_absolute_tolerance(KSP ksp, double reference)
+{
+  PetscReal rtol = 0, abstol = 0, dtol = 0;
+  PetscInt max_its = 0;
+  KSPGetTolerances(ksp, &rtol, &abstol, &dtol, &max_its);
+  KSPSetTolerances(ksp, rtol, std::max(rtol * reference, 1e-50), dtol, max_its);
+}
+
+/// The last Krylov solve's initial residual, in the norm its convergence
+/// test uses (preconditioned for left-preconditioned GMRES), from its
+/// history; 0 if it logged none.
+double initial_residual_norm(KSP ksp)
+{
+  const PetscReal* history = nullptr;
+  PetscInt length = 0;
+  KSPGetResidualHistory(ksp, &history, &length);
+  return length > 0 ? history[0] : 0.0;
+}
+
 /// One Newton step's linear solve, du = J^-1 b, keeping the first step's
 /// preconditioner as `kept` says.
 LinearStep solve_step(KSP ksp, Vec b, Vec du, bool first, KeptPreconditioner& kept)
@@ -199,6 +229,7 @@ PenaltyContact::PenaltyContact(const SceneMesh& scene, Model model, int degree, 
   MatSetNearNullSpace(_A, _near_nullspace);
   _model = model;
   _ksp = create_linear_solver(mesh->comm(), model, petsc_options);
+  KSPSetResidualHistory(_ksp, nullptr, PETSC_DECIDE, PETSC_TRUE); // each solve's initial residual, for solve()
 }
 
 PenaltyContact::~PenaltyContact()
@@ -354,6 +385,7 @@ NewtonReport PenaltyContact::solve()
   double largest_residual = 0;
   bool full_step = false;
   KeptPreconditioner kept = keep_preconditioner(_ksp, _reuse_within_solve);
+  const bool scaled_tolerance = scales_absolute_tolerance(_ksp);
   for (int it = 1; it <= max_newton_iterations && failure.empty(); ++it)
   {
     auto start = Clock::now();
@@ -373,7 +405,11 @@ NewtonReport PenaltyContact::solve()
 
     start = Clock::now();
     KSPSetOperators(_ksp, _A, _A);
+    if (scaled_tolerance)
+      set_absolute_tolerance(_ksp, _largest_initial_residual);
     const LinearStep linear = solve_step(_ksp, b_petsc, du_petsc, it == 1, kept);
+    if (scaled_tolerance)
+      _largest_initial_residual = std::max(_largest_initial_residual, initial_residual_norm(_ksp));
     const KSPConvergedReason reason = linear.reason;
     const PetscInt its = linear.iterations;
     report.preconditioner_setups += linear.setups;
@@ -558,6 +594,7 @@ void PenaltyContact::set_node_pairs(std::vector<NodePair> pairs)
   MatDestroy(&_A);
   _A = dolfinx::la::petsc::create_matrix(comm, pattern, "aij");
   MatSetNearNullSpace(_A, _near_nullspace);
+  _largest_initial_residual = 0; // a new operator and preconditioner: their own norms
   if (_model == Model::solid)
     for (std::string& name : use_pair_solver_defaults(_ksp))
       _inserted_options.push_back(std::move(name)); // cleared at destruction, as the setup's options

@@ -19,7 +19,12 @@
 // MUMPS LU; 3D GMRES (rtol 1e-10) with GAMG on an aij matrix with the
 // rigid-body near-nullspace, or, once node pairs join two bodies, with hypre
 // BoomerAMG (set_node_pairs); MUMPS LU where the scene prefers it up to a
-// size (prefer_direct_solver).
+// size (prefer_direct_solver). An iterative solve stops at rtol times the
+// larger of its own initial residual and the largest initial residual of the
+// problem's solves so far (a given -hertz_ksp_atol replaces this): a Newton
+// correction, or a load step's small change of approach, is resolved to the
+// load's scale rather than to its own, which is what the Newton increment's
+// 1e-10 asks of it.
 #include "fem/contact_forms.h"
 #include "fem/lumped_projection.h"
 #include "fem/mesh/scene_mesh.h"
@@ -215,6 +220,9 @@ private:
   int _z_component;
   Model _model;
   bool _reuse_within_solve = false;
+  /// The largest initial residual of this problem's Krylov solves so far
+  /// (their convergence test's norm): the load's scale that solve() stops them at.
+  double _largest_initial_residual = 0;
   Mat _A = nullptr;
   KSP _ksp = nullptr;
   MatNullSpace _near_nullspace = nullptr;

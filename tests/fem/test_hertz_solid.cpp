@@ -78,6 +78,26 @@ TEST(HertzSolid, KeepingALoadStepsPreconditionerChangesNeitherTheStateNorTheIter
   EXPECT_LT(kept.preconditioner_setups, fresh.preconditioner_setups);
 }
 
+// Each Krylov solve stops at the load's scale (fem/penalty_contact.h): a
+// Newton correction or a load step's small change of approach needs fewer
+// iterations than when each solve is resolved to its own right-hand side (a
+// given -hertz_ksp_atol, which replaces the scale), and the state is the same
+// to the Newton tolerance.
+TEST(HertzSolid, KrylovSolvesStopAtTheLoadsScaleNotTheirOwn)
+{
+  fem::HertzSettings s;
+  s.model = fem::Model::solid;
+  s.degree = 1;
+  s.refine = 0;
+  const fem::HertzResult load_scale = fem::solve_hertz(MPI_COMM_WORLD, s);
+  s.petsc_options = "-hertz_ksp_atol 1e-50";
+  const fem::HertzResult own_scale = fem::solve_hertz(MPI_COMM_WORLD, s);
+  EXPECT_NEAR(load_scale.max_nodal_pressure_pa / own_scale.max_nodal_pressure_pa, 1.0, 1e-8);
+  EXPECT_NEAR(load_scale.contact_size_m / own_scale.contact_size_m, 1.0, 1e-8);
+  EXPECT_NEAR(load_scale.approach_m / own_scale.approach_m, 1.0, 1e-8);
+  EXPECT_LT(load_scale.krylov_iterations, own_scale.krylov_iterations * 3 / 4);
+}
+
 namespace
 {
 /// P2 at refine 0 with the pole and the contact's edge refined two levels.
