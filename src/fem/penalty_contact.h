@@ -136,9 +136,8 @@ public:
   /// than twice that first solve's Krylov iterations or gives up (that one
   /// is solved again with a fresh preconditioner): the set of penetrating
   /// points, and so the Jacobian, changes little within one approach on the
-  /// hemisphere (3D P2: 224 iterations against 223, 13 % less time), but
-  /// enough on a steel block's node pairs to take BoomerAMG 4.6 times the
-  /// iterations (docs/methods/hertz-fem.md).
+  /// hemisphere, but enough on a steel block's node pairs to multiply
+  /// BoomerAMG's iterations (measured in docs/methods/hertz-fem.md).
   void reuse_preconditioner_within_solve(bool reuse) { _reuse_within_solve = reuse; }
   /// This process's pairs, as set.
   const std::vector<NodePair>& node_pairs() const { return _pairs; }
