@@ -8,11 +8,14 @@
 #include "cli/scenes.h"
 #include "contact/continuum_loop_scores.h"
 #include "core/error.h"
+#include "core/process_rank.h"
+#include "core/progress_beat.h"
 #include "fem/scenes/rim_end_contact.h"
 #include "study/rims/rim_end_json.h"
 #include "study/rims/oblique_end.h"
 #include "study/rims/rim_loop.h"
 #include "study/rims/rim_report.h"
+#include <fmt/format.h>
 #include <functional>
 #include <mpi.h>
 #include <numbers>
@@ -202,6 +205,16 @@ const SceneSchema<RimCommand>& rim_schema()
   });
 }
 
+/// One end model's (or the oblique study's two models') progress: each
+/// level as it starts, repeated while it runs (meshing a deep block takes
+/// minutes and logs nothing).
+void beat_levels(fem::RimEndSettings& end, ProgressBeat& beat)
+{
+  end.on_level = [&beat](int level, double edge_element_m) {
+    beat.step(fmt::format("level {} (h_e = {:.3g} m)", level + 1, edge_element_m));
+  };
+}
+
 nlohmann::json run_rim(const io::Parameters& p)
 {
   RimCommand command = rim_schema().bind(p);
@@ -209,15 +222,19 @@ nlohmann::json run_rim(const io::Parameters& p)
     throw InputError("rim: --oblique-loop-load needs --body and --oblique-study");
   if (command.loop.body.body.empty())
   {
+    ProgressBeat beat("rim", process_rank() == 0);
+    beat_levels(command.end, beat);
     const fem::RimEndStudy study = fem::solve_rim_end(MPI_COMM_WORLD, command.end);
     print_summary(study::rims::report(study));
     return study::rims::to_json(study);
   }
   if (command.oblique_study)
   {
+    ProgressBeat beat("rim oblique end", process_rank() == 0);
     study::rims::ObliqueEndSettings settings;
     settings.body = command.loop.body;
     settings.end = command.end;
+    beat_levels(settings.end, beat);
     settings.depth_over_edge_radius = command.depth_over_edge_radius;
     if (command.oblique_loop_load)
       settings.loop_load_n = command.loop.normal_load_n;

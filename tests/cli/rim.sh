@@ -15,8 +15,10 @@ check '/usr/bin/python3 "$here/postprocess/plot_rim.py" "$tmp/sharp.json" "$tmp/
 check_json "sharp obtuse rim singular, exponent of the wedge, no peak" \
   '.singular == true and .end_to_interior == null and .wedge_exponent < -0.38 and .wedge_exponent > -0.39
    and .measured_exponent < 0 and (.levels | length) == 2 and .counter_face == "rigid"' "$tmp/sharp.json"
-"$bin" -q rim --interior-angle 120 --edge-radius 1.2e-5 --levels 1 --edge-element 0.0625 --xdmf "$tmp/rounded.xdmf" \
+"$bin" rim --interior-angle 120 --edge-radius 1.2e-5 --levels 1 --edge-element 0.0625 --xdmf "$tmp/rounded.xdmf" \
   --json "$tmp/rounded.json" > "$tmp/rounded.log" 2>&1 || { echo "FAIL: rounded rim"; cat "$tmp/rounded.log"; exit 1; }
+check 'grep -q "^\[info\] rim: level 1 (h_e = [0-9.e-]* m)" "$tmp/rounded.log"' \
+  "one end's level is logged as it starts (its progress beat)"
 check_json "rounded rim under its boundary layer: not singular, not resolved, so no ratio and no convergence" \
   '.singular == false and .resolved == false and .end_to_interior == null and .end_change == null
    and .converged == false and .boundary_layer_m > 1.8e-8 and .boundary_layer_m < 1.9e-8' "$tmp/rounded.json"
