@@ -66,12 +66,27 @@ public:
       return Eigen::Vector2d(zone[0] / zone_load - 1, (zone[1] / zone[0] - zone_arm) / (zone_end() - zone_start()));
     };
     Eigen::Vector2d residual = mismatch(unknowns_);
+    // A step that lifts the matching zone off the plane has no moment arm
+    // (a NaN mismatch) and is quartered: on a sheet much flatter than the
+    // fillet (R >> r_e) the tilt's unit b^2 / (r_e after) is hundreds of
+    // times the tilt the window takes.
+    const auto quartered_until_finite = [&](Eigen::Vector2d step, Eigen::Vector2d& moved) {
+      for (int quartering = 0; !(moved = mismatch(unknowns_ + step)).allFinite(); ++quartering)
+      {
+        if (quartering == 12)
+          throw ComputationError("flat rim: every step of the window's force and tilt lifts its matching zone off");
+        step /= 4;
+      }
+      return step;
+    };
+    Eigen::Vector2d moved;
     if (!has_jacobian_)
       for (int k = 0; k < 2; ++k)
       {
         Eigen::Vector2d step = Eigen::Vector2d::Zero();
         step[k] = k == 0 ? 0.02 : 0.1;
-        jacobian_.col(k) = (mismatch(unknowns_ + step) - residual) / step[k];
+        step = quartered_until_finite(step, moved);
+        jacobian_.col(k) = (moved - residual) / step[k];
       }
     has_jacobian_ = true;
     for (int k = 0; residual.cwiseAbs().maxCoeff() > 1e-4; ++k)
@@ -80,9 +95,9 @@ public:
         throw ComputationError(fmt::format("flat rim: the window did not match the ruling beyond it (load off "
                                            "by {:.3g}, moment arm by {:.3g} of the zone)",
                                            residual[0], residual[1]));
-      const Eigen::Vector2d step = -jacobian_.colPivHouseholderQr().solve(residual);
+      const Eigen::Vector2d step = quartered_until_finite(-jacobian_.colPivHouseholderQr().solve(residual), moved);
       unknowns_ += step;
-      const Eigen::Vector2d next = mismatch(unknowns_);
+      const Eigen::Vector2d next = moved;
       jacobian_ += (next - residual - jacobian_ * step) * step.transpose() / step.squaredNorm();
       residual = next;
     }

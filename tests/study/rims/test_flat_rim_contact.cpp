@@ -75,6 +75,26 @@ TEST(FlatRimContact, StraightRimIsLineHertzAwayFromItsEnd)
   EXPECT_GT(l.contact_start_m, -4e-4 * std::tan(10 * std::numbers::pi / 180) / 2);
 }
 
+// A sheet far flatter than the fillet (R = 531 r_e, the rounded oloid's
+// first direct end at the preprint's scale): the window's first tilt step
+// (0.1 b^2 / (r_e after)) lifted the matching zone off the plane, its
+// moment arm was 0 / 0 and the solve stopped on a NaN force. Quartered
+// until the zone stays in contact, the window matches q far from the end.
+TEST(FlatRimContact, ATiltStepThatLiftsTheMatchingZoneIsQuartered)
+{
+  study::rims::FlatRimSettings s = straight_rim(150);
+  s.sheet_radius_m = 0.531;
+  s.load_n_per_m = 92.62;
+  s.edge_radius_m = 1e-3;
+  const study::rims::FlatRimContact r = study::rims::flat_rim_contact(s);
+  const study::rims::FlatRimLevel& l = r.levels.back();
+  const contact::LineHertz hertz =
+      contact::line_contact(92.62, 0.531, contact::effective_modulus(200e9, 0.3, false), 0.3);
+  EXPECT_NEAR(l.far_peak_pa / hertz.peak_pressure_pa, 1.0, 0.01);
+  EXPECT_TRUE(std::isfinite(l.peak_pressure_pa));
+  EXPECT_GT(l.peak_pressure_pa, hertz.peak_pressure_pa);
+}
+
 // Label long (tests/CMakeLists.txt, long_cases): the default job's
 // flat_rim_oloid_vertex case solves this vertex with the same checks.
 TEST(FlatRimContact, OloidVertexBalancesTheBodyAndConverges)
