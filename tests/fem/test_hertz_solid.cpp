@@ -56,21 +56,37 @@ TEST(HertzSolid, SteelHemisphereP1FitsHertzWithinOnePercent)
                                               h.max_von_mises_depth_m);
 }
 
-// Each load step's Newton iterations keep the preconditioner of its first
-// (fem/penalty_contact.h): the same state to the Krylov tolerance, and about
-// as many iterations as a fresh preconditioner every time (P1 at refine 0).
-TEST(HertzSolid, KeepingALoadStepsPreconditionerChangesNeitherTheStateNorTheIterations)
+namespace
+{
+/// The 3D hemisphere, P1 at refine 0: the solver's options compared on it.
+fem::HertzSettings coarse_p1()
 {
   fem::HertzSettings s;
   s.model = fem::Model::solid;
   s.degree = 1;
   s.refine = 0;
+  return s;
+}
+
+/// The same largest nodal pressure, contact size and approach to 1e-8.
+void expect_same_state(const fem::HertzResult& a, const fem::HertzResult& b)
+{
+  EXPECT_NEAR(a.max_nodal_pressure_pa / b.max_nodal_pressure_pa, 1.0, 1e-8);
+  EXPECT_NEAR(a.contact_size_m / b.contact_size_m, 1.0, 1e-8);
+  EXPECT_NEAR(a.approach_m / b.approach_m, 1.0, 1e-8);
+}
+} // namespace
+
+// Each load step's Newton iterations keep the preconditioner of its first
+// (fem/penalty_contact.h): the same state to the Krylov tolerance, and about
+// as many iterations as a fresh preconditioner every time (P1 at refine 0).
+TEST(HertzSolid, KeepingALoadStepsPreconditionerChangesNeitherTheStateNorTheIterations)
+{
+  fem::HertzSettings s = coarse_p1();
   const fem::HertzResult kept = fem::solve_hertz(MPI_COMM_WORLD, s);
   s.reuse_preconditioner = false;
   const fem::HertzResult fresh = fem::solve_hertz(MPI_COMM_WORLD, s);
-  EXPECT_NEAR(kept.max_nodal_pressure_pa / fresh.max_nodal_pressure_pa, 1.0, 1e-8);
-  EXPECT_NEAR(kept.contact_size_m / fresh.contact_size_m, 1.0, 1e-8);
-  EXPECT_NEAR(kept.approach_m / fresh.approach_m, 1.0, 1e-8);
+  expect_same_state(kept, fresh);
   EXPECT_LE(kept.krylov_iterations, fresh.krylov_iterations * 5 / 4);
   // One preconditioner a load step kept; one a Newton iteration fresh.
   EXPECT_EQ(kept.preconditioner_setups, kept.load_steps);
@@ -85,16 +101,11 @@ TEST(HertzSolid, KeepingALoadStepsPreconditionerChangesNeitherTheStateNorTheIter
 // to the Newton tolerance.
 TEST(HertzSolid, KrylovSolvesStopAtTheLoadsScaleNotTheirOwn)
 {
-  fem::HertzSettings s;
-  s.model = fem::Model::solid;
-  s.degree = 1;
-  s.refine = 0;
+  fem::HertzSettings s = coarse_p1();
   const fem::HertzResult load_scale = fem::solve_hertz(MPI_COMM_WORLD, s);
   s.petsc_options = "-hertz_ksp_atol 1e-50";
   const fem::HertzResult own_scale = fem::solve_hertz(MPI_COMM_WORLD, s);
-  EXPECT_NEAR(load_scale.max_nodal_pressure_pa / own_scale.max_nodal_pressure_pa, 1.0, 1e-8);
-  EXPECT_NEAR(load_scale.contact_size_m / own_scale.contact_size_m, 1.0, 1e-8);
-  EXPECT_NEAR(load_scale.approach_m / own_scale.approach_m, 1.0, 1e-8);
+  expect_same_state(load_scale, own_scale);
   EXPECT_LT(load_scale.krylov_iterations, own_scale.krylov_iterations * 3 / 4);
 }
 
