@@ -55,6 +55,12 @@ void add_fem_commands(CLI::App& app);
 /// started here unless the session already has it (rollcheck-fem).
 void start_mpi();
 
+/// MPI for a subcommand whose session put it off until the command line was
+/// checked (rollcheck-fem, not started by a launcher): a subcommand's own
+/// options once parsed and bound, so that a refused one costs no MPI start.
+/// Does nothing where MPI runs already or the command needs none.
+void start_deferred_mpi();
+
 /// PETSc's options, the arguments after `--` (rollcheck-fem).
 void insert_petsc_options(std::vector<std::string> options);
 
@@ -127,9 +133,11 @@ struct CommandResult
 
 /// A subcommand with the shared --json option whose `run` is called after
 /// parsing, its summary written to --json. Returns the subcommand, for the
-/// options of its own.
+/// options of its own. MPI, where the session put it off, starts before
+/// `run` unless `checks_input_before_mpi`: then `run` starts it
+/// (start_deferred_mpi) once its input is checked.
 CLI::App* add_command(CLI::App& app, const std::string& name, const std::string& description,
-                      std::function<CommandResult()> run);
+                      std::function<CommandResult()> run, bool checks_input_before_mpi = false);
 
 /// A scene's JSON summary from its resolved parameters.
 using SceneRun = std::function<nlohmann::json(const io::Parameters&)>;

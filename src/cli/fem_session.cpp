@@ -41,9 +41,9 @@ void warn_unused_petsc_options()
   PetscOptionsLeftRestore(nullptr, &count, &names, &values);
 }
 
-/// Whether the command line needs MPI from its start: every subcommand but
-/// the fast ones and `run` (start_mpi, once its case file is read), and
-/// anything a launcher (mpirun) started.
+/// Whether the command line needs MPI before its input is read: every
+/// subcommand but the fast ones and `run` (start_mpi, once its case file is
+/// read), and anything a launcher (mpirun) started.
 bool needs_mpi(const std::vector<std::string>& args)
 {
   const std::string subcommand = subcommand_in(args);
@@ -57,16 +57,32 @@ void init_mpi(int* argc, char*** argv)
   MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
   MPI_Comm_dup(MPI_COMM_WORLD, &outcome_comm);
 }
+
+/// The command line needs MPI, which the session has put off
+/// (start_deferred_mpi).
+bool mpi_deferred = false;
 } // namespace
 
 /// MPI is started for the scenes that need it (FEM solves, batches spread
 /// over ranks; a case file's scene once it is read, start_mpi) or when a
-/// launcher started this process; the others start without it. PETSc is
-/// started by whoever needs it and ended here.
+/// launcher started this process; the others start without it. Only under
+/// a launcher does it start here: otherwise once the subcommand's options
+/// are checked (start_deferred_mpi), as a refused option, about half of a
+/// refusal's 0.4 s, needs none. PETSc is started by whoever needs it and
+/// ended here.
 ProcessSession::ProcessSession(int& argc, char**& argv, const std::vector<std::string>& args)
 {
-  if (needs_mpi(args))
+  if (launched_by_mpi())
     init_mpi(&argc, &argv);
+  else
+    mpi_deferred = needs_mpi(args);
+}
+
+void start_deferred_mpi()
+{
+  if (mpi_deferred)
+    start_mpi();
+  mpi_deferred = false;
 }
 
 void start_mpi()
@@ -120,6 +136,7 @@ void insert_petsc_options(std::vector<std::string> options)
     return;
   if (!options.front().starts_with('-'))
     throw InputError(fmt::format("after `--` come PETSc options (-name [value] ...), got '{}'", options.front()));
+  start_deferred_mpi(); // before PETSc, which would start MPI itself otherwise
   fem::ensure_petsc();
   std::vector<char*> argv;
   for (std::string& option : options)

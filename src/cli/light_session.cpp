@@ -50,6 +50,8 @@ ProcessSession::~ProcessSession() = default;
 
 void add_fem_commands(CLI::App&) {}
 
+void start_deferred_mpi() {}
+
 void insert_petsc_options(std::vector<std::string> options)
 {
   if (!options.empty())

@@ -113,17 +113,19 @@ void check_options(const CLI::App& app, const std::vector<std::string>& args)
 }
 
 CLI::App* add_command(CLI::App& app, const std::string& name, const std::string& description,
-                      std::function<CommandResult()> run)
+                      std::function<CommandResult()> run, bool checks_input_before_mpi)
 {
   CLI::App* sub = app.add_subcommand(name, description);
   // The option writes into the string for the whole run; the runner shares it.
   auto json_path = std::make_shared<std::string>();
   add_json_option(sub, *json_path);
-  on_run(sub, [json_path, run = std::move(run)] {
+  on_run(sub, [json_path, run = std::move(run), checks_input_before_mpi] {
     set_json_on_stdout(*json_path == "-");
     // Refused before any computation, not after it.
     if (!json_path->empty() && *json_path != "-")
       check_output_file(*json_path, "option --json");
+    if (!checks_input_before_mpi)
+      start_deferred_mpi();
     const CommandResult result = run();
     if (!result.summary.is_null())
       emit_json(*json_path, result.summary);
@@ -139,11 +141,15 @@ CLI::App* add_scene_command(CLI::App& app, const std::string& name, const std::s
   // The scene's options need the subcommand, which add_command creates; they
   // exist before any runner is called.
   auto options = std::make_shared<std::unique_ptr<io::SchemaOptions>>();
-  CLI::App* sub = add_command(app, name, description, [options, &schema, run = command ? command : run] {
-    const io::Parameters params = (*options)->apply();
-    check_scene_outputs(schema, params);
-    return CommandResult{run(params)};
-  });
+  CLI::App* sub = add_command(
+      app, name, description,
+      [options, &schema, run = command ? command : run] {
+        const io::Parameters params = (*options)->apply();
+        check_scene_outputs(schema, params);
+        start_deferred_mpi();
+        return CommandResult{run(params)};
+      },
+      true);
   *options = std::make_unique<io::SchemaOptions>(sub, schema);
   return sub;
 }

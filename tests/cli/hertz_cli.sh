@@ -13,6 +13,12 @@ expect 2 "poisson.*0.5" -- "$bin" hertz --poisson 0.5 --json "$tmp/bad2.json"
 expect 2 "degree.*3" -- "$bin" hertz --degree 3 --json "$tmp/bad3.json"
 expect 2 "model" -- "$bin" hertz --model 4d --json "$tmp/bad4.json"
 expect 2 "load.*nan|force_n.*nan|finite" -- "$bin" hertz --load nan --json "$tmp/bad5.json"
+# A refused option starts no MPI (the session puts MPI off until the
+# subcommand's options are checked): with an MPI that cannot start, the
+# refusal is the same, while a solve stops in MPI's start.
+OMPI_MCA_pml=nonexistent expect 2 "option --radius: 'radius_m' must be > 0" -- "$bin" hertz --radius -1
+OMPI_MCA_pml=nonexistent "$bin" -q hertz --model axi --json "$tmp/no_mpi.json" > /dev/null 2>&1; rc=$?
+check '[[ $rc -ne 0 && ! -e "$tmp/no_mpi.json" ]]' "a solve needs MPI to start (the check above is not vacuous)"
 expect 2 "xdmf" -- "$bin" hertz --xdmf "$tmp/fields.vtk" --json "$tmp/bad6.json"
 expect 2 "unknown key 'wibble'" -- "$bin" run "$here/cases/hertz_cylinder.toml" --set wibble=1
 expect 2 "refine.*13" -- "$bin" hertz --refine 13 --json "$tmp/bad7.json"
