@@ -66,6 +66,16 @@ public:
       return Eigen::Vector2d(zone[0] / zone_load - 1, (zone[1] / zone[0] - zone_arm) / (zone_end() - zone_start()));
     };
     Eigen::Vector2d residual = mismatch(unknowns_);
+    if (!residual.allFinite())
+    {
+      // The force and tilt kept from the last balance iteration lift this
+      // load's matching zone off: start again from the window's own load, untilted.
+      unknowns_ = Eigen::Vector2d(1.0, 0.0);
+      has_jacobian_ = false;
+      residual = mismatch(unknowns_);
+      if (!residual.allFinite())
+        throw ComputationError("flat rim: the window's matching zone is off the plane under its own load, untilted");
+    }
     // A step that lifts the matching zone off the plane has no moment arm
     // (a NaN mismatch) and is quartered: on a sheet much flatter than the
     // fillet (R >> r_e) the tilt's unit b^2 / (r_e after) is hundreds of

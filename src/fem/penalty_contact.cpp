@@ -87,14 +87,17 @@ bool scales_absolute_tolerance(KSP ksp)
   return !given && !is_direct(ksp);
 }
 
-/// The KSP stops once its residual is below rtol times `reference`, or
-/// rtol times its own initial residual, whichever is larger.
+/// The KSP stops once its residual is below rtol times its own initial
+/// residual or min(rtol, newton_rtol) times `reference`, whichever is larger:
+/// the load's scale at the Newton tolerance, not at a looser rtol (with
+/// -hertz_ksp_rtol 1e-6 a load step's first correction, below 1e-6 of the
+/// load's scale, was taken as zero and load control never met its force).
 void set_absolute_tolerance(KSP ksp, double reference)
 {
   PetscReal rtol = 0, abstol = 0, dtol = 0;
   PetscInt max_its = 0;
   KSPGetTolerances(ksp, &rtol, &abstol, &dtol, &max_its);
-  KSPSetTolerances(ksp, rtol, std::max(rtol * reference, 1e-50), dtol, max_its);
+  KSPSetTolerances(ksp, rtol, std::max(std::min<double>(rtol, newton_rtol) * reference, 1e-50), dtol, max_its);
 }
 
 /// The last Krylov solve's initial residual, in the norm its convergence

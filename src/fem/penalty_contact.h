@@ -19,12 +19,12 @@
 // MUMPS LU; 3D GMRES (rtol 1e-10) with GAMG on an aij matrix with the
 // rigid-body near-nullspace, or, once node pairs join two bodies, with hypre
 // BoomerAMG (set_node_pairs); MUMPS LU where the scene prefers it up to a
-// size (prefer_direct_solver). An iterative solve stops at rtol times the
-// larger of its own initial residual and the largest initial residual of the
-// problem's solves so far (a given -hertz_ksp_atol replaces this): a Newton
-// correction, or a load step's small change of approach, is resolved to the
-// load's scale rather than to its own, which is what the Newton increment's
-// 1e-10 asks of it.
+// size (prefer_direct_solver). An iterative solve stops at the larger of
+// rtol times its own initial residual and min(rtol, 1e-10) times the largest
+// initial residual of the problem's solves so far (a given -hertz_ksp_atol
+// replaces the latter): a Newton correction, or a load step's small change of
+// approach, is resolved to the Newton increment's 1e-10 of the load's scale
+// rather than to rtol of its own, already small, right-hand side.
 #include "fem/contact_forms.h"
 #include "fem/lumped_projection.h"
 #include "fem/mesh/scene_mesh.h"
