@@ -101,8 +101,10 @@ std::string subcommand_in(const std::vector<std::string>& args)
 bool fast_command(const std::vector<std::string>& args)
 {
   static const std::set<std::string> fast = {"mesh", "oracle", "search", "report", "audit", "optimize", "robustness"};
+  // The score as an argument of its own or in an option's `--score=` form.
   const bool fem_score = std::ranges::any_of(args, [](const std::string& a) {
-    return a == "fem-sds" || a == "fem-sds-template";
+    const std::string value = a.starts_with("--") ? a.substr(std::min(a.find('='), a.size() - 1) + 1) : a;
+    return value == "fem-sds" || value == "fem-sds-template";
   });
   return fast.contains(subcommand_in(args)) && !fem_score && !launched_by_mpi();
 }

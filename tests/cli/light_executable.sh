@@ -8,7 +8,8 @@
 #   light_executable.sh ROLLCHECK SOURCE_DIR TMP_DIR
 set -u
 source "$(dirname "$0")/lib.sh"
-bin=$1
+bin=$1; tmp=$3
+rm -rf "$tmp"; mkdir -p "$tmp"
 fem=$(dirname "$bin")/rollcheck-fem
 needed() { readelf -d "$1" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p'; }
 light=$(needed "$bin"); heavy=$(needed "$fem")
@@ -16,4 +17,13 @@ for lib in libgmsh libdolfinx libpetsc; do
   check '! grep -q "^$lib" <<<"$light"' "rollcheck names $lib: $(tr '\n' ' ' <<<"$light")"
   check 'grep -q "^$lib" <<<"$heavy"' "rollcheck-fem does not name $lib (is the test reading the header?)"
 done
+# A FEM score runs in rollcheck-fem in either spelling of its option
+# (`--score=fem-sds` once stayed in rollcheck and failed with exit 1): the
+# command line, refused for its grid, was handed over if PETSc was loaded.
+for score in "--score fem-sds" "--score=fem-sds" "--score=fem-sds-template"; do
+  LD_DEBUG=libs "$bin" search $score --grid bogus > "$tmp/ld.log" 2>&1
+  check 'grep -q "libpetsc" "$tmp/ld.log"' "search $score stayed in rollcheck"
+done
+LD_DEBUG=libs "$bin" search --score=sds --grid bogus > "$tmp/ld.log" 2>&1
+check '! grep -q "libpetsc" "$tmp/ld.log"' "search --score=sds went to rollcheck-fem"
 exit $fail
