@@ -58,13 +58,27 @@ TEST(HertzSolid, SteelHemisphereP1FitsHertzWithinOnePercent)
 
 namespace
 {
-/// The 3D hemisphere, P1 at refine 0: the solver's options compared on it.
-fem::HertzSettings coarse_p1()
+/// The 3D hemisphere of elements of `degree` at refine 0.
+fem::HertzSettings solid_at_refine_0(int degree)
 {
   fem::HertzSettings s;
   s.model = fem::Model::solid;
-  s.degree = 1;
+  s.degree = degree;
   s.refine = 0;
+  return s;
+}
+
+/// P1 at refine 0: the solver's options compared on it.
+fem::HertzSettings coarse_p1() { return solid_at_refine_0(1); }
+
+/// P2 at refine 0 with the pole and the contact's edge refined two levels.
+fem::HertzSettings refined_p2()
+{
+  fem::HertzSettings s = solid_at_refine_0(2);
+  s.pole_refine = 2;
+  s.edge_refine = 2;
+  s.contact_cap = fem::ContactCapMesh::unstructured;
+  s.pressure_recovery = fem::PressureRecovery::lumped;
   return s;
 }
 
@@ -115,23 +129,6 @@ TEST(HertzSolid, KrylovSolvesStopAtTheLoadsScaleNotTheirOwn)
   EXPECT_NEAR(loose.approach_m / own_scale.approach_m, 1.0, 1e-5);
   EXPECT_NEAR(loose.max_nodal_pressure_pa / own_scale.max_nodal_pressure_pa, 1.0, 1e-4);
 }
-
-namespace
-{
-/// P2 at refine 0 with the pole and the contact's edge refined two levels.
-fem::HertzSettings refined_p2()
-{
-  fem::HertzSettings s;
-  s.model = fem::Model::solid;
-  s.degree = 2;
-  s.refine = 0;
-  s.pole_refine = 2;
-  s.edge_refine = 2;
-  s.contact_cap = fem::ContactCapMesh::unstructured;
-  s.pressure_recovery = fem::PressureRecovery::lumped;
-  return s;
-}
-} // namespace
 
 // P2 at refine 0 with the pole and the contact's edge refined two levels
 // (--degree 2 --refine 0 --pole-refine 2 --edge-refine 2): pointwise against
