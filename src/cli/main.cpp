@@ -103,7 +103,8 @@ bool fast_command(const std::vector<std::string>& args)
   static const std::set<std::string> fast = {"mesh", "oracle", "search", "report", "audit", "optimize", "robustness"};
   // The score as an argument of its own or in an option's `--score=` form.
   const bool fem_score = std::ranges::any_of(args, [](const std::string& a) {
-    const std::string value = a.starts_with("--") ? a.substr(std::min(a.find('='), a.size() - 1) + 1) : a;
+    const std::size_t equals = a.find('=');
+    const std::string value = a.starts_with("--") && equals != std::string::npos ? a.substr(equals + 1) : a;
     return value == "fem-sds" || value == "fem-sds-template";
   });
   return fast.contains(subcommand_in(args)) && !fem_score && !launched_by_mpi();

@@ -64,9 +64,7 @@ struct KeptPreconditioner
 /// -hertz_ksp_reuse_preconditioner given is the user's to keep.
 KeptPreconditioner keep_preconditioner(KSP ksp, bool asked)
 {
-  PetscBool given = PETSC_FALSE;
-  PetscOptionsHasName(nullptr, solver_prefix, "-ksp_reuse_preconditioner", &given);
-  const bool managed = asked && !given && !is_direct(ksp);
+  const bool managed = asked && !solver_option_given("-ksp_reuse_preconditioner") && !is_direct(ksp);
   return {managed, managed, 0};
 }
 
@@ -82,9 +80,7 @@ struct LinearStep
 /// PenaltyContact::solve): an iterative solve whose -hertz_ksp_atol is not given.
 bool scales_absolute_tolerance(KSP ksp)
 {
-  PetscBool given = PETSC_FALSE;
-  PetscOptionsHasName(nullptr, solver_prefix, "-ksp_atol", &given);
-  return !given && !is_direct(ksp);
+  return !solver_option_given("-ksp_atol") && !is_direct(ksp);
 }
 
 /// The KSP stops once its residual is below rtol times its own initial

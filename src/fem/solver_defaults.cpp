@@ -186,12 +186,16 @@ void solve_linear(KSP ksp, Vec b, Vec x)
                                  solver_prefix, rejection));
 }
 
+bool solver_option_given(const char* option)
+{
+  PetscBool given = PETSC_FALSE;
+  PetscOptionsHasName(nullptr, solver_prefix, option, &given);
+  return given == PETSC_TRUE;
+}
+
 void use_direct_solver_default(KSP ksp)
 {
-  PetscBool has_ksp = PETSC_FALSE, has_pc = PETSC_FALSE;
-  PetscOptionsHasName(nullptr, solver_prefix, "-ksp_type", &has_ksp);
-  PetscOptionsHasName(nullptr, solver_prefix, "-pc_type", &has_pc);
-  if (has_ksp || has_pc)
+  if (solver_option_given("-ksp_type") || solver_option_given("-pc_type"))
     return;
   PC pc;
   KSPGetPC(ksp, &pc);
@@ -213,9 +217,7 @@ std::vector<std::string> use_pair_solver_defaults(KSP ksp)
   // threshold 0.5, one level of aggressive coarsening) took 24 and halved
   // the solve time (20.6 s against 37.9 s). Defaults only: any -hertz_pc_*
   // option given still wins.
-  PetscBool has_pc = PETSC_FALSE;
-  PetscOptionsHasName(nullptr, solver_prefix, "-pc_type", &has_pc);
-  if (has_pc)
+  if (solver_option_given("-pc_type"))
     return {};
   const std::pair<const char*, const char*> options[]
       = {{"-hertz_pc_hypre_boomeramg_strong_threshold", "0.5"},

@@ -44,6 +44,11 @@ MatNullSpace rigid_body_near_nullspace(const dolfinx::fem::FunctionSpace& V, Mod
 /// `petsc_options` only names them in that message. The caller destroys it.
 KSP create_linear_solver(MPI_Comm comm, Model model, const std::string& petsc_options);
 
+/// Whether the linear-solver option named `option` after the prefix
+/// ("-ksp_atol" for -hertz_ksp_atol) is in PETSc's options database: given
+/// on the command line, in the scene's petsc_options or in PETSC_OPTIONS, it
+/// wins over the tool's defaults.
+bool solver_option_given(const char* option);
 /// Whether the KSP applies its preconditioner once (KSPPREONLY or its alias
 /// KSPNONE): a direct solve, exact to round-off, whose preconditioner must
 /// follow the matrix.
