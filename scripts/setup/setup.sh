@@ -13,7 +13,7 @@ packages=(
   libopenmpi-dev openmpi-bin
   libtomlplusplus-dev libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libopenblas0-pthread
+  libopenblas0-pthread liblapack-dev
   libnlopt-cxx-dev
   python3-matplotlib python3-h5py python3-numpy python3-jinja2 python3-meshio
   chromium

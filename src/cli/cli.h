@@ -185,6 +185,7 @@ void add_fem_sds_command(CLI::App& app);
 void add_crease_command(CLI::App& app);
 void add_rim_command(CLI::App& app);
 void add_flat_rim_command(CLI::App& app);
+void add_rounded_end_command(CLI::App& app);
 void add_optimize_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_batch_command(CLI::App& app);

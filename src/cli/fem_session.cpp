@@ -123,6 +123,7 @@ void add_fem_commands(CLI::App& app)
   add_crease_command(app);
   add_rim_command(app);
   add_flat_rim_command(app);
+  add_rounded_end_command(app);
   add_run_command(app);
   add_batch_command(app);
   add_validate_command(app);

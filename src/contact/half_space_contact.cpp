@@ -15,17 +15,6 @@ namespace
 {
 using Complex = std::complex<double>;
 
-/// The integral of 1 / r over [0, s] x [0, t], odd in s and in t.
-double love_term(double s, double t)
-{
-  double value = 0;
-  if (s != 0)
-    value += s * std::asinh(t / std::abs(s));
-  if (t != 0)
-    value += t * std::asinh(s / std::abs(t));
-  return value;
-}
-
 /// The smallest 2^a 3^b 5^c >= n (the FFT's fast sizes).
 std::size_t fast_fft_size(std::size_t n)
 {
@@ -117,11 +106,21 @@ std::vector<double> real_inverse_2d(std::vector<Complex>& spectrum, std::size_t 
 }
 } // namespace
 
+double love_corner_integral(double s_m, double t_m)
+{
+  double value = 0;
+  if (s_m != 0)
+    value += s_m * std::asinh(t_m / std::abs(s_m));
+  if (t_m != 0)
+    value += t_m * std::asinh(s_m / std::abs(t_m));
+  return value;
+}
+
 double cell_deflection(double half_x_m, double half_y_m, double x_m, double y_m, double effective_modulus_pa)
 {
   const double a = half_x_m, c = half_y_m;
-  return (love_term(x_m + a, y_m + c) - love_term(x_m + a, y_m - c) - love_term(x_m - a, y_m + c)
-          + love_term(x_m - a, y_m - c))
+  return (love_corner_integral(x_m + a, y_m + c) - love_corner_integral(x_m + a, y_m - c) - love_corner_integral(x_m - a, y_m + c)
+          + love_corner_integral(x_m - a, y_m - c))
          / (std::numbers::pi * effective_modulus_pa);
 }
 

@@ -47,6 +47,11 @@ struct HalfSpaceGrid
   double cell_area_m2() const { return cell_x_m * cell_y_m; }
 };
 
+/// f(s, t) = s asinh(t / |s|) + t asinh(s / |t|): the integral of 1 / r over
+/// the rectangle [0, s] x [0, t] (m), odd in s and in t; Love's rectangle is
+/// its sum over the four corners.
+double love_corner_integral(double s_m, double t_m);
+
 /// Deflection (m per Pa of pressure) at (x, y) from the centre of a cell of
 /// half-sides a (along x) and c (along y) under uniform unit pressure.
 double cell_deflection(double half_x_m, double half_y_m, double x_m, double y_m, double effective_modulus_pa);

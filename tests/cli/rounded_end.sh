@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# rollcheck rounded-end: rim's rounded end by half-space theory on a graded
+# grid against an independent computation, the numpy prototype
+# scripts/studies/rounded_end_half_space.py, on the same grids (R / r_e = 4,
+# held over 40 b, two levels): the same cells and end / interior within
+# 1e-4 at each level, converged; the scene's JSON and summary; bad input
+# exits 2 naming the option before any output (a fillet below 2 b, a hold
+# below 10 b, levels whose dense matrices would not fit, a missing folder).
+set -u
+source "$(dirname "$0")/lib.sh"
+bin=$1; here=$2; tmp=$3
+rm -rf "$tmp"; mkdir -p "$tmp"
+export OPENBLAS_NUM_THREADS=1
+"$bin" rounded-end --sheet-radius 0.004 --load-per-length 1e4 --edge-radius 0.001 --depth 40 --finest 0.25 \
+  --across 0.125 --json "$tmp/end.json" > "$tmp/end.log" 2>&1 || { echo "FAIL: rounded-end"; cat "$tmp/end.log"; exit 1; }
+script="$here/scripts/studies/rounded_end_half_space.py"
+for level in 0 1; do
+  finest=$(jq -r ".levels[$level].finest_cell_over_layer" "$tmp/end.json")
+  row=$(/usr/bin/python3 "$script" --rho 4 --length 40 --finest "$finest" --across 0.125 | tail -1)
+  cells=$(echo "$row" | awk -F'|' '{print $4}'); ratio=$(echo "$row" | awk -F'|' '{print $6}')
+  check_json "level $level: the prototype's $cells cells and end / interior $ratio" \
+    ".levels[$level].cells == ($cells) and ((.levels[$level].end_to_interior / ($ratio) - 1) | fabs) < 1e-4" "$tmp/end.json"
+done
+check_json "converged over two levels, R / r_e = 4, r_e / b above 2" \
+  '.converged and (.levels | length) == 2 and .sheet_over_edge_radius == 4 and .edge_radius_over_half_width > 2' \
+  "$tmp/end.json"
+check_json "the peak is end / interior times the far side, over line Hertz's p0" \
+  '((.peak_pressure_pa / (.levels[-1].peak_over_p0 * .line_hertz_peak_pa) - 1) | fabs) < 1e-12' "$tmp/end.json"
+grep -q "end / interior .*converged" "$tmp/end.log" || { echo "FAIL: no verdict in the summary"; cat "$tmp/end.log"; fail=1; }
+expect 2 "edge-radius" -- "$bin" rounded-end --edge-radius 1e-6 --json "$tmp/small.json"
+expect 2 "depth" -- "$bin" rounded-end --depth 5 --json "$tmp/short.json"
+expect 2 "levels" -- "$bin" rounded-end --levels 4 --finest 0.01 --json "$tmp/huge.json"
+expect 2 "no-such-folder" -- "$bin" rounded-end --json "$tmp/no-such-folder/out.json"
+check '[[ ! -e $tmp/small.json && ! -e $tmp/short.json && ! -e $tmp/huge.json ]]' "a refused run left no output"
+exit $fail
