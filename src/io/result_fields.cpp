@@ -106,6 +106,7 @@ constexpr auto fields = std::to_array<Field>({
     {"gaussian_curvature_per_m2", "1/m^2"},
     {"gmsh_s", "s"},
     {"half_contact_pressure_pa", "Pa"},
+    {"half_space_ends_from_deg", "deg"},
     {"half_width_m", "m"},
     {"hardness_pa", "Pa"},
     {"height_m", "m"},

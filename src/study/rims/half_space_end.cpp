@@ -33,6 +33,7 @@ contact::RoundedEndHalfSpaceSettings level_settings(const HalfSpaceEndStudy& stu
   s.radius_ratio = study.radius_ratio;
   s.held_length_over_half_width = study.held_length_over_half_width;
   s.grid = study.settings.grid;
+  s.threads = study.settings.threads;
   s.grid.finest_over_layer = study.settings.grid.finest_over_layer / std::pow(2.0, level);
   return s;
 }

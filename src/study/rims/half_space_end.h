@@ -35,6 +35,7 @@ struct HalfSpaceEndSettings
   int levels = 2;
   double tolerance = 0.01; ///< the end factor's largest change between the last two levels that counts as converged
   contact::RoundedEndGridSettings grid;
+  unsigned threads = 0; ///< the influence's threads (0: every core)
 };
 
 /// The influence and the loaded cells' system of the finest level, at most.

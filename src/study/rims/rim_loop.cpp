@@ -12,6 +12,7 @@
 #include "fem/scenes/slice_scaling.h"
 #include "oracle/contact_density.h"
 #include "core/progress_beat.h"
+#include "study/rims/loop_half_space_end.h"
 #include "study/rims/table_nodes.h"
 #include <algorithm>
 #include <chrono>
@@ -99,6 +100,15 @@ FlatRimSettings flat_rim_settings(const RimLoopSettings& s)
   return setup;
 }
 
+/// The half-space ends' influence threads: every core on one rank, one
+/// each where several ranks solve the same end alike.
+unsigned influence_threads(MPI_Comm comm)
+{
+  int ranks = 1;
+  MPI_Comm_size(comm, &ranks);
+  return ranks > 1 ? 1 : 0;
+}
+
 /// An end model's level callback (fem::RimEndSettings::on_level) that
 /// makes the beat's step `what` at that level.
 std::function<void(int, double)> level_beat(ProgressBeat& beat, const std::string& what)
@@ -138,7 +148,10 @@ RimLoopEnd direct_end(MPI_Comm comm, const RimLoopSettings& s, std::span<const o
                                   b / settings.radius_m, fem::largest_half_width_over_radius);
     return e;
   }
-  e.study = fem::solve_rim_end(comm, settings);
+  if (takes_half_space_end(settings, s.half_space_from_rad))
+    std::tie(e.study, e.half_space) = half_space_end_model(settings, influence_threads(comm));
+  else
+    e.study = fem::solve_rim_end(comm, settings);
   e.interior_peak_pa = static_load ? r.fem_peak_pa : 0.0;
   if (e.study.end_to_interior && e.study.resolved && !e.study.singular)
     e.end_peak_pa = *e.study.end_to_interior * e.study.levels.back().far_peak_pa;
@@ -412,7 +425,7 @@ void add_end_table(MPI_Comm comm, const RimLoopSettings& s, const loop_scores::L
   // the first node from the last direct end's.
   double approach_over_estimate = 1;
   for (const RimLoopEnd& e : result.ends)
-    if (!e.study.levels.empty())
+    if (!e.study.levels.empty() && !e.half_space)
       approach_over_estimate = e.study.approach_over_estimate();
   const std::vector<double> angles
       = end_table_angles(std::min(lo, hi), hi, s.end_table_step_rad, s.end_table_acute_step_rad);
@@ -437,12 +450,18 @@ void add_end_table(MPI_Comm comm, const RimLoopSettings& s, const loop_scores::L
     fem::RimEndSettings settings = end_settings(s, radius, result.reference_load_n_per_m, angle);
     settings.first_approach_scale = approach_over_estimate;
     settings.on_level = level_beat(beat, what);
-    node.study = fem::solve_rim_end(comm, settings);
-    approach_over_estimate = node.study.approach_over_estimate();
+    if (takes_half_space_end(settings, s.half_space_from_rad))
+      std::tie(node.study, node.half_space) = half_space_end_model(settings, influence_threads(comm));
+    else
+    {
+      node.study = fem::solve_rim_end(comm, settings);
+      approach_over_estimate = node.study.approach_over_estimate();
+    }
     result.table_converged = result.table_converged && node.study.converged;
     if (rank == 0)
-      spdlog::info("rim loop: end table at {:.2f} deg, R = {:.4g} m (r_e / b = {:.3g}): end/interior {} ({})",
+      spdlog::info("rim loop: end table at {:.2f} deg, R = {:.4g} m (r_e / b = {:.3g}{}): end/interior {} ({})",
                    angle / degree, radius, s.end.edge_radius_m / node.study.half_width_m,
+                   node.half_space ? ", half-space theory" : "",
                    node.study.end_to_interior ? fmt::format("{:.4f}", *node.study.end_to_interior) : "none",
                    node.study.converged ? "converged" : "NOT converged");
   }
@@ -536,6 +555,7 @@ RimLoopResult run_rim_loop(MPI_Comm comm, const RimLoopSettings& settings)
   result.ends = direct_ends(comm, s, result.fem_sds, rules.front().loads, beat);
   result.end_setup = end_settings(s, s.end.radius_m, s.end.load_n_per_m, s.end.interior_angle_rad);
   result.singular_from_rad = singular_from_angle(result.end_setup);
+  result.half_space_from_rad = s.half_space_from_rad;
 
   // What the tables cover: every scored rule's loaded ends.
   const loop_scores::LoopSamples covered = loaded_ends_of(rules);

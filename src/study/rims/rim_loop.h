@@ -118,6 +118,14 @@ struct RimLoopSettings
   /// and 170 deg (docs/methods/flat-rim.md).
   double flat_rim_from_rad = 160 * std::numbers::pi / 180;
   double flat_rim_step_rad = 2.5 * std::numbers::pi / 180;
+  /// A rounded edge's ends (direct and end table nodes) of at least this
+  /// dihedral angle whose fillet is at least
+  /// smallest_half_space_edge_over_half_width b take the end by half-space
+  /// theory held as deep as their block (study/rims/half_space_end.h)
+  /// instead of the FEM end model: seconds instead of minutes to hours
+  /// where r_e >> b, within 1.5 % of the FEM from 120 deg at R / r_e = 10
+  /// (docs/methods/rims.md#half-space-theory-as-a-reduction). pi: never.
+  double half_space_from_rad = std::numbers::pi;
   /// Also score the loop under the two other load rules (in the order of
   /// contact::load_rule_names), sharing the interior's FEM, the flat-rim
   /// table and the end table (whose range and reached nodes then cover every
@@ -146,6 +154,9 @@ struct RimLoopEnd
   double dihedral_angle_rad = 0;
   double modelled_angle_rad = 0;     ///< the dihedral within the end model's [60, 179.5] deg ([60, 170] rounded)
   fem::RimEndStudy study;            ///< at the end's q and R (no levels when outside the model)
+  /// Set where the end was solved by half-space theory (RimLoopSettings::
+  /// half_space_from_rad); `study` then holds what the loop reads of it.
+  std::optional<HalfSpaceEndStudy> half_space;
   /// Why the end model cannot stand for this end (empty: it does): b / R
   /// beyond fem::largest_half_width_over_radius, where the ruling ends near
   /// the apex of its sheet and the contact there is no line contact.
@@ -164,6 +175,9 @@ struct RimLoopResult
   loop_scores::FemSdsResult fem_sds;              ///< the interior: loop scores and the K orientations
   contact::LoadRule load_rule = contact::LoadRule::dynamic; ///< the settings' loop.load_rule
   std::vector<RimLoopEnd> ends;
+  /// RimLoopSettings::half_space_from_rad: from this dihedral angle the
+  /// rounded ends with r_e >= 20 b were solved by half-space theory (pi: none).
+  double half_space_from_rad = std::numbers::pi;
   /// The directly modelled ends' median q and R: the end table's q, and
   /// its R when it has one column.
   double reference_load_n_per_m = 0, reference_radius_m = 0;

@@ -5,6 +5,7 @@
 #include "core/json_number.h"
 #include "core/named_values.h"
 #include "study/rims/rim_end_json.h"
+#include <algorithm>
 #include <numbers>
 
 namespace rollcheck::study::rims
@@ -33,13 +34,22 @@ nlohmann::json seam_json(const RimLoopResult& r)
           {"end_table_ratio", seam->end_table_ratio},
           {"flat_rim_ratio", seam->flat_rim_ratio}};
 }
+/// An end model in brief, by which model, and the half-space end's own
+/// record where it stood for the FEM's.
+nlohmann::json loop_end_model_json(const fem::RimEndStudy& study, const std::optional<HalfSpaceEndStudy>& half_space)
+{
+  nlohmann::json j = end_model_json(study);
+  j["end_model"] = half_space ? "half-space" : "fem";
+  j["half_space"] = half_space ? to_json(*half_space) : nlohmann::json(nullptr);
+  return j;
+}
 } // namespace
 
 nlohmann::json to_json(const EndTableNode& node)
 {
   // A node no look-up of the loop reads is not solved: its place alone.
-  nlohmann::json j = node.reached ? end_model_json(node.study)
-                                  : nlohmann::json{{"sheet_radius_m", node.sheet_radius_m}};
+  nlohmann::json j = !node.reached ? nlohmann::json{{"sheet_radius_m", node.sheet_radius_m}}
+                                   : loop_end_model_json(node.study, node.half_space);
   j["dihedral_angle_deg"] = node.dihedral_angle_rad / degree;
   j["reached"] = node.reached;
   return j;
@@ -74,7 +84,7 @@ nlohmann::json to_json(const FlatRimNode& node)
 
 nlohmann::json to_json(const RimLoopEnd& e)
 {
-  nlohmann::json j = end_model_json(e.study);
+  nlohmann::json j = loop_end_model_json(e.study, e.half_space);
   j["orientation"] = e.orientation;
   j["end"] = e.end == 0 ? "start" : "end";
   j["interior_angle_deg"] = e.section_angle_rad / degree;
@@ -142,6 +152,12 @@ nlohmann::json to_json(const RimLoopResult& r)
           {"outside_model_ends", end_aware ? r.loop.end_aware[0].outside_model_ends : 0},
           {"outside_model_samples", end_aware ? r.loop.end_aware[0].outside_model_samples : 0},
           {"finished_ends", end_aware ? r.loop.end_aware[0].finished_ends : 0},
+          {"half_space_ends_from_deg", r.half_space_from_rad < std::numbers::pi
+                                           ? nlohmann::json(r.half_space_from_rad / degree)
+                                           : nlohmann::json(nullptr)},
+          {"half_space_ends",
+           std::ranges::count_if(r.ends, [](const RimLoopEnd& e) { return e.half_space.has_value(); })
+               + std::ranges::count_if(r.table, [](const EndTableNode& n) { return n.half_space.has_value(); })},
           {"end_table", array_json(r.table)},
           {"end_table_load_n_per_m", r.reference_load_n_per_m},
           // The table's R only when it has one column; its nodes carry their own.

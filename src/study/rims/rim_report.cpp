@@ -49,7 +49,9 @@ std::string ends_table(const RimLoopResult& r)
                             ? fmt::format(" (modelled {:.1f})", e.modelled_angle_rad / degree)
                             : "",
                         e.study.setup.load_n_per_m, e.study.setup.radius_m * 1e3, e.study.half_width_m * 1e6,
-                        e.study.wedge_exponent, e.outside_model.empty() ? end_verdict(e.study) : e.outside_model,
+                        e.study.wedge_exponent,
+                        !e.outside_model.empty() ? e.outside_model
+                                                 : end_verdict(e.study) + (e.half_space ? " (half-space)" : ""),
                         e.end_peak_pa ? fmt::format("{:.3f}", *e.end_peak_pa / e.interior_peak_pa) : "-",
                         e.table_ratio ? fmt::format("{:.3f}", *e.table_ratio) : "-", e.study.wall_s());
   return ends;

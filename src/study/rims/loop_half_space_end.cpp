@@ -1,0 +1,67 @@
+#include "study/rims/loop_half_space_end.h"
+#include "contact/hertz.h"
+#include "study/rims/end_table.h"
+
+namespace rollcheck::study::rims
+{
+namespace
+{
+HalfSpaceEndSettings half_space_settings(const fem::RimEndSettings& end, unsigned threads)
+{
+  HalfSpaceEndSettings s;
+  s.sheet_radius_m = end.radius_m;
+  s.load_n_per_m = end.load_n_per_m;
+  s.edge_radius_m = end.edge_radius_m;
+  s.youngs_modulus_pa = end.youngs_modulus_pa;
+  s.poisson_ratio = end.poisson_ratio;
+  s.steel_counter_face = end.counter_face == fem::CounterFace::block;
+  s.depth_over_half_width = end.depth_over_half_width;
+  s.levels = end.levels;
+  s.tolerance = end.tolerance;
+  s.threads = threads;
+  return s;
+}
+} // namespace
+
+bool takes_half_space_end(const fem::RimEndSettings& end, double from_rad)
+{
+  if (!(end.edge_radius_m > 0) || end.interior_angle_rad < from_rad)
+    return false;
+  const double modulus = contact::effective_modulus(end.youngs_modulus_pa, end.poisson_ratio,
+                                                    end.counter_face == fem::CounterFace::block);
+  const double b = contact::line_contact(end.load_n_per_m, end.radius_m, modulus, end.poisson_ratio).half_width_m;
+  return end.edge_radius_m >= smallest_half_space_edge_over_half_width * b;
+}
+
+std::pair<fem::RimEndStudy, HalfSpaceEndStudy> half_space_end_model(const fem::RimEndSettings& end, unsigned threads)
+{
+  const HalfSpaceEndStudy hs = half_space_end(half_space_settings(end, threads));
+  fem::RimEndStudy record;
+  record.setup = end;
+  record.effective_modulus_pa = hs.effective_modulus_pa;
+  record.half_width_m = hs.half_width_m;
+  record.hertz_peak_pa = hs.line_hertz_p0_pa;
+  record.dihedral_angle_rad = end.interior_angle_rad;
+  record.boundary_layer_m = hs.boundary_layer_m;
+  record.resolved = true; // its finest cells are s / 8 at the first level
+  record.flat_sheet = true;
+  record.converged = hs.converged;
+  record.end_to_interior = hs.end_to_interior();
+  for (std::size_t k = 0; k < hs.levels.size(); ++k)
+  {
+    const HalfSpaceEndLevel& l = hs.levels[k];
+    fem::RimEndLevel level;
+    level.edge_element_m = hs.end_factor.element_size_m[k];
+    level.far_load_n_per_m = end.load_n_per_m;
+    level.far_peak_pa = l.end.far_over_p0 * hs.line_hertz_p0_pa;
+    level.mid_peak_pa = level.far_peak_pa;
+    level.end_peak_pa = l.end.peak_over_p0 * hs.line_hertz_p0_pa;
+    level.end_peak_x_m = l.end.peak_x_over_layer * hs.boundary_layer_m;
+    level.wall_s = l.wall_s;
+    record.levels.push_back(level);
+  }
+  if (hs.levels.size() >= 2)
+    record.end_change = fem::end_to_interior_ratio_change(hs.end_factor.value.end()[-2], hs.end_factor.value.back());
+  return {record, hs};
+}
+} // namespace rollcheck::study::rims
