@@ -24,8 +24,9 @@ pressure (the FEM's end / interior) and over p0.
   python3 scripts/studies/rounded_end_half_space.py --check   # Hertz's point contact on the same grid
 
 Cost: n cells (4,000-7,000 at the defaults) need an n x n influence matrix
-and a few dense solves: 25-120 s a row on one core. A study prototype, not
-rollcheck's model.
+and a few dense solves: 25-120 s a row on one core. The prototype of
+`rollcheck rounded-end`, which solves the same grids in C++; kept as its
+independent check (tests/cli/rounded_end.sh, scripts/bench/bench_rounded_end.sh).
 """
 import argparse
 import sys

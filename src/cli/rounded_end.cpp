@@ -20,14 +20,14 @@ const SceneSchema<study::rims::HalfSpaceEndSettings>& rounded_end_schema()
   return kept_schema<S>(
       "rounded-end",
       "A rounded rim end (rim's one end, fillet r_e well above line Hertz's b) by half-space theory on a graded grid, "
-      "several levels: its end/interior pressure ratio in seconds; no interior angle (the FEM's within 1.5 % from "
-      "120 deg and r_e >= 20 b)",
+      "several levels: its end/interior pressure ratio in seconds; no interior angle (1.5-3.4 % above the FEM's "
+      "from 120 deg at r_e >= 20 b)",
       [](auto& s) {
     s.real("sheet_radius_m", "--sheet-radius", &S::sheet_radius_m, "m", "R, the contacting sheet's radius across the ruling",
            io::positive)
         .real("load_n_per_m", "--load-per-length", &S::load_n_per_m, "N/m", "q, the line load at the end", io::positive)
         .real("edge_radius_m", "--edge-radius", &S::edge_radius_m, "m", "r_e of the edge's fillet (at least 2 b)",
-              io::Bounds{0, 1, false, false})
+              io::Bounds{0, 1, true, false})
         .choice("counter_face", "--counter-face", &S::steel_counter_face,
                 "What the body presses on: rigid (the frictionless rigid plane) or steel (a half-space of the body's own "
                 "material, frictionless)",

@@ -121,7 +121,7 @@ expect 2 "key 'force_n' is now 'load_n'" -- "$bin" run "$in/former.toml"
 
 # run --template KIND: a case file of the kind that reads back (only the
 # --set key is unknown, so every key of the file is valid).
-for kind in mesh oracle search optimize hertz fem-sds crease rim flat-rim whole-body; do
+for kind in mesh oracle search optimize hertz fem-sds crease rim flat-rim rounded-end whole-body; do
   "$bin" run --template "$kind" > "$in/template_$kind.toml" 2>"$tmp/template.log" || { echo "FAIL: template $kind"; cat "$tmp/template.log"; fail=1; }
   sed -E 's/^# ([a-z0-9_]+ = )/\1/' "$in/template_$kind.toml" > "$in/uncommented_$kind.toml"
   for file in "$in/template_$kind.toml" "$in/uncommented_$kind.toml"; do

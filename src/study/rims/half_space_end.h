@@ -7,8 +7,8 @@
 // layer s = 2 r_e b / (pi R) in a block 10.5 r_e deep, millions of DOFs and
 // tens of minutes a level at the preprint's scale; this solves the same end
 // in seconds. It has no interior angle: the body beyond the fillet is a
-// half-space, which the FEM ends meet within 1.5 % at 120 deg and r_e >= 20
-// b but not near a square or acute end (docs/notes/rim-ends-tables.md, "A
+// half-space, which reads 1.5-3.4 % above the FEM ends from 120 deg at r_e
+// >= 20 b and R / r_e = 1 to 100, but more near a square or acute end (docs/notes/rim-ends-tables.md, "A
 // rounded end by half-space theory"). The line contact is held over the
 // block's depth, as the FEM's far field.
 #include "contact/rounded_end_half_space.h"

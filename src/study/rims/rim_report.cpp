@@ -52,7 +52,9 @@ std::string ends_table(const RimLoopResult& r)
                         e.study.wedge_exponent,
                         !e.outside_model.empty() ? e.outside_model
                                                  : end_verdict(e.study) + (e.half_space ? " (half-space)" : ""),
-                        e.end_peak_pa ? fmt::format("{:.3f}", *e.end_peak_pa / e.interior_peak_pa) : "-",
+                        // The orientation's peak is known under the static rule only (RimLoopEnd::interior_peak_pa).
+                        e.end_peak_pa && e.interior_peak_pa > 0 ? fmt::format("{:.3f}", *e.end_peak_pa / e.interior_peak_pa)
+                                                                : "-",
                         e.table_ratio ? fmt::format("{:.3f}", *e.table_ratio) : "-", e.study.wall_s());
   return ends;
 }
