@@ -212,9 +212,9 @@ const SceneSchema<RimCommand>& rim_schema()
   });
 }
 
-/// One end model's (or the oblique study's two models') progress: each
-/// level as it starts, repeated while it runs (meshing a deep block takes
-/// minutes and logs nothing).
+/// One end model's progress: each level as it starts, repeated while it
+/// runs (meshing a deep block takes minutes and logs nothing); the oblique
+/// study's names its model too.
 void beat_levels(fem::RimEndSettings& end, ProgressBeat& beat)
 {
   end.on_level = [&beat](int level, double edge_element_m) {
@@ -241,7 +241,9 @@ nlohmann::json run_rim(const io::Parameters& p)
     study::rims::ObliqueEndSettings settings;
     settings.body = command.loop.body;
     settings.end = command.end;
-    beat_levels(settings.end, beat);
+    settings.on_model_level = [&beat](const char* model, int level, double edge_element_m) {
+      beat.step(fmt::format("{} model, level {} (h_e = {:.3g} m)", model, level + 1, edge_element_m));
+    };
     settings.depth_over_edge_radius = command.depth_over_edge_radius;
     if (command.oblique_loop_load)
       settings.loop_load_n = command.loop.normal_load_n;

@@ -30,6 +30,7 @@ declare -A line=(
   [hertz]="hertz --model axi --refine 0"
   [crease]="crease --levels 2"
   [optimize]="optimize --max-evaluations 3 --points 50 --steps 50 --sweep-points 2"
+  [rounded-end]="rounded-end --sheet-radius 0.004 --load-per-length 1e4 --depth 20 --finest 0.5 --across 0.25"
   [fem-sds]="fem-sds --body cylinder --samples-per-loop 256 --orientations 1 --fem-slices 2 --slab-check 0"
 )
 skipped=(audit robustness life flat-rim rim)

@@ -128,11 +128,14 @@ ObliqueEndStudy oblique_end_study(MPI_Comm comm, const ObliqueEndSettings& s)
   study.end = most_oblique_end(s.body, s.samples);
   study.rounded = s.end.edge_radius_m > 0;
   study.loop_load_n = s.loop_load_n;
-  const fem::RimEndSettings oblique = oblique_settings(s, study.end);
+  fem::RimEndSettings oblique = oblique_settings(s, study.end);
   fem::RimEndSettings perpendicular = oblique;
   perpendicular.crossing_angle_rad = std::numbers::pi / 2;
   perpendicular.interior_angle_rad = study.end.dihedral_angle_rad;
   perpendicular.xdmf_path.clear();
+  if (s.on_model_level)
+    for (auto [model, name] : {std::pair{&oblique, "oblique"}, std::pair{&perpendicular, "perpendicular"}})
+      model->on_level = [&s, name](int level, double edge_element_m) { s.on_model_level(name, level, edge_element_m); };
   study.oblique = fem::solve_rim_end(comm, oblique);
   study.perpendicular = fem::solve_rim_end(comm, perpendicular);
   for (std::size_t k = 0; k < std::min(study.oblique.levels.size(), study.perpendicular.levels.size()); ++k)

@@ -35,6 +35,7 @@
 #include "fem/scenes/rim_end_contact.h"
 #include "geometry/body.h"
 #include <cstddef>
+#include <functional>
 #include <mpi.h>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -77,6 +78,10 @@ struct ObliqueEndSettings
   std::optional<double> loop_load_n;
   /// A rounded edge's block at least this many r_e deep (RimLoopSettings's).
   double depth_over_edge_radius = 10.5;
+  /// If set, called on every rank as each model's level starts, with the
+  /// model ("oblique" or "perpendicular"), the level (0 the first) and h_e
+  /// (the end's own on_level is not called).
+  std::function<void(const char* model, int level, double edge_element_m)> on_model_level;
 };
 
 /// One edge level of both models.

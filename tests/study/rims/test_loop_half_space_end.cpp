@@ -51,31 +51,33 @@ TEST(LoopHalfSpaceEnd, TakesRoundedEndsFromTheAngleWithAFilletOfTwentyHalfWidths
 
 TEST(LoopHalfSpaceEnd, RecordIsTheHalfSpaceEndsResult)
 {
-  const fem::RimEndSettings end = rounded_end(130);
+  fem::RimEndSettings end = rounded_end(130);
+  end.radius_m = end.edge_radius_m; // R = r_e: the coarsest grid
   const auto [record, half_space] = study::rims::half_space_end_model(end, 1);
-  study::rims::HalfSpaceEndSettings direct;
-  direct.sheet_radius_m = end.radius_m;
-  direct.load_n_per_m = end.load_n_per_m;
-  direct.edge_radius_m = end.edge_radius_m;
-  direct.depth_over_half_width = end.depth_over_half_width;
-  direct.levels = end.levels;
-  direct.tolerance = end.tolerance;
-  const study::rims::HalfSpaceEndStudy own = study::rims::half_space_end(direct);
+  // Solved at the end model's q, R, edge, material, counter-face, depth, levels and tolerance.
+  const study::rims::HalfSpaceEndSettings& own = half_space.settings;
+  EXPECT_EQ(own.sheet_radius_m, end.radius_m);
+  EXPECT_EQ(own.load_n_per_m, end.load_n_per_m);
+  EXPECT_EQ(own.edge_radius_m, end.edge_radius_m);
+  EXPECT_EQ(own.youngs_modulus_pa, end.youngs_modulus_pa);
+  EXPECT_EQ(own.poisson_ratio, end.poisson_ratio);
+  EXPECT_FALSE(own.steel_counter_face);
+  EXPECT_EQ(half_space.held_length_over_half_width, end.depth_over_half_width);
+  EXPECT_EQ(own.tolerance, end.tolerance);
   ASSERT_EQ(half_space.levels.size(), 2U);
-  EXPECT_EQ(half_space.end_to_interior(), own.end_to_interior());
-  EXPECT_EQ(half_space.held_length_over_half_width, 20);
+  // The record carries its result.
   ASSERT_TRUE(record.end_to_interior.has_value());
-  EXPECT_EQ(*record.end_to_interior, own.end_to_interior());
-  EXPECT_EQ(record.converged, own.converged);
+  EXPECT_EQ(*record.end_to_interior, half_space.end_to_interior());
+  EXPECT_EQ(record.converged, half_space.converged);
   EXPECT_TRUE(record.resolved);
   EXPECT_FALSE(record.singular);
-  EXPECT_EQ(record.half_width_m, own.half_width_m);
-  EXPECT_EQ(record.hertz_peak_pa, own.line_hertz_p0_pa);
+  EXPECT_EQ(record.half_width_m, half_space.half_width_m);
+  EXPECT_EQ(record.hertz_peak_pa, half_space.line_hertz_p0_pa);
   ASSERT_EQ(record.levels.size(), 2U);
   // The loop takes an end's peak as its ratio times the far side.
   const fem::RimEndLevel& last = record.levels.back();
   EXPECT_NEAR(*record.end_to_interior * last.far_peak_pa / last.end_peak_pa, 1, 1e-12);
-  EXPECT_NEAR(last.end_peak_pa, own.peak_pressure_pa(), 1e-9 * own.peak_pressure_pa());
+  EXPECT_NEAR(last.end_peak_pa, half_space.peak_pressure_pa(), 1e-9 * half_space.peak_pressure_pa());
   ASSERT_TRUE(record.end_change.has_value());
   EXPECT_LT(std::abs(*record.end_change), end.tolerance);
 }

@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <gtest/gtest.h>
 #include <mpi.h>
+#include <string>
+#include <vector>
 
 using namespace rollcheck;
 
@@ -33,7 +35,12 @@ TEST(ObliqueRoundedEnd, ReductionAgreesWithinTheModelsTolerance)
   s.end.load_n_per_m = 1.726e6; // b = 0.1 mm = R / 10
   s.end.edge_radius_m = 2.5e-4; // 2.5 b; the block 10.5 r_e deep
   s.end.levels = 2;
+  std::vector<std::string> started; // each model's levels as they start (the CLI's progress beat)
+  s.on_model_level = [&](const char* model, int level, double) {
+    started.push_back(std::string(model) + " " + std::to_string(level));
+  };
   const study::rims::ObliqueEndStudy study = study::rims::oblique_end_study(MPI_COMM_WORLD, s);
+  EXPECT_EQ(started, (std::vector<std::string>{"oblique 0", "oblique 1", "perpendicular 0", "perpendicular 1"}));
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank == 0)
