@@ -259,10 +259,12 @@ struct RimEndStudy
   std::vector<RimEndLevel> levels;
   /// The first level's converged approach over the unscaled estimate it
   /// started from: what starts a neighbouring end (same q, R, H) close to
-  /// its own.
+  /// its own; 1 (the estimate) where no level solved an approach.
   double approach_over_estimate() const
   {
-    return levels.empty() ? 1.0 : levels.front().approach_m / levels.front().estimated_approach_m;
+    return levels.empty() || !(levels.front().estimated_approach_m > 0)
+               ? 1.0
+               : levels.front().approach_m / levels.front().estimated_approach_m;
   }
   /// The wall time of every level together.
   double wall_s() const

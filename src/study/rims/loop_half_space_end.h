@@ -17,7 +17,7 @@ namespace rollcheck::study::rims
 bool takes_half_space_end(const fem::RimEndSettings& end, double from_rad);
 
 /// The end at `end` by half-space theory held over its block's depth, at
-/// the end model's levels and tolerance, and the end model's record of it
+/// two levels and the end model's tolerance, and the end model's record of it
 /// (no DOFs, approach or centre line: its levels' far side, end peak and
 /// wall time); `threads` the influence's (0: every core; the loop's ranks
 /// each solve it alike, on one thread each when there are several).

@@ -100,13 +100,18 @@ FlatRimSettings flat_rim_settings(const RimLoopSettings& s)
   return setup;
 }
 
-/// The half-space ends' influence threads: every core on one rank, one
-/// each where several ranks solve the same end alike.
-unsigned influence_threads(MPI_Comm comm)
+/// The FEM end model at `settings`, or the half-space end where the loop
+/// takes it (RimLoopSettings::half_space_from_rad): every rank solves that
+/// alike, on one influence thread each where there are several.
+std::pair<fem::RimEndStudy, std::optional<HalfSpaceEndStudy>> solve_end_model(MPI_Comm comm, const RimLoopSettings& s,
+                                                                              const fem::RimEndSettings& settings)
 {
+  if (!takes_half_space_end(settings, s.half_space_from_rad))
+    return {fem::solve_rim_end(comm, settings), std::nullopt};
   int ranks = 1;
   MPI_Comm_size(comm, &ranks);
-  return ranks > 1 ? 1 : 0;
+  auto [record, half_space] = half_space_end_model(settings, ranks > 1 ? 1 : 0);
+  return {std::move(record), std::move(half_space)};
 }
 
 /// An end model's level callback (fem::RimEndSettings::on_level) that
@@ -148,10 +153,7 @@ RimLoopEnd direct_end(MPI_Comm comm, const RimLoopSettings& s, std::span<const o
                                   b / settings.radius_m, fem::largest_half_width_over_radius);
     return e;
   }
-  if (takes_half_space_end(settings, s.half_space_from_rad))
-    std::tie(e.study, e.half_space) = half_space_end_model(settings, influence_threads(comm));
-  else
-    e.study = fem::solve_rim_end(comm, settings);
+  std::tie(e.study, e.half_space) = solve_end_model(comm, s, settings);
   e.interior_peak_pa = static_load ? r.fem_peak_pa : 0.0;
   if (e.study.end_to_interior && e.study.resolved && !e.study.singular)
     e.end_peak_pa = *e.study.end_to_interior * e.study.levels.back().far_peak_pa;
@@ -204,7 +206,8 @@ std::vector<RimLoopEnd> direct_ends(MPI_Comm comm, const RimLoopSettings& s, con
     beat.step(what);
     ends.push_back(direct_end(comm, s, interior.circles, *l.orientation, l.end, l.load_n_per_m, loads.empty(),
                               approach_over_estimate, level_beat(beat, what)));
-    if (ends.back().outside_model.empty())
+    // A half-space end has no approach: the next end starts from the last FEM end's.
+    if (ends.back().outside_model.empty() && !ends.back().half_space)
       approach_over_estimate = ends.back().study.approach_over_estimate();
   }
   return ends;
@@ -450,13 +453,9 @@ void add_end_table(MPI_Comm comm, const RimLoopSettings& s, const loop_scores::L
     fem::RimEndSettings settings = end_settings(s, radius, result.reference_load_n_per_m, angle);
     settings.first_approach_scale = approach_over_estimate;
     settings.on_level = level_beat(beat, what);
-    if (takes_half_space_end(settings, s.half_space_from_rad))
-      std::tie(node.study, node.half_space) = half_space_end_model(settings, influence_threads(comm));
-    else
-    {
-      node.study = fem::solve_rim_end(comm, settings);
+    std::tie(node.study, node.half_space) = solve_end_model(comm, s, settings);
+    if (!node.half_space) // a half-space end has no approach to start the next node from
       approach_over_estimate = node.study.approach_over_estimate();
-    }
     result.table_converged = result.table_converged && node.study.converged;
     if (rank == 0)
       spdlog::info("rim loop: end table at {:.2f} deg, R = {:.4g} m (r_e / b = {:.3g}{}): end/interior {} ({})",

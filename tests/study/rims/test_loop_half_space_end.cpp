@@ -1,7 +1,7 @@
 // The rim loop's ends by half-space theory (study/rims/loop_half_space_end.h):
 // which ends take it, and that the record the loop reads is the half-space
 // end's own result (study/rims/half_space_end.h) at the end model's q, R,
-// edge, depth, levels and tolerance.
+// edge, depth and tolerance, on its own two levels.
 #include "contact/hertz.h"
 #include "core/degree.h"
 #include "study/rims/end_table.h"
@@ -23,7 +23,7 @@ fem::RimEndSettings rounded_end(double angle_deg)
   end.edge_radius_m = 1e-3;
   end.interior_angle_rad = angle_deg * rollcheck::degree;
   end.depth_over_half_width = 20;
-  end.levels = 2;
+  end.levels = 3; // the loop's FEM default; the half-space takes its own two
   end.tolerance = 0.03;
   return end;
 }
@@ -54,7 +54,7 @@ TEST(LoopHalfSpaceEnd, RecordIsTheHalfSpaceEndsResult)
   fem::RimEndSettings end = rounded_end(130);
   end.radius_m = end.edge_radius_m; // R = r_e: the coarsest grid
   const auto [record, half_space] = study::rims::half_space_end_model(end, 1);
-  // Solved at the end model's q, R, edge, material, counter-face, depth, levels and tolerance.
+  // Solved at the end model's q, R, edge, material, counter-face, depth and tolerance.
   const study::rims::HalfSpaceEndSettings& own = half_space.settings;
   EXPECT_EQ(own.sheet_radius_m, end.radius_m);
   EXPECT_EQ(own.load_n_per_m, end.load_n_per_m);
@@ -80,4 +80,7 @@ TEST(LoopHalfSpaceEnd, RecordIsTheHalfSpaceEndsResult)
   EXPECT_NEAR(last.end_peak_pa, half_space.peak_pressure_pa(), 1e-9 * half_space.peak_pressure_pa());
   ASSERT_TRUE(record.end_change.has_value());
   EXPECT_LT(std::abs(*record.end_change), end.tolerance);
+  // It solved no approach: a neighbour starting from it starts from the
+  // estimate (its NaN stopped the preprint-scale loop at its second end).
+  EXPECT_EQ(record.approach_over_estimate(), 1.0);
 }
