@@ -67,4 +67,15 @@ std::pair<fem::RimEndStudy, HalfSpaceEndStudy> half_space_end_model(const fem::R
     record.end_change = fem::end_to_interior_ratio_change(hs.end_factor.value.end()[-2], hs.end_factor.value.back());
   return {record, hs};
 }
+
+std::pair<fem::RimEndStudy, std::optional<HalfSpaceEndStudy>> loop_end_model(MPI_Comm comm, const fem::RimEndSettings& end,
+                                                                             double from_rad)
+{
+  if (!takes_half_space_end(end, from_rad))
+    return {fem::solve_rim_end(comm, end), std::nullopt};
+  int ranks = 1;
+  MPI_Comm_size(comm, &ranks);
+  auto [record, half_space] = half_space_end_model(end, ranks > 1 ? 1 : 0);
+  return {std::move(record), std::move(half_space)};
+}
 } // namespace rollcheck::study::rims

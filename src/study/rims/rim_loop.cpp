@@ -100,20 +100,6 @@ FlatRimSettings flat_rim_settings(const RimLoopSettings& s)
   return setup;
 }
 
-/// The FEM end model at `settings`, or the half-space end where the loop
-/// takes it (RimLoopSettings::half_space_from_rad): every rank solves that
-/// alike, on one influence thread each where there are several.
-std::pair<fem::RimEndStudy, std::optional<HalfSpaceEndStudy>> solve_end_model(MPI_Comm comm, const RimLoopSettings& s,
-                                                                              const fem::RimEndSettings& settings)
-{
-  if (!takes_half_space_end(settings, s.half_space_from_rad))
-    return {fem::solve_rim_end(comm, settings), std::nullopt};
-  int ranks = 1;
-  MPI_Comm_size(comm, &ranks);
-  auto [record, half_space] = half_space_end_model(settings, ranks > 1 ? 1 : 0);
-  return {std::move(record), std::move(half_space)};
-}
-
 /// An end model's level callback (fem::RimEndSettings::on_level) that
 /// makes the beat's step `what` at that level.
 std::function<void(int, double)> level_beat(ProgressBeat& beat, const std::string& what)
@@ -153,7 +139,7 @@ RimLoopEnd direct_end(MPI_Comm comm, const RimLoopSettings& s, std::span<const o
                                   b / settings.radius_m, fem::largest_half_width_over_radius);
     return e;
   }
-  std::tie(e.study, e.half_space) = solve_end_model(comm, s, settings);
+  std::tie(e.study, e.half_space) = loop_end_model(comm, settings, s.half_space_from_rad);
   e.interior_peak_pa = static_load ? r.fem_peak_pa : 0.0;
   if (e.study.end_to_interior && e.study.resolved && !e.study.singular)
     e.end_peak_pa = *e.study.end_to_interior * e.study.levels.back().far_peak_pa;
@@ -453,7 +439,7 @@ void add_end_table(MPI_Comm comm, const RimLoopSettings& s, const loop_scores::L
     fem::RimEndSettings settings = end_settings(s, radius, result.reference_load_n_per_m, angle);
     settings.first_approach_scale = approach_over_estimate;
     settings.on_level = level_beat(beat, what);
-    std::tie(node.study, node.half_space) = solve_end_model(comm, s, settings);
+    std::tie(node.study, node.half_space) = loop_end_model(comm, settings, s.half_space_from_rad);
     if (!node.half_space) // a half-space end has no approach to start the next node from
       approach_over_estimate = node.study.approach_over_estimate();
     result.table_converged = result.table_converged && node.study.converged;
