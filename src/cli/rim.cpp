@@ -116,8 +116,9 @@ void add_end_table_options(RimSchema& s)
             "With --body and a rounded edge: ends (direct and end table nodes) of at least this dihedral angle whose "
             "fillet is at least 20 b take the end by half-space theory held as deep as their block (`rollcheck "
             "rounded-end`: seconds where the FEM end model takes minutes to hours) instead of the FEM end model; "
-            "1.5-3.4 % above it from 120 deg at R / r_e = 1 to 100, further off below 120 deg "
-            "(docs/methods/rims.md); 180: never",
+            "0.6-3.4 % above it from 120 deg where measured (R / r_e = 1 to 100; unmeasured beyond), further off "
+            "below 120 deg (docs/methods/rims.md); compared with the end's modelled angle, at most 170 deg: above "
+            "170, never",
             io::Bounds{110, 180}, degree);
 }
 

@@ -20,7 +20,7 @@ const SceneSchema<study::rims::HalfSpaceEndSettings>& rounded_end_schema()
   return kept_schema<S>(
       "rounded-end",
       "A rounded rim end (rim's one end, fillet r_e well above line Hertz's b) by half-space theory on a graded grid, "
-      "several levels: its end/interior pressure ratio in seconds; no interior angle (1.5-3.4 % above the FEM's "
+      "several levels: its end/interior pressure ratio in seconds; no interior angle (0.6-3.4 % above the FEM's "
       "from 120 deg at r_e >= 20 b)",
       [](auto& s) {
     s.real("sheet_radius_m", "--sheet-radius", &S::sheet_radius_m, "m", "R, the contacting sheet's radius across the ruling",

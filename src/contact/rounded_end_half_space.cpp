@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
+#include <optional>
 
 namespace rollcheck::contact
 {
@@ -37,10 +38,15 @@ void check(const RoundedEndHalfSpaceSettings& s)
     throw InputError(fmt::format("rounded end by half-space: the line contact must be held over at least 10 b, got "
                                  "{} b",
                                  s.held_length_over_half_width));
+  const double layer = 2 / (std::numbers::pi * s.radius_ratio);
+  if (!(s.held_length_over_half_width >= 4 * layer))
+    throw InputError(fmt::format("rounded end by half-space: the line contact held over {} b lies within 4 boundary "
+                                 "layers of the fillet (s = 2 r_e b / (pi R) = {:.3g} b)",
+                                 s.held_length_over_half_width, layer));
   const RoundedEndGridSettings& g = s.grid;
   if (!(g.finest_over_layer > 0 && g.finest_over_layer <= 1) || !(g.across_over_half_width > 0
                                                                   && g.across_over_half_width <= 0.5)
-      || !(g.core_over_layer > 2))
+      || !(g.core_over_layer > 2) || !(g.extent_over_half_width >= 1.75))
     throw InputError(fmt::format("rounded end by half-space: the grid needs finest cells in (0, 1] s, cells across in "
                                  "(0, 0.5] b and a core above 2 s, got {}, {} and {}",
                                  g.finest_over_layer, g.across_over_half_width, g.core_over_layer));
@@ -64,16 +70,20 @@ GradedHalfSpaceGrid rounded_end_grid(const RoundedEndHalfSpaceSettings& settings
   for (const double x : graded_edges(centre.back(), small, centre.back() + 2, 1.15, 0.125))
     grid.x_edges_m.push_back(x);
   const double across = settings.grid.across_over_half_width;
-  for (double y = 0; y < 1.25 + across / 2; y = across * static_cast<double>(grid.y_edges_m.size()))
+  const double extent = settings.grid.extent_over_half_width;
+  for (double y = 0; y < extent - 0.5 + across / 2; y = across * static_cast<double>(grid.y_edges_m.size()))
     grid.y_edges_m.push_back(y);
-  for (const double y : graded_edges(grid.y_edges_m.back(), across, 1.75, 1.3, 0.25))
+  for (const double y : graded_edges(grid.y_edges_m.back(), across, extent, 1.3, 0.25))
     grid.y_edges_m.push_back(y);
   grid.mirror_x_m = -length;
   grid.mirror_y = true;
   return grid;
 }
 
-RoundedEndHalfSpace rounded_end_half_space(const RoundedEndHalfSpaceSettings& settings)
+namespace
+{
+/// The end on the settings' grid; none where the contact reaches its side.
+std::optional<RoundedEndHalfSpace> solve_on_grid(const RoundedEndHalfSpaceSettings& settings)
 {
   const GradedHalfSpaceGrid grid = rounded_end_grid(settings);
   const double length = settings.held_length_over_half_width;
@@ -96,8 +106,7 @@ RoundedEndHalfSpace rounded_end_half_space(const RoundedEndHalfSpaceSettings& se
   const std::vector<double>& p = solution.pressure_pa;
   for (std::size_t i = 0; i < nx; ++i)
     if (p[i * ny + ny - 1] > 0)
-      throw ComputationError(fmt::format("rounded end by half-space: the contact reaches the grid's side at x = {} b",
-                                         grid.x(i)));
+      return std::nullopt;
   for (std::size_t j = 0; j < ny; ++j)
     if (p[(nx - 1) * ny + j] > 0)
       throw ComputationError("rounded end by half-space: the contact reaches the grid's end past the fillet");
@@ -117,6 +126,29 @@ RoundedEndHalfSpace rounded_end_half_space(const RoundedEndHalfSpaceSettings& se
   r.peak_over_p0 = p[peak * ny] / p0;
   r.peak_over_far = p[peak * ny] / p[far * ny];
   r.peak_x_over_layer = grid.x(peak) / r.layer_over_half_width;
+  r.extent_over_half_width = settings.grid.extent_over_half_width;
   return r;
+}
+} // namespace
+
+RoundedEndHalfSpace rounded_end_half_space(const RoundedEndHalfSpaceSettings& settings)
+{
+  RoundedEndHalfSpaceSettings s = settings;
+  for (int widened = 0;; ++widened)
+  {
+    if (const std::optional<RoundedEndHalfSpace> r = solve_on_grid(s))
+      return *r;
+    if (widened == 3)
+      throw ComputationError(fmt::format("rounded end by half-space: the contact reaches the grid's side, {:.3g} b "
+                                         "across, after widening it three times",
+                                         s.grid.extent_over_half_width));
+    s.grid.extent_over_half_width *= 1.5;
+    const std::size_t cells = rounded_end_grid(s).size();
+    if (graded_half_space_bytes(cells) > s.max_bytes)
+      throw ComputationError(fmt::format("rounded end by half-space: the contact reaches the grid's side; {:.3g} b "
+                                         "across, {} cells would take {:.1f} GiB, more than the {:.1f} allowed",
+                                         s.grid.extent_over_half_width, cells,
+                                         graded_half_space_bytes(cells) / (1ull << 30), s.max_bytes / (1ull << 30)));
+  }
 }
 } // namespace rollcheck::contact

@@ -34,6 +34,7 @@ contact::RoundedEndHalfSpaceSettings level_settings(const HalfSpaceEndStudy& stu
   s.held_length_over_half_width = study.held_length_over_half_width;
   s.grid = study.settings.grid;
   s.threads = study.settings.threads;
+  s.max_bytes = largest_half_space_end_bytes;
   s.grid.finest_over_layer = study.settings.grid.finest_over_layer / std::pow(2.0, level);
   return s;
 }
@@ -60,6 +61,19 @@ HalfSpaceEndStudy half_space_end(const HalfSpaceEndSettings& settings, const Hal
   study.held_length_over_half_width = settings.depth_over_half_width > 0
                                           ? settings.depth_over_half_width
                                           : settings.depth_over_edge_radius * edge_over_b;
+  study.boundary_layer_m
+      = 2 * settings.edge_radius_m * study.half_width_m / (std::numbers::pi * settings.sheet_radius_m);
+  const double held = study.held_length_over_half_width, layer_over_b = study.boundary_layer_m / study.half_width_m;
+  const std::string hold = settings.depth_over_half_width > 0
+                               ? fmt::format("--depth {}", held)
+                               : fmt::format("--depth 0: --block-depth {} r_e = {:.4g} b", settings.depth_over_edge_radius, held);
+  if (!(held >= 10 && held <= largest_held_length_over_half_width))
+    throw InputError(fmt::format("rounded-end: the line contact is held over {:.4g} b ({}); it must lie in [10, {}] b",
+                                 held, hold, largest_held_length_over_half_width));
+  if (held < 4 * layer_over_b)
+    throw InputError(fmt::format("rounded-end: the hold ({}) lies within 4 of the fillet's boundary layers s = 2 r_e b "
+                                 "/ (pi R) = {:.4g} b (--edge-radius {} m against --sheet-radius {} m): hold it longer",
+                                 hold, layer_over_b, settings.edge_radius_m, settings.sheet_radius_m));
   // Every level's grid before any solve: the finest is the largest.
   const std::size_t finest_cells = contact::rounded_end_grid(level_settings(study, settings.levels - 1)).size();
   const double bytes = contact::graded_half_space_bytes(finest_cells);
@@ -69,8 +83,6 @@ HalfSpaceEndStudy half_space_end(const HalfSpaceEndSettings& settings, const Hal
                                  "shorter --depth",
                                  settings.levels, finest_cells, bytes / (1ull << 30),
                                  largest_half_space_end_bytes / (1ull << 30)));
-  study.boundary_layer_m
-      = 2 * settings.edge_radius_m * study.half_width_m / (std::numbers::pi * settings.sheet_radius_m);
   for (int level = 0; level < settings.levels; ++level)
   {
     const contact::RoundedEndHalfSpaceSettings s = level_settings(study, level);
@@ -99,6 +111,7 @@ nlohmann::json to_json(const HalfSpaceEndStudy& study)
                       {"peak_over_p0", l.end.peak_over_p0},
                       {"end_to_interior", l.end.peak_over_far},
                       {"peak_past_fillet_start_over_layer", l.end.peak_x_over_layer},
+                      {"extent_over_half_width", l.end.extent_over_half_width},
                       {"wall_s", l.wall_s}});
   return {{"model", "half-space, graded grid"},
           {"sheet_radius_m", s.sheet_radius_m},
@@ -113,7 +126,10 @@ nlohmann::json to_json(const HalfSpaceEndStudy& study)
           {"sheet_over_edge_radius", study.radius_ratio},
           {"edge_radius_over_half_width", s.edge_radius_m / study.half_width_m},
           {"boundary_layer_m", study.boundary_layer_m},
+          {"depth_over_half_width", s.depth_over_half_width},
+          {"depth_over_edge_radius", s.depth_over_edge_radius},
           {"held_length_over_half_width", study.held_length_over_half_width},
+          {"across_over_half_width", s.grid.across_over_half_width},
           {"tolerance", s.tolerance},
           {"levels", levels},
           {"last_change", last_change(study.end_factor)},
@@ -131,7 +147,7 @@ std::string report(const HalfSpaceEndStudy& study)
       s.sheet_radius_m, s.load_n_per_m, s.edge_radius_m, s.steel_counter_face ? "steel" : "rigid", study.half_width_m,
       study.line_hertz_p0_pa, study.radius_ratio, s.edge_radius_m / study.half_width_m,
       study.held_length_over_half_width);
-  text += "| finest cell (s) | cells | far side / p0 | peak / p0 | end / interior | peak at (s) | s |\n";
+  text += "| finest cell / s | cells | far side / p0 | peak / p0 | end / interior | peak at x / s | wall s |\n";
   text += "|---|---|---|---|---|---|---|\n";
   for (const HalfSpaceEndLevel& l : study.levels)
     text += fmt::format("| {:.4g} | {} | {:.4f} | {:.4f} | {:.4f} | {:.2f} | {:.1f} |\n", l.finest_over_layer,

@@ -7,7 +7,7 @@
 // layer s = 2 r_e b / (pi R) in a block 10.5 r_e deep, millions of DOFs and
 // tens of minutes a level at the preprint's scale; this solves the same end
 // in seconds. It has no interior angle: the body beyond the fillet is a
-// half-space, which reads 1.5-3.4 % above the FEM ends from 120 deg at r_e
+// half-space, which reads 0.6-3.4 % above the FEM ends from 120 deg at r_e
 // >= 20 b and R / r_e = 1 to 100, but more near a square or acute end (docs/notes/rim-ends-tables.md, "A
 // rounded end by half-space theory"). The line contact is held over the
 // block's depth, as the FEM's far field.
@@ -40,6 +40,8 @@ struct HalfSpaceEndSettings
 
 /// The influence and the loaded cells' system of the finest level, at most.
 constexpr double largest_half_space_end_bytes = 6.0 * (1ull << 30);
+/// The longest hold, in b (`--depth`'s bound, and the default hold's).
+constexpr double largest_held_length_over_half_width = 5000;
 
 struct HalfSpaceEndLevel
 {
@@ -70,10 +72,12 @@ using HalfSpaceEndProgress = std::function<void(int level, double finest_cell_m)
 
 /// The end at `settings`. InputError for a non-positive or non-finite R, q,
 /// r_e, E, a Poisson ratio outside (-1, 0.5), r_e below 2 b (the body is no
-/// half-space at the contact's scale), or a finest level whose dense
-/// matrices would exceed largest_half_space_end_bytes (checked before any
-/// solve); ComputationError when a level's contact does not settle or
-/// reaches its grid's border.
+/// half-space at the contact's scale), a hold outside [10, 5000] b or within
+/// 4 s of the fillet, or a finest level whose dense matrices would exceed
+/// largest_half_space_end_bytes (checked before any solve); ComputationError
+/// when a level's contact does not settle, or reaches its grid's border
+/// after the grid was widened (contact::rounded_end_half_space) as far as
+/// those bytes allow.
 HalfSpaceEndStudy half_space_end(const HalfSpaceEndSettings& settings, const HalfSpaceEndProgress& progress = {});
 
 nlohmann::json to_json(const HalfSpaceEndStudy& study);

@@ -1,6 +1,9 @@
 #include "study/rims/loop_half_space_end.h"
 #include "contact/hertz.h"
+#include "core/degree.h"
+#include "core/error.h"
 #include "study/rims/end_table.h"
+#include <spdlog/spdlog.h>
 
 namespace rollcheck::study::rims
 {
@@ -28,7 +31,8 @@ HalfSpaceEndSettings half_space_settings(const fem::RimEndSettings& end, unsigne
 
 bool takes_half_space_end(const fem::RimEndSettings& end, double from_rad)
 {
-  if (!(end.edge_radius_m > 0) || end.interior_angle_rad < from_rad)
+  if (!(end.edge_radius_m > 0) || end.interior_angle_rad < from_rad
+      || end.depth_over_half_width > largest_held_length_over_half_width)
     return false;
   const double modulus = contact::effective_modulus(end.youngs_modulus_pa, end.poisson_ratio,
                                                     end.counter_face == fem::CounterFace::block);
@@ -71,11 +75,25 @@ std::pair<fem::RimEndStudy, HalfSpaceEndStudy> half_space_end_model(const fem::R
 std::pair<fem::RimEndStudy, std::optional<HalfSpaceEndStudy>> loop_end_model(MPI_Comm comm, const fem::RimEndSettings& end,
                                                                              double from_rad)
 {
-  if (!takes_half_space_end(end, from_rad))
-    return {fem::solve_rim_end(comm, end), std::nullopt};
-  int ranks = 1;
-  MPI_Comm_size(comm, &ranks);
-  auto [record, half_space] = half_space_end_model(end, ranks > 1 ? 1 : 0);
-  return {std::move(record), std::move(half_space)};
+  if (takes_half_space_end(end, from_rad))
+  {
+    int ranks = 1, rank = 0;
+    MPI_Comm_size(comm, &ranks);
+    MPI_Comm_rank(comm, &rank);
+    try
+    {
+      auto [record, half_space] = half_space_end_model(end, ranks > 1 ? 1 : 0);
+      return {std::move(record), std::move(half_space)};
+    }
+    catch (const ComputationError& e)
+    {
+      // Every rank solved the same end and failed alike: the FEM takes it.
+      if (rank == 0)
+        spdlog::warn("rim loop: the half-space end at {:.2f} deg, R = {:.4g} m, q = {:.4g} N/m failed ({}); the FEM "
+                     "end model takes it",
+                     end.interior_angle_rad / degree, end.radius_m, end.load_n_per_m, e.what());
+    }
+  }
+  return {fem::solve_rim_end(comm, end), std::nullopt};
 }
 } // namespace rollcheck::study::rims

@@ -14,9 +14,9 @@
 namespace rollcheck::study::rims
 {
 /// Whether the loop end model at `end` (its q, R, angle and depth set)
-/// takes half-space theory: a rounded edge, its angle at least `from_rad`
-/// and r_e at least smallest_half_space_edge_over_half_width times line
-/// Hertz's b there.
+/// takes half-space theory: a rounded edge, its angle at least `from_rad`,
+/// r_e at least smallest_half_space_edge_over_half_width times line Hertz's
+/// b there and its block at most largest_held_length_over_half_width b deep.
 bool takes_half_space_end(const fem::RimEndSettings& end, double from_rad);
 
 /// The end at `end` by half-space theory held over its block's depth, at
@@ -29,7 +29,8 @@ std::pair<fem::RimEndStudy, HalfSpaceEndStudy> half_space_end_model(const fem::R
 /// The loop's end model at `end`: the FEM's (fem::solve_rim_end on `comm`),
 /// or the half-space end and its record where takes_half_space_end(end,
 /// from_rad), which every rank solves alike, on one influence thread each
-/// where there are several.
+/// where there are several; where that fails (ComputationError: its
+/// contact outgrew its grid) the FEM's, with a warning.
 std::pair<fem::RimEndStudy, std::optional<HalfSpaceEndStudy>> loop_end_model(MPI_Comm comm, const fem::RimEndSettings& end,
                                                                              double from_rad);
 } // namespace rollcheck::study::rims

@@ -123,7 +123,7 @@ struct RimLoopSettings
   /// smallest_half_space_edge_over_half_width b take the end by half-space
   /// theory held as deep as their block (study/rims/half_space_end.h)
   /// instead of the FEM end model: seconds instead of minutes to hours
-  /// where r_e >> b, 1.5-3.4 % above the FEM from 120 deg at R / r_e = 1
+  /// where r_e >> b, 0.6-3.4 % above the FEM from 120 deg at R / r_e = 1
   /// to 100 (docs/methods/rims.md#half-space-theory-as-a-reduction). pi: never.
   double half_space_from_rad = std::numbers::pi;
   /// Also score the loop under the two other load rules (in the order of

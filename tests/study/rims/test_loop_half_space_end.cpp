@@ -47,6 +47,10 @@ TEST(LoopHalfSpaceEnd, TakesRoundedEndsFromTheAngleWithAFilletOfTwentyHalfWidths
   end.load_n_per_m /= 0.98;
   EXPECT_FALSE(study::rims::takes_half_space_end(end, from));
   EXPECT_FALSE(study::rims::takes_half_space_end(rounded_end(179), std::numbers::pi)); // never
+  // A block deeper than the half-space end holds (rollcheck rounded-end's --depth bound).
+  fem::RimEndSettings deep = rounded_end(150);
+  deep.depth_over_half_width = study::rims::largest_held_length_over_half_width * 1.01;
+  EXPECT_FALSE(study::rims::takes_half_space_end(deep, from));
 }
 
 TEST(LoopHalfSpaceEnd, RecordIsTheHalfSpaceEndsResult)
