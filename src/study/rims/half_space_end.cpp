@@ -15,7 +15,8 @@ namespace
 {
 void check_settings(const HalfSpaceEndSettings& s)
 {
-  for (const auto& [value, name] : {std::pair{s.sheet_radius_m, "--sheet-radius"}, {s.load_n_per_m, "--load-per-length"},
+  for (const auto& [value, name] : {std::pair{s.sheet_radius_m, "--sheet-radius"},
+                                    {s.load_n_per_m, "--load-per-length"},
                                     {s.edge_radius_m, "--edge-radius"}, {s.youngs_modulus_pa, "--youngs-modulus"},
                                     {s.depth_over_edge_radius, "--block-depth"}})
     if (!(value > 0) || !std::isfinite(value))
@@ -66,7 +67,8 @@ HalfSpaceEndStudy half_space_end(const HalfSpaceEndSettings& settings, const Hal
   const double held = study.held_length_over_half_width, layer_over_b = study.boundary_layer_m / study.half_width_m;
   const std::string hold = settings.depth_over_half_width > 0
                                ? fmt::format("--depth {}", held)
-                               : fmt::format("--depth 0: --block-depth {} r_e = {:.4g} b", settings.depth_over_edge_radius, held);
+                               : fmt::format("--depth 0: --block-depth {} r_e = {:.4g} b",
+                                             settings.depth_over_edge_radius, held);
   if (!(held >= 10 && held <= largest_held_length_over_half_width))
     throw InputError(fmt::format("rounded-end: the line contact is held over {:.4g} b ({}); it must lie in [10, {}] b",
                                  held, hold, largest_held_length_over_half_width));

@@ -72,8 +72,8 @@ std::pair<fem::RimEndStudy, HalfSpaceEndStudy> half_space_end_model(const fem::R
   return {record, hs};
 }
 
-std::pair<fem::RimEndStudy, std::optional<HalfSpaceEndStudy>> loop_end_model(MPI_Comm comm, const fem::RimEndSettings& end,
-                                                                             double from_rad)
+std::pair<fem::RimEndStudy, std::optional<HalfSpaceEndStudy>>
+loop_end_model(MPI_Comm comm, const fem::RimEndSettings& end, double from_rad)
 {
   if (takes_half_space_end(end, from_rad))
   {

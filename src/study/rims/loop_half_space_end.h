@@ -31,6 +31,6 @@ std::pair<fem::RimEndStudy, HalfSpaceEndStudy> half_space_end_model(const fem::R
 /// from_rad), which every rank solves alike, on one influence thread each
 /// where there are several; where that fails (ComputationError: its
 /// contact outgrew its grid) the FEM's, with a warning.
-std::pair<fem::RimEndStudy, std::optional<HalfSpaceEndStudy>> loop_end_model(MPI_Comm comm, const fem::RimEndSettings& end,
-                                                                             double from_rad);
+std::pair<fem::RimEndStudy, std::optional<HalfSpaceEndStudy>>
+loop_end_model(MPI_Comm comm, const fem::RimEndSettings& end, double from_rad);
 } // namespace rollcheck::study::rims
