@@ -38,7 +38,7 @@ void check(const RoundedEndHalfSpaceSettings& s)
     throw InputError(fmt::format("rounded end by half-space: the line contact must be held over at least 10 b, got "
                                  "{} b",
                                  s.held_length_over_half_width));
-  const double layer = 2 / (std::numbers::pi * s.radius_ratio);
+  const double layer = boundary_layer_over_half_width(s.radius_ratio);
   if (!(s.held_length_over_half_width >= 4 * layer))
     throw InputError(fmt::format("rounded end by half-space: the line contact held over {} b lies within 4 boundary "
                                  "layers of the fillet (s = 2 r_e b / (pi R) = {:.3g} b)",
@@ -53,11 +53,13 @@ void check(const RoundedEndHalfSpaceSettings& s)
 }
 } // namespace
 
+double boundary_layer_over_half_width(double radius_ratio) { return 2 / (std::numbers::pi * radius_ratio); }
+
 GradedHalfSpaceGrid rounded_end_grid(const RoundedEndHalfSpaceSettings& settings)
 {
   check(settings);
   const double length = settings.held_length_over_half_width;
-  const double layer = 2 / (std::numbers::pi * settings.radius_ratio);
+  const double layer = boundary_layer_over_half_width(settings.radius_ratio);
   const double small = settings.grid.finest_over_layer * layer;
   std::vector<double> centre;
   for (double x = -2 * layer; x < settings.grid.core_over_layer * layer + small / 2;
@@ -121,7 +123,7 @@ std::optional<RoundedEndHalfSpace> solve_on_grid(const RoundedEndHalfSpaceSettin
   RoundedEndHalfSpace r;
   r.cells = n;
   r.active_set_passes = solution.active_set_passes;
-  r.layer_over_half_width = 2 / (std::numbers::pi * settings.radius_ratio);
+  r.layer_over_half_width = boundary_layer_over_half_width(settings.radius_ratio);
   r.far_over_p0 = p[far * ny] / p0;
   r.peak_over_p0 = p[peak * ny] / p0;
   r.peak_over_far = p[peak * ny] / p[far * ny];

@@ -61,6 +61,9 @@ struct RoundedEndHalfSpace
   double extent_over_half_width = 0; ///< the grid's half-width across that held the contact, in b
 };
 
+/// s / b = 2 r_e / (pi R) = 2 / (pi rho): the fillet's boundary layer over b.
+double boundary_layer_over_half_width(double radius_ratio);
+
 /// The grid of the end (units of b: b = 1).
 GradedHalfSpaceGrid rounded_end_grid(const RoundedEndHalfSpaceSettings& settings);
 

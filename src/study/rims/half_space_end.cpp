@@ -62,8 +62,7 @@ HalfSpaceEndStudy half_space_end(const HalfSpaceEndSettings& settings, const Hal
   study.held_length_over_half_width = settings.depth_over_half_width > 0
                                           ? settings.depth_over_half_width
                                           : settings.depth_over_edge_radius * edge_over_b;
-  study.boundary_layer_m
-      = 2 * settings.edge_radius_m * study.half_width_m / (std::numbers::pi * settings.sheet_radius_m);
+  study.boundary_layer_m = contact::boundary_layer_over_half_width(study.radius_ratio) * study.half_width_m;
   const double held = study.held_length_over_half_width, layer_over_b = study.boundary_layer_m / study.half_width_m;
   const std::string hold = settings.depth_over_half_width > 0
                                ? fmt::format("--depth {}", held)
